@@ -1,0 +1,183 @@
+"""Predicted RMS of a scanned point: eq. 2 (m_x, m_y) and eq. 4 (m_z) of Voroshilov & Karachentsev.
+
+Reference: A.P. Voroshilov, Y.A. Karachentsev, "Choice of station location at surface laser
+scanning of buildings and constructions" (seed 003; digest in MODEL.md §2–4).
+
+Facade frame: **x along the facade, y along its outward normal, z up**. The beam's horizontal
+angle β is measured from the x axis, so a beam square to the facade has β = 90°. The
+**deviation angle** γ = 90° − β is the angle between the beam and the facade normal; its sign
+does not matter (the formulas hold cos² and sin²).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from planner._array import as_float_array, check_range, like_input
+from planner.errors import InputError
+from planner.scanner import Scanner
+from planner.units import RHO_ARCSEC
+
+__all__ = ["height_rms", "planimetric_rms", "ranging_rms_mm"]
+
+
+def ranging_rms_mm(distance_m: ArrayLike, scanner: Scanner) -> Any:
+    """Ranging RMS ``m_S = a + b·D`` [mm] of ``scanner`` at ``distance_m`` [m].
+
+    Datasheets quote the ranging accuracy as ``a`` [mm] plus ``b`` [ppm] of the distance
+    (MODEL.md §6, e.g. ±(2 mm + 100 ppm) in seed 004); b = 0 gives a constant m_S.
+    """
+    d = check_range(as_float_array(distance_m, "distance_m"), "distance_m", "m", lo=0.0)
+    return like_input(scanner.range_rms_at(d), distance_m)
+
+
+def station_rms_pair(station_rms_mm: Any) -> tuple[float, float]:
+    """``(m_xc, m_yc)`` [mm] from one number (both equal) or a pair."""
+    arr = as_float_array(station_rms_mm, "station_rms_mm")
+    if arr.ndim == 0:
+        arr = np.array([arr, arr])
+    if arr.shape != (2,) or np.isnan(arr).any():
+        raise InputError(
+            "station_rms_mm must be one number (m_xc = m_yc) or a pair (m_xc, m_yc) [mm], "
+            f"not NaN; got {station_rms_mm!r}"
+        )
+    check_range(arr, "station_rms_mm", "mm", lo=0.0)
+    return float(arr[0]), float(arr[1])
+
+
+def planimetric_rms(
+    distance_m: ArrayLike,
+    gamma_deg: ArrayLike,
+    scanner: Scanner,
+    station_rms_mm: float | tuple[float, float] = 0.0,
+    *,
+    ranging_distance_m: ArrayLike | None = None,
+) -> tuple[Any, Any]:
+    r"""RMS ``m_x``, ``m_y`` [mm] of a point in the facade frame — eq. 2 of seed 003.
+
+    .. math::
+
+        m_x^2 = m_{xc}^2 + m_S^2\cos^2\beta + (D/\rho)^2 \sin^2\beta\, m_\beta^2 \\
+        m_y^2 = m_{yc}^2 + m_S^2\sin^2\beta + (D/\rho)^2 \cos^2\beta\, m_\beta^2
+
+    with β = 90° − γ, so cos β = sin γ and sin β = cos γ (MODEL.md §2).
+
+    Parameters
+    ----------
+    distance_m : array_like
+        Horizontal distance D from station to point [m], >= 0.
+    gamma_deg : array_like
+        Deviation γ of the beam from the facade normal [deg], -90 <= γ <= 90.
+    scanner : Scanner
+        Gives ``m_S`` (``a + b·D``) and ``m_β`` (``angle_rms_arcsec``).
+    station_rms_mm : float or (float, float), default 0
+        RMS ``m_xc``, ``m_yc`` of the station coordinates, which also absorb the
+        registration of several scans into one system [mm].
+    ranging_distance_m : array_like, optional
+        Distance at which ``m_S = a + b·D`` is evaluated [m]; the slope distance S is the
+        one actually measured. Default D, as eq. 2 treats the measured distance as horizontal.
+        Irrelevant for a constant m_S (b = 0).
+
+    Returns
+    -------
+    m_x, m_y : float, ndarray or Series
+        Broadcast over the inputs; NaN in, NaN out.
+
+    Notes
+    -----
+    The paper's Table 1 prints, in the column m_y at γ = 60°, values this formula does not
+    give (e.g. 4.1 mm at 120 m where eq. 2 gives 6.6 mm): they equal
+    cos γ·√(m_S² + (D·m_β/ρ)²), i.e. cos²γ used in place of sin²γ in the angular term.
+    The formula is implemented as printed in eq. 2; ``tests/test_paper_tables.py`` records
+    the misprint.
+    """
+    d = check_range(as_float_array(distance_m, "distance_m"), "distance_m", "m", lo=0.0)
+    g = check_range(
+        as_float_array(gamma_deg, "gamma_deg"), "gamma_deg", "deg", hi=90.0, absolute=True
+    )
+    m_xc, m_yc = station_rms_pair(station_rms_mm)
+    s_for_range = d if ranging_distance_m is None else ranging_distance_m
+    m_s = ranging_rms_mm(s_for_range, scanner)
+    angular = d * 1000.0 / RHO_ARCSEC * scanner.angle_rms_arcsec  # (D/ρ)·m_β, D in mm
+    g_rad = np.radians(g)
+    cos2_beta = np.sin(g_rad) ** 2
+    sin2_beta = np.cos(g_rad) ** 2
+    m_s2 = np.square(m_s)
+    m_x = np.sqrt(m_xc**2 + m_s2 * cos2_beta + angular**2 * sin2_beta)
+    m_y = np.sqrt(m_yc**2 + m_s2 * sin2_beta + angular**2 * cos2_beta)
+    return like_input(m_x, distance_m, gamma_deg), like_input(m_y, distance_m, gamma_deg)
+
+
+def height_rms(
+    slope_distance_m: ArrayLike,
+    nu_deg: ArrayLike,
+    scanner: Scanner,
+    *,
+    initial_distance_m: ArrayLike | None = None,
+    initial_tilt_rms_arcsec: float | None = None,
+) -> Any:
+    r"""RMS ``m_z`` [mm] of the height of a scanned point — eq. 4 of seed 003.
+
+    .. math::
+
+        m_z^2 = m_S^2\sin^2\nu + (S/\rho)^2\cos^2\nu\, m_\nu^2 + (S_0/\rho)^2 m_{\nu_0}^2
+
+    derived from eq. 3, ``z = z_0 + S·sin ν − S_0·sin ν_0``, with ``m_z0 = 0`` and ν_0 = 0.
+
+    Parameters
+    ----------
+    slope_distance_m : array_like
+        Slope distance S from the scanner to the point [m], >= 0.
+    nu_deg : array_like
+        Tilt (elevation) ν of the beam [deg], -90 <= ν <= 90.
+    scanner : Scanner
+        Gives ``m_S`` (``a + b·S``) and ``m_ν`` (``tilt_rms_arcsec``).
+    initial_distance_m : array_like, optional
+        S_0, the distance at which the initial (horizontal) direction is fixed [m].
+        Default S, as in the paper's Table 2.
+    initial_tilt_rms_arcsec : float, optional
+        m_ν0, the RMS of the initial direction [″]. Default: the scanner's
+        ``levelling_rms_arcsec`` if it has one (a compensated scanner), else m_ν as in Table 2.
+
+    Returns
+    -------
+    m_z : float, ndarray or Series
+    """
+    s = check_range(
+        as_float_array(slope_distance_m, "slope_distance_m"), "slope_distance_m", "m", lo=0.0
+    )
+    nu = check_range(as_float_array(nu_deg, "nu_deg"), "nu_deg", "deg", hi=90.0, absolute=True)
+    s0 = (
+        s
+        if initial_distance_m is None
+        else check_range(
+            as_float_array(initial_distance_m, "initial_distance_m"),
+            "initial_distance_m",
+            "m",
+            lo=0.0,
+        )
+    )
+    m_nu = scanner.tilt_rms_arcsec
+    if initial_tilt_rms_arcsec is None:
+        m_nu0 = scanner.levelling_rms_arcsec if scanner.levelling_rms_arcsec is not None else m_nu
+    else:
+        m_nu0 = float(
+            check_range(
+                as_float_array(initial_tilt_rms_arcsec, "initial_tilt_rms_arcsec"),
+                "initial_tilt_rms_arcsec",
+                "arc-seconds",
+                lo=0.0,
+            )
+        )
+    m_s = scanner.range_rms_at(s)
+    nu_rad = np.radians(nu)
+    mm_per_arcsec = s * 1000.0 / RHO_ARCSEC
+    m_z = np.sqrt(
+        (m_s * np.sin(nu_rad)) ** 2
+        + (mm_per_arcsec * np.cos(nu_rad) * m_nu) ** 2
+        + (s0 * 1000.0 / RHO_ARCSEC * m_nu0) ** 2
+    )
+    return like_input(m_z, slope_distance_m, nu_deg)

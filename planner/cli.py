@@ -1,0 +1,227 @@
+"""The ``planner`` command line. It parses, calls the package and prints: no science here.
+
+Exit codes: 0 success; 2 bad input (a message on stderr, nothing written).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Callable, Sequence
+
+import pandas as pd
+
+from planner.errors import PlannerError
+from planner.scanner import Scanner, catalogue, load_scanner
+from planner.tables import (
+    PAPER_DISTANCES_M,
+    PAPER_GAMMAS_DEG,
+    PAPER_NUS_DEG,
+    SOSSA_DISTANCES_M,
+    height_table,
+    planimetric_table,
+    target_size_table,
+)
+from planner.targets import recommend_targets
+
+DEFAULT_SCANNER = "leica-4mm-60urad"
+
+EXIT_OK = 0
+EXIT_BAD_INPUT = 2
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse that reports usage errors with exit code 2 and a one-line hint."""
+
+    def error(self, message: str) -> None:  # type: ignore[override]
+        self.print_usage(sys.stderr)
+        self.exit(EXIT_BAD_INPUT, f"{self.prog}: error: {message}\n")
+
+
+def _floats(text: str) -> list[float]:
+    try:
+        values = [float(v) for v in text.split(",") if v.strip()]
+    except ValueError:
+        raise argparse.ArgumentTypeError(
+            f"expected comma-separated numbers such as 10,20,30; got {text!r}"
+        ) from None
+    if not values:
+        raise argparse.ArgumentTypeError("expected at least one number")
+    return values
+
+
+def _fmt(df: pd.DataFrame, fmt: str, decimals: int = 1) -> str:
+    if fmt == "csv":
+        return df.to_csv(float_format=f"%.{decimals + 2}f")
+    return df.to_string(float_format=lambda v: f"{v:.{decimals}f}")
+
+
+def _flat_columns(df: pd.DataFrame, label: str) -> pd.DataFrame:
+    out = df.copy()
+    out.columns = [f"{a} {label}={b:g}" for a, b in df.columns]
+    return out
+
+
+def _scanner_arg(p: argparse.ArgumentParser) -> None:
+    p.add_argument(
+        "--scanner",
+        default=DEFAULT_SCANNER,
+        metavar="NAME|FILE.toml",
+        help=f"catalogue name ('planner scanners') or a profile file; default {DEFAULT_SCANNER}",
+    )
+
+
+def cmd_scanners(args: argparse.Namespace) -> int:
+    rows = [
+        {
+            "name": s.name,
+            "ranging": f"{s.range_rms_mm:g} mm + {s.range_ppm:g} ppm",
+            "H angle ″": s.angle_rms_arcsec,
+            "V angle ″": s.tilt_rms_arcsec,
+            "step@10m mm": s.step_mm_at_10m,
+            "range m": f"{s.min_range_m:g}-{s.max_range_m:g}",
+            "label": s.label,
+        }
+        for s in catalogue().values()
+    ]
+    df = pd.DataFrame(rows).set_index("name")
+    print(df.to_csv() if args.format == "csv" else df.to_string())
+    if args.verbose:
+        for s in catalogue().values():
+            print(f"\n{s.name}\n  source: {s.source}\n  notes:  {s.notes}")
+    return EXIT_OK
+
+
+def print_accuracy(scanner: Scanner, distances, angles, tilts, station_rms_mm, fmt: str) -> None:
+    """Print the Table 1 (m_x, m_y) and Table 2 (m_z) layouts for ``scanner``."""
+    t1 = _flat_columns(planimetric_table(scanner, distances, angles, station_rms_mm), "γ")
+    t2 = height_table(scanner, distances, tilts)
+    t2.columns = [f"m_z ν={v:g}" for v in t2.columns]
+    if fmt == "csv":
+        print(_fmt(t1.join(t2, how="outer"), "csv"))
+        return
+    print(
+        f"Scanner {scanner.name}: m_S = {scanner.range_rms_mm:g} mm + {scanner.range_ppm:g} ppm, "
+        f"m_β = {scanner.angle_rms_arcsec:g}″, m_ν = {scanner.tilt_rms_arcsec:g}″"
+    )
+    print("\nPlanimetric RMS in the facade frame [mm] (eq. 2, Table 1 layout), D [m] vs γ:")
+    print(_fmt(t1, fmt))
+    print("\nHeight RMS m_z [mm] (eq. 4 with S_0 = S, m_ν0 = m_ν; Table 2 layout), S [m] vs ν:")
+    print(_fmt(t2, fmt))
+
+
+def cmd_accuracy(args: argparse.Namespace) -> int:
+    sc = load_scanner(args.scanner)
+    print_accuracy(sc, args.distances, args.angles, args.tilts, args.station_rms_mm, args.format)
+    return EXIT_OK
+
+
+def cmd_targets(args: argparse.Namespace) -> int:
+    sc = load_scanner(args.scanner)
+    step = args.step_mm_at_10m if args.step_mm_at_10m is not None else sc.step_mm_at_10m
+    table = target_size_table(args.distances, step)
+    if args.format == "csv":
+        print(table.to_csv())
+        return EXIT_OK
+    print(
+        f"Minimum target size [mm] by Sossa's 2d / 4d rule, scan step {step:g} mm at 10 m "
+        f"(scanner {sc.name}); columns: distance [m]"
+    )
+    print(table.to_string(float_format=lambda v: f"{v:.0f}"))
+    rec = recommend_targets(max(args.distances), step_mm_at_10m=step)
+    print("\nInventory: the farthest each item still qualifies [m]")
+    print(
+        rec[["name", "type", "size_mm", "max_distance_m"]].to_string(
+            index=False, float_format=lambda v: f"{v:.0f}"
+        )
+    )
+    return EXIT_OK
+
+
+def cmd_figures(args: argparse.Namespace) -> int:
+    from planner.figures import make_figures
+
+    for path in make_figures(args.out):
+        print(path)
+    return EXIT_OK
+
+
+def cmd_default(args: argparse.Namespace) -> int:
+    """The main job on the built-in defaults."""
+    sc = Scanner.from_name(DEFAULT_SCANNER)
+    print_accuracy(sc, PAPER_DISTANCES_M, PAPER_GAMMAS_DEG, PAPER_NUS_DEG, 0.0, "text")
+    return EXIT_OK
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = _Parser(
+        prog="planner", description="Plan terrestrial laser scanner stations around buildings."
+    )
+    p.set_defaults(func=cmd_default)
+    sub = p.add_subparsers(title="commands", parser_class=_Parser)
+
+    s = sub.add_parser("scanners", help="list the scanner catalogue")
+    s.add_argument("--format", choices=["text", "csv"], default="text")
+    s.add_argument("-v", "--verbose", action="store_true", help="also print sources and notes")
+    s.set_defaults(func=cmd_scanners)
+
+    a = sub.add_parser("accuracy", help="m_x, m_y (Table 1) and m_z (Table 2) for a scanner")
+    _scanner_arg(a)
+    a.add_argument(
+        "--distances",
+        type=_floats,
+        default=list(PAPER_DISTANCES_M),
+        metavar="D,D,...",
+        help="horizontal / slope distances [m]",
+    )
+    a.add_argument(
+        "--angles",
+        type=_floats,
+        default=list(PAPER_GAMMAS_DEG),
+        metavar="G,G,...",
+        help="deviation angles γ from the facade normal [deg]",
+    )
+    a.add_argument(
+        "--tilts",
+        type=_floats,
+        default=list(PAPER_NUS_DEG),
+        metavar="N,N,...",
+        help="beam tilts ν [deg]",
+    )
+    a.add_argument(
+        "--station-rms-mm",
+        type=float,
+        default=0.0,
+        help="station / registration RMS m_xc = m_yc [mm]",
+    )
+    a.add_argument("--format", choices=["text", "csv"], default="text")
+    a.set_defaults(func=cmd_accuracy)
+
+    t = sub.add_parser("targets", help="minimum target sizes (Sossa's Table 2 layout)")
+    _scanner_arg(t)
+    t.add_argument("--distances", type=_floats, default=list(SOSSA_DISTANCES_M), metavar="D,D,...")
+    t.add_argument(
+        "--step-mm-at-10m",
+        type=float,
+        default=None,
+        help="scan step at 10 m [mm]; default the scanner's",
+    )
+    t.add_argument("--format", choices=["text", "csv"], default="text")
+    t.set_defaults(func=cmd_targets)
+
+    f = sub.add_parser("figures", help="regenerate the figures in figures/")
+    f.add_argument("--out", default="figures", help="output folder (default figures/)")
+    f.set_defaults(func=cmd_figures)
+    return p
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    func: Callable[[argparse.Namespace], int] = args.func
+    try:
+        return func(args)
+    except PlannerError as exc:
+        print(f"planner: error: {exc}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except BrokenPipeError:
+        return EXIT_OK

@@ -1,0 +1,190 @@
+"""Figures made by code: accuracy curves reproducing the papers' tables, target sizes.
+
+``planner figures`` (or :func:`make_figures`) regenerates ``figures/``. The plotting
+functions take an optional ``ax`` so the notebooks reuse them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+
+import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+
+from planner.accuracy import height_rms, planimetric_rms
+from planner.io import write_bytes_atomic
+from planner.reference import (
+    SOSSA_TABLE2,
+    compare_table1,
+    compare_table2,
+)
+from planner.scanner import Scanner
+from planner.targets import (
+    DEFAULT_INVENTORY,
+    SOSSA_STEP_MM_AT_10M,
+    TARGET_TYPES,
+    TargetItem,
+    max_target_distance_m,
+    min_target_size_mm,
+)
+
+__all__ = ["make_figures", "plot_height", "plot_planimetric", "plot_target_sizes"]
+
+_COLOURS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728"]
+
+
+def plot_planimetric(
+    scanner: Scanner,
+    gammas_deg: Sequence[float] = (0, 30, 60),
+    max_distance_m: float = 120.0,
+    *,
+    station_rms_mm: float | tuple[float, float] = 0.0,
+    paper: bool = False,
+    axes: Sequence[Axes] | None = None,
+) -> Figure:
+    """m_x and m_y vs D, one curve per γ (eq. 2); ``paper=True`` overlays Table 1."""
+    if axes is None:
+        fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True, layout="constrained")
+    fig = axes[0].figure
+    d = np.linspace(0.0, max_distance_m, 241)
+    t1 = compare_table1(scanner) if paper else None
+    for i, g in enumerate(gammas_deg):
+        c = _COLOURS[i % len(_COLOURS)]
+        m_x, m_y = planimetric_rms(d, g, scanner, station_rms_mm)
+        axes[0].plot(d, m_x, color=c, label=f"γ = {g:g}°")
+        axes[1].plot(d, m_y, color=c, label=f"γ = {g:g}°")
+        if t1 is not None and g in (0, 30, 60):
+            for ax, comp in zip(axes, ("m_x", "m_y"), strict=True):
+                cells = t1.xs((comp, g), level=(1, 2))
+                ok, bad = cells[~cells["misprint"]], cells[cells["misprint"]]
+                ax.plot(ok.index, ok["printed_mm"], "o", ms=4, mfc="none", color=c)
+                ax.plot(bad.index, bad["printed_mm"], "x", ms=6, color="crimson")
+    for ax, comp in zip(axes, ("m_x (along the facade)", "m_y (along the normal)"), strict=True):
+        ax.set_xlabel("horizontal distance D [m]")
+        ax.set_title(comp)
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("RMS [mm]")
+    axes[0].legend()
+    if t1 is not None:
+        axes[1].plot([], [], "o", mfc="none", color="grey", label="Table 1 as printed")
+        axes[1].plot([], [], "x", color="crimson", label="misprint (formula wins)")
+        axes[1].legend()
+    fig.suptitle(f"Planimetric RMS, eq. 2 of Voroshilov & Karachentsev — {scanner.label}")
+    return fig
+
+
+def plot_height(
+    scanner: Scanner,
+    nus_deg: Sequence[float] = (0, 30, 60, 90),
+    max_distance_m: float = 120.0,
+    *,
+    paper: bool = False,
+    ax: Axes | None = None,
+) -> Figure:
+    """m_z vs S, one curve per ν (eq. 4, S_0 = S); ``paper=True`` overlays Table 2."""
+    if ax is None:
+        fig, ax = plt.subplots(figsize=(6, 4), layout="constrained")
+    fig = ax.figure
+    s = np.linspace(0.0, max_distance_m, 241)
+    t2 = compare_table2(scanner) if paper else None
+    for i, nu in enumerate(nus_deg):
+        c = _COLOURS[i % len(_COLOURS)]
+        ax.plot(s, height_rms(s, nu, scanner), color=c, label=f"ν = {nu:g}°")
+        if t2 is not None and nu in (0, 30, 60, 90):
+            cells = t2.xs(nu, level=1)
+            ok, bad = cells[~cells["misprint"]], cells[cells["misprint"]]
+            ax.plot(ok.index, ok["printed_mm"], "o", ms=4, mfc="none", color=c)
+            ax.plot(bad.index, bad["printed_mm"], "x", ms=6, color="crimson")
+    if t2 is not None:
+        ax.plot([], [], "o", mfc="none", color="grey", label="Table 2 as printed")
+        ax.plot([], [], "x", color="crimson", label="misprint (formula wins)")
+    ax.set_xlabel("slope distance S [m]")
+    ax.set_ylabel("m_z [mm]")
+    ax.grid(alpha=0.3)
+    ax.legend()
+    ax.set_title(f"Height RMS, eq. 4 — {scanner.label}")
+    return fig
+
+
+def plot_target_sizes(
+    step_mm_at_10m: float = SOSSA_STEP_MM_AT_10M,
+    max_distance_m: float = 350.0,
+    inventory: Sequence[TargetItem] = DEFAULT_INVENTORY,
+    *,
+    paper: bool = False,
+    ax: Axes | None = None,
+) -> Figure:
+    """Minimum target size vs distance (2d flat, 4d sphere and cylinder) and an inventory."""
+    if ax is None:
+        fig, ax = plt.subplots(figsize=(9, 4.5), layout="constrained")
+    fig = ax.figure
+    d = np.linspace(0.0, max_distance_m, 351)
+    styles = {"flat": "-", "sphere": "--", "cylinder": ":"}
+    for t in TARGET_TYPES:
+        rule = "2d" if t == "flat" else "4d"
+        ax.plot(
+            d,
+            min_target_size_mm(d, t, step_mm_at_10m=step_mm_at_10m),
+            styles[t],
+            color="k",
+            label=f"{t} ({rule})",
+        )
+    if paper:
+        ax.plot(
+            SOSSA_TABLE2.columns,
+            SOSSA_TABLE2.loc["flat"],
+            "o",
+            mfc="none",
+            color="k",
+            label="Sossa Table 2 (flat)",
+        )
+        ax.plot(
+            SOSSA_TABLE2.columns,
+            SOSSA_TABLE2.loc["sphere"],
+            "s",
+            mfc="none",
+            color="k",
+            label="Sossa Table 2 (sphere, cylinder)",
+        )
+    for i, item in enumerate(inventory):
+        c = _COLOURS[i % len(_COLOURS)]
+        reach = float(max_target_distance_m(item.size_mm, item.type, step_mm_at_10m=step_mm_at_10m))
+        ax.hlines(
+            item.size_mm,
+            0,
+            min(reach, max_distance_m),
+            color=c,
+            lw=2,
+            label=f"{item.name}: up to {reach:.0f} m",
+        )
+    ax.set_xlabel("distance to scanner [m]")
+    ax.set_ylabel("minimum target size [mm]")
+    ax.set_xlim(0, max_distance_m)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    ax.set_title(f"Target size by Sossa's 2d / 4d rule, step {step_mm_at_10m:g} mm at 10 m")
+    return fig
+
+
+def _save(fig: Figure, path: Path) -> Path:
+    import io
+
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=110, metadata={"Software": None})
+    plt.close(fig)
+    return write_bytes_atomic(path, buf.getvalue())
+
+
+def make_figures(out_dir: str | Path = "figures") -> list[Path]:
+    """Regenerate the README figures in ``out_dir``; returns the files written."""
+    out = Path(out_dir)
+    paper = Scanner.from_name("leica-4mm-60urad")
+    written = [
+        _save(plot_planimetric(paper, paper=True), out / "table1_planimetric_rms.png"),
+        _save(plot_height(paper, paper=True), out / "table2_height_rms.png"),
+        _save(plot_target_sizes(paper=True), out / "sossa_target_sizes.png"),
+    ]
+    return written

@@ -1,0 +1,109 @@
+"""The papers' printed tables, transcribed once, and their comparison with the formulas.
+
+Used by the tests, the figures and the accuracy notebook, so that a misprint is recorded in
+one place. Printed values are as in the papers (decimal commas read as points).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from planner.scanner import Scanner
+from planner.tables import height_table, planimetric_table, target_size_table
+
+__all__ = [
+    "SOSSA_TABLE2",
+    "VOROSHILOV_TABLE1",
+    "VOROSHILOV_TABLE2",
+    "compare_sossa_table2",
+    "compare_table1",
+    "compare_table2",
+]
+
+_D = [10, 20, 30, 40, 50, 60, 80, 100, 120]
+
+#: Seed 003, Table 1 as printed: m_x, m_y [mm] vs D [m] for γ = 0°, 30°, 60°.
+VOROSHILOV_TABLE1 = pd.DataFrame(
+    {
+        ("m_x", 0): [0.6, 1.2, 1.8, 2.4, 3.0, 3.6, 4.8, 6.0, 7.2],
+        ("m_x", 30): [2.1, 2.2, 2.5, 2.9, 3.3, 3.7, 4.6, 5.6, 6.6],
+        ("m_x", 60): [3.5, 3.5, 3.6, 3.7, 3.8, 3.9, 4.2, 4.6, 5.0],
+        ("m_y", 0): [4.0, 4.0, 4.0, 4.0, 4.0, 4.0, 4.0, 4.0, 4.0],
+        ("m_y", 30): [3.5, 3.5, 3.6, 3.7, 3.8, 3.9, 4.2, 4.6, 5.0],
+        ("m_y", 60): [2.0, 2.1, 2.2, 2.3, 2.5, 2.7, 3.1, 3.6, 4.1],
+    },
+    index=pd.Index(_D, name="D_m"),
+)
+VOROSHILOV_TABLE1.columns = pd.MultiIndex.from_tuples(
+    VOROSHILOV_TABLE1.columns, names=["rms", "gamma_deg"]
+)
+
+#: Seed 003, Table 2 as printed: m_z [mm] vs S [m] for ν = 0°, 30°, 60°, 90°.
+VOROSHILOV_TABLE2 = pd.DataFrame(
+    {
+        0: [0.8, 1.7, 2.5, 3.4, 4.2, 5.1, 6.8, 8.4, 10.0],
+        30: [2.2, 2.5, 3.1, 3.8, 4.4, 5.2, 6.6, 8.2, 9.7],
+        60: [3.6, 3.7, 4.0, 4.4, 4.8, 5.3, 6.4, 7.6, 8.8],
+        90: [4.0, 4.2, 4.4, 4.7, 5.0, 5.4, 6.2, 7.2, 8.2],
+    },
+    index=pd.Index(_D, name="S_m"),
+)
+VOROSHILOV_TABLE2.columns.name = "nu_deg"
+
+#: Sossa, Table 2 as printed (step 2 mm at 10 m): d and minimum sizes [mm] vs distance [m].
+SOSSA_TABLE2 = pd.DataFrame(
+    [
+        [10, 20, 30, 40, 50, 60, 70],
+        [20, 40, 60, 80, 100, 120, 140],
+        [40, 80, 120, 160, 200, 240, 280],
+        [40, 80, 120, 160, 200, 240, 280],
+    ],
+    index=pd.Index(["d", "flat", "sphere", "cylinder"], name="mm"),
+    columns=pd.Index([50, 100, 150, 200, 250, 300, 350], name="distance_m"),
+    dtype=float,
+)
+
+#: Table 1 is printed to 0.1 mm: half a unit plus 0.01 mm for the hand arithmetic.
+TABLE1_TOLERANCE_MM = 0.06
+#: Table 2 was rounded both up and down (3.53 → 3.6, 0.85 → 0.8): one printed unit.
+TABLE2_TOLERANCE_MM = 0.10
+
+
+def _compare(printed: pd.DataFrame, computed: pd.DataFrame, tol: float) -> pd.DataFrame:
+    out = pd.DataFrame(
+        {
+            "printed_mm": printed.stack(list(range(printed.columns.nlevels)), future_stack=True),
+            "computed_mm": computed.stack(list(range(computed.columns.nlevels)), future_stack=True),
+        }
+    )
+    out["diff_mm"] = out["computed_mm"] - out["printed_mm"]
+    out["misprint"] = np.abs(out["diff_mm"]) > tol
+    return out
+
+
+def compare_table1(scanner: Scanner | None = None) -> pd.DataFrame:
+    """Seed 003's Table 1, printed vs eq. 2, one row per cell, misprints flagged.
+
+    The whole m_y(γ = 60°) column is a misprint: the paper printed
+    cos γ·√(m_S² + (D·m_β/ρ)²), i.e. used cos²γ where eq. 2 has sin²γ.
+    """
+    sc = scanner or Scanner.from_name("leica-4mm-60urad")
+    computed = planimetric_table(sc, _D, [0, 30, 60])
+    return _compare(VOROSHILOV_TABLE1, computed, TABLE1_TOLERANCE_MM)
+
+
+def compare_table2(scanner: Scanner | None = None) -> pd.DataFrame:
+    """Seed 003's Table 2, printed vs eq. 4 (S_0 = S, m_ν0 = m_ν), misprints flagged.
+
+    Two cells of the ν = 0° column are slips: 8.4 mm at 100 m and 10.0 mm at 120 m, where
+    eq. 4 gives 8.50 and 10.20 mm.
+    """
+    sc = scanner or Scanner.from_name("leica-4mm-60urad")
+    computed = height_table(sc, _D, [0, 30, 60, 90])
+    return _compare(VOROSHILOV_TABLE2, computed, TABLE2_TOLERANCE_MM)
+
+
+def compare_sossa_table2() -> pd.DataFrame:
+    """Sossa's Table 2, printed vs the 2d / 4d rule (no misprints)."""
+    return _compare(SOSSA_TABLE2, target_size_table(list(SOSSA_TABLE2.columns), 2.0), 1e-9)

@@ -1,0 +1,293 @@
+"""Scanner profiles: the :class:`Scanner` data class and the catalogue shipped as data.
+
+The catalogue lives in ``planner/data/scanners.toml`` (one ``[[scanner]]`` table per
+profile, each with its source). A user's own profile uses the same file format.
+"""
+
+from __future__ import annotations
+
+import difflib
+import json
+import math
+import tomllib
+from collections.abc import Mapping
+from dataclasses import asdict, dataclass, field, fields
+from functools import cache
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from planner._array import as_float_array
+from planner.errors import InputError
+
+__all__ = ["Scanner", "catalogue", "load_scanner", "read_scanner_file"]
+
+
+@dataclass(frozen=True, kw_only=True)
+class Scanner:
+    """Accuracy figures and limits of one terrestrial laser scanner.
+
+    Parameters
+    ----------
+    name : str
+        Catalogue key (lower case, no spaces by convention).
+    range_rms_mm : float
+        Constant part ``a`` of the ranging RMS ``m_S = a + b·D`` [mm]; > 0.
+    angle_rms_arcsec : float
+        RMS of the horizontal angle ``m_β`` [″]; > 0.
+    range_ppm : float, default 0
+        Distance-proportional part ``b`` of the ranging RMS [ppm = mm/km]; >= 0.
+    vertical_angle_rms_arcsec : float or None, default None
+        RMS of the tilt (vertical angle) ``m_ν`` [″]; None means the same as horizontal.
+    step_mm_at_10m : float, default 2.0
+        Scan step (point spacing on a surface square to the beam) at 10 m [mm]. Sossa:
+        1–3 mm is typical, 2 mm is the paper's choice.
+    min_range_m, max_range_m : float, default 1.0 and 120.0
+        Usable slope-distance range [m]; ``0 <= min < max``.
+    vertical_fov_deg : (float, float), default (-45, 90)
+        Lowest and highest beam elevation [deg] (270° panoramic field).
+    measurement_rate_hz : float or None
+        Points per second, if known.
+    levelling_rms_arcsec : float or None
+        RMS of the initial (horizontal) direction ``m_ν0`` of a levelled or compensated
+        scanner [″]. None: eq. 4 uses ``m_ν0 = m_ν`` as the paper's Table 2 does.
+    label, source, notes : str
+        Display name; where the figures come from; which values are assumptions.
+    """
+
+    name: str
+    range_rms_mm: float
+    angle_rms_arcsec: float
+    range_ppm: float = 0.0
+    vertical_angle_rms_arcsec: float | None = None
+    step_mm_at_10m: float = 2.0
+    min_range_m: float = 1.0
+    max_range_m: float = 120.0
+    vertical_fov_deg: tuple[float, float] = (-45.0, 90.0)
+    measurement_rate_hz: float | None = None
+    levelling_rms_arcsec: float | None = None
+    label: str = ""
+    source: str = "user-defined"
+    notes: str = ""
+    extra: Mapping[str, Any] = field(default_factory=dict, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.name, str) or not self.name.strip():
+            raise InputError("Scanner name must be a non-empty text, e.g. name='my-p20'")
+        who = f"Scanner {self.name!r}"
+        positive = {
+            "range_rms_mm": "mm",
+            "angle_rms_arcsec": "arc-seconds",
+            "step_mm_at_10m": "mm",
+            "max_range_m": "m",
+        }
+        optional_positive = {
+            "vertical_angle_rms_arcsec": "arc-seconds",
+            "measurement_rate_hz": "points/s",
+            "levelling_rms_arcsec": "arc-seconds",
+        }
+        for name, unit in positive.items():
+            self._set(
+                name, _number(getattr(self, name), f"{who}: {name}", unit, lo=0.0, open_lo=True)
+            )
+        for name, unit in optional_positive.items():
+            if getattr(self, name) is not None:
+                value = _number(getattr(self, name), f"{who}: {name}", unit, lo=0.0, open_lo=True)
+                self._set(name, value)
+        self._set("range_ppm", _number(self.range_ppm, f"{who}: range_ppm", "ppm", lo=0.0))
+        self._set("min_range_m", _number(self.min_range_m, f"{who}: min_range_m", "m", lo=0.0))
+        if self.min_range_m >= self.max_range_m:
+            raise InputError(
+                f"{who}: min_range_m ({self.min_range_m:g} m) must be smaller than max_range_m "
+                f"({self.max_range_m:g} m)"
+            )
+        try:
+            lo, hi = (float(v) for v in self.vertical_fov_deg)
+        except (TypeError, ValueError):
+            raise InputError(
+                f"{who}: vertical_fov_deg must be two elevation angles (lowest, highest) in "
+                f"degrees, e.g. (-45, 90); got {self.vertical_fov_deg!r}"
+            ) from None
+        if not (-90.0 <= lo < hi <= 90.0):
+            raise InputError(
+                f"{who}: vertical_fov_deg must satisfy -90 <= lowest < highest <= 90 [deg]; "
+                f"got ({lo:g}, {hi:g})"
+            )
+        self._set("vertical_fov_deg", (lo, hi))
+        if not self.label:
+            self._set("label", self.name)
+
+    def _set(self, name: str, value: Any) -> None:
+        object.__setattr__(self, name, value)
+
+    # -- derived figures -------------------------------------------------------------------
+    @property
+    def tilt_rms_arcsec(self) -> float:
+        """RMS of the tilt angle ``m_ν`` [″] (the horizontal figure when none was given)."""
+        v = self.vertical_angle_rms_arcsec
+        return self.angle_rms_arcsec if v is None else v
+
+    def range_rms_at(self, distance_m: ArrayLike) -> np.ndarray:
+        """Ranging RMS ``m_S = a + b·D`` [mm] at ``distance_m`` [m] (b in ppm = mm/km)."""
+        d = as_float_array(distance_m, "distance_m")
+        return self.range_rms_mm + self.range_ppm * 1e-3 * d
+
+    # -- construction ---------------------------------------------------------------------
+    @classmethod
+    def from_name(cls, name: str) -> Scanner:
+        """The catalogue profile called ``name`` (case-insensitive).
+
+        Raises
+        ------
+        InputError
+            For an unknown name; the message lists the valid names.
+        """
+        cat = catalogue()
+        key = str(name).strip().lower()
+        if key in cat:
+            return cat[key]
+        close = difflib.get_close_matches(key, list(cat), n=1)
+        hint = f" Did you mean {close[0]!r}?" if close else ""
+        raise InputError(
+            f"Unknown scanner {name!r}.{hint} Valid names: {', '.join(cat)}. "
+            "For your own instrument pass a profile file (.toml) or build Scanner(...) in code."
+        )
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any]) -> Scanner:
+        """Build a profile from a mapping (e.g. one ``[[scanner]]`` table of a TOML file).
+
+        Unknown keys are kept in ``extra`` (so a calibration record survives a round trip).
+        """
+        known = {f.name for f in fields(cls)} - {"extra"}
+        kwargs = {k: v for k, v in data.items() if k in known}
+        extra = {k: v for k, v in data.items() if k not in known}
+        missing = [k for k in ("name", "range_rms_mm", "angle_rms_arcsec") if k not in kwargs]
+        if missing:
+            raise InputError(
+                f"Scanner profile {data.get('name', '<unnamed>')!r} lacks {', '.join(missing)}; "
+                "a profile needs at least name, range_rms_mm and angle_rms_arcsec"
+            )
+        if "vertical_fov_deg" in kwargs:
+            kwargs["vertical_fov_deg"] = tuple(kwargs["vertical_fov_deg"])
+        return cls(**kwargs, extra=extra)
+
+    @classmethod
+    def from_file(cls, path: str | Path, name: str | None = None) -> Scanner:
+        """Read a profile from a TOML file in the catalogue's format.
+
+        A file with several ``[[scanner]]`` tables needs ``name`` to pick one.
+        """
+        scanners = read_scanner_file(path)
+        if name is None:
+            if len(scanners) == 1:
+                return scanners[0]
+            raise InputError(
+                f"{path} holds {len(scanners)} scanner profiles "
+                f"({', '.join(s.name for s in scanners)}); say which one with name=..."
+            )
+        for s in scanners:
+            if s.name == name:
+                return s
+        raise InputError(
+            f"{path} has no scanner {name!r}; it has {', '.join(s.name for s in scanners)}"
+        )
+
+    # -- output ---------------------------------------------------------------------------
+    def to_dict(self) -> dict[str, Any]:
+        """Plain mapping of every set field (None left out), ``extra`` merged in."""
+        d = asdict(self)
+        extra = d.pop("extra")
+        d["vertical_fov_deg"] = list(self.vertical_fov_deg)
+        d = {k: v for k, v in d.items() if v is not None}
+        d.update(extra)
+        return d
+
+    def to_toml(self) -> str:
+        """This profile as one ``[[scanner]]`` table of the catalogue's TOML format."""
+        lines = ["[[scanner]]"]
+        for key, value in self.to_dict().items():
+            lines.append(f"{key} = {_toml_value(value)}")
+        return "\n".join(lines) + "\n"
+
+    def save(self, path: str | Path) -> Path:
+        """Write this profile as a TOML file (atomically: a good file is never half-replaced)."""
+        from planner.io import write_text_atomic
+
+        return write_text_atomic(path, _TOML_HEADER + "\n" + self.to_toml())
+
+
+_TOML_HEADER = "# tls-planner scanner profile (units: mm, ppm, arc-seconds, m, deg)\n"
+
+
+def _number(value: Any, what: str, unit: str, *, lo: float, open_lo: bool = False) -> float:
+    if isinstance(value, bool) or not isinstance(value, int | float | np.integer | np.floating):
+        raise InputError(f"{what} must be a number [{unit}]; got {value!r}")
+    v = float(value)
+    rule = f"> {lo:g}" if open_lo else f">= {lo:g}"
+    if not math.isfinite(v) or (v <= lo if open_lo else v < lo):
+        raise InputError(f"{what} must be a finite number {rule} [{unit}]; got {v!r}")
+    return v
+
+
+def _toml_value(value: Any) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, int | float):
+        return repr(float(value))
+    if isinstance(value, str):
+        return json.dumps(value, ensure_ascii=False)
+    if isinstance(value, list | tuple):
+        return "[" + ", ".join(_toml_value(v) for v in value) + "]"
+    if isinstance(value, Mapping):
+        return "{ " + ", ".join(f"{k} = {_toml_value(v)}" for k, v in value.items()) + " }"
+    raise InputError(f"cannot write {value!r} into a scanner profile (numbers, text, lists only)")
+
+
+def _parse_toml(text: str, origin: str) -> list[Scanner]:
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(
+            f"{origin} is not valid TOML ({exc}); see planner/data/scanners.toml"
+        ) from None
+    tables = data.get("scanner")
+    if tables is None and "name" in data:
+        tables = [data]  # a single profile written without the [[scanner]] header
+    if not tables or not isinstance(tables, list):
+        raise InputError(
+            f"{origin} holds no [[scanner]] tables; see planner/data/scanners.toml for the format"
+        )
+    return [Scanner.from_dict(t) for t in tables]
+
+
+def read_scanner_file(path: str | Path) -> list[Scanner]:
+    """Every profile in a scanner TOML file."""
+    p = Path(path)
+    if not p.is_file():
+        raise InputError(f"scanner profile file {str(p)!r} does not exist")
+    try:
+        text = p.read_text(encoding="utf-8")
+    except UnicodeDecodeError:
+        raise InputError(f"{p} is not a UTF-8 text file; a scanner profile is TOML text") from None
+    return _parse_toml(text, str(p))
+
+
+@cache
+def catalogue() -> dict[str, Scanner]:
+    """The shipped profiles by name, in file order."""
+    text = resources.files("planner.data").joinpath("scanners.toml").read_text(encoding="utf-8")
+    return {s.name: s for s in _parse_toml(text, "planner/data/scanners.toml")}
+
+
+def load_scanner(spec: Scanner | str | Path) -> Scanner:
+    """A Scanner from a Scanner, a catalogue name, or the path of a profile file."""
+    if isinstance(spec, Scanner):
+        return spec
+    text = str(spec)
+    if isinstance(spec, Path) or text.endswith(".toml") or Path(text).is_file():
+        return Scanner.from_file(text)
+    return Scanner.from_name(text)

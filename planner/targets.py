@@ -1,0 +1,193 @@
+"""Registration target sizing: Sossa's 2d / 4d rule and a user's target inventory.
+
+Reference: B. Sossa (2018), seeds 000/001; MODEL.md §5. A target is usable at a distance
+when it spans enough scan points to fit its surface unambiguously:
+
+* flat (plane): 3 non-collinear points span d, plus one d for the beam missing the ideal
+  spots → **2d**;
+* sphere: 5 points on two scan lines span 3d, plus d → **4d**;
+* cylinder: 9 points on three scan lines span 3d, plus d → **4d**;
+
+where d = step_10m · D / 10 m is the point spacing (Table 1). A flat target seen at an
+incidence θ from its normal has its points stretched by 1/cos θ along the tilt, so it needs
+2d / cos θ (a departure from the paper, which treats targets square to the beam).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import pandas as pd
+from numpy.typing import ArrayLike
+
+from planner._array import as_float_array, check_range, like_input
+from planner.errors import InputError
+from planner.scanner import Scanner
+from planner.spacing import point_spacing_mm, resolve_step_mm
+
+__all__ = [
+    "DEFAULT_INVENTORY",
+    "SPACING_FACTOR",
+    "TARGET_TYPES",
+    "TargetItem",
+    "choose_target",
+    "max_target_distance_m",
+    "min_target_size_mm",
+    "recommend_targets",
+]
+
+#: The scan step Sossa's tables use [mm at 10 m].
+SOSSA_STEP_MM_AT_10M = 2.0
+
+#: Minimum target size in units of the point spacing d (Sossa, Table 2).
+SPACING_FACTOR: dict[str, int] = {"flat": 2, "sphere": 4, "cylinder": 4}
+TARGET_TYPES: tuple[str, ...] = tuple(SPACING_FACTOR)
+
+
+def _check_type(target_type: str) -> str:
+    t = str(target_type).strip().lower()
+    if t not in SPACING_FACTOR:
+        raise InputError(
+            f"target type must be one of {', '.join(TARGET_TYPES)}; got {target_type!r}"
+        )
+    return t
+
+
+def _incidence_factor(target_type: str, incidence_deg: ArrayLike) -> np.ndarray:
+    inc = check_range(
+        as_float_array(incidence_deg, "incidence_deg"),
+        "incidence_deg",
+        "deg",
+        hi=90.0,
+        absolute=True,
+    )
+    if target_type != "flat":
+        return np.ones_like(inc)
+    with np.errstate(divide="ignore"):
+        return 1.0 / np.cos(np.radians(inc))
+
+
+def min_target_size_mm(
+    distance_m: ArrayLike,
+    target_type: str,
+    *,
+    step_mm_at_10m: float | None = None,
+    scanner: Scanner | None = None,
+    incidence_deg: ArrayLike = 0.0,
+) -> Any:
+    """Minimum size [mm] of a ``flat`` (side), ``sphere`` or ``cylinder`` (diameter) target.
+
+    ``2d`` for flat, ``4d`` for spheres and cylinders (Sossa, Table 2), d the point spacing
+    at ``distance_m`` for the scan step (``step_mm_at_10m``, else the scanner's, else 2 mm —
+    the paper's value). A flat target at ``incidence_deg`` from square-on needs 2d / cos θ.
+
+    Examples
+    --------
+    >>> min_target_size_mm([50, 350], "sphere", step_mm_at_10m=2.0).tolist()
+    [40.0, 280.0]
+    """
+    t = _check_type(target_type)
+    step = resolve_step_mm(scanner, step_mm_at_10m, default=SOSSA_STEP_MM_AT_10M)
+    d = point_spacing_mm(distance_m, step_mm_at_10m=step)
+    size = SPACING_FACTOR[t] * np.asarray(d) * _incidence_factor(t, incidence_deg)
+    return like_input(np.asarray(size, dtype=float), distance_m)
+
+
+def max_target_distance_m(
+    size_mm: ArrayLike,
+    target_type: str,
+    *,
+    step_mm_at_10m: float | None = None,
+    scanner: Scanner | None = None,
+    incidence_deg: ArrayLike = 0.0,
+) -> Any:
+    """Largest distance [m] at which a target of ``size_mm`` still qualifies (inverse rule)."""
+    t = _check_type(target_type)
+    step = resolve_step_mm(scanner, step_mm_at_10m, default=SOSSA_STEP_MM_AT_10M)
+    size = check_range(as_float_array(size_mm, "size_mm"), "size_mm", "mm", lo=0.0)
+    dist = size * 10.0 / (SPACING_FACTOR[t] * step * _incidence_factor(t, incidence_deg))
+    return like_input(np.asarray(dist, dtype=float), size_mm)
+
+
+@dataclass(frozen=True)
+class TargetItem:
+    """One kind of target a surveyor owns: a name, a type and its size [mm]."""
+
+    name: str
+    type: str
+    size_mm: float
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "type", _check_type(self.type))
+        size = float(self.size_mm)
+        if not np.isfinite(size) or size <= 0:
+            raise InputError(
+                f"target {self.name!r}: size_mm must be > 0 [mm]; got {self.size_mm!r}"
+            )
+        object.__setattr__(self, "size_mm", size)
+
+
+#: Sossa's practice: standard spheres 200 mm (sometimes 400 mm), cylindrical site objects at
+#: most ~150 mm, flat surfaces of 70 mm side.
+DEFAULT_INVENTORY: tuple[TargetItem, ...] = (
+    TargetItem("flat-70", "flat", 70.0),
+    TargetItem("sphere-200", "sphere", 200.0),
+    TargetItem("sphere-400", "sphere", 400.0),
+    TargetItem("cylinder-150", "cylinder", 150.0),
+)
+
+
+def as_inventory(
+    items: Iterable[TargetItem | tuple[str, str, float]] | None,
+) -> tuple[TargetItem, ...]:
+    """An inventory from TargetItems or ``(name, type, size_mm)`` tuples; None → default."""
+    if items is None:
+        return DEFAULT_INVENTORY
+    out = tuple(i if isinstance(i, TargetItem) else TargetItem(*i) for i in items)
+    if not out:
+        raise InputError("the target inventory is empty; list at least one (name, type, size_mm)")
+    return out
+
+
+def recommend_targets(
+    distance_m: float,
+    inventory: Sequence[TargetItem] | None = None,
+    *,
+    step_mm_at_10m: float | None = None,
+    scanner: Scanner | None = None,
+    incidence_deg: float = 0.0,
+) -> pd.DataFrame:
+    """Which inventory items qualify at ``distance_m``, and how far each one serves.
+
+    Returns a DataFrame with columns ``name, type, size_mm, min_size_mm, qualifies,
+    max_distance_m`` — one row per item, qualifying ones first, smallest first.
+    """
+    inv = as_inventory(inventory)
+    rows = []
+    for item in inv:
+        kw = {"step_mm_at_10m": step_mm_at_10m, "scanner": scanner, "incidence_deg": incidence_deg}
+        need = float(min_target_size_mm(distance_m, item.type, **kw))
+        rows.append(
+            {
+                "name": item.name,
+                "type": item.type,
+                "size_mm": item.size_mm,
+                "min_size_mm": need,
+                "qualifies": item.size_mm >= need,
+                "max_distance_m": float(max_target_distance_m(item.size_mm, item.type, **kw)),
+            }
+        )
+    df = pd.DataFrame(rows)
+    return df.sort_values(["qualifies", "size_mm"], ascending=[False, True], ignore_index=True)
+
+
+def choose_target(
+    min_size_mm: float, target_type: str, inventory: Sequence[TargetItem] | None = None
+) -> TargetItem | None:
+    """The smallest item of ``target_type`` at least ``min_size_mm`` big, or None."""
+    t = _check_type(target_type)
+    fits = [i for i in as_inventory(inventory) if i.type == t and i.size_mm >= min_size_mm]
+    return min(fits, key=lambda i: i.size_mm) if fits else None

@@ -1,0 +1,28 @@
+"""Shared fixtures: the paper's scanner and a few named test scanners."""
+
+from __future__ import annotations
+
+import pytest
+
+from planner import Scanner
+
+
+@pytest.fixture(scope="session")
+def paper_scanner() -> Scanner:
+    """Seed 003's worked example: m_S = 4 mm, m_β = m_ν = 12.4″, station errors zero."""
+    return Scanner.from_name("leica-4mm-60urad")
+
+
+@pytest.fixture(scope="session")
+def ppm_scanner() -> Scanner:
+    """Ranging a + b·D (2 mm + 100 ppm, seed 004's requirement), distinct H and V angles."""
+    return Scanner(
+        name="ppm-test",
+        range_rms_mm=2.0,
+        range_ppm=100.0,
+        angle_rms_arcsec=12.4,
+        vertical_angle_rms_arcsec=20.0,
+        step_mm_at_10m=2.0,
+        min_range_m=0.5,
+        max_range_m=120.0,
+    )

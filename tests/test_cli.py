@@ -1,0 +1,108 @@
+"""The command line: tables for any scanner, the target table, errors with exit code 2."""
+
+from __future__ import annotations
+
+import io
+import subprocess
+import sys
+from contextlib import redirect_stderr, redirect_stdout
+
+import pandas as pd
+import pytest
+
+from planner.cli import main
+
+
+def run(*argv: str) -> tuple[int, str, str]:
+    out, err = io.StringIO(), io.StringIO()
+    with redirect_stdout(out), redirect_stderr(err):
+        try:
+            code = main(list(argv))
+        except SystemExit as exc:  # argparse usage errors
+            code = int(exc.code or 0)
+    return code, out.getvalue(), err.getvalue()
+
+
+def test_accuracy_prints_both_tables_for_the_paper_scanner():
+    code, out, _ = run("accuracy", "--scanner", "leica-4mm-60urad")
+    assert code == 0
+    assert "Table 1 layout" in out and "Table 2 layout" in out
+    rows_120 = [
+        [float(v) for v in ln.split()[1:]] for ln in out.splitlines() if ln.startswith("120")
+    ]
+    # the 120 m row of Table 1 (m_x then m_y at γ = 0/30/60) and of Table 2 (ν = 0/30/60/90)
+    assert rows_120 == [[7.2, 6.6, 5.0, 4.0, 5.0, 6.6], [10.2, 9.8, 8.8, 8.2]]
+
+
+def test_accuracy_csv_for_chosen_distances_and_angles():
+    code, out, _ = run(
+        "accuracy",
+        "--scanner",
+        "leica-p20-lab",
+        "--distances",
+        "5,25",
+        "--angles",
+        "0,45",
+        "--tilts",
+        "0",
+        "--format",
+        "csv",
+    )
+    assert code == 0
+    df = pd.read_csv(io.StringIO(out), index_col=0)
+    assert list(df.index) == [5.0, 25.0]
+    assert df.loc[5.0, "m_y γ=0"] == pytest.approx(1.7, abs=1e-3)  # mm: P20 lab ranging
+    assert df.loc[25.0, "m_x γ=0"] == pytest.approx(25_000 / 206264.806 * 284.06, abs=1e-3)
+
+
+def test_targets_table_and_inventory():
+    code, out, _ = run("targets", "--scanner", "leica-4mm-60urad")
+    assert code == 0
+    rows = {ln.split()[0]: ln.split()[1:] for ln in out.splitlines() if ln.split()}
+    assert rows["flat"] == ["20", "40", "60", "80", "100", "120", "140"]
+    assert rows["sphere"] == ["40", "80", "120", "160", "200", "240", "280"]
+    assert "cylinder-150" in out and "188" in out  # serves to 187.5 m
+
+
+def test_scanners_lists_the_catalogue():
+    code, out, _ = run("scanners", "-v")
+    assert code == 0
+    for name in [
+        "leica-4mm-60urad",
+        "leica-hds3000",
+        "faro-focus3d-lab",
+        "leica-hds3000-lab",
+        "leica-p20-lab",
+    ]:
+        assert name in out
+    assert "source:" in out
+
+
+@pytest.mark.parametrize(
+    ("argv", "message"),
+    [
+        (["accuracy", "--scanner", "nope"], "Unknown scanner 'nope'"),
+        (["accuracy", "--distances", "10,x"], "comma-separated numbers"),
+        (["accuracy", "--distances", "-10"], "distance_m must satisfy distance_m >= 0"),
+        (["accuracy", "--angles", "100"], "-90 <= gamma_deg <= 90"),
+        (["targets", "--step-mm-at-10m", "0"], "step_mm_at_10m must be one number > 0"),
+        (["accuracy", "--scanner", "missing.toml"], "does not exist"),
+    ],
+)
+def test_bad_input_exits_2_with_a_message(argv, message):
+    code, out, err = run(*argv)
+    assert out == ""  # nothing printed on stdout
+    assert code == 2
+    assert message in err
+    assert "Traceback" not in err
+
+
+def test_python_dash_m_and_default_job():
+    proc = subprocess.run(
+        [sys.executable, "-m", "planner", "accuracy", "--distances", "10"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert proc.returncode == 0, proc.stderr
+    assert "0.6" in proc.stdout
