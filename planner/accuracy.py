@@ -21,7 +21,55 @@ from planner.errors import InputError
 from planner.scanner import Scanner
 from planner.units import RHO_ARCSEC
 
-__all__ = ["height_rms", "planimetric_rms", "ranging_rms_mm"]
+__all__ = [
+    "eq2_variances",
+    "eq4_variance",
+    "height_rms",
+    "planimetric_rms",
+    "ranging_rms_mm",
+]
+
+MM_PER_M_PER_ARCSEC = 1000.0 / RHO_ARCSEC  # lateral mm per metre of distance per arc-second
+
+
+def eq2_variances(
+    distance_m: np.ndarray,
+    cos2_gamma: np.ndarray,
+    range_rms_mm: np.ndarray,
+    angle_rms_arcsec: float,
+    station_var_mm2: tuple[float, float] = (0.0, 0.0),
+) -> tuple[np.ndarray, np.ndarray]:
+    """Eq. 2 of seed 003 as variances [mm²], from cos²γ (no validation: the fast path).
+
+    ``m_x² = m_xc² + m_S²·sin²γ + (D·m_β/ρ)²·cos²γ`` and
+    ``m_y² = m_yc² + m_S²·cos²γ + (D·m_β/ρ)²·sin²γ`` (cos β = sin γ).
+    """
+    ang2 = np.square(distance_m * (MM_PER_M_PER_ARCSEC * angle_rms_arcsec))
+    ms2 = np.square(range_rms_mm)
+    sin2 = 1.0 - cos2_gamma
+    var_x = station_var_mm2[0] + ms2 * sin2 + ang2 * cos2_gamma
+    var_y = station_var_mm2[1] + ms2 * cos2_gamma + ang2 * sin2
+    return var_x, var_y
+
+
+def eq4_variance(
+    slope_distance_m: np.ndarray,
+    sin2_nu: np.ndarray,
+    range_rms_mm: np.ndarray,
+    tilt_rms_arcsec: float,
+    initial_distance_m: np.ndarray,
+    initial_tilt_rms_arcsec: float,
+) -> np.ndarray:
+    """Eq. 4 of seed 003 as a variance [mm²], from sin²ν (no validation: the fast path).
+
+    ``m_z² = m_S²·sin²ν + (S·m_ν/ρ)²·cos²ν + (S_0·m_ν0/ρ)²``.
+    """
+    k = MM_PER_M_PER_ARCSEC
+    return (
+        np.square(range_rms_mm) * sin2_nu
+        + np.square(slope_distance_m * (k * tilt_rms_arcsec)) * (1.0 - sin2_nu)
+        + np.square(initial_distance_m * (k * initial_tilt_rms_arcsec))
+    )
 
 
 def ranging_rms_mm(distance_m: ArrayLike, scanner: Scanner) -> Any:
@@ -100,14 +148,10 @@ def planimetric_rms(
     )
     m_xc, m_yc = station_rms_pair(station_rms_mm)
     s_for_range = d if ranging_distance_m is None else ranging_distance_m
-    m_s = ranging_rms_mm(s_for_range, scanner)
-    angular = d * 1000.0 / RHO_ARCSEC * scanner.angle_rms_arcsec  # (D/ρ)·m_β, D in mm
-    g_rad = np.radians(g)
-    cos2_beta = np.sin(g_rad) ** 2
-    sin2_beta = np.cos(g_rad) ** 2
-    m_s2 = np.square(m_s)
-    m_x = np.sqrt(m_xc**2 + m_s2 * cos2_beta + angular**2 * sin2_beta)
-    m_y = np.sqrt(m_yc**2 + m_s2 * sin2_beta + angular**2 * cos2_beta)
+    m_s = np.asarray(ranging_rms_mm(s_for_range, scanner))
+    cos2_gamma = np.cos(np.radians(g)) ** 2
+    var_x, var_y = eq2_variances(d, cos2_gamma, m_s, scanner.angle_rms_arcsec, (m_xc**2, m_yc**2))
+    m_x, m_y = np.sqrt(var_x), np.sqrt(var_y)
     return like_input(m_x, distance_m, gamma_deg), like_input(m_y, distance_m, gamma_deg)
 
 
@@ -172,12 +216,6 @@ def height_rms(
                 lo=0.0,
             )
         )
-    m_s = scanner.range_rms_at(s)
-    nu_rad = np.radians(nu)
-    mm_per_arcsec = s * 1000.0 / RHO_ARCSEC
-    m_z = np.sqrt(
-        (m_s * np.sin(nu_rad)) ** 2
-        + (mm_per_arcsec * np.cos(nu_rad) * m_nu) ** 2
-        + (s0 * 1000.0 / RHO_ARCSEC * m_nu0) ** 2
-    )
+    sin2_nu = np.sin(np.radians(nu)) ** 2
+    m_z = np.sqrt(eq4_variance(s, sin2_nu, scanner.range_rms_at(s), m_nu, s0, m_nu0))
     return like_input(m_z, slope_distance_m, nu_deg)

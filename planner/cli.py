@@ -27,6 +27,7 @@ from planner.targets import recommend_targets
 DEFAULT_SCANNER = "leica-4mm-60urad"
 
 EXIT_OK = 0
+EXIT_UNMET = 1
 EXIT_BAD_INPUT = 2
 
 
@@ -146,11 +147,118 @@ def cmd_figures(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+class _StderrProgress:
+    """Progress on stderr: a bar on a terminal, a line per stage otherwise."""
+
+    def __init__(self, quiet: bool) -> None:
+        self.quiet = quiet
+        self.tty = sys.stderr.isatty()
+        self.last = ""
+
+    def __call__(self, fraction: float, message: str) -> None:
+        if self.quiet:
+            return
+        stage = message.split(" ")[0]
+        if self.tty:
+            bar = "#" * int(30 * fraction)
+            sys.stderr.write(f"\r[{bar:<30}] {100 * fraction:3.0f}% {message[:50]:<50}")
+            if fraction >= 1.0:
+                sys.stderr.write("\n")
+            sys.stderr.flush()
+        elif stage != self.last:
+            print(f"planner: {message}", file=sys.stderr)
+        self.last = stage
+
+
+def _ids(text: str) -> list[str]:
+    ids = [v.strip() for v in text.split(",") if v.strip()]
+    if not ids:
+        raise argparse.ArgumentTypeError("expected building ids separated by commas")
+    return ids
+
+
+def _xy(text: str) -> float | tuple[float, float]:
+    v = _floats(text)
+    if len(v) == 1:
+        return v[0]
+    if len(v) == 2:
+        return (v[0], v[1])
+    raise argparse.ArgumentTypeError("expected one number (m_x = m_y) or two (m_x,m_y) in mm")
+
+
+def run_plan(args: argparse.Namespace) -> int:
+    from planner.plan import plan
+    from planner.requirements import PlanSettings, Requirements
+    from planner.siteio import default_site, read_site
+
+    if args.site:
+        site = read_site(
+            args.site,
+            default_height_m=args.height,
+            buildings=args.buildings,
+            repair=args.make_valid,
+        )
+    else:
+        site = default_site(buildings=args.buildings)
+    sc = load_scanner(args.scanner)
+    req = Requirements(
+        max_xy_mm=args.max_xy_mm,
+        max_z_mm=args.max_z_mm,
+        max_gamma_deg=args.max_gamma_deg,
+        max_spacing_mm=args.max_spacing_mm,
+        min_range_m=args.min_range_m,
+        max_range_m=args.max_range_m,
+        stations_per_sample=args.stations_per_sample,
+    )
+    settings = PlanSettings(
+        grid_m=args.grid_m,
+        clearance_m=args.clearance_m,
+        sample_spacing_m=args.sample_spacing_m,
+        sample_height_step_m=args.sample_height_step_m,
+        instrument_height_m=args.instrument_height_m,
+        station_rms_mm=args.station_rms_mm,
+        step_mm_at_10m=args.step_mm_at_10m,
+        time_limit_s=args.time_limit_s,
+        method=args.method,
+    )
+    result = plan(site, sc, req, settings, progress=_StderrProgress(args.quiet))
+    written = result.save(args.out)
+    print(result.summary())
+    unmet = result.unmet
+    if len(unmet):
+        shown = 20
+        print(
+            f"\nUnmet samples ({len(unmet)}"
+            + (f", first {shown}" if len(unmet) > shown else "")
+            + "):"
+        )
+        cols = ["building_id", "facade_id", "sample_id", "x", "y", "z", "reason"]
+        print(unmet[cols].head(shown).to_string(index=False, float_format=lambda v: f"{v:.2f}"))
+        if len(unmet) > shown:
+            print(
+                f"… all {len(unmet)} in coverage.csv (meets = False) "
+                "and plan.geojson (layer 'unmet')"
+            )
+    print(f"\nWrote {', '.join(p.name for p in written)} to {args.out}")
+    return EXIT_OK if result.meets_all else EXIT_UNMET
+
+
 def cmd_default(args: argparse.Namespace) -> int:
-    """The main job on the built-in defaults."""
-    sc = Scanner.from_name(DEFAULT_SCANNER)
-    print_accuracy(sc, PAPER_DISTANCES_M, PAPER_GAMMAS_DEG, PAPER_NUS_DEG, 0.0, "text")
-    return EXIT_OK
+    """The main job on the built-in defaults: plan the default site."""
+    args = build_parser().parse_args(
+        [
+            "plan",
+            "--scanner",
+            DEFAULT_SCANNER,
+            "--max-xy-mm",
+            "5",
+            "--max-z-mm",
+            "5",
+            "--out",
+            "out/default-plan",
+        ]
+    )
+    return args.func(args)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -208,6 +316,85 @@ def build_parser() -> argparse.ArgumentParser:
     )
     t.add_argument("--format", choices=["text", "csv"], default="text")
     t.set_defaults(func=cmd_targets)
+
+    pl = sub.add_parser(
+        "plan",
+        help="plan stations and targets for a site",
+        description="Exit codes: 0 every requirement met; 1 plan written but some samples unmet "
+        "(listed); 2 bad input (message, nothing written).",
+    )
+    pl.add_argument(
+        "site",
+        nargs="?",
+        metavar="SITE_FILE",
+        help=".geojson, .wkt or .csv in a projected CRS; default: the built-in site",
+    )
+    pl.add_argument(
+        "--height",
+        type=float,
+        default=None,
+        metavar="H",
+        help="height [m] for buildings and obstacles that have none",
+    )
+    pl.add_argument(
+        "--buildings",
+        type=_ids,
+        default=None,
+        metavar="ID,ID,...",
+        help="ids of the buildings to plan; all others only block the beam",
+    )
+    pl.add_argument(
+        "--make-valid",
+        action="store_true",
+        help="repair invalid outlines (repeated vertices, make_valid) instead of stopping",
+    )
+    pl.add_argument("--scanner", required=True, metavar="NAME|FILE.toml")
+    pl.add_argument(
+        "--max-xy-mm",
+        type=_xy,
+        required=True,
+        metavar="X[,Y]",
+        help="largest m_x and m_y in the facade frame [mm]",
+    )
+    pl.add_argument("--max-z-mm", type=float, required=True, metavar="Z", help="largest m_z [mm]")
+    pl.add_argument(
+        "--max-gamma-deg",
+        type=float,
+        default=75.0,
+        metavar="G",
+        help="largest deviation from the facade normal [deg] (default 75)",
+    )
+    pl.add_argument(
+        "--max-spacing-mm",
+        type=float,
+        default=None,
+        help="largest point spacing on the facade [mm]",
+    )
+    pl.add_argument("--min-range-m", type=float, default=None)
+    pl.add_argument("--max-range-m", type=float, default=None)
+    pl.add_argument(
+        "--stations-per-sample",
+        type=int,
+        default=1,
+        help="stations that must each meet the requirements at every sample",
+    )
+    pl.add_argument("--grid-m", type=float, default=2.0, help="candidate grid spacing [m]")
+    pl.add_argument(
+        "--clearance-m",
+        type=float,
+        default=1.0,
+        help="free space around buildings and obstacles [m]",
+    )
+    pl.add_argument("--sample-spacing-m", type=float, default=2.0)
+    pl.add_argument("--sample-height-step-m", type=float, default=2.0)
+    pl.add_argument("--instrument-height-m", type=float, default=1.5)
+    pl.add_argument("--station-rms-mm", type=_xy, default=0.0, metavar="MXC[,MYC]")
+    pl.add_argument("--step-mm-at-10m", type=float, default=None)
+    pl.add_argument("--time-limit-s", type=float, default=20.0)
+    pl.add_argument("--method", choices=["auto", "milp", "greedy"], default="auto")
+    pl.add_argument("--out", required=True, metavar="DIR", help="folder for the plan's files")
+    pl.add_argument("-q", "--quiet", action="store_true", help="no progress messages")
+    pl.set_defaults(func=run_plan)
 
     f = sub.add_parser("figures", help="regenerate the figures in figures/")
     f.add_argument("--out", default="figures", help="output folder (default figures/)")

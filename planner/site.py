@@ -1,0 +1,251 @@
+"""The site: buildings to plan, obstacles, no-go areas, boundary — validated before any work.
+
+Geometry is shapely 2, in the user's projected metric CRS (metres), kept as given: results
+are written back in the same coordinates. Heights are metres above the (flat) ground.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+import shapely
+from shapely.geometry import MultiPolygon, Polygon
+from shapely.geometry.base import BaseGeometry
+
+from planner.errors import InputError
+
+__all__ = ["Area", "Building", "Obstacle", "Site", "repair_geometry"]
+
+Polygonal = Polygon | MultiPolygon
+
+#: Overlaps smaller than this are taken as touching (digitising noise) [m²].
+OVERLAP_TOLERANCE_M2 = 0.01
+#: Consecutive vertices closer than this make a zero-length edge [m].
+ZERO_EDGE_M = 1e-3
+
+
+@dataclass(frozen=True)
+class Building:
+    """A building: footprint (holes are courtyards) and height [m] above the ground.
+
+    ``planned`` buildings get their facades scanned; the others only block the beam.
+    """
+
+    id: str
+    footprint: Polygonal
+    height_m: float
+    planned: bool = True
+    name: str = ""
+
+
+@dataclass(frozen=True)
+class Obstacle:
+    """Something that blocks the beam and where no station stands: a wall, a tree, a shed."""
+
+    id: str
+    geometry: Polygonal
+    height_m: float
+    kind: str = "obstacle"
+
+
+@dataclass(frozen=True)
+class Area:
+    """A no-go area where no station may stand (a road, water)."""
+
+    id: str
+    geometry: Polygonal
+
+
+def repair_geometry(geom: BaseGeometry) -> BaseGeometry:
+    """The explicit repair offered for bad polygons: drop repeated vertices, then make_valid.
+
+    Only the polygonal part of the result is kept. Never applied silently.
+    """
+    fixed = shapely.make_valid(shapely.remove_repeated_points(geom, ZERO_EDGE_M))
+    polys = [g for g in shapely.get_parts(fixed) if isinstance(g, Polygon) and not g.is_empty]
+    if not polys:
+        return Polygon()
+    return polys[0] if len(polys) == 1 else MultiPolygon(polys)
+
+
+def _where(what: str, ident: str) -> str:
+    return f"{what} {ident!r}"
+
+
+def _check_polygonal(geom: BaseGeometry, who: str) -> None:
+    if geom is None or geom.is_empty:
+        raise InputError(f"{who} has an empty geometry; remove the feature or draw its outline")
+    if not isinstance(geom, Polygon | MultiPolygon):
+        hint = (
+            " (buffer a wall line by half its thickness)" if geom.geom_type == "LineString" else ""
+        )
+        raise InputError(f"{who} is a {geom.geom_type}; it must be a Polygon or MultiPolygon{hint}")
+    coords = shapely.get_coordinates(geom)
+    if not np.isfinite(coords).all():
+        raise InputError(f"{who} has coordinates that are not finite numbers (NaN or infinity)")
+    for ring in _rings(geom):
+        xy = np.asarray(ring.coords)[:, :2]
+        step = np.hypot(*np.diff(xy, axis=0).T)
+        bad = np.flatnonzero(step < ZERO_EDGE_M)
+        if bad.size:
+            x, y = xy[bad[0]]
+            raise InputError(
+                f"{who} has a zero-length edge (a repeated vertex) at ({x:.3f}, {y:.3f}); "
+                "remove the duplicate vertex, or repair the geometry explicitly "
+                "(repair=True, --make-valid)"
+            )
+    if not geom.is_valid:
+        reason = shapely.is_valid_reason(geom)
+        raise InputError(
+            f"{who} is not a valid polygon: {reason}; fix the outline in your CAD/GIS, or repair "
+            "it explicitly with make_valid (repair=True, --make-valid)"
+        )
+
+
+def _rings(geom: Polygonal) -> Iterable:
+    for poly in shapely.get_parts(geom):
+        yield poly.exterior
+        yield from poly.interiors
+
+
+def _check_height(h: float, who: str) -> float:
+    try:
+        v = float(h)
+    except (TypeError, ValueError):
+        raise InputError(f"{who} has height {h!r}; give the height in metres as a number") from None
+    if not math.isfinite(v) or v <= 0:
+        raise InputError(f"{who} has height {h!r}; it must be a number > 0 [m]")
+    return v
+
+
+def _looks_like_degrees(geoms: Sequence[BaseGeometry]) -> bool:
+    """Lon/lat degrees: all coordinates in range and every outline smaller than 1 cm."""
+    coords = shapely.get_coordinates(list(geoms))
+    if not len(coords):
+        return False
+    in_range = (np.abs(coords[:, 0]) <= 180).all() and (np.abs(coords[:, 1]) <= 90).all()
+    if not in_range:
+        return False
+    sizes = [max(g.bounds[2] - g.bounds[0], g.bounds[3] - g.bounds[1]) for g in geoms]
+    return max(sizes) < 0.01
+
+
+@dataclass
+class Site:
+    """Buildings (planned or not), obstacles, no-go areas and an optional boundary.
+
+    Construction validates everything and raises :class:`InputError` naming the feature
+    and the fix: empty or invalid polygons, zero-length edges, bad heights, coordinates that
+    look like longitude/latitude, duplicate ids, obstacles overlapping buildings, buildings
+    overlapping each other, no building to plan, a boundary that does not hold them.
+    """
+
+    buildings: list[Building]
+    obstacles: list[Obstacle] = field(default_factory=list)
+    no_go: list[Area] = field(default_factory=list)
+    boundary: Polygonal | None = None
+    crs: str | None = None
+    name: str = "site"
+    warnings: list[str] = field(default_factory=list)
+
+    def __post_init__(self) -> None:
+        self.buildings = list(self.buildings)
+        self.obstacles = list(self.obstacles)
+        self.no_go = list(self.no_go)
+        seen: set[str] = set()
+        for b in self.buildings:
+            who = _where("building", b.id)
+            if b.id in seen:
+                raise InputError(f"{who} appears twice; building ids must be unique")
+            seen.add(b.id)
+            _check_polygonal(b.footprint, who)
+            object.__setattr__(b, "height_m", _check_height(b.height_m, who))
+        for o in self.obstacles:
+            who = _where(o.kind, o.id)
+            _check_polygonal(o.geometry, who)
+            object.__setattr__(o, "height_m", _check_height(o.height_m, who))
+        for a in self.no_go:
+            _check_polygonal(a.geometry, _where("no-go area", a.id))
+        if self.boundary is not None:
+            _check_polygonal(self.boundary, "the site boundary")
+        if not any(b.planned for b in self.buildings):
+            raise InputError(
+                "the site has no building to plan; add a building footprint with role "
+                "'building', or choose buildings to plan (--buildings ID,ID)"
+            )
+        everything = [b.footprint for b in self.buildings] + [o.geometry for o in self.obstacles]
+        if _looks_like_degrees(everything):
+            raise InputError(
+                "the coordinates look like longitude/latitude degrees (every outline is smaller "
+                "than 0.01 units); the planner works in metres: reproject the file to a projected "
+                "CRS (e.g. the local UTM zone) and try again"
+            )
+        self._check_overlaps()
+
+    def _check_overlaps(self) -> None:
+        foot = [b.footprint for b in self.buildings]
+        tree = shapely.STRtree(foot)
+        pairs = tree.query(foot, predicate="intersects")
+        for i, j in pairs.T:
+            if i < j:
+                area = shapely.intersection(foot[i], foot[j]).area
+                if area > OVERLAP_TOLERANCE_M2:
+                    a, b = self.buildings[i].id, self.buildings[j].id
+                    raise InputError(
+                        f"buildings {a!r} and {b!r} overlap by {area:.2f} m²; buildings may "
+                        "share walls but not ground: fix the outlines or remove the duplicate"
+                    )
+        if self.obstacles:
+            obs = [o.geometry for o in self.obstacles]
+            for i, j in tree.query(obs, predicate="intersects").T:
+                area = shapely.intersection(obs[i], foot[j]).area
+                if area > OVERLAP_TOLERANCE_M2:
+                    o, b = self.obstacles[i], self.buildings[j]
+                    raise InputError(
+                        f"{o.kind} {o.id!r} overlaps building {b.id!r} by {area:.2f} m²; "
+                        "clip the obstacle to the building's outline, or make it part of "
+                        "the building"
+                    )
+        if self.boundary is not None:
+            for b in self.planned:
+                if not shapely.covers(self.boundary.buffer(1e-6), b.footprint):
+                    raise InputError(
+                        f"building {b.id!r} is not inside the site boundary; enlarge the "
+                        "boundary or leave the building out of the plan"
+                    )
+
+    # -- views ----------------------------------------------------------------------------
+    @property
+    def planned(self) -> list[Building]:
+        """The buildings whose facades are to be scanned."""
+        return [b for b in self.buildings if b.planned]
+
+    @property
+    def blockers(self) -> list[tuple[str, Polygonal, float]]:
+        """Everything that blocks the beam: ``(id, polygon, height_m)`` of every building
+        (planned or not) and every obstacle."""
+        out = [(b.id, b.footprint, b.height_m) for b in self.buildings]
+        out += [(o.id, o.geometry, o.height_m) for o in self.obstacles]
+        return out
+
+    def select(self, building_ids: Sequence[str] | None) -> Site:
+        """The same site planning only ``building_ids`` (the others act as obstacles)."""
+        if building_ids is None:
+            return self
+        wanted = [str(i) for i in building_ids]
+        known = {b.id for b in self.buildings}
+        missing = [i for i in wanted if i not in known]
+        if missing:
+            shown = ", ".join(sorted(known)[:20]) + (" …" if len(known) > 20 else "")
+            raise InputError(
+                f"no building with id {', '.join(map(repr, missing))}; ids are: {shown}"
+            )
+        chosen = set(wanted)
+        return replace(
+            self,
+            buildings=[replace(b, planned=b.id in chosen) for b in self.buildings],
+            warnings=list(self.warnings),
+        )

@@ -1,0 +1,402 @@
+"""Reading a site from GeoJSON, WKT or a CSV of vertices; the built-in default site.
+
+All inputs are in a projected metric CRS; coordinates are kept as given.
+
+* **GeoJSON** — a FeatureCollection, a Feature or a bare geometry. Properties: ``role``
+  (``building`` — the default —, ``obstacle``, ``no-go``, ``boundary``), ``height`` (or
+  ``height_m``) in metres, ``id`` (else the Feature's ``id`` member, else its index),
+  ``plan`` (false: a building that only blocks the beam), ``kind``, ``name``. A legacy
+  ``crs`` member is kept and written back.
+* **WKT** — one geometry per line, optionally followed by ``; key=value`` pairs with the
+  same keys (``POLYGON ((...)); height=12; role=building; id=A``).
+* **CSV** — one row per vertex, with a header: ``id, x, y`` and optionally ``ring`` (0 the
+  outline, 1, 2, … holes), ``part`` (for MultiPolygons), ``height``, ``role``, ``plan``;
+  vertices in ring order.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+from collections import defaultdict
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+import shapely
+from shapely.errors import GEOSException, ShapelyError
+from shapely.geometry import MultiPolygon, Polygon, shape
+from shapely.geometry.base import BaseGeometry
+
+from planner.errors import InputError
+from planner.site import Area, Building, Obstacle, Site, repair_geometry
+
+__all__ = ["default_site", "read_site", "site_from_features", "site_from_geojson"]
+
+ROLES = ("building", "obstacle", "no-go", "boundary")
+_ROLE_ALIASES = {"nogo": "no-go", "no_go": "no-go", "nogo-area": "no-go", "obstruction": "obstacle"}
+SUFFIXES = {".geojson": "geojson", ".json": "geojson", ".wkt": "wkt", ".txt": "wkt", ".csv": "csv"}
+
+
+@dataclass
+class Feature:
+    """One parsed input feature before validation."""
+
+    index: int
+    geometry: BaseGeometry | None
+    props: dict[str, Any]
+    feature_id: Any = None
+
+    @property
+    def ident(self) -> str:
+        for v in (self.props.get("id"), self.feature_id):
+            if v is not None and str(v).strip():
+                return str(v).strip()
+        return str(self.index)
+
+    def who(self) -> str:
+        return f"feature {self.index} (id {self.ident!r})"
+
+
+def _truthy(v: Any) -> bool:
+    if isinstance(v, str):
+        return v.strip().lower() not in ("false", "no", "0", "")
+    return bool(v)
+
+
+def site_from_features(
+    features: Sequence[Feature],
+    *,
+    default_height_m: float | None = None,
+    buildings: Sequence[str] | None = None,
+    repair: bool = False,
+    crs: str | None = None,
+    name: str = "site",
+) -> Site:
+    """Turn parsed features into a validated :class:`Site`."""
+    warnings: list[str] = []
+    blds: list[Building] = []
+    obstacles: list[Obstacle] = []
+    no_go: list[Area] = []
+    boundaries: list[BaseGeometry] = []
+    for f in features:
+        role = str(f.props.get("role", "building")).strip().lower()
+        role = _ROLE_ALIASES.get(role, role)
+        if role not in ROLES:
+            raise InputError(f"{f.who()} has role {role!r}; use one of {', '.join(ROLES)}")
+        geom = f.geometry
+        if geom is None:
+            raise InputError(f"{f.who()} has no geometry; remove it or draw its outline")
+        geom = shapely.force_2d(geom)
+        if repair:
+            repaired = repair_geometry(geom)
+            if not repaired.equals(geom):
+                warnings.append(f"{f.who()}: geometry repaired (repeated vertices, make_valid)")
+            geom = repaired
+        if role in ("building", "obstacle"):
+            height = f.props.get("height", f.props.get("height_m"))
+            if height is None or (isinstance(height, str) and not height.strip()):
+                if default_height_m is None:
+                    raise InputError(
+                        f"{role} {f.who()} has no height; add a 'height' property in metres, "
+                        "or give a default height (--height H)"
+                    )
+                height = default_height_m
+                warnings.append(f"{role} {f.ident!r} has no height; using {default_height_m:g} m")
+            if role == "building":
+                blds.append(
+                    Building(
+                        f.ident,
+                        geom,
+                        height,
+                        planned=_truthy(f.props.get("plan", True)),
+                        name=str(f.props.get("name", "")),
+                    )
+                )
+            else:
+                obstacles.append(
+                    Obstacle(f.ident, geom, height, kind=str(f.props.get("kind", "obstacle")))
+                )
+        elif role == "no-go":
+            no_go.append(Area(f.ident, geom))
+        else:
+            boundaries.append(geom)
+    if len(boundaries) > 1:
+        raise InputError(f"the file has {len(boundaries)} boundary features; keep one")
+    if not blds:
+        raise InputError(
+            "the file has no building footprint (a polygon with role 'building' or no role)"
+        )
+    site = Site(
+        buildings=blds,
+        obstacles=obstacles,
+        no_go=no_go,
+        boundary=boundaries[0] if boundaries else None,
+        crs=crs,
+        name=name,
+        warnings=warnings,
+    )
+    return site.select(buildings)
+
+
+# -- GeoJSON ------------------------------------------------------------------------------
+def _geojson_features(obj: Any, origin: str) -> tuple[list[Feature], str | None]:
+    if not isinstance(obj, dict) or "type" not in obj:
+        raise InputError(f"{origin} is JSON but not GeoJSON (no 'type' member)")
+    crs = None
+    if isinstance(obj.get("crs"), dict):
+        crs = str(obj["crs"].get("properties", {}).get("name") or "") or None
+    kind = obj["type"]
+    if kind == "FeatureCollection":
+        raw = obj.get("features")
+        if not isinstance(raw, list):
+            raise InputError(f"{origin}: a FeatureCollection needs a 'features' list")
+    elif kind == "Feature":
+        raw = [obj]
+    elif kind in (
+        "Polygon",
+        "MultiPolygon",
+        "GeometryCollection",
+        "Point",
+        "LineString",
+        "MultiPoint",
+        "MultiLineString",
+    ):
+        raw = [{"type": "Feature", "geometry": obj, "properties": {}}]
+    else:
+        raise InputError(f"{origin}: unknown GeoJSON type {kind!r}")
+    out = []
+    for i, feat in enumerate(raw):
+        if not isinstance(feat, dict) or feat.get("type") != "Feature":
+            raise InputError(f"{origin}: item {i} of 'features' is not a GeoJSON Feature")
+        props = feat.get("properties") or {}
+        gj = feat.get("geometry")
+        try:
+            geom = shape(gj) if gj else None
+        except (
+            ShapelyError,
+            GEOSException,
+            ValueError,
+            TypeError,
+            KeyError,
+            AttributeError,
+            IndexError,
+        ) as exc:
+            raise InputError(f"{origin}: feature {i} has a malformed geometry ({exc})") from None
+        out.append(Feature(i, geom, dict(props), feat.get("id")))
+    return out, crs
+
+
+def site_from_geojson(obj: dict | str, **kwargs: Any) -> Site:
+    """A site from a GeoJSON object (or its text)."""
+    if isinstance(obj, str):
+        try:
+            obj = json.loads(obj)
+        except json.JSONDecodeError as exc:
+            raise InputError(f"the text is not valid JSON: {exc}") from None
+    features, crs = _geojson_features(obj, kwargs.pop("origin", "the GeoJSON"))
+    return site_from_features(features, crs=kwargs.pop("crs", None) or crs, **kwargs)
+
+
+# -- WKT ----------------------------------------------------------------------------------
+def _wkt_features(text: str, origin: str) -> list[Feature]:
+    out = []
+    for lineno, line in enumerate(text.splitlines(), start=1):
+        line = line.strip()
+        if not line or line.startswith("#"):
+            continue
+        wkt, *pairs = line.split(";")
+        try:
+            geom = shapely.from_wkt(wkt.strip())
+        except (ShapelyError, GEOSException) as exc:
+            raise InputError(
+                f"{origin} line {lineno} is not WKT ({str(exc).splitlines()[0]})"
+            ) from None
+        props: dict[str, Any] = {}
+        for pair in pairs:
+            if not pair.strip():
+                continue
+            if "=" not in pair:
+                raise InputError(
+                    f"{origin} line {lineno}: expected key=value after ';', got {pair.strip()!r}"
+                )
+            k, v = pair.split("=", 1)
+            props[k.strip().lower()] = v.strip()
+        parts = [geom]
+        if geom is not None and geom.geom_type == "GeometryCollection":
+            parts = list(shapely.get_parts(geom))
+        for part in parts:
+            out.append(Feature(len(out), part, dict(props)))
+    if not out:
+        raise InputError(f"{origin} holds no WKT geometry")
+    return out
+
+
+# -- CSV ----------------------------------------------------------------------------------
+_CSV_ALIASES = {
+    "id": ("id", "building_id", "feature_id", "name"),
+    "x": ("x", "easting", "e"),
+    "y": ("y", "northing", "n"),
+}
+
+
+def _csv_features(text: str, origin: str) -> list[Feature]:
+    try:
+        dialect = csv.Sniffer().sniff(text[:4096], delimiters=",;\t")
+    except csv.Error:
+        dialect = csv.excel
+    reader = csv.DictReader(io.StringIO(text), dialect=dialect)
+    header = [h.strip().lower() for h in (reader.fieldnames or [])]
+    cols: dict[str, str] = {}
+    for key, names in _CSV_ALIASES.items():
+        for original, low in zip(reader.fieldnames or [], header, strict=True):
+            if low in names:
+                cols[key] = original
+                break
+    missing = [k for k in ("id", "x", "y") if k not in cols]
+    if missing:
+        raise InputError(
+            f"{origin}: a vertex CSV needs the columns id, x, y (optional ring, part, height, "
+            f"role, plan); missing {', '.join(missing)} (header: {', '.join(header) or 'none'})"
+        )
+    lowmap = {original: low for original, low in zip(reader.fieldnames or [], header, strict=True)}
+    rings: dict[str, dict[tuple[int, int], list[tuple[float, float]]]] = defaultdict(
+        lambda: defaultdict(list)
+    )
+    props: dict[str, dict[str, Any]] = {}
+    order: list[str] = []
+    for rowno, row in enumerate(reader, start=2):
+        ident = (row.get(cols["id"]) or "").strip()
+        if not ident:
+            raise InputError(f"{origin} line {rowno}: empty id")
+        try:
+            x = float(row[cols["x"]])
+            y = float(row[cols["y"]])
+            part = int(float(row.get(_col(lowmap, "part")) or 0)) if _col(lowmap, "part") else 0
+            ring = int(float(row.get(_col(lowmap, "ring")) or 0)) if _col(lowmap, "ring") else 0
+        except (TypeError, ValueError):
+            raise InputError(
+                f"{origin} line {rowno}: x, y (and ring, part) must be numbers"
+            ) from None
+        if ident not in props:
+            order.append(ident)
+            props[ident] = {"id": ident}
+        for key in ("height", "height_m", "role", "plan", "kind", "name"):
+            c = _col(lowmap, key)
+            if c and (row.get(c) or "").strip():
+                props[ident][key] = row[c].strip()
+        rings[ident][(part, ring)].append((x, y))
+    out = []
+    for ident in order:
+        polys = []
+        parts = sorted({p for p, _ in rings[ident]})
+        for p in parts:
+            shell = rings[ident].get((p, 0))
+            if not shell or len(shell) < 3:
+                raise InputError(
+                    f"{origin}: id {ident!r} part {p} needs an outline (ring 0) of >= 3 vertices"
+                )
+            holes = [v for (pp, r), v in sorted(rings[ident].items()) if pp == p and r > 0]
+            polys.append(Polygon(shell, holes))
+        geom = polys[0] if len(polys) == 1 else MultiPolygon(polys)
+        out.append(Feature(len(out), geom, props[ident]))
+    if not out:
+        raise InputError(f"{origin} has a header but no vertices")
+    return out
+
+
+def _col(lowmap: dict[str, str], key: str) -> str | None:
+    for original, low in lowmap.items():
+        if low == key:
+            return original
+    return None
+
+
+# -- files --------------------------------------------------------------------------------
+def _sniff(text: str) -> str:
+    head = text.lstrip()[:200].upper()
+    if head.startswith("{") or head.startswith("["):
+        return "geojson"
+    if head.split("(")[0].strip().split(" ")[0] in (
+        "POLYGON",
+        "MULTIPOLYGON",
+        "GEOMETRYCOLLECTION",
+        "POINT",
+        "LINESTRING",
+        "#",
+    ):
+        return "wkt"
+    return "csv"
+
+
+def read_site(
+    path: str | Path,
+    *,
+    default_height_m: float | None = None,
+    buildings: Sequence[str] | None = None,
+    repair: bool = False,
+) -> Site:
+    """Read a site file (``.geojson``/``.json``, ``.wkt``/``.txt`` or ``.csv``).
+
+    Parameters
+    ----------
+    default_height_m : float, optional
+        Height for buildings and obstacles that have none (a warning is recorded).
+    buildings : list of str, optional
+        Ids of the buildings to plan; all others only block the beam.
+    repair : bool
+        Apply the explicit geometry repair (repeated vertices, ``make_valid``).
+    """
+    p = Path(path)
+    if not p.is_file():
+        raise InputError(f"site file {str(p)!r} does not exist")
+    kind = SUFFIXES.get(p.suffix.lower())
+    if kind is None:
+        raise InputError(
+            f"{p.name}: unknown file type {p.suffix!r}; use .geojson/.json, .wkt/.txt or .csv"
+        )
+    raw = p.read_bytes()
+    if b"\x00" in raw[:4096]:
+        raise InputError(f"{p.name} is a binary file, not {kind.upper()} text")
+    try:
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        raise InputError(f"{p.name} is not UTF-8 text; save it as UTF-8 {kind.upper()}") from None
+    found = _sniff(text)
+    if found != kind and not (kind == "csv" and found == "csv"):
+        raise InputError(
+            f"{p.name} has the extension {p.suffix} but its content looks like {found.upper()}; "
+            f"rename it to a {found} file or export it again as {kind.upper()}"
+        )
+    kw: dict[str, Any] = {
+        "default_height_m": default_height_m,
+        "buildings": buildings,
+        "repair": repair,
+        "name": p.stem,
+    }
+    if kind == "geojson":
+        try:
+            obj = json.loads(text)
+        except json.JSONDecodeError as exc:
+            raise InputError(f"{p.name} is not valid JSON (line {exc.lineno}: {exc.msg})") from None
+        return site_from_geojson(obj, origin=p.name, **kw)
+    parse: Callable[[str, str], list[Feature]] = _wkt_features if kind == "wkt" else _csv_features
+    return site_from_features(parse(text, p.name), **kw)
+
+
+def default_site(buildings: Sequence[str] | None = None) -> Site:
+    """The built-in default site (``planner/data/default_site.geojson``).
+
+    A courtyard block 'main' (48 × 34 m, 15 m high; courtyard 22 × 14 m reached through a
+    6 m gateway in the south wing) with a lower annex 'annex' built against its east wall
+    (a party wall), a neighbouring house 'house' 12 m to the west, a lime tree in front of
+    the south facade, a street as a no-go area, and the survey boundary, in ETRS89 / UTM 32N
+    metres. Only 'main' is planned; the others block the beam.
+    """
+    text = resources.files("planner.data").joinpath("default_site.geojson").read_text("utf-8")
+    return site_from_geojson(
+        text, origin="default_site.geojson", buildings=buildings, name="default site"
+    )
