@@ -76,7 +76,8 @@ def _merge_ring(xy: np.ndarray, max_turn_deg: float, max_offset_m: float) -> lis
             chord = b - a
             length = np.hypot(*chord)
             pts = xy[[order[k] for k in range(i + 1, j + 1)]]
-            off = np.abs(np.cross(chord, pts - a)) / max(length, 1e-12)
+            rel = pts - a
+            off = np.abs(chord[0] * rel[:, 1] - chord[1] * rel[:, 0]) / max(length, 1e-12)
             t1 = np.degrees(
                 abs(
                     np.angle(

@@ -146,7 +146,7 @@ def _triple(points: np.ndarray, prefer: np.ndarray) -> np.ndarray | None:
     second = int(np.argmax(np.where(np.arange(len(points)) == first, -np.inf, dist)))
     line = points[second] - points[first]
     rel = points - points[first]
-    area = np.linalg.norm(np.cross(rel, line), axis=1) - 1e3 * (~prefer)
+    area = np.linalg.norm(np.cross(rel, line), axis=1) - 1e3 * (~prefer)  # 3-D points
     area[[first, second]] = -np.inf
     third = int(np.argmax(area))
     tri = np.array([first, second, third])

@@ -75,7 +75,7 @@ def _where(what: str, ident: str) -> str:
     return f"{what} {ident!r}"
 
 
-def _check_polygonal(geom: BaseGeometry, who: str) -> None:
+def _check_kind(geom: BaseGeometry, who: str) -> None:
     if geom is None or geom.is_empty:
         raise InputError(f"{who} has an empty geometry; remove the feature or draw its outline")
     if not isinstance(geom, Polygon | MultiPolygon):
@@ -86,6 +86,9 @@ def _check_polygonal(geom: BaseGeometry, who: str) -> None:
     coords = shapely.get_coordinates(geom)
     if not np.isfinite(coords).all():
         raise InputError(f"{who} has coordinates that are not finite numbers (NaN or infinity)")
+
+
+def _check_shape(geom: BaseGeometry, who: str) -> None:
     for ring in _rings(geom):
         xy = np.asarray(ring.coords)[:, :2]
         step = np.hypot(*np.diff(xy, axis=0).T)
@@ -156,32 +159,33 @@ class Site:
         self.obstacles = list(self.obstacles)
         self.no_go = list(self.no_go)
         seen: set[str] = set()
-        for b in self.buildings:
-            who = _where("building", b.id)
-            if b.id in seen:
-                raise InputError(f"{who} appears twice; building ids must be unique")
-            seen.add(b.id)
-            _check_polygonal(b.footprint, who)
-            object.__setattr__(b, "height_m", _check_height(b.height_m, who))
-        for o in self.obstacles:
-            who = _where(o.kind, o.id)
-            _check_polygonal(o.geometry, who)
-            object.__setattr__(o, "height_m", _check_height(o.height_m, who))
-        for a in self.no_go:
-            _check_polygonal(a.geometry, _where("no-go area", a.id))
+        named = [(b.footprint, _where("building", b.id)) for b in self.buildings]
+        named += [(o.geometry, _where(o.kind, o.id)) for o in self.obstacles]
+        named += [(a.geometry, _where("no-go area", a.id)) for a in self.no_go]
         if self.boundary is not None:
-            _check_polygonal(self.boundary, "the site boundary")
-        if not any(b.planned for b in self.buildings):
-            raise InputError(
-                "the site has no building to plan; add a building footprint with role "
-                "'building', or choose buildings to plan (--buildings ID,ID)"
-            )
+            named.append((self.boundary, "the site boundary"))
+        for geom, who in named:
+            _check_kind(geom, who)
+        for b in self.buildings:
+            if b.id in seen:
+                raise InputError(f"building {b.id!r} appears twice; building ids must be unique")
+            seen.add(b.id)
+            object.__setattr__(b, "height_m", _check_height(b.height_m, _where("building", b.id)))
+        for o in self.obstacles:
+            object.__setattr__(o, "height_m", _check_height(o.height_m, _where(o.kind, o.id)))
         everything = [b.footprint for b in self.buildings] + [o.geometry for o in self.obstacles]
         if _looks_like_degrees(everything):
             raise InputError(
                 "the coordinates look like longitude/latitude degrees (every outline is smaller "
                 "than 0.01 units); the planner works in metres: reproject the file to a projected "
                 "CRS (e.g. the local UTM zone) and try again"
+            )
+        for geom, who in named:
+            _check_shape(geom, who)
+        if not any(b.planned for b in self.buildings):
+            raise InputError(
+                "the site has no building to plan; add a building footprint with role "
+                "'building', or choose buildings to plan (--buildings ID,ID)"
             )
         self._check_overlaps()
 

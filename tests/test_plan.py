@@ -1,0 +1,337 @@
+"""Station planning: visibility, courtyards, grazing facades, infeasible requirements, the
+optimiser on a case solved by hand, registration, and the consistency of every output row."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+import shapely
+from sites import E0, N0, courtyard_site, l_site, multipolygon_site, rect, square_site
+
+from planner import Scanner, height_rms, planimetric_rms, sight_geometry
+from planner.candidates import reach_m
+from planner.evaluate import Context, evaluate_stations
+from planner.facades import build_facades
+from planner.plan import plan
+from planner.requirements import PlanSettings, Requirements
+from planner.site import Building, Obstacle, Site
+from planner.visibility import clear_height
+
+PAPER = Scanner.from_name("leica-4mm-60urad")
+LOOSE = Requirements(max_xy_mm=20.0, max_z_mm=20.0)
+
+
+def views(site: Site, station_local_xy, req=LOOSE, settings=None, scanner=PAPER):
+    """(samples × stations) dict of metrics for stations given in local coordinates."""
+    settings = settings or PlanSettings(sample_spacing_m=1.0, sample_height_step_m=1.0)
+    fac = build_facades(site, settings.sample_spacing_m, settings.sample_height_step_m)
+    ctx = Context.build(site, fac, scanner, req, settings, reach_m(scanner, req, (0.0, 0.0)))
+    st = np.array(station_local_xy, dtype=float) + np.array([E0, N0])
+    return fac, evaluate_stations(ctx, st)
+
+
+def test_self_occlusion_station_behind_the_building_sees_nothing_of_the_far_facade():
+    site = square_site(20.0, 10.0)
+    fac, m = views(site, [(10.0, -15.0)])
+    north = fac.normal[fac.facade][:, 1] > 0.5
+    south = fac.normal[fac.facade][:, 1] < -0.5
+    assert not m["view"][north, 0].any()
+    assert m["view"][south, 0].all()
+
+
+def test_self_occlusion_by_the_buildings_own_wing():
+    """Station at (40, 5), east of the L's long bar: on the wing's east facade (x = 10,
+    y 10–30) the sight line to y = 12 runs through the bar, to y = 28 it clears the corner
+    (30, 10)."""
+    site = l_site(height=12.0)
+    fac, m = views(site, [(40.0, 5.0)])
+    on_wing = (np.abs(fac.xy[:, 0] - (E0 + 10)) < 1e-6) & (fac.normal[fac.facade][:, 0] > 0.5)
+    low_y = on_wing & (fac.xy[:, 1] < N0 + 13)
+    high_y = on_wing & (fac.xy[:, 1] > N0 + 27)
+    assert low_y.any() and high_y.any()
+    assert not m["view"][low_y, 0].any()
+    assert m["view"][high_y, 0].all()
+
+
+def test_occlusion_by_an_obstacle_tall_and_low():
+    site = square_site(
+        20.0,
+        10.0,
+        obstacles=[
+            Obstacle("wall", rect(5, -10.1, 15, -9.9), 1.0, "wall"),
+            Obstacle("shed", rect(-10, -12, 0, -8), 20.0, "shed"),
+        ],
+    )
+    # the low wall halfway to the facade hides only the foot of the facade:
+    # crossing its far edge at t = 10.1/20 ... z_clear = 1.5 + (1.0 - 1.5) / t
+    z = clear_height(
+        np.array([[E0 + 10, N0 - 20]]),
+        1.5,
+        np.array([[E0 + 10, N0 + 0.02]]),
+        np.array([[E0 + 5, N0 - 9.9, E0 + 15, N0 - 9.9]]),
+        np.array([1.0]),
+    )
+    assert z[0] == pytest.approx(1.5 - 0.5 / ((20 - 9.9) / 20.02), abs=1e-9)  # m, about 0.51
+    fac, m = views(site, [(10.0, -20.0), (-6.0, -25.0)])
+    col = (np.abs(fac.xy[:, 0] - (E0 + 10.5)) < 1e-6) & (np.abs(fac.xy[:, 1] - N0) < 1e-6)
+    assert m["view"][col & (fac.z < 0.5), 0].sum() == 0  # z = 0.5 is hidden (0.51 clears)
+    assert m["view"][col & (fac.z > 0.6), 0].all()
+    # the 20 m shed hides the south-west corner from a station behind it, up to the top
+    behind = (np.abs(fac.xy[:, 1] - N0) < 1e-6) & (fac.xy[:, 0] < E0 + 1.5)
+    assert not m["view"][behind, 1].any()
+
+
+def test_courtyard_facades_are_scanned_from_inside_the_courtyard():
+    site = courtyard_site(court=20.0, height=9.0)
+    p = plan(
+        site,
+        PAPER,
+        Requirements(max_xy_mm=6, max_z_mm=6),
+        PlanSettings(grid_m=2.0, sample_spacing_m=3.0, sample_height_step_m=3.0),
+    )
+    assert p.meets_all
+    hole = shapely.Polygon(site.buildings[0].footprint.interiors[0])
+    inside = shapely.contains_xy(hole, p.stations["x"], p.stations["y"])
+    assert inside.sum() >= 1 and (~inside).sum() >= 1
+    court = p.facades[p.facades["courtyard"]]
+    assert len(court) == 4 and (court["unmet"] == 0).all()
+    assert all(court["stations"].str.len() > 0)
+    # a closed courtyard cannot be tied to the outside by common targets: said so
+    assert any("groups that no common targets can tie" in m for m in p.messages)
+
+
+def test_too_small_courtyard_is_reported_unmet_with_the_reason():
+    site = courtyard_site(court=1.5, height=9.0)
+    p = plan(
+        site,
+        PAPER,
+        Requirements(max_xy_mm=6, max_z_mm=6),
+        PlanSettings(sample_spacing_m=3.0, sample_height_step_m=3.0),
+    )
+    court_ids = set(p.facades.loc[p.facades["courtyard"], "facade_id"])
+    unmet = p.unmet
+    assert set(unmet["facade_id"]) == court_ids
+    assert (unmet["reason"].str.startswith("no free station position sees this point")).all()
+    assert any("do not meet the requirements" in m for m in p.messages)
+
+
+def test_facade_reachable_only_at_grazing_angles():
+    """A 40 m facade facing a 1.5 m alley: with a 1 m clearance no station fits in the alley,
+    so the middle of the facade is seen only from the alley's ends, at grazing angles."""
+    a = Building("A", rect(0, 0, 40, 10), 6.0)
+    b = Building("B", rect(0, 11.5, 40, 21.5), 6.0, planned=False)
+    site = Site([a, b])
+    settings = PlanSettings(sample_spacing_m=4.0, sample_height_step_m=3.0)
+    strict = plan(site, PAPER, Requirements(max_xy_mm=10, max_z_mm=10, max_gamma_deg=60), settings)
+    alley = strict.coverage[(strict.coverage["y"] == N0 + 10) & ~strict.coverage["party_wall"]]
+    middle = alley[(alley["x"] > E0 + 10) & (alley["x"] < E0 + 30)]
+    assert not middle["meets"].any()
+    best_gamma = middle["reason"].str.extract(r"best achievable γ ([\d.]+)")[0].astype(float)
+    assert (best_gamma > 60).all() and (best_gamma < 90).all()
+    lax = plan(site, PAPER, Requirements(max_xy_mm=10, max_z_mm=10, max_gamma_deg=88), settings)
+    alley_lax = lax.coverage[(lax.coverage["y"] == N0 + 10)]
+    assert alley_lax["meets"].sum() > alley["meets"].sum()
+    assert (alley_lax.loc[alley_lax["meets"], "gamma_deg"] > 60).any()
+
+
+def test_infeasible_tolerance_does_not_crash_and_says_what_is_achievable():
+    p = plan(
+        square_site(),
+        PAPER,
+        Requirements(max_xy_mm=0.5, max_z_mm=5),
+        PlanSettings(sample_spacing_m=4.0, sample_height_step_m=5.0),
+    )
+    assert not p.meets_all
+    assert len(p.unmet) == len(p.coverage)
+    assert len(p.stations) == 0
+    # best achievable m_y with m_S = 4 mm: 4·cos 75° = 1.04 mm at the grazing limit
+    assert p.unmet["reason"].str.contains(r"best achievable m_y 1\.0 mm > 0\.5 mm").all()
+    assert p.solver["status"] == "nothing to cover"
+
+
+def test_party_wall_is_reported_not_demanded():
+    a = Building("A", rect(0, 0, 20, 10), 12.0)
+    b = Building("B", rect(20, 0, 30, 10), 6.0, planned=False)
+    p = plan(
+        Site([a, b]),
+        PAPER,
+        Requirements(max_xy_mm=6, max_z_mm=6),
+        PlanSettings(sample_spacing_m=2.0, sample_height_step_m=2.0),
+    )
+    east = p.coverage[p.coverage["x"] == E0 + 20]
+    assert east.loc[east["z"] < 6, "party_wall"].all()
+    assert not east.loc[east["z"] > 6, "party_wall"].any()  # above the neighbour's roof
+    assert p.meets_all
+    assert int(p.facades["party_wall_samples"].sum()) == int(east["party_wall"].sum()) == 15
+    csv = p.coverage_csv()
+    party_ids = east.loc[east["party_wall"], "sample_id"]
+    assert not any(f",{sid}," in csv for sid in party_ids)  # party rows are not in the CSV
+    assert sum(f",{sid}," in csv for sid in east.loc[~east["party_wall"], "sample_id"]) == 15
+
+
+def test_many_short_edges_and_multipolygons():
+    tower = Site([Building("tower", shapely.Point(E0, N0).buffer(10.0, quad_segs=16), 20.0)])
+    fac = build_facades(tower)
+    assert 16 <= fac.n_facades <= 64
+    centre = np.array([E0, N0])
+    mid = (fac.start + fac.end) / 2
+    assert ((mid - centre) * fac.normal).sum(axis=1).min() > 0  # all outward
+    p = plan(
+        multipolygon_site(),
+        PAPER,
+        Requirements(max_xy_mm=6, max_z_mm=6),
+        PlanSettings(sample_spacing_m=3.0, sample_height_step_m=4.0),
+    )
+    assert p.meets_all and len(p.facades) == 8
+
+
+def _normals(p):
+    f = p.facades.set_index("facade_id")
+    v = np.column_stack([f["x1"] - f["x0"], f["y1"] - f["y0"]])
+    return pd.DataFrame(
+        np.column_stack([v[:, 1], -v[:, 0]]) / np.hypot(*v.T)[:, None],
+        index=f.index,
+        columns=["nx", "ny"],
+    )
+
+
+@pytest.fixture(scope="module")
+def rich_plan():
+    """The default site with a ppm scanner and station RMS, so every term of eq. 2/4 acts."""
+    sc = Scanner(
+        name="ppm",
+        range_rms_mm=2.0,
+        range_ppm=100.0,
+        angle_rms_arcsec=10.0,
+        vertical_angle_rms_arcsec=14.0,
+        max_range_m=150.0,
+    )
+    return plan(
+        None,
+        sc,
+        Requirements(max_xy_mm=(4.0, 4.5), max_z_mm=4.0, max_gamma_deg=70, max_spacing_mm=12.0),
+        PlanSettings(station_rms_mm=(1.0, 1.5), sample_spacing_m=3.0, sample_height_step_m=3.0),
+    )
+
+
+def test_coverage_rows_recomputed_from_coordinates_with_the_science_layer(rich_plan):
+    p = rich_plan
+    cov = p.coverage[p.coverage["station_id"] != ""].join(_normals(p), on="facade_id")
+    st = p.stations.set_index("station_id").loc[cov["station_id"]]
+    g = sight_geometry(
+        np.column_stack([st["x"], st["y"], st["instrument_height_m"]]),
+        cov[["x", "y", "z"]].to_numpy(),
+        cov[["nx", "ny"]].to_numpy(),
+    )
+    m_x, m_y = planimetric_rms(
+        g.distance_m, g.gamma_deg, p.scanner, (1.0, 1.5), ranging_distance_m=g.slope_distance_m
+    )
+    m_z = height_rms(g.slope_distance_m, g.nu_deg, p.scanner)
+    np.testing.assert_allclose(cov["distance_m"], g.distance_m, atol=1e-9)  # m
+    np.testing.assert_allclose(cov["slope_distance_m"], g.slope_distance_m, atol=1e-9)  # m
+    np.testing.assert_allclose(cov["gamma_deg"], g.gamma_deg, atol=1e-6)  # deg
+    np.testing.assert_allclose(cov["nu_deg"], g.nu_deg, atol=1e-6)  # deg
+    np.testing.assert_allclose(cov["m_x_mm"], m_x, atol=1e-9)  # mm
+    np.testing.assert_allclose(cov["m_y_mm"], m_y, atol=1e-9)  # mm
+    np.testing.assert_allclose(cov["m_z_mm"], m_z, atol=1e-9)  # mm
+    assert len(cov) > 100
+
+
+def test_every_meets_row_really_meets_the_requirements(rich_plan):
+    p = rich_plan
+    req = p.requirements
+    met = p.coverage[p.coverage["meets"]]
+    assert len(met) > 0.9 * (~p.coverage["party_wall"]).sum()
+    assert (met["m_x_mm"] <= 4.0 + 1e-9).all() and (met["m_y_mm"] <= 4.5 + 1e-9).all()
+    assert (met["m_z_mm"] <= 4.0 + 1e-9).all()
+    assert (met["gamma_deg"] <= req.max_gamma_deg + 1e-9).all()
+    assert (met["spacing_mm"] <= 12.0 + 1e-9).all()
+    assert (met["slope_distance_m"] <= p.scanner.max_range_m).all()
+    # and the CSV says the same to its printed precision
+    from io import StringIO
+
+    csv = pd.read_csv(StringIO(p.coverage_csv()))
+    assert list(csv.columns) == [
+        "building_id",
+        "facade_id",
+        "sample_id",
+        "x",
+        "y",
+        "z",
+        "station_id",
+        "distance_m",
+        "slope_distance_m",
+        "gamma_deg",
+        "nu_deg",
+        "m_x_mm",
+        "m_y_mm",
+        "m_z_mm",
+        "meets",
+    ]
+    assert (csv.loc[csv["meets"], "m_x_mm"] <= 4.0 + 0.0005).all()
+
+
+def test_optimiser_finds_the_minimum_worked_out_by_hand():
+    """A 20 × 20 m square, 3 m high, one row of samples at the instrument height (ν = 0,
+    S = D), samples every 2 m (x = 1, 3, …, 19 on each facade), γ <= 30°, range <= 12 m.
+
+    * A station sees a facade only within 30° of its normal. Seeing two adjacent facades
+      would need γ_A + γ_B = 90° at the corner, so with γ <= 30° each station serves at most
+      one facade.
+    * A station at distance p from a facade serves the stretch |x − x_s| <= min(p·tan 30°,
+      √(12² − p²)); the widest is at p = 12·cos 30° = 10.4 m: ±12·sin 30° = ±6 m, 12 m.
+    * The samples of one facade span 18 m (x = 1 … 19) > 12 m: one station is not enough;
+      two at x_s ≈ 6 and 14 (12 m each) are.
+    So the minimum is 4 facades × 2 = 8 stations.
+    """
+    site = square_site(20.0, 3.0)
+    req = Requirements(max_xy_mm=50, max_z_mm=50, max_gamma_deg=30, max_range_m=12.0)
+    settings = PlanSettings(grid_m=0.5, sample_spacing_m=2.0, sample_height_step_m=3.0)
+    p = plan(site, PAPER, req, settings)
+    assert p.meets_all
+    assert p.solver["method"] == "milp" and p.solver["status"] == "optimal"
+    assert p.solver["objective"] == 8 and p.solver["gap"] == 0.0
+    assert p.solver["greedy_objective"] >= 8
+    assert (p.stations["purpose"] == "cover").sum() == 8
+    greedy = plan(
+        site,
+        PAPER,
+        req,
+        PlanSettings(grid_m=0.5, sample_spacing_m=2.0, sample_height_step_m=3.0, method="greedy"),
+    )
+    assert greedy.solver["method"] == "greedy" and greedy.meets_all
+
+
+def test_stations_per_sample():
+    settings = PlanSettings(sample_spacing_m=4.0, sample_height_step_m=5.0)
+    one = plan(square_site(), PAPER, Requirements(max_xy_mm=6, max_z_mm=6), settings)
+    two = plan(
+        square_site(), PAPER, Requirements(max_xy_mm=6, max_z_mm=6, stations_per_sample=2), settings
+    )
+    assert two.meets_all
+    assert (two.coverage["stations_meeting"] >= 2).all()
+    assert two.solver["objective"] > one.solver["objective"]
+
+
+def test_registration_targets_tie_the_default_plan(rich_plan):
+    p = plan()  # the defaults
+    assert p.meets_all and any("form one registration network" in m for m in p.messages)
+    t = p.targets
+    assert len(t) >= 3
+    assert (t["size_mm"] >= t["min_size_mm"]).all()
+    assert t["station_ids"].map(len).min() >= 2
+    assert set(t["type"]) <= {"flat", "sphere"}
+    # every station takes part in at least one link with three targets placed
+    linked = set(
+        p.links.loc[p.links["targets_placed"] >= 3, ["station_a", "station_b"]].to_numpy().ravel()
+    )
+    assert linked == set(p.stations["station_id"])
+    # a flat target's minimum size is at least 2d at its farthest station (incidence only adds)
+    st = p.stations.set_index("station_id")
+    for r in t[t["type"] == "flat"].itertuples():
+        s_max = max(
+            np.hypot(np.hypot(st.loc[s, "x"] - r.x, st.loc[s, "y"] - r.y), r.z - 1.5)
+            for s in r.station_ids
+        )
+        assert r.min_size_mm >= 2 * p.scanner.step_mm_at_10m * s_max / 10 - 1e-9

@@ -1,0 +1,217 @@
+"""``planner plan``: the file contract, exit codes 0/1/2, atomic writes."""
+
+from __future__ import annotations
+
+import json
+
+import pandas as pd
+import pytest
+from test_cli import run
+
+import planner.io
+from planner.cli import main
+from planner.plan import COVERAGE_COLUMNS, STATION_COLUMNS, TARGET_COLUMNS, plan
+
+FAST = ["--sample-spacing-m", "3", "--sample-height-step-m", "3"]
+
+
+def test_default_site_plan_meets_and_writes_the_contract(tmp_path):
+    out = tmp_path / "plan"
+    code, stdout, _ = run(
+        "plan",
+        "--scanner",
+        "leica-4mm-60urad",
+        "--max-xy-mm",
+        "5",
+        "--max-z-mm",
+        "5",
+        "--out",
+        str(out),
+        "-q",
+    )
+    assert code == 0, stdout
+    assert "chosen by milp (optimal" in stdout
+    stations = pd.read_csv(out / "stations.csv")
+    targets = pd.read_csv(out / "targets.csv")
+    coverage = pd.read_csv(out / "coverage.csv")
+    assert list(stations.columns) == STATION_COLUMNS
+    assert list(targets.columns) == TARGET_COLUMNS
+    assert list(coverage.columns) == COVERAGE_COLUMNS
+    assert coverage["meets"].all()
+    assert (stations["instrument_height_m"] == 1.5).all()
+    # coordinates are written back in the site's CRS (ETRS89 / UTM 32N here)
+    assert (
+        stations["x"].between(690_900, 691_100).all()
+        and stations["y"].between(5_334_900, 5_335_100).all()
+    )
+    assert set(coverage["station_id"]) <= set(stations["station_id"])
+    for ids in targets["station_ids"]:
+        assert set(ids.split(";")) <= set(stations["station_id"]) and len(ids.split(";")) >= 2
+    gj = json.loads((out / "plan.geojson").read_text())
+    layers = {f["properties"]["layer"] for f in gj["features"]}
+    assert {"building", "facade", "station", "target", "link", "obstacle"} <= layers
+    assert gj["crs"]["properties"]["name"].endswith("25832")
+
+
+def test_wall_just_above_a_lower_neighbours_roof_is_unseen_from_the_ground(tmp_path):
+    """With 3 m rows the east wall has samples at z = 7.5 m, just above the 7 m annex roof
+    (12 m deep): from 1.5 m they would be seen only from ~144 m away — out of reach."""
+    code, stdout, _ = run(
+        "plan",
+        "--scanner",
+        "leica-4mm-60urad",
+        "--max-xy-mm",
+        "5",
+        "--max-z-mm",
+        "5",
+        "--out",
+        str(tmp_path),
+        "-q",
+        *FAST,
+    )
+    assert code == 1
+    cov = pd.read_csv(tmp_path / "coverage.csv")
+    unmet = cov[~cov["meets"]]
+    assert set(unmet["facade_id"]) == {"main-f09"} and set(unmet["z"]) == {7.5}
+    assert "no free station position sees this point" in stdout
+
+
+def test_unmet_samples_exit_1_and_are_listed(tmp_path):
+    code, stdout, _ = run(
+        "plan",
+        "--scanner",
+        "leica-4mm-60urad",
+        "--max-xy-mm",
+        "3,3.5",
+        "--max-z-mm",
+        "2",
+        "--out",
+        str(tmp_path),
+        "-q",
+        *FAST,
+    )
+    assert code == 1
+    assert "Unmet samples" in stdout and "best achievable m_z" in stdout
+    cov = pd.read_csv(tmp_path / "coverage.csv")
+    assert (~cov["meets"]).sum() > 0
+    gj = json.loads((tmp_path / "plan.geojson").read_text())
+    n_unmet = sum(f["properties"]["layer"] == "unmet" for f in gj["features"])
+    assert n_unmet == (~cov["meets"]).sum()
+
+
+@pytest.mark.parametrize(
+    ("extra", "message"),
+    [
+        (["--buildings", "nope"], "no building with id 'nope'"),
+        (["--max-gamma-deg", "95"], "max_gamma_deg must be > 0 and <= 89"),
+        (["--grid-m", "-1"], "grid_m must be > 0"),
+        (["--scanner", "unknown"], "Unknown scanner"),
+    ],
+)
+def test_bad_input_exits_2_and_writes_nothing(tmp_path, extra, message):
+    out = tmp_path / "never"
+    argv = [
+        "plan",
+        "--scanner",
+        "leica-4mm-60urad",
+        "--max-xy-mm",
+        "5",
+        "--max-z-mm",
+        "5",
+        "--out",
+        str(out),
+        "-q",
+        *extra,
+    ]
+    code, _, err = run(*argv)
+    assert code == 2
+    assert message in err and "Traceback" not in err
+    assert not out.exists()
+
+
+def test_bad_site_file_exits_2(tmp_path):
+    bad = tmp_path / "site.geojson"
+    bad.write_text("not json at all")
+    code, _, err = run(
+        "plan",
+        str(bad),
+        "--scanner",
+        "leica-4mm-60urad",
+        "--max-xy-mm",
+        "5",
+        "--max-z-mm",
+        "5",
+        "--out",
+        str(tmp_path / "o"),
+    )
+    assert code == 2 and "content looks like CSV" in err
+    assert not (tmp_path / "o").exists()
+
+
+def test_site_file_with_height_and_selection(tmp_path):
+    e, n = 600_000.0, 5_500_000.0
+    feats = []
+    for i in range(6):
+        x = e + 30 * i
+        feats.append(
+            {
+                "type": "Feature",
+                "id": f"h{i}",
+                "properties": {},
+                "geometry": {
+                    "type": "Polygon",
+                    "coordinates": [[[x, n], [x + 20, n], [x + 20, n + 12], [x, n + 12], [x, n]]],
+                },
+            }
+        )
+    site = tmp_path / "street.geojson"
+    site.write_text(json.dumps({"type": "FeatureCollection", "features": feats}))
+    code, stdout, _ = run(
+        "plan",
+        str(site),
+        "--height",
+        "9",
+        "--buildings",
+        "h2",
+        "--scanner",
+        "leica-hds3000",
+        "--max-xy-mm",
+        "6",
+        "--max-z-mm",
+        "6",
+        "--out",
+        str(tmp_path / "o"),
+        "-q",
+        *FAST,
+    )
+    assert code == 0, stdout
+    assert "has no height; using 9 m" in stdout
+    cov = pd.read_csv(tmp_path / "o" / "coverage.csv")
+    assert set(cov["building_id"]) == {"h2"}
+
+
+def test_writes_are_atomic(tmp_path, monkeypatch):
+    p = plan(settings=None)
+    first = p.save(tmp_path)
+    before = {f.name: f.read_bytes() for f in first}
+    calls = {"n": 0}
+    real_replace = planner.io.os.replace
+
+    def failing_replace(src, dst):
+        calls["n"] += 1
+        if calls["n"] == 3:
+            raise OSError(28, "No space left on device")
+        return real_replace(src, dst)
+
+    monkeypatch.setattr(planner.io.os, "replace", failing_replace)
+    with pytest.raises(OSError):
+        p.save(tmp_path)
+    after = {f.name: f.read_bytes() for f in first}
+    assert after == before  # every file is either the old one or a complete new one
+    assert not list(tmp_path.glob(".*.tmp"))  # no temporary file left behind
+
+
+def test_main_job_plans_the_default_site(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert main([]) == 0
+    assert (tmp_path / "out" / "default-plan" / "stations.csv").is_file()
