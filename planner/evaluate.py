@@ -27,8 +27,8 @@ __all__ = ["Context", "PairMetrics", "evaluate_candidates", "evaluate_stations"]
 
 Progress = Callable[[float, str], None]
 
-#: Candidate × sample pairs evaluated at once (bounds memory: ~20 float arrays of this).
-PAIR_CHUNK = 400_000
+#: Candidate × sample pairs evaluated at once: ~20 float arrays of this many stay in cache.
+PAIR_CHUNK = 65_536
 
 
 @dataclass
@@ -120,16 +120,30 @@ class PairMetrics:
     ok: np.ndarray  # view and every requirement
 
 
-def facade_pairs(ctx: Context, f: int, cand_xy: np.ndarray) -> PairMetrics:
-    """Evaluate candidates ``cand_xy`` against every sample of facade ``f``."""
+def facade_pairs(
+    ctx: Context, f: int, cand_xy: np.ndarray, smp: np.ndarray | None = None, *, full: bool = True
+) -> PairMetrics:
+    """Evaluate candidates ``cand_xy`` against the samples ``smp`` (default: all) of facade
+    ``f``. ``full=False`` skips what only reports need (point spacing without a spacing
+    requirement)."""
     fac, sc, req = ctx.facades, ctx.scanner, ctx.req
     hi = ctx.settings.instrument_height_m
     cols = ctx.cols_of[f]
-    smp = ctx.samples_of[f]
+    smp = ctx.samples_of[f] if smp is None else smp
     n = fac.normal[f]
     c, k = len(cand_xy), len(cols)
-    # line of sight, once per (candidate, column)
+    # line of sight, once per (candidate, column), against the edges that can lie between
     em = ctx.edge_mask[f]
+    if len(em):
+        lo_xy = np.minimum(cand_xy.min(axis=0), np.minimum(fac.start[f], fac.end[f]))
+        hi_xy = np.maximum(cand_xy.max(axis=0), np.maximum(fac.start[f], fac.end[f]))
+        e = ctx.edges[em]
+        em = em[
+            (np.maximum(e[:, 0], e[:, 2]) >= lo_xy[0])
+            & (np.minimum(e[:, 0], e[:, 2]) <= hi_xy[0])
+            & (np.maximum(e[:, 1], e[:, 3]) >= lo_xy[1])
+            & (np.minimum(e[:, 1], e[:, 3]) <= hi_xy[1])
+        ]
     target = fac.col_xy[cols] + SIGHT_OFFSET_M * n
     zc = clear_height(
         np.repeat(cand_xy, k, axis=0),
@@ -160,7 +174,7 @@ def facade_pairs(ctx: Context, f: int, cand_xy: np.ndarray) -> PairMetrics:
         & (sin_nu >= lo - 1e-12)
         & (sin_nu <= up + 1e-12)
     )
-    m_s = sc.range_rms_mm + sc.range_ppm * 1e-3 * s
+    m_s = sc.range_rms_mm + sc.range_ppm * 1e-3 * s if sc.range_ppm else sc.range_rms_mm
     st = station_rms_pair(ctx.settings.station_rms_mm)
     cos2 = cos_g * cos_g
     var_x, var_y = eq2_variances(d, cos2, m_s, sc.angle_rms_arcsec, (st[0] ** 2, st[1] ** 2))
@@ -212,13 +226,10 @@ def score(ctx: Context, m: PairMetrics) -> np.ndarray:
 
 @dataclass
 class CandidateEvaluation:
-    """Which candidates meet every requirement at which sample, and what is achievable."""
+    """Which candidates meet every requirement at which sample, and how many see it."""
 
     ok: sp.csr_matrix  # (N samples, C candidates) bool
     n_view: np.ndarray  # (N,) candidates that see the sample
-    best: dict[
-        str, np.ndarray
-    ]  # (N,) best achievable m_x, m_y, m_z [mm], gamma [deg], spacing, score
 
 
 def evaluate_candidates(
@@ -229,8 +240,6 @@ def evaluate_candidates(
     n_samples = len(fac.z)
     rows, cols = [], []
     n_view = np.zeros(n_samples, dtype=np.int64)
-    names = ("m_x_mm", "m_y_mm", "m_z_mm", "gamma_deg", "spacing_mm", "score")
-    best = {k: np.full(n_samples, np.inf) for k in names}
     for f in range(fac.n_facades):
         if progress:
             progress(f / fac.n_facades, f"evaluating facade {fac.facade_id[f]}")
@@ -241,30 +250,65 @@ def evaluate_candidates(
         step = max(1, PAIR_CHUNK // len(smp))
         for lo in range(0, len(cand), step):
             ci = cand[lo : lo + step]
-            m = facade_pairs(ctx, f, cand_xy[ci])
+            m = facade_pairs(ctx, f, cand_xy[ci], full=False)
             r, c = np.nonzero(m.ok)
             rows.append(smp[c])
             cols.append(ci[r])
             n_view[smp] += m.view.sum(axis=0)
-            inf = np.inf
-            with np.errstate(invalid="ignore"):
-                gamma = np.degrees(np.arccos(np.clip(m.cos_gamma, -1, 1)))
-            for key, val in (
-                ("m_x_mm", np.sqrt(m.var_x)),
-                ("m_y_mm", np.sqrt(m.var_y)),
-                ("m_z_mm", np.sqrt(m.var_z)),
-                ("gamma_deg", gamma),
-                ("spacing_mm", m.spacing_mm),
-                ("score", score(ctx, m)),
-            ):
-                best[key][smp] = np.minimum(best[key][smp], np.where(m.view, val, inf).min(axis=0))
     if progress:
         progress(1.0, "evaluation done")
     r = np.concatenate(rows) if rows else np.empty(0, dtype=np.int64)
     c = np.concatenate(cols) if cols else np.empty(0, dtype=np.int64)
     ok = sp.csr_matrix((np.ones(len(r), dtype=bool), (r, c)), shape=(n_samples, len(cand_xy)))
     ok.sum_duplicates()
-    return CandidateEvaluation(ok, n_view, best)
+    return CandidateEvaluation(ok, n_view)
+
+
+def _blocks(xy: np.ndarray, per_block: int) -> np.ndarray:
+    """An order of the points by square blocks of about ``per_block`` points each."""
+    if len(xy) <= per_block:
+        return np.arange(len(xy))
+    span = np.ptp(xy, axis=0).max() + 1e-9
+    side = span * np.sqrt(per_block / len(xy))
+    cell = np.floor((xy - xy.min(axis=0)) / side).astype(np.int64)
+    return np.lexsort((xy[:, 0], xy[:, 1], cell[:, 0], cell[:, 1]))
+
+
+BEST_KEYS = ("m_x_mm", "m_y_mm", "m_z_mm", "gamma_deg", "spacing_mm", "score")
+
+
+def best_achievable(
+    ctx: Context, cand_xy: np.ndarray, samples: np.ndarray
+) -> dict[str, np.ndarray]:
+    """For the given samples, the best value of each quantity over every candidate that sees
+    them (each minimised on its own), and the best ``score`` (max of value / limit, <= 1
+    meets). Arrays aligned with ``samples``; inf where no candidate sees the sample."""
+    fac = ctx.facades
+    out = {k: np.full(len(samples), np.inf) for k in BEST_KEYS}
+    pos = {int(s): i for i, s in enumerate(samples)}
+    for f in np.unique(fac.facade[samples]):
+        smp = np.array([s for s in samples if fac.facade[s] == f])
+        idx = np.array([pos[int(s)] for s in smp])
+        cand = ctx.front_candidates(f, cand_xy)
+        step = max(1, PAIR_CHUNK // len(smp))
+        for lo in range(0, len(cand), step):
+            m = facade_pairs(ctx, int(f), cand_xy[cand[lo : lo + step]], smp)
+            cos_best = np.where(m.view, m.cos_gamma, -np.inf).max(axis=0)
+            with np.errstate(invalid="ignore"):
+                gamma = np.where(
+                    np.isfinite(cos_best), np.degrees(np.arccos(np.clip(cos_best, -1, 1))), np.inf
+                )
+            vals = {
+                "m_x_mm": np.sqrt(np.where(m.view, m.var_x, np.inf).min(axis=0)),
+                "m_y_mm": np.sqrt(np.where(m.view, m.var_y, np.inf).min(axis=0)),
+                "m_z_mm": np.sqrt(np.where(m.view, m.var_z, np.inf).min(axis=0)),
+                "gamma_deg": gamma,
+                "spacing_mm": np.where(m.view, m.spacing_mm, np.inf).min(axis=0),
+                "score": score(ctx, m).min(axis=0),
+            }
+            for key, v in vals.items():
+                out[key][idx] = np.minimum(out[key][idx], v)
+    return out
 
 
 def evaluate_stations(ctx: Context, station_xy: np.ndarray) -> dict[str, np.ndarray]:

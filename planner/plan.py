@@ -20,7 +20,7 @@ import pandas as pd
 
 from planner.candidates import candidate_grid, reach_m
 from planner.errors import InputError
-from planner.evaluate import Context, evaluate_candidates, evaluate_stations
+from planner.evaluate import Context, best_achievable, evaluate_candidates, evaluate_stations
 from planner.facades import build_facades
 from planner.io import write_text_atomic
 from planner.optimise import CoverSolution, solve_cover
@@ -349,7 +349,7 @@ def plan(
     station_xy = cand[station_idx] if len(station_idx) else np.empty((0, 2))
     ids = [f"S{i + 1:02d}" for i in range(len(station_idx))]
     dense = evaluate_stations(ctx, station_xy)
-    coverage = _coverage(ctx, ev, dense, ids)
+    coverage = _coverage(ctx, ev, dense, ids, cand)
     stations = pd.DataFrame(
         {
             "station_id": ids,
@@ -402,14 +402,13 @@ def plan(
     )
 
 
-def _reason(ctx: Context, ev: Any, i: int, n_meet: int) -> str:
+def _reason(ctx: Context, n_view: int, b: dict[str, float], n_meet: int) -> str:
     req = ctx.req
-    if ev.n_view[i] == 0:
+    if n_view == 0:
         return "no free station position sees this point (blocked, or out of the scanner's range)"
     k = req.stations_per_sample
     if 0 < n_meet < k:
         return f"only {n_meet} station position(s) meet every requirement here; {k} required"
-    b = ev.best
     parts = []
     for key, label, limit, unit in (
         ("m_x_mm", "m_x", req.max_x_mm, "mm"),
@@ -418,41 +417,57 @@ def _reason(ctx: Context, ev: Any, i: int, n_meet: int) -> str:
         ("gamma_deg", "γ", req.max_gamma_deg, "°"),
         ("spacing_mm", "point spacing", req.max_spacing_mm, "mm"),
     ):
-        if limit is not None and b[key][i] > limit:
-            parts.append(f"best achievable {label} {b[key][i]:.1f} {unit} > {limit:g} {unit}")
+        if limit is not None and b[key] > limit:
+            parts.append(f"best achievable {label} {b[key]:.1f} {unit} > {limit:g} {unit}")
     if parts:
         return "; ".join(parts)
     return (
-        f"no single station meets every requirement at once (closest: {b['score'][i]:.2f} × "
+        f"no single station meets every requirement at once (closest: {b['score']:.2f} × "
         "the limits)"
     )
 
 
-def _coverage(ctx: Context, ev: Any, dense: dict[str, np.ndarray], ids: list[str]) -> pd.DataFrame:
+def _coverage(
+    ctx: Context, ev: Any, dense: dict[str, np.ndarray], ids: list[str], cand_xy: np.ndarray
+) -> pd.DataFrame:
     fac = ctx.facades
     n = len(fac.z)
     k_req = ctx.req.stations_per_sample
     n_ok_cand = np.asarray(ev.ok.sum(axis=1)).ravel()
-    if ids:
+    keys = (
+        "distance_m",
+        "slope_distance_m",
+        "gamma_deg",
+        "nu_deg",
+        "m_x_mm",
+        "m_y_mm",
+        "m_z_mm",
+        "spacing_mm",
+    )
+    if ids:  # the assigned station: the best meeting one, else the best that sees the sample
         score = np.where(dense["ok"], dense["score"], dense["score"] + 1e6)
         score = np.where(dense["view"], score, np.inf)
-        best = np.argmin(score, axis=1)
-        has = np.isfinite(score[np.arange(n), best])
-        pick = lambda key: np.where(has, dense[key][np.arange(n), best], np.nan)  # noqa: E731
-        station = np.where(has, np.array(ids, dtype=object)[best], "")
+        assigned = np.argmin(score, axis=1)
+        has = np.isfinite(score[np.arange(n), assigned])
+        picked = {k: np.where(has, dense[k][np.arange(n), assigned], np.nan) for k in keys}
+        station = np.where(has, np.array(ids, dtype=object)[assigned], "")
         n_meeting = dense["ok"].sum(axis=1)
     else:
-        has = np.zeros(n, dtype=bool)
-        pick = lambda key: np.full(n, np.nan)  # noqa: E731
+        picked = {k: np.full(n, np.nan) for k in keys}
         station = np.full(n, "", dtype=object)
         n_meeting = np.zeros(n, dtype=int)
     meets = (n_meeting >= k_req) & ~fac.party_wall
     reason = np.full(n, "", dtype=object)
-    for i in np.flatnonzero(~meets & ~fac.party_wall):
-        if n_ok_cand[i] >= k_req:  # coverable, but the plan does not (greedy shortfall)
-            reason[i] = f"the chosen stations do not cover this sample ({n_meeting[i]} of {k_req})"
-        else:
-            reason[i] = _reason(ctx, ev, i, int(n_ok_cand[i]))
+    short = np.flatnonzero(~meets & ~fac.party_wall & (n_ok_cand >= k_req))
+    reason[short] = [
+        f"the chosen stations do not cover this sample ({n_meeting[i]} of {k_req})" for i in short
+    ]
+    hopeless = np.flatnonzero(~meets & ~fac.party_wall & (n_ok_cand < k_req))
+    if len(hopeless):
+        diag = best_achievable(ctx, cand_xy, hopeless)
+        for j, i in enumerate(hopeless):
+            b = {key: float(v[j]) for key, v in diag.items()}
+            reason[i] = _reason(ctx, int(ev.n_view[i]), b, int(n_ok_cand[i]))
     reason[fac.party_wall] = "party wall (against a neighbour): not scanned"
     return pd.DataFrame(
         {
@@ -463,15 +478,15 @@ def _coverage(ctx: Context, ev: Any, dense: dict[str, np.ndarray], ids: list[str
             "y": fac.xy[:, 1],
             "z": fac.z,
             "station_id": station,
-            "distance_m": pick("distance_m"),
-            "slope_distance_m": pick("slope_distance_m"),
-            "gamma_deg": pick("gamma_deg"),
-            "nu_deg": pick("nu_deg"),
-            "m_x_mm": pick("m_x_mm"),
-            "m_y_mm": pick("m_y_mm"),
-            "m_z_mm": pick("m_z_mm"),
+            "distance_m": picked["distance_m"],
+            "slope_distance_m": picked["slope_distance_m"],
+            "gamma_deg": picked["gamma_deg"],
+            "nu_deg": picked["nu_deg"],
+            "m_x_mm": picked["m_x_mm"],
+            "m_y_mm": picked["m_y_mm"],
+            "m_z_mm": picked["m_z_mm"],
             "meets": meets,
-            "spacing_mm": pick("spacing_mm"),
+            "spacing_mm": picked["spacing_mm"],
             "stations_meeting": n_meeting,
             "party_wall": fac.party_wall,
             "reason": reason,

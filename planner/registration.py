@@ -183,6 +183,17 @@ class Network:
     message: str
 
 
+#: Linking stations are searched on a grid this coarse (a subset of the candidates) [m].
+LINK_GRID_M = 4.0
+
+
+def _coarse(cand_xy: np.ndarray, grid_m: float) -> np.ndarray:
+    """Indices of the candidates on a ``grid_m`` lattice (candidates lie on a finer one)."""
+    cells = np.floor(cand_xy / grid_m + 1e-9).astype(np.int64)
+    _, first = np.unique(cells, axis=0, return_index=True)
+    return np.sort(first)
+
+
 def connect(ctx: Context, tc: TargetCandidates, cand_xy: np.ndarray, chosen: np.ndarray) -> Network:
     """Link the chosen stations; add the fewest linking stations found if they are not
     connected; choose three targets per link of a spanning tree, reusing targets."""
@@ -192,13 +203,15 @@ def connect(ctx: Context, tc: TargetCandidates, cand_xy: np.ndarray, chosen: np.
     n_comp, labels = connected_components(sp.csr_matrix(links > 0), directed=False)
     added = 0
     if n_comp > 1 and len(tc.xyz):
-        all_usable, _ = usability(ctx, tc, cand_xy)
+        pool = _coarse(cand_xy, max(LINK_GRID_M, ctx.settings.grid_m))
+        all_usable, _ = usability(ctx, tc, cand_xy[pool])
         while n_comp > 1:
-            best = _best_bridge(all_usable, usable, labels, n_comp, tc.xyz, set(stations))
+            taken = {int(np.searchsorted(pool, s)) for s in stations if s in set(pool.tolist())}
+            best = _best_bridge(all_usable, usable, labels, n_comp, tc.xyz, taken)
             if best is None:
                 break
             for c in best:
-                stations.append(c)
+                stations.append(int(pool[c]))
                 usable = np.column_stack([usable, all_usable[:, c]])
                 added += 1
             links = link_matrix(usable, tc.xyz)

@@ -290,8 +290,10 @@ def test_optimiser_finds_the_minimum_worked_out_by_hand():
     settings = PlanSettings(grid_m=0.5, sample_spacing_m=2.0, sample_height_step_m=3.0)
     p = plan(site, PAPER, req, settings)
     assert p.meets_all
-    assert p.solver["method"] == "milp" and p.solver["status"] == "optimal"
-    assert p.solver["objective"] == 8 and p.solver["gap"] == 0.0
+    # proven optimal: by HiGHS, or by greedy meeting the packing bound (8 samples, one near
+    # the middle of each half-facade, share no candidate)
+    assert p.solver["status"].startswith("optimal")
+    assert p.solver["objective"] == 8 and p.solver["lower_bound"] == 8 and p.solver["gap"] == 0.0
     assert p.solver["greedy_objective"] >= 8
     assert (p.stations["purpose"] == "cover").sum() == 8
     greedy = plan(
