@@ -32,7 +32,7 @@ class CoverSolution:
 
     chosen: np.ndarray
     method: str  # "milp" or "greedy"
-    status: str  # "optimal", "time limit", "greedy only", "nothing to cover"
+    status: str  # e.g. "optimal", "time limit", "as requested", "nothing to cover"
     objective: int
     lower_bound: float | None
     gap: float | None  # (objective − bound) / objective
@@ -193,7 +193,7 @@ def solve_cover(
     greedy = CoverSolution(
         np.sort(used[g]),
         "greedy",
-        "greedy only",
+        "as requested",
         len(g),
         float(packing),
         (len(g) - packing) / len(g),
@@ -201,7 +201,7 @@ def solve_cover(
         len(g),
     )
     if packing == len(g):
-        greedy.status, greedy.gap = "optimal (greedy meets the packing bound)", 0.0
+        greedy.status, greedy.gap = "optimal: meets the packing lower bound", 0.0
         return greedy
     if method == "greedy":
         return greedy
@@ -209,7 +209,7 @@ def solve_cover(
     status, message, x_raw, dual = _milp_with_deadline(a, dem, len(g), remaining)
     greedy.seconds = time.perf_counter() - t0
     if x_raw is None:
-        greedy.status = f"greedy (milp: {message})"
+        greedy.status = f"integer program: {message}"
         return greedy
     x = np.flatnonzero(x_raw > 0.5)
     bound = float(packing)
@@ -219,7 +219,7 @@ def solve_cover(
         bound = max(bound, float(np.ceil(dual - 1e-6)))
     if len(x) > len(g):  # a time-limited incumbent worse than greedy: keep greedy
         greedy.lower_bound, greedy.gap = bound, (len(g) - bound) / len(g)
-        greedy.status = "greedy (milp incumbent worse at the time limit)"
+        greedy.status = "integer program stopped at the time limit with a worse plan"
         return greedy
     return CoverSolution(
         np.sort(used[x]),
