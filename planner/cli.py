@@ -8,10 +8,11 @@ from __future__ import annotations
 import argparse
 import sys
 from collections.abc import Callable, Sequence
+from pathlib import Path
 
 import pandas as pd
 
-from planner.errors import PlannerError
+from planner.errors import InputError, PlannerError
 from planner.scanner import Scanner, catalogue, load_scanner
 from planner.tables import (
     PAPER_DISTANCES_M,
@@ -243,86 +244,96 @@ def run_plan(args: argparse.Namespace) -> int:
     return EXIT_OK if result.meets_all else EXIT_UNMET
 
 
+def cmd_report(args: argparse.Namespace) -> int:
+    from planner.report import make_report
+
+    out = Path(args.out)
+    if out.suffix.lower() not in (".html", ".htm"):
+        raise InputError(f"--out must name an .html file; got {args.out!r}")
+    xy = list(args.max_xy_mm) if isinstance(args.max_xy_mm, tuple) else args.max_xy_mm
+    if not args.quiet:
+        print("planner: executing the report notebook …", file=sys.stderr)
+    path = make_report(
+        out,
+        site_path=args.site,
+        default_height_m=args.height,
+        buildings=args.buildings,
+        scanner=args.scanner,
+        max_xy_mm=xy,
+        max_z_mm=args.max_z_mm,
+        max_gamma_deg=args.max_gamma_deg,
+        max_spacing_mm=args.max_spacing_mm,
+        stations_per_sample=args.stations_per_sample,
+        grid_m=args.grid_m,
+    )
+    print(f"Wrote {path} ({path.stat().st_size / 1e6:.1f} MB, self-contained)")
+    return EXIT_OK
+
+
+def free_port(preferred: int) -> int:
+    """``preferred`` if it is free on 127.0.0.1, else any free port."""
+    import socket
+
+    for port in (preferred, 0):
+        with socket.socket() as s:
+            try:
+                s.bind(("127.0.0.1", port))
+            except OSError:
+                continue
+            return s.getsockname()[1]
+    raise InputError("no free port on 127.0.0.1")
+
+
+def voila_command(notebook: Path, port: int) -> tuple[list[str], dict[str, str]]:
+    """The Voilà command line and environment serving ``notebook`` on 127.0.0.1:``port``.
+
+    The page uses the package's ``planner-offline`` template (Voilà's lab template without
+    its CDN stylesheet), found through ``JUPYTER_PATH``.
+    """
+    import os
+
+    jupyter_dir = Path(__file__).resolve().parent / "jupyter"
+    env = dict(os.environ)
+    env["JUPYTER_PATH"] = os.pathsep.join(
+        p for p in (str(jupyter_dir), env.get("JUPYTER_PATH")) if p
+    )
+    cmd = [
+        sys.executable,
+        "-m",
+        "voila",
+        str(notebook),
+        f"--port={port}",
+        "--Voila.ip=127.0.0.1",
+        "--no-browser",
+        "--show_tracebacks=False",
+        "--template=planner-offline",
+    ]
+    return cmd, env
+
+
+def cmd_serve(args: argparse.Namespace) -> int:
+    import subprocess
+
+    from planner.dashboard import notebook_path
+
+    nb = notebook_path(args.notebook)
+    port = free_port(args.port)
+    print(f"Serving the dashboard at http://127.0.0.1:{port}/ (Ctrl+C stops)", flush=True)
+    try:
+        cmd, env = voila_command(nb, port)
+        return subprocess.call(cmd, env=env)
+    except KeyboardInterrupt:
+        return EXIT_OK
+
+
 def cmd_default(args: argparse.Namespace) -> int:
-    """The main job on the built-in defaults: plan the default site."""
-    args = build_parser().parse_args(
-        [
-            "plan",
-            "--scanner",
-            DEFAULT_SCANNER,
-            "--max-xy-mm",
-            "5",
-            "--max-z-mm",
-            "5",
-            "--out",
-            "out/default-plan",
-        ]
-    )
-    return args.func(args)
+    """The main job: serve the station-planner dashboard (it opens on the default site)."""
+    serve = build_parser().parse_args(["serve"])
+    return serve.func(serve)
 
 
-def build_parser() -> argparse.ArgumentParser:
-    p = _Parser(
-        prog="planner", description="Plan terrestrial laser scanner stations around buildings."
-    )
-    p.set_defaults(func=cmd_default)
-    sub = p.add_subparsers(title="commands", parser_class=_Parser)
-
-    s = sub.add_parser("scanners", help="list the scanner catalogue")
-    s.add_argument("--format", choices=["text", "csv"], default="text")
-    s.add_argument("-v", "--verbose", action="store_true", help="also print sources and notes")
-    s.set_defaults(func=cmd_scanners)
-
-    a = sub.add_parser("accuracy", help="m_x, m_y (Table 1) and m_z (Table 2) for a scanner")
-    _scanner_arg(a)
-    a.add_argument(
-        "--distances",
-        type=_floats,
-        default=list(PAPER_DISTANCES_M),
-        metavar="D,D,...",
-        help="horizontal / slope distances [m]",
-    )
-    a.add_argument(
-        "--angles",
-        type=_floats,
-        default=list(PAPER_GAMMAS_DEG),
-        metavar="G,G,...",
-        help="deviation angles γ from the facade normal [deg]",
-    )
-    a.add_argument(
-        "--tilts",
-        type=_floats,
-        default=list(PAPER_NUS_DEG),
-        metavar="N,N,...",
-        help="beam tilts ν [deg]",
-    )
-    a.add_argument(
-        "--station-rms-mm",
-        type=float,
-        default=0.0,
-        help="station / registration RMS m_xc = m_yc [mm]",
-    )
-    a.add_argument("--format", choices=["text", "csv"], default="text")
-    a.set_defaults(func=cmd_accuracy)
-
-    t = sub.add_parser("targets", help="minimum target sizes (Sossa's Table 2 layout)")
-    _scanner_arg(t)
-    t.add_argument("--distances", type=_floats, default=list(SOSSA_DISTANCES_M), metavar="D,D,...")
-    t.add_argument(
-        "--step-mm-at-10m",
-        type=float,
-        default=None,
-        help="scan step at 10 m [mm]; default the scanner's",
-    )
-    t.add_argument("--format", choices=["text", "csv"], default="text")
-    t.set_defaults(func=cmd_targets)
-
-    pl = sub.add_parser(
-        "plan",
-        help="plan stations and targets for a site",
-        description="Exit codes: 0 every requirement met; 1 plan written but some samples unmet "
-        "(listed); 2 bad input (message, nothing written).",
-    )
+def _plan_arguments(pl: argparse.ArgumentParser) -> None:
+    """The site, scanner, requirement and setting options shared by plan and report."""
     pl.add_argument(
         "site",
         nargs="?",
@@ -392,9 +403,96 @@ def build_parser() -> argparse.ArgumentParser:
     pl.add_argument("--step-mm-at-10m", type=float, default=None)
     pl.add_argument("--time-limit-s", type=float, default=20.0)
     pl.add_argument("--method", choices=["auto", "milp", "greedy"], default="auto")
-    pl.add_argument("--out", required=True, metavar="DIR", help="folder for the plan's files")
     pl.add_argument("-q", "--quiet", action="store_true", help="no progress messages")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = _Parser(
+        prog="planner", description="Plan terrestrial laser scanner stations around buildings."
+    )
+    p.set_defaults(func=cmd_default)
+    sub = p.add_subparsers(title="commands", parser_class=_Parser)
+
+    s = sub.add_parser("scanners", help="list the scanner catalogue")
+    s.add_argument("--format", choices=["text", "csv"], default="text")
+    s.add_argument("-v", "--verbose", action="store_true", help="also print sources and notes")
+    s.set_defaults(func=cmd_scanners)
+
+    a = sub.add_parser("accuracy", help="m_x, m_y (Table 1) and m_z (Table 2) for a scanner")
+    _scanner_arg(a)
+    a.add_argument(
+        "--distances",
+        type=_floats,
+        default=list(PAPER_DISTANCES_M),
+        metavar="D,D,...",
+        help="horizontal / slope distances [m]",
+    )
+    a.add_argument(
+        "--angles",
+        type=_floats,
+        default=list(PAPER_GAMMAS_DEG),
+        metavar="G,G,...",
+        help="deviation angles γ from the facade normal [deg]",
+    )
+    a.add_argument(
+        "--tilts",
+        type=_floats,
+        default=list(PAPER_NUS_DEG),
+        metavar="N,N,...",
+        help="beam tilts ν [deg]",
+    )
+    a.add_argument(
+        "--station-rms-mm",
+        type=float,
+        default=0.0,
+        help="station / registration RMS m_xc = m_yc [mm]",
+    )
+    a.add_argument("--format", choices=["text", "csv"], default="text")
+    a.set_defaults(func=cmd_accuracy)
+
+    t = sub.add_parser("targets", help="minimum target sizes (Sossa's Table 2 layout)")
+    _scanner_arg(t)
+    t.add_argument("--distances", type=_floats, default=list(SOSSA_DISTANCES_M), metavar="D,D,...")
+    t.add_argument(
+        "--step-mm-at-10m",
+        type=float,
+        default=None,
+        help="scan step at 10 m [mm]; default the scanner's",
+    )
+    t.add_argument("--format", choices=["text", "csv"], default="text")
+    t.set_defaults(func=cmd_targets)
+
+    pl = sub.add_parser(
+        "plan",
+        help="plan stations and targets for a site",
+        description="Exit codes: 0 every requirement met; 1 plan written but some samples unmet "
+        "(listed); 2 bad input (message, nothing written).",
+    )
+    _plan_arguments(pl)
+    pl.add_argument("--out", required=True, metavar="DIR", help="folder for the plan's files")
     pl.set_defaults(func=run_plan)
+
+    rp = sub.add_parser(
+        "report",
+        help="render the static HTML report of a plan",
+        description="Executes the report notebook headless and writes one self-contained HTML "
+        "file (images embedded, no code, opens offline).",
+    )
+    _plan_arguments(rp)
+    rp.add_argument("--out", required=True, metavar="REPORT.html", help="the HTML file to write")
+    rp.set_defaults(func=cmd_report)
+
+    sv = sub.add_parser("serve", help="serve the station-planner dashboard with Voilà on 127.0.0.1")
+    sv.add_argument(
+        "--port", type=int, default=8866, help="port (default 8866; a free one if taken)"
+    )
+    sv.add_argument(
+        "--notebook",
+        default="station_planner.ipynb",
+        choices=["station_planner.ipynb", "accuracy_explorer.ipynb", "targets.ipynb"],
+        help="which dashboard (default: the station planner)",
+    )
+    sv.set_defaults(func=cmd_serve)
 
     f = sub.add_parser("figures", help="regenerate the figures in figures/")
     f.add_argument("--out", default="figures", help="output folder (default figures/)")

@@ -1,4 +1,5 @@
-"""Figures made by code: accuracy curves reproducing the papers' tables, target sizes.
+"""Figures made by code: accuracy curves reproducing the papers' tables, target sizes, and
+the plan of the built-in default site.
 
 ``planner figures`` (or :func:`make_figures`) regenerates ``figures/``. The plotting
 functions take an optional ``ax`` so the notebooks reuse them.
@@ -182,9 +183,15 @@ def make_figures(out_dir: str | Path = "figures") -> list[Path]:
     """Regenerate the README figures in ``out_dir``; returns the files written."""
     out = Path(out_dir)
     paper = Scanner.from_name("leica-4mm-60urad")
+    from planner.maps import plot_coverage, plot_plan_map
+    from planner.plan import plan
+
+    default_plan = plan()
     written = [
         _save(plot_planimetric(paper, paper=True), out / "table1_planimetric_rms.png"),
         _save(plot_height(paper, paper=True), out / "table2_height_rms.png"),
         _save(plot_target_sizes(paper=True), out / "sossa_target_sizes.png"),
+        _save(plot_plan_map(default_plan), out / "default_site_plan.png"),
+        _save(plot_coverage(default_plan, "m_z_mm"), out / "default_site_m_z.png"),
     ]
     return written

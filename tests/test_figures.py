@@ -12,6 +12,8 @@ def test_make_figures_writes_pngs(tmp_path):
         "table1_planimetric_rms.png",
         "table2_height_rms.png",
         "sossa_target_sizes.png",
+        "default_site_plan.png",
+        "default_site_m_z.png",
     }
     for p in paths:
         data = p.read_bytes()

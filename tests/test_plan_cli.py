@@ -211,7 +211,18 @@ def test_writes_are_atomic(tmp_path, monkeypatch):
     assert not list(tmp_path.glob(".*.tmp"))  # no temporary file left behind
 
 
-def test_main_job_plans_the_default_site(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
+def test_main_job_serves_the_dashboard_on_loopback(monkeypatch, capsys):
+    import subprocess
+
+    seen = {}
+
+    def fake_call(cmd, env=None):
+        seen["cmd"], seen["env"] = cmd, env
+        return 0
+
+    monkeypatch.setattr(subprocess, "call", fake_call)
     assert main([]) == 0
-    assert (tmp_path / "out" / "default-plan" / "stations.csv").is_file()
+    cmd = seen["cmd"]
+    assert cmd[1:3] == ["-m", "voila"] and cmd[3].endswith("station_planner.ipynb")
+    assert "--Voila.ip=127.0.0.1" in cmd and "--template=planner-offline" in cmd
+    assert "http://127.0.0.1:" in capsys.readouterr().out

@@ -1,0 +1,609 @@
+"""Widgets of the notebooks / Voilà dashboards. Thin: they collect inputs, call the package,
+and show results; the science lives elsewhere.
+
+* :class:`StationPlanner` — the main dashboard (site, scanner, requirements → plan);
+* :class:`AccuracyExplorer` — m_x, m_y, m_z curves and tables for a scanner;
+* :class:`TargetExplorer` — target sizes vs distance and an inventory's reach.
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+import tempfile
+import traceback
+from pathlib import Path
+
+import ipywidgets as w
+import matplotlib.pyplot as plt
+import numpy as np
+import pandas as pd
+from IPython.display import display
+
+from planner.errors import PlannerError
+from planner.scanner import Scanner, catalogue
+from planner.tables import height_table, planimetric_table
+
+__all__ = ["AccuracyExplorer", "StationPlanner", "TargetExplorer", "notebook_path"]
+
+DEFAULT_SCANNER = "leica-4mm-60urad"
+
+
+def notebook_path(name: str) -> Path:
+    """A shipped notebook: inside the installed package, or ``notebooks/`` of a checkout."""
+    here = Path(__file__).resolve().parent
+    for folder in (here / "notebooks", here.parent / "notebooks"):
+        if (folder / name).is_file():
+            return folder / name
+    raise PlannerError(f"notebook {name!r} is not installed (looked in {here / 'notebooks'})")
+
+
+def _error_html(message: str) -> str:
+    return (
+        f'<div class="planner-error" style="color:#922;background:#fdecea;border:1px solid #e6b0aa;'
+        f'padding:6px 10px;border-radius:4px"><b>Cannot plan:</b> {html.escape(message)}</div>'
+    )
+
+
+def _download_link(name: str, data: bytes, mime: str) -> str:
+    b64 = base64.b64encode(data).decode("ascii")
+    return (
+        f'<a download="{name}" href="data:{mime};base64,{b64}" class="planner-download" '
+        f'style="margin-right:1em">⬇ {name}</a>'
+    )
+
+
+def _show(out: w.Output, *objs) -> None:
+    with out:
+        out.clear_output(wait=True)
+        for o in objs:
+            display(o)
+            if isinstance(o, plt.Figure):
+                plt.close(o)
+
+
+def _scanner_dropdown() -> w.Dropdown:
+    names = list(catalogue())
+    return w.Dropdown(
+        options=[(catalogue()[n].label + f" ({n})", n) for n in names],
+        value=DEFAULT_SCANNER,
+        description="Scanner",
+        layout=w.Layout(width="98%"),
+        style={"description_width": "initial"},
+    )
+
+
+class StationPlanner:
+    """The station-planner dashboard: site, scanner, requirements, Plan, results, downloads."""
+
+    def __init__(self) -> None:
+        from planner.requirements import PlanSettings, Requirements
+
+        req, st = Requirements(), PlanSettings()
+        style = {"description_width": "14em"}
+        lay = w.Layout(width="98%")
+        self.site_source = w.ToggleButtons(
+            options=["Default site", "Upload a file"], value="Default site"
+        )
+        self.upload = w.FileUpload(
+            accept=".geojson,.json,.wkt,.txt,.csv", multiple=False, description="Footprint file"
+        )
+        self.height = w.BoundedFloatText(
+            value=0.0,
+            min=0.0,
+            max=1000.0,
+            step=0.5,
+            style=style,
+            description="Height where missing [m] (0: none)",
+            layout=lay,
+        )
+        self.buildings = w.Text(
+            value="",
+            placeholder="all (as in the file)",
+            style=style,
+            description="Buildings to plan (ids)",
+            layout=lay,
+        )
+        self.scanner = _scanner_dropdown()
+        self.max_x = w.BoundedFloatText(
+            value=req.max_x_mm,
+            min=0.1,
+            max=100,
+            step=0.5,
+            style=style,
+            description="max m_x [mm]",
+            layout=lay,
+        )
+        self.max_y = w.BoundedFloatText(
+            value=req.max_y_mm,
+            min=0.1,
+            max=100,
+            step=0.5,
+            style=style,
+            description="max m_y [mm]",
+            layout=lay,
+        )
+        self.max_z = w.BoundedFloatText(
+            value=req.max_z_mm,
+            min=0.1,
+            max=100,
+            step=0.5,
+            style=style,
+            description="max m_z [mm]",
+            layout=lay,
+        )
+        self.max_gamma = w.BoundedFloatText(
+            value=req.max_gamma_deg,
+            min=1,
+            max=89,
+            step=5,
+            style=style,
+            description="max deviation γ [deg]",
+            layout=lay,
+        )
+        self.max_spacing = w.BoundedFloatText(
+            value=0.0,
+            min=0.0,
+            max=1000,
+            step=1,
+            style=style,
+            description="max point spacing [mm] (0: none)",
+            layout=lay,
+        )
+        self.per_sample = w.BoundedIntText(
+            value=1, min=1, max=5, style=style, description="stations per sample", layout=lay
+        )
+        self.grid = w.BoundedFloatText(
+            value=st.grid_m,
+            min=0.5,
+            max=20,
+            step=0.5,
+            style=style,
+            description="candidate grid [m]",
+            layout=lay,
+        )
+        self.plan_button = w.Button(description="Plan", button_style="primary")
+        self.progress = w.FloatProgress(value=0.0, min=0.0, max=1.0, description="", layout=lay)
+        self.status = w.HTML("")
+        self.error = w.HTML("")
+        self.summary = w.HTML("")
+        self.quantity = w.ToggleButtons(
+            options=[("m_x", "m_x_mm"), ("m_y", "m_y_mm"), ("m_z", "m_z_mm")],
+            value="m_x_mm",
+            description="Colour by",
+        )
+        self.map_out, self.cov_out, self.fac_out, self.unmet_out = (w.Output() for _ in range(4))
+        self.downloads = w.HTML("")
+        self.report_button = w.Button(description="Make HTML report")
+        self.report_status = w.HTML("")
+        self.tabs = w.Tab(
+            children=[
+                self.map_out,
+                w.VBox([self.quantity, self.cov_out]),
+                self.fac_out,
+                self.unmet_out,
+                w.VBox([self.downloads, w.HBox([self.report_button]), self.report_status]),
+            ]
+        )
+        for i, title in enumerate(["Plan map", "Coverage", "Facades", "Unmet", "Downloads"]):
+            self.tabs.set_title(i, title)
+        controls = w.VBox(
+            [
+                w.HTML("<h3>Site</h3>"),
+                self.site_source,
+                self.upload,
+                self.height,
+                self.buildings,
+                w.HTML("<h3>Scanner</h3>"),
+                self.scanner,
+                w.HTML("<h3>Requirements</h3>"),
+                self.max_x,
+                self.max_y,
+                self.max_z,
+                self.max_gamma,
+                self.max_spacing,
+                self.per_sample,
+                self.grid,
+                self.plan_button,
+                self.progress,
+                self.status,
+                self.error,
+            ],
+            layout=w.Layout(width="32%", min_width="300px"),
+        )
+        results = w.VBox([self.summary, self.tabs], layout=w.Layout(width="66%"))
+        self.widget = w.HBox([controls, results])
+        self.plan = None
+        self._site_file: Path | None = None
+        self._tmp = tempfile.TemporaryDirectory(prefix="planner-upload-")
+        # links: thin callbacks
+        self.plan_button.on_click(lambda _b: self.run())
+        self.upload.observe(lambda _c: setattr(self.site_source, "value", "Upload a file"), "value")
+        self.quantity.observe(lambda _c: self._show_coverage(), "value")
+        self.report_button.on_click(lambda _b: self.make_report())
+
+    # -- actions -----------------------------------------------------------------------------
+    def _inputs(self):
+        from planner.requirements import PlanSettings, Requirements
+        from planner.siteio import default_site, read_site
+
+        ids = [s.strip() for s in self.buildings.value.split(",") if s.strip()] or None
+        if self.site_source.value == "Default site":
+            site, self._site_file = default_site(buildings=ids), None
+        else:
+            files = self.upload.value
+            if not files:
+                raise PlannerError(
+                    "choose a footprint file (.geojson, .wkt or .csv) to upload first"
+                )
+            f = files[0]
+            path = Path(self._tmp.name) / Path(f["name"]).name
+            path.write_bytes(bytes(f["content"]))
+            site = read_site(path, default_height_m=self.height.value or None, buildings=ids)
+            self._site_file = path
+        req = Requirements(
+            max_xy_mm=(self.max_x.value, self.max_y.value),
+            max_z_mm=self.max_z.value,
+            max_gamma_deg=self.max_gamma.value,
+            max_spacing_mm=self.max_spacing.value or None,
+            stations_per_sample=int(self.per_sample.value),
+        )
+        return (
+            site,
+            Scanner.from_name(self.scanner.value),
+            req,
+            PlanSettings(grid_m=self.grid.value),
+        )
+
+    def _progress(self, fraction: float, message: str) -> None:
+        self.progress.value = fraction
+        self.status.value = f"<i>{html.escape(message)}</i>"
+
+    def run(self) -> None:
+        """Plan with the current inputs and show the result (errors as a readable message)."""
+        from planner.plan import plan
+
+        self.error.value = ""
+        self.plan_button.disabled = True
+        try:
+            site, sc, req, st = self._inputs()
+            self.plan = plan(site, sc, req, st, progress=self._progress)
+        except PlannerError as exc:
+            self.error.value = _error_html(str(exc))
+            self.status.value = ""
+            return
+        except Exception as exc:  # never a dead widget: say what happened
+            self.error.value = _error_html(f"unexpected {type(exc).__name__}: {exc}")
+            self.status.value = ""
+            traceback.print_exc()
+            return
+        finally:
+            self.plan_button.disabled = False
+        self._show_results()
+
+    def _show_results(self) -> None:
+        from planner.maps import plot_plan_map
+
+        p = self.plan
+        n_met = int(p.coverage.loc[~p.coverage["party_wall"], "meets"].sum())
+        n_all = int((~p.coverage["party_wall"]).sum())
+        verdict = (
+            "<span style='color:#1e8449'>every requirement met</span>"
+            if p.meets_all
+            else f"<span style='color:#922'>{len(p.unmet)} samples unmet</span>"
+        )
+        self.summary.value = (
+            f"<h3><span class='station-count'>{len(p.stations)} stations</span>, "
+            f"{len(p.targets)} targets — {verdict}</h3>"
+            f"<pre style='white-space:pre-wrap;font-size:85%'>{html.escape(p.summary())}</pre>"
+            f"<p>{n_met} of {n_all} samples meet every requirement.</p>"
+        )
+        _show(self.map_out, plot_plan_map(p))
+        self._show_coverage()
+        cols = [
+            "building_id",
+            "facade_id",
+            "length_m",
+            "samples",
+            "party_wall_samples",
+            "met",
+            "unmet",
+            "worst_m_x_mm",
+            "worst_m_y_mm",
+            "worst_m_z_mm",
+            "stations",
+        ]
+        _show(self.fac_out, p.facades[cols].round(2).style.hide(axis="index"))
+        if p.unmet.empty:
+            _show(self.unmet_out, w.HTML("<p>Every sample meets the requirements.</p>"))
+        else:
+            g = (
+                p.unmet.groupby(["facade_id", "reason"])
+                .agg(samples=("sample_id", "size"), z_from=("z", "min"), z_to=("z", "max"))
+                .reset_index()
+                .round(1)
+            )
+            _show(
+                self.unmet_out,
+                w.HTML(
+                    "<p>Samples that no station meets, with the reason and the best "
+                    "achievable value:</p>"
+                ),
+                g.style.hide(axis="index"),
+            )
+        files = [
+            ("stations.csv", p.stations_csv().encode(), "text/csv"),
+            ("targets.csv", p.targets_csv().encode(), "text/csv"),
+            ("coverage.csv", p.coverage_csv().encode(), "text/csv"),
+            (
+                "plan.geojson",
+                __import__("json").dumps(p.geojson(), indent=1).encode(),
+                "application/geo+json",
+            ),
+        ]
+        self.downloads.value = "<p>" + "".join(_download_link(*f) for f in files) + "</p>"
+        self.report_status.value = ""
+        self.progress.value = 1.0
+        self.status.value = f"<i>planned in {p.timings_s['total']:.1f} s</i>"
+
+    def _show_coverage(self) -> None:
+        if self.plan is not None:
+            from planner.maps import plot_coverage
+
+            _show(self.cov_out, plot_coverage(self.plan, self.quantity.value))
+
+    def make_report(self) -> None:
+        """Render the static HTML report of the current inputs and offer it for download."""
+        from planner.report import make_report
+
+        if self.plan is None:
+            self.report_status.value = _error_html("make a plan first")
+            return
+        self.report_status.value = "<i>rendering the report (a few seconds)…</i>"
+        self.report_button.disabled = True
+        try:
+            p = self.plan
+            req = p.requirements
+            params = dict(
+                site_path=str(self._site_file) if self._site_file else None,
+                default_height_m=self.height.value or None,
+                buildings=[b.id for b in p.site.planned] if self._site_file else None,
+                scanner=p.scanner.name,
+                max_xy_mm=[req.max_x_mm, req.max_y_mm],
+                max_z_mm=req.max_z_mm,
+                max_gamma_deg=req.max_gamma_deg,
+                max_spacing_mm=req.max_spacing_mm,
+                stations_per_sample=req.stations_per_sample,
+                grid_m=p.settings.grid_m,
+            )
+            out = Path(self._tmp.name) / "report.html"
+            make_report(out, **params)
+            self.report_status.value = _download_link("report.html", out.read_bytes(), "text/html")
+        except Exception as exc:
+            self.report_status.value = _error_html(f"the report failed: {exc}")
+        finally:
+            self.report_button.disabled = False
+
+    def show(self) -> None:
+        display(self.widget)
+
+
+class AccuracyExplorer:
+    """Curves and tables of m_x, m_y (eq. 2) and m_z (eq. 4) for a chosen or typed scanner."""
+
+    def __init__(self) -> None:
+        style = {"description_width": "12em"}
+        self.source = w.ToggleButtons(options=["Catalogue", "Typed figures"], value="Catalogue")
+        self.scanner = _scanner_dropdown()
+        self.range_mm = w.BoundedFloatText(
+            value=4.0, min=0.01, max=100, step=0.1, description="ranging a [mm]", style=style
+        )
+        self.range_ppm = w.BoundedFloatText(
+            value=0.0, min=0, max=1000, step=10, description="ranging b [ppm]", style=style
+        )
+        self.h_angle = w.BoundedFloatText(
+            value=12.4, min=0.01, max=5000, step=0.1, description="H angle RMS [″]", style=style
+        )
+        self.v_angle = w.BoundedFloatText(
+            value=12.4, min=0.01, max=5000, step=0.1, description="V angle RMS [″]", style=style
+        )
+        self.distance = w.FloatRangeSlider(
+            value=(0.0, 120.0),
+            min=0.0,
+            max=300.0,
+            step=5.0,
+            description="distance [m]",
+            style=style,
+            layout=w.Layout(width="95%"),
+        )
+        self.gamma = w.FloatSlider(
+            value=30.0, min=0.0, max=85.0, step=5.0, description="γ [deg]", style=style
+        )
+        self.nu = w.FloatSlider(
+            value=30.0, min=0.0, max=90.0, step=5.0, description="ν [deg]", style=style
+        )
+        self.limit = w.BoundedFloatText(
+            value=4.0, min=0.1, max=100, step=0.5, description="requirement [mm]", style=style
+        )
+        self.verdict = w.HTML()
+        self.plots = w.Output()
+        self.tables = w.Output()
+        self.error = w.HTML()
+        inputs = [
+            self.source,
+            self.scanner,
+            self.range_mm,
+            self.range_ppm,
+            self.h_angle,
+            self.v_angle,
+            self.distance,
+            self.gamma,
+            self.nu,
+            self.limit,
+        ]
+        for widget in inputs:
+            widget.observe(lambda _c: self.update(), "value")
+        self.widget = w.VBox(
+            [
+                w.HBox([w.VBox(inputs[:6]), w.VBox(inputs[6:])]),
+                self.error,
+                self.verdict,
+                self.plots,
+                self.tables,
+            ]
+        )
+
+    def current_scanner(self) -> Scanner:
+        if self.source.value == "Catalogue":
+            return Scanner.from_name(self.scanner.value)
+        return Scanner(
+            name="typed",
+            range_rms_mm=self.range_mm.value,
+            range_ppm=self.range_ppm.value,
+            angle_rms_arcsec=self.h_angle.value,
+            vertical_angle_rms_arcsec=self.v_angle.value,
+            label="typed figures",
+        )
+
+    def update(self) -> None:
+        from planner.accuracy import height_rms, planimetric_rms
+        from planner.figures import plot_height, plot_planimetric
+
+        self.error.value = ""
+        try:
+            sc = self.current_scanner()
+        except PlannerError as exc:
+            self.error.value = _error_html(str(exc))
+            return
+        lo, hi = self.distance.value
+        hi = max(hi, lo + 5.0)
+        g, nu, limit = self.gamma.value, self.nu.value, self.limit.value
+        d = np.linspace(lo, hi, 601)
+        m_x, m_y = planimetric_rms(d, g, sc)
+        m_z = height_rms(d, nu, sc)
+        lines = []
+        for name, vals in (("m_x", m_x), ("m_y", m_y), ("m_z", m_z)):
+            bad = np.flatnonzero(vals > limit)
+            angle = f"ν = {nu:g}°" if name == "m_z" else f"γ = {g:g}°"
+            if not len(bad):
+                lines.append(f"{name} ≤ {limit:g} mm over the whole range ({angle})")
+            elif bad[0] == 0:
+                lines.append(f"{name} > {limit:g} mm already at {d[0]:.0f} m ({angle})")
+            else:
+                lines.append(
+                    f"{name} ≤ {limit:g} mm up to {'D' if name != 'm_z' else 'S'} = "
+                    f"{d[bad[0] - 1]:.0f} m at {angle}"
+                )
+        self.verdict.value = "<ul>" + "".join(f"<li>{html.escape(t)}</li>" for t in lines) + "</ul>"
+        fig, axes = plt.subplots(1, 3, figsize=(13, 3.8), layout="constrained")
+        plot_planimetric(
+            sc, sorted({0.0, 30.0, 60.0, g}), hi, axes=axes[:2], paper=sc.name == DEFAULT_SCANNER
+        )
+        plot_height(
+            sc,
+            sorted({0.0, 30.0, 60.0, 90.0, nu}),
+            hi,
+            ax=axes[2],
+            paper=sc.name == DEFAULT_SCANNER,
+        )
+        for ax in axes:
+            ax.axhline(limit, color="crimson", lw=0.8, ls="--")
+            ax.set_xlim(lo, hi)
+        fig.suptitle("")
+        _show(self.plots, fig)
+        t1 = planimetric_table(sc)
+        t1.columns = [f"{a} γ={b:g}°" for a, b in t1.columns]
+        t2 = height_table(sc)
+        t2.columns = [f"m_z ν={v:g}°" for v in t2.columns]
+        items = [
+            w.HTML("<b>Table 1 layout (eq. 2), mm</b>"),
+            t1.round(2),
+            w.HTML("<b>Table 2 layout (eq. 4, S₀ = S), mm</b>"),
+            t2.round(2),
+        ]
+        if sc.name == DEFAULT_SCANNER:
+            from planner.reference import compare_table1, compare_table2
+
+            mis = pd.concat(
+                [
+                    compare_table1().query("misprint").reset_index().assign(table="Table 1"),
+                    compare_table2().query("misprint").reset_index().assign(table="Table 2"),
+                ]
+            )
+            items += [
+                w.HTML(
+                    "<b>Cells of the paper that its own formulas do not give (the formula "
+                    "wins):</b>"
+                ),
+                mis.round(3),
+            ]
+        _show(self.tables, *items)
+
+    def show(self) -> None:
+        self.update()
+        display(self.widget)
+
+
+class TargetExplorer:
+    """Minimum target sizes (2d / 4d) vs distance, and how far each inventory item serves."""
+
+    def __init__(self) -> None:
+        style = {"description_width": "12em"}
+        self.step = w.BoundedFloatText(
+            value=2.0,
+            min=0.1,
+            max=50.0,
+            step=0.1,
+            description="scan step at 10 m [mm]",
+            style=style,
+        )
+        self.max_distance = w.BoundedFloatText(
+            value=350.0, min=10, max=2000, step=10, description="up to [m]", style=style
+        )
+        self.inventory = w.Textarea(
+            value="flat-70, flat, 70\nsphere-200, sphere, 200\nsphere-400, sphere, 400\n"
+            "cylinder-150, cylinder, 150",
+            description="inventory (name, type, size mm)",
+            style=style,
+            layout=w.Layout(width="60%", height="7em"),
+        )
+        self.error = w.HTML()
+        self.out = w.Output()
+        for widget in (self.step, self.max_distance, self.inventory):
+            widget.observe(lambda _c: self.update(), "value")
+        self.widget = w.VBox([self.step, self.max_distance, self.inventory, self.error, self.out])
+
+    def update(self) -> None:
+        from planner.figures import plot_target_sizes
+        from planner.tables import target_size_table
+        from planner.targets import TargetItem, recommend_targets
+
+        self.error.value = ""
+        try:
+            items = []
+            for line in self.inventory.value.splitlines():
+                if line.strip():
+                    parts = [p.strip() for p in line.split(",")]
+                    if len(parts) != 3:
+                        raise PlannerError(f"inventory line {line!r}: write name, type, size in mm")
+                    items.append(TargetItem(parts[0], parts[1], float(parts[2])))
+            fig = plot_target_sizes(self.step.value, self.max_distance.value, items)
+            table = target_size_table(step_mm_at_10m=self.step.value)
+            reach = recommend_targets(
+                self.max_distance.value, items, step_mm_at_10m=self.step.value
+            )
+        except (PlannerError, ValueError) as exc:
+            self.error.value = _error_html(str(exc))
+            return
+        _show(
+            self.out,
+            fig,
+            w.HTML("<b>Sossa's Table 2 layout (mm)</b>"),
+            table,
+            w.HTML("<b>Your inventory: the farthest distance each item qualifies</b>"),
+            reach[["name", "type", "size_mm", "max_distance_m"]].round(1),
+        )
+
+    def show(self) -> None:
+        self.update()
+        display(self.widget)

@@ -1,0 +1,66 @@
+"""``planner report``: one self-contained HTML file with the tables and embedded figures."""
+
+from __future__ import annotations
+
+import re
+
+from test_cli import run
+
+
+def test_report_html_is_self_contained(tmp_path):
+    out = tmp_path / "report.html"
+    code, stdout, err = run(
+        "report",
+        "--scanner",
+        "leica-4mm-60urad",
+        "--max-xy-mm",
+        "5",
+        "--max-z-mm",
+        "5",
+        "--out",
+        str(out),
+        "-q",
+    )
+    assert code == 0, err
+    html = out.read_text()
+    assert "self-contained" in stdout
+    # the station and target tables
+    for sid in ("S01", "S05"):
+        assert f">{sid}<" in html
+    assert ">T01<" in html and "sphere-200" in html
+    assert "Registration targets" in html and "Unmet areas" in html
+    # embedded figures: the plan map and three coverage plots at least
+    assert len(re.findall(r'src="data:image/png;base64,', html)) >= 4
+    # no input cells, no code
+    assert 'class="jp-CodeMirrorEditor' not in html and "ReportContent.from_parameters" not in html
+    assert "site_path = None" not in html  # not even the parameters
+    # nothing fetched from the network when it opens
+    assert not re.search(r'<(script|link|img)[^>]+(src|href)="https?://', html)
+
+
+def test_report_bad_input_exits_2(tmp_path):
+    code, _, err = run(
+        "report",
+        "--scanner",
+        "leica-4mm-60urad",
+        "--max-xy-mm",
+        "5",
+        "--max-z-mm",
+        "-1",
+        "--out",
+        str(tmp_path / "r.html"),
+    )
+    assert code == 2 and "max_z_mm must be > 0" in err
+    assert not (tmp_path / "r.html").exists()
+    code, _, err = run(
+        "report",
+        "--scanner",
+        "leica-4mm-60urad",
+        "--max-xy-mm",
+        "5",
+        "--max-z-mm",
+        "5",
+        "--out",
+        str(tmp_path / "r.pdf"),
+    )
+    assert code == 2 and "must name an .html file" in err
