@@ -270,6 +270,132 @@ def cmd_report(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def _print_table(df: pd.DataFrame, decimals: int = 3) -> None:
+    print(df.to_string(float_format=lambda v: f"{v:.{decimals}f}"))
+
+
+def _write_profile(args: argparse.Namespace, **results) -> None:
+    from planner.calibration import profile_from_calibration
+
+    if not args.profile_out:
+        return
+    base = load_scanner(args.base_scanner)
+    name = args.name or Path(args.profile_out).stem
+    scanner, notes = profile_from_calibration(name, base=base, **results)
+    path = scanner.save(args.profile_out)
+    print(
+        f"\nProfile {scanner.name!r} written to {path}: ranging {scanner.range_rms_mm:.2f} mm + "
+        f"{scanner.range_ppm:.1f} ppm, angles {scanner.angle_rms_arcsec:.1f}″ H, "
+        f"{scanner.tilt_rms_arcsec:.1f}″ V (use it with --scanner {path})"
+    )
+    for note in notes:
+        print(f"note: {note}")
+
+
+def cmd_calibrate_lab(args: argparse.Namespace) -> int:
+    from planner.calibration import lab_test
+
+    t = lab_test(
+        args.reference,
+        args.scan,
+        k=args.k,
+        pairs=args.pairs,
+        reference_precision_mm=args.reference_precision_mm,
+        declared_target_precision_mm=args.declared_precision_mm,
+    )
+    h = t.helmert
+    print(f"6-parameter Helmert transformation of {len(h.residuals)} targets (scanner → lab):")
+    print(
+        "  translation [m]: "
+        + " ".join(f"{v:.4f}" for v in h.translation_m)
+        + " (± "
+        + ", ".join(f"{h.std_errors[k]:.2f}" for k in ("tx_mm", "ty_mm", "tz_mm"))
+        + " mm)"
+    )
+    print(
+        "  rotation ω, φ, κ [deg]: "
+        + " ".join(f"{v:.5f}" for v in h.angles_deg)
+        + f" (± {h.std_errors['omega_arcsec']:.1f}, {h.std_errors['phi_arcsec']:.1f}, "
+        f"{h.std_errors['kappa_arcsec']:.1f}″)"
+    )
+    print(f"  residual RMS of a coordinate σ₀ = {h.sigma0_mm:.2f} mm (redundancy {h.redundancy})")
+    print(f"\nUncertainty from {len(t.pairs)} target pairs (seed 002, eq. 1–9):")
+    _print_table(t.summary())
+    sig = t.significant
+    print(f"\nPairs with a significant difference (|Δ| > M_r): {len(sig)}")
+    if len(sig):
+        cols = [
+            "target_a",
+            "target_b",
+            "distance_m",
+            "d_distance_mm",
+            "d_horizontal_arcsec",
+            "d_vertical_arcsec",
+        ]
+        _print_table(sig[cols].head(30).set_index(["target_a", "target_b"]), 2)
+    if t.network:
+        print(f"\n{t.network}")
+    for warning in t.warnings:
+        print(f"warning: {warning}")
+    range_from = None if args.range_from == "none" else args.range_from
+    angles_from = None if args.angles_from == "none" else args.angles_from
+    _write_profile(args, lab=t, range_from=range_from, angles_from=angles_from)
+    return EXIT_OK
+
+
+def cmd_calibrate_baseline(args: argparse.Namespace) -> int:
+    from planner.calibration import baseline_calibration, six_segment_constant
+
+    cols = (
+        {
+            c.strip().lower()
+            for c in pd.read_csv(args.file, sep=None, engine="python", nrows=1).columns
+        }
+        if Path(args.file).is_file()
+        else set()
+    )
+    if {"from", "to", "distance_m"} <= cols:
+        r = six_segment_constant(args.file)
+        print(
+            "Six-segment (all-combinations) method (seed 004): additive constant of the instrument"
+        )
+        print(
+            f"  k = {r.k_mm:+.2f} mm ± {r.k_se_mm:.2f} mm;  σ₀ of a distance {r.sigma0_mm:.2f} mm"
+        )
+        print("  adjusted distances from the first point [m]:")
+        _print_table(r.segments_m.to_frame(), 4)
+        if args.profile_out:
+            raise InputError(
+                "the six-segment method gives the additive constant only, no profile; "
+                "use a baseline comparison (measured_m, reference_m) for --profile-out"
+            )
+        return EXIT_OK
+    r = baseline_calibration(args.file)
+    print(f"Baseline comparison of {r.n} distances (seed 004): D_ref = D + k + R·D")
+    print(
+        f"  k = {r.k_mm:+.2f} mm ± {r.k_se_mm:.2f} mm;  "
+        f"R = {r.scale_ppm:+.1f} ppm ± {r.scale_se_ppm:.1f} ppm"
+    )
+    print(f"  residual RMS after correction: {r.residual_rms_mm:.2f} mm")
+    _print_table(r.residuals.set_index("measured_m"), 4)
+    _write_profile(args, baseline=r, range_from="baseline", include_scale=args.include_scale)
+    return EXIT_OK
+
+
+def cmd_calibrate_axes(args: argparse.Namespace) -> int:
+    from planner.calibration import axis_errors
+
+    r = axis_errors(args.file, orientation=not args.no_orientation)
+    print(f"Axis errors from {len(r.residuals)} directions (seed 004, eq. 5–6):")
+    print(f"  collimation c = {r.c_deg:.4f}° ± {r.c_se_deg:.4f}°  ({r.c_deg * 3600:.1f}″)")
+    print(f"  trunnion-axis tilt i = {r.i_deg:.4f}° ± {r.i_se_deg:.4f}°  ({r.i_deg * 3600:.1f}″)")
+    if r.orientation_deg is not None:
+        print(f"  orientation of the scanner's zero direction: {r.orientation_deg:.4f}°")
+    print(f"  residual RMS of a direction after correction: {r.residual_rms_arcsec:.1f}″")
+    _write_profile(args, axes=r, angles_from="axes")
+    return EXIT_OK
+
+
 def free_port(preferred: int) -> int:
     """``preferred`` if it is free on 127.0.0.1, else any free port."""
     import socket
@@ -493,6 +619,72 @@ def build_parser() -> argparse.ArgumentParser:
         help="which dashboard (default: the station planner)",
     )
     sv.set_defaults(func=cmd_serve)
+
+    cal = sub.add_parser("calibrate", help="turn calibration measurements into a scanner profile")
+    csub = cal.add_subparsers(title="methods", parser_class=_Parser, required=True)
+
+    def profile_options(p: argparse.ArgumentParser) -> None:
+        p.add_argument("--profile-out", metavar="FILE.toml", help="write a scanner profile")
+        p.add_argument("--name", help="profile name (default: the file's stem)")
+        p.add_argument(
+            "--base-scanner",
+            default=DEFAULT_SCANNER,
+            metavar="NAME|FILE.toml",
+            help="profile giving the figures not calibrated (step, ranges, field of view)",
+        )
+
+    lab = csub.add_parser("lab", help="seed 002's lab uncertainty test (Helmert, m_r, M_r)")
+    lab.add_argument("reference", metavar="REF.csv", help="lab-frame targets: id,x,y,z[,sigma_mm]")
+    lab.add_argument("scan", metavar="SCAN.csv", help="scanner-frame targets: id,x,y,z")
+    lab.add_argument("--k", type=float, default=2.0, help="coverage factor of M_r (default 2)")
+    lab.add_argument("--pairs", choices=["all", "first"], default="all")
+    lab.add_argument("--reference-precision-mm", type=float, default=None)
+    lab.add_argument(
+        "--declared-precision-mm",
+        type=float,
+        default=None,
+        help="the scanner's declared target precision, to check the reference network",
+    )
+    lab.add_argument(
+        "--range-from",
+        choices=["lab", "none"],
+        default="lab",
+        help="carry the distance m_r into the profile (default) or keep the base's",
+    )
+    lab.add_argument(
+        "--angles-from",
+        choices=["lab", "none"],
+        default="none",
+        help="carry the angular m_r (inflated at short lab distances) or keep the base's",
+    )
+    profile_options(lab)
+    lab.set_defaults(func=cmd_calibrate_lab)
+
+    bl = csub.add_parser("baseline", help="additive constant and scale (seed 004)")
+    bl.add_argument(
+        "file",
+        metavar="FILE.csv",
+        help="measured_m,reference_m (baseline comparison) or from,to,distance_m (six-segment)",
+    )
+    bl.add_argument(
+        "--include-scale",
+        action="store_true",
+        help="put |R| into the profile's ppm part (for data not corrected for scale)",
+    )
+    profile_options(bl)
+    bl.set_defaults(func=cmd_calibrate_baseline)
+
+    ax = csub.add_parser("axes", help="collimation and trunnion-axis errors (seed 004)")
+    ax.add_argument(
+        "file", metavar="FILE.csv", help="vertical_angle_deg,observed_deg,reference_deg"
+    )
+    ax.add_argument(
+        "--no-orientation",
+        action="store_true",
+        help="no orientation unknown (the paper's eq. 6: both zero directions equal)",
+    )
+    profile_options(ax)
+    ax.set_defaults(func=cmd_calibrate_axes)
 
     f = sub.add_parser("figures", help="regenerate the figures in figures/")
     f.add_argument("--out", default="figures", help="output folder (default figures/)")
