@@ -62,6 +62,19 @@ def _show(out: w.Output, *objs) -> None:
                 plt.close(o)
 
 
+_STYLE = {"description_width": "14em"}
+_FULL = w.Layout(width="98%")
+
+
+def _number(
+    value: float, lo: float, hi: float, step: float, description: str
+) -> w.BoundedFloatText:
+    """A labelled number box of the dashboard's controls."""
+    return w.BoundedFloatText(
+        value=value, min=lo, max=hi, step=step, description=description, style=_STYLE, layout=_FULL
+    )
+
+
 def _scanner_dropdown() -> w.Dropdown:
     names = list(catalogue())
     return w.Dropdown(
@@ -80,90 +93,32 @@ class StationPlanner:
         from planner.requirements import PlanSettings, Requirements
 
         req, st = Requirements(), PlanSettings()
-        style = {"description_width": "14em"}
-        lay = w.Layout(width="98%")
         self.site_source = w.ToggleButtons(
             options=["Default site", "Upload a file"], value="Default site"
         )
         self.upload = w.FileUpload(
             accept=".geojson,.json,.wkt,.txt,.csv", multiple=False, description="Footprint file"
         )
-        self.height = w.BoundedFloatText(
-            value=0.0,
-            min=0.0,
-            max=1000.0,
-            step=0.5,
-            style=style,
-            description="Height where missing [m] (0: none)",
-            layout=lay,
-        )
+        self.height = _number(0.0, 0.0, 1000.0, 0.5, "Height where missing [m] (0: none)")
         self.buildings = w.Text(
             value="",
             placeholder="all (as in the file)",
-            style=style,
+            style=_STYLE,
             description="Buildings to plan (ids)",
-            layout=lay,
+            layout=_FULL,
         )
         self.scanner = _scanner_dropdown()
-        self.max_x = w.BoundedFloatText(
-            value=req.max_x_mm,
-            min=0.1,
-            max=100,
-            step=0.5,
-            style=style,
-            description="max m_x [mm]",
-            layout=lay,
-        )
-        self.max_y = w.BoundedFloatText(
-            value=req.max_y_mm,
-            min=0.1,
-            max=100,
-            step=0.5,
-            style=style,
-            description="max m_y [mm]",
-            layout=lay,
-        )
-        self.max_z = w.BoundedFloatText(
-            value=req.max_z_mm,
-            min=0.1,
-            max=100,
-            step=0.5,
-            style=style,
-            description="max m_z [mm]",
-            layout=lay,
-        )
-        self.max_gamma = w.BoundedFloatText(
-            value=req.max_gamma_deg,
-            min=1,
-            max=89,
-            step=5,
-            style=style,
-            description="max deviation γ [deg]",
-            layout=lay,
-        )
-        self.max_spacing = w.BoundedFloatText(
-            value=0.0,
-            min=0.0,
-            max=1000,
-            step=1,
-            style=style,
-            description="max point spacing [mm] (0: none)",
-            layout=lay,
-        )
+        self.max_x = _number(req.max_x_mm, 0.1, 100, 0.5, "max m_x [mm]")
+        self.max_y = _number(req.max_y_mm, 0.1, 100, 0.5, "max m_y [mm]")
+        self.max_z = _number(req.max_z_mm, 0.1, 100, 0.5, "max m_z [mm]")
+        self.max_gamma = _number(req.max_gamma_deg, 1, 89, 5, "max deviation γ [deg]")
+        self.max_spacing = _number(0.0, 0.0, 1000, 1, "max point spacing [mm] (0: none)")
         self.per_sample = w.BoundedIntText(
-            value=1, min=1, max=5, style=style, description="stations per sample", layout=lay
+            value=1, min=1, max=5, description="stations per sample", style=_STYLE, layout=_FULL
         )
-        self.grid = w.BoundedFloatText(
-            value=st.grid_m,
-            min=0.5,
-            max=20,
-            step=0.5,
-            style=style,
-            description="candidate grid [m]",
-            layout=lay,
-        )
+        self.grid = _number(st.grid_m, 0.5, 20, 0.5, "candidate grid [m]")
         self.plan_button = w.Button(description="Plan", button_style="primary")
-        self.progress = w.FloatProgress(value=0.0, min=0.0, max=1.0, description="", layout=lay)
+        self.progress = w.FloatProgress(value=0.0, min=0.0, max=1.0, description="", layout=_FULL)
         self.status = w.HTML("")
         self.error = w.HTML("")
         self.summary = w.HTML("")
@@ -300,20 +255,7 @@ class StationPlanner:
         )
         _show(self.map_out, plot_plan_map(p))
         self._show_coverage()
-        cols = [
-            "building_id",
-            "facade_id",
-            "length_m",
-            "samples",
-            "party_wall_samples",
-            "met",
-            "unmet",
-            "worst_m_x_mm",
-            "worst_m_y_mm",
-            "worst_m_z_mm",
-            "stations",
-        ]
-        _show(self.fac_out, p.facades[cols].round(2).style.hide(axis="index"))
+        _show(self.fac_out, p.facade_table())
         if p.unmet.empty:
             _show(self.unmet_out, w.HTML("<p>Every sample meets the requirements.</p>"))
         else:

@@ -21,11 +21,23 @@ from planner.facades import SIGHT_OFFSET_M, FacadeSet, footprint_edges
 from planner.requirements import PlanSettings, Requirements
 from planner.scanner import Scanner
 from planner.site import Site
-from planner.visibility import clear_height, edges_in_front
+from planner.visibility import clear_height, edges_in_box, edges_in_front
 
 __all__ = ["Context", "PairMetrics", "evaluate_candidates", "evaluate_stations"]
 
 Progress = Callable[[float, str], None]
+
+#: Per-pair quantities reported for chosen stations (besides ``score``, ``view``, ``ok``).
+METRIC_KEYS = (
+    "distance_m",
+    "slope_distance_m",
+    "gamma_deg",
+    "nu_deg",
+    "m_x_mm",
+    "m_y_mm",
+    "m_z_mm",
+    "spacing_mm",
+)
 
 #: Candidate × sample pairs evaluated at once: ~20 float arrays of this many stay in cache.
 PAIR_CHUNK = 65_536
@@ -137,13 +149,7 @@ def facade_pairs(
     if len(em):
         lo_xy = np.minimum(cand_xy.min(axis=0), np.minimum(fac.start[f], fac.end[f]))
         hi_xy = np.maximum(cand_xy.max(axis=0), np.maximum(fac.start[f], fac.end[f]))
-        e = ctx.edges[em]
-        em = em[
-            (np.maximum(e[:, 0], e[:, 2]) >= lo_xy[0])
-            & (np.minimum(e[:, 0], e[:, 2]) <= hi_xy[0])
-            & (np.maximum(e[:, 1], e[:, 3]) >= lo_xy[1])
-            & (np.minimum(e[:, 1], e[:, 3]) <= hi_xy[1])
-        ]
+        em = em[edges_in_box(ctx.edges[em], (*lo_xy, *hi_xy))]
     target = fac.col_xy[cols] + SIGHT_OFFSET_M * n
     zc = clear_height(
         np.repeat(cand_xy, k, axis=0),
@@ -316,18 +322,7 @@ def evaluate_stations(ctx: Context, station_xy: np.ndarray) -> dict[str, np.ndar
     station is not in front of the facade or out of reach of the evaluation."""
     fac = ctx.facades
     n, k = len(fac.z), len(station_xy)
-    keys = (
-        "distance_m",
-        "slope_distance_m",
-        "gamma_deg",
-        "nu_deg",
-        "m_x_mm",
-        "m_y_mm",
-        "m_z_mm",
-        "spacing_mm",
-        "score",
-    )
-    out = {key: np.full((n, k), np.nan) for key in keys}
+    out = {key: np.full((n, k), np.nan) for key in (*METRIC_KEYS, "score")}
     out["view"] = np.zeros((n, k), dtype=bool)
     out["ok"] = np.zeros((n, k), dtype=bool)
     for f in range(fac.n_facades):

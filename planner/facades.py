@@ -15,7 +15,7 @@ import shapely
 
 from planner.site import Site
 
-__all__ = ["FacadeSet", "build_facades"]
+__all__ = ["FacadeSet", "build_facades", "footprint_edges", "party_wall_mask"]
 
 #: A sample whose point, moved this far outward, lies in another building or obstacle
 #: lower than the neighbour's height is on a party wall [m].
@@ -152,7 +152,7 @@ def build_facades(
         [f"{fid[f]}-{c:03d}-{r:02d}" for f, c, r in zip(s_f, k_in_f[s_col], r_in_c, strict=True)],
         dtype=object,
     )
-    party = _party_wall(
+    party = party_wall_mask(
         site, np.array(f_b, dtype=object)[s_f], s_xy + PARTY_WALL_GAP_M * normal[s_f], s_z
     )
     return FacadeSet(
@@ -174,8 +174,11 @@ def build_facades(
     )
 
 
-def _party_wall(site: Site, owner: np.ndarray, probe_xy: np.ndarray, z: np.ndarray) -> np.ndarray:
-    """Samples whose outward probe point lies inside another blocker lower-or-equal in z."""
+def party_wall_mask(
+    site: Site, owner: np.ndarray, probe_xy: np.ndarray, z: np.ndarray
+) -> np.ndarray:
+    """Points on a wall of building ``owner`` whose probe point (just outside the wall) lies
+    in another building or obstacle at least as high as the point: a party wall there."""
     out = np.zeros(len(z), dtype=bool)
     blockers = site.blockers
     geoms = [g for _, g, _ in blockers]
@@ -198,6 +201,3 @@ def footprint_edges(site: Site) -> tuple[np.ndarray, np.ndarray]:
                 segs.append(np.hstack([xy[:-1], xy[1:]]))
                 heights.append(np.full(len(xy) - 1, h))
     return np.vstack(segs), np.concatenate(heights)
-
-
-__all__ += ["footprint_edges"]

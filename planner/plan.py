@@ -20,7 +20,13 @@ import pandas as pd
 
 from planner.candidates import candidate_grid, reach_m
 from planner.errors import InputError
-from planner.evaluate import Context, best_achievable, evaluate_candidates, evaluate_stations
+from planner.evaluate import (
+    METRIC_KEYS,
+    Context,
+    best_achievable,
+    evaluate_candidates,
+    evaluate_stations,
+)
 from planner.facades import build_facades
 from planner.io import write_text_atomic
 from planner.optimise import CoverSolution, solve_cover
@@ -90,6 +96,22 @@ class Plan:
         """Samples (not on party walls) where the requirements are not met."""
         c = self.coverage
         return c[~c["meets"] & ~c["party_wall"]]
+
+    def facade_table(self) -> pd.DataFrame:
+        """The per-facade summary as shown to a surveyor (indexed by facade id)."""
+        cols = [
+            "building_id",
+            "length_m",
+            "samples",
+            "party_wall_samples",
+            "met",
+            "unmet",
+            "worst_m_x_mm",
+            "worst_m_y_mm",
+            "worst_m_z_mm",
+            "stations",
+        ]
+        return self.facades.set_index("facade_id")[cols].round(2)
 
     @property
     def meets_all(self) -> bool:
@@ -434,16 +456,7 @@ def _coverage(
     n = len(fac.z)
     k_req = ctx.req.stations_per_sample
     n_ok_cand = np.asarray(ev.ok.sum(axis=1)).ravel()
-    keys = (
-        "distance_m",
-        "slope_distance_m",
-        "gamma_deg",
-        "nu_deg",
-        "m_x_mm",
-        "m_y_mm",
-        "m_z_mm",
-        "spacing_mm",
-    )
+    keys = METRIC_KEYS
     if ids:  # the assigned station: the best meeting one, else the best that sees the sample
         score = np.where(dense["ok"], dense["score"], dense["score"] + 1e6)
         score = np.where(dense["view"], score, np.inf)

@@ -15,9 +15,9 @@ import scipy.sparse as sp
 from scipy.sparse.csgraph import connected_components, minimum_spanning_tree
 
 from planner.evaluate import Context
-from planner.facades import SIGHT_OFFSET_M
+from planner.facades import PARTY_WALL_GAP_M, SIGHT_OFFSET_M, party_wall_mask
 from planner.targets import SPACING_FACTOR, choose_target
-from planner.visibility import clear_height
+from planner.visibility import clear_height, edges_in_box
 
 __all__ = ["Network", "TargetCandidates", "connect", "target_candidates", "usability"]
 
@@ -39,7 +39,7 @@ def target_candidates(ctx: Context, stand_xy: np.ndarray) -> TargetCandidates:
     for the target types the inventory holds."""
     fac, st = ctx.facades, ctx.settings
     types = {i.type for i in st.inventory}
-    xyz, kind, nrm = [], [], []
+    xyz, kind, nrm, owner = [], [], [], []
     if "flat" in types:
         for f in range(fac.n_facades):
             z = min(st.target_height_m, fac.height_m[f] - 0.2)
@@ -50,9 +50,11 @@ def target_candidates(ctx: Context, stand_xy: np.ndarray) -> TargetCandidates:
                 xyz.append([*xy, z])
                 kind.append("flat")
                 nrm.append(fac.normal[f])
+                owner.append(fac.building_id[f])
         if xyz:
-            party = _on_party_wall(ctx, np.array(xyz), np.array(nrm))
-            keep = ~party
+            walls = np.array(xyz)
+            probe = walls[:, :2] + PARTY_WALL_GAP_M * np.array(nrm)
+            keep = ~party_wall_mask(ctx.site, np.array(owner, dtype=object), probe, walls[:, 2])
             xyz = [p for p, k in zip(xyz, keep, strict=True) if k]
             nrm = [p for p, k in zip(nrm, keep, strict=True) if k]
             kind = [p for p, k in zip(kind, keep, strict=True) if k]
@@ -66,16 +68,6 @@ def target_candidates(ctx: Context, stand_xy: np.ndarray) -> TargetCandidates:
         np.array(kind, dtype=object),
         np.array(nrm, dtype=float).reshape(-1, 2),
     )
-
-
-def _on_party_wall(ctx: Context, xyz: np.ndarray, normal: np.ndarray) -> np.ndarray:
-    import shapely
-
-    out = np.zeros(len(xyz), dtype=bool)
-    probe = shapely.points(xyz[:, :2] + 0.1 * normal)
-    for _, geom, h in ctx.site.blockers:
-        out |= shapely.contains(geom, probe) & (xyz[:, 2] <= h)
-    return out
 
 
 def usability(
@@ -112,12 +104,7 @@ def usability(
             continue
         reach = float(s[idx].max())
         e = ctx.edges
-        near = (
-            (np.maximum(e[:, 0], e[:, 2]) >= sxy[0] - reach)
-            & (np.minimum(e[:, 0], e[:, 2]) <= sxy[0] + reach)
-            & (np.maximum(e[:, 1], e[:, 3]) >= sxy[1] - reach)
-            & (np.minimum(e[:, 1], e[:, 3]) <= sxy[1] + reach)
-        )
+        near = edges_in_box(e, (sxy[0] - reach, sxy[1] - reach, sxy[0] + reach, sxy[1] + reach))
         end = tc.xyz[idx, :2] + SIGHT_OFFSET_M * tc.normal[idx]
         zc = clear_height(
             np.broadcast_to(sxy, (len(idx), 2)), hi, end, e[near], ctx.edge_heights[near]

@@ -174,19 +174,7 @@ class ReportContent:
         return _closed(plot_coverage(self.plan, quantity))
 
     def facades(self) -> pd.DataFrame:
-        cols = [
-            "building_id",
-            "length_m",
-            "samples",
-            "party_wall_samples",
-            "met",
-            "unmet",
-            "worst_m_x_mm",
-            "worst_m_y_mm",
-            "worst_m_z_mm",
-            "stations",
-        ]
-        return self.plan.facades.set_index("facade_id")[cols].round(2)
+        return self.plan.facade_table()
 
     def unmet(self):
         u = self.plan.unmet

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["clear_height", "edges_in_front"]
+__all__ = ["clear_height", "edges_in_box", "edges_in_front"]
 
 #: Upper bound on (sight lines × edges) handled at once, to bound memory (~10 arrays of it).
 MAX_ELEMENTS = 2_000_000
@@ -67,6 +67,17 @@ def clear_height(
     return out
 
 
+def edges_in_box(edges: np.ndarray, bbox: tuple[float, float, float, float]) -> np.ndarray:
+    """Mask of edges ``(M, 4)`` whose bounding box overlaps ``bbox`` = (xmin, ymin, xmax, ymax)."""
+    xmin, ymin, xmax, ymax = bbox
+    return (
+        (np.maximum(edges[:, 0], edges[:, 2]) >= xmin)
+        & (np.minimum(edges[:, 0], edges[:, 2]) <= xmax)
+        & (np.maximum(edges[:, 1], edges[:, 3]) >= ymin)
+        & (np.minimum(edges[:, 1], edges[:, 3]) <= ymax)
+    )
+
+
 def edges_in_front(
     edges: np.ndarray,
     point: np.ndarray,
@@ -77,11 +88,4 @@ def edges_in_front(
     of the facade line (through ``point``, outward ``normal``) and overlapping ``bbox``."""
     d0 = (edges[:, 0] - point[0]) * normal[0] + (edges[:, 1] - point[1]) * normal[1]
     d1 = (edges[:, 2] - point[0]) * normal[0] + (edges[:, 3] - point[1]) * normal[1]
-    xmin, ymin, xmax, ymax = bbox
-    inside = (
-        (np.maximum(edges[:, 0], edges[:, 2]) >= xmin)
-        & (np.minimum(edges[:, 0], edges[:, 2]) <= xmax)
-        & (np.maximum(edges[:, 1], edges[:, 3]) >= ymin)
-        & (np.minimum(edges[:, 1], edges[:, 3]) <= ymax)
-    )
-    return inside & (np.maximum(d0, d1) > 1e-6)
+    return edges_in_box(edges, bbox) & (np.maximum(d0, d1) > 1e-6)
