@@ -6,18 +6,20 @@ with greedy set cover as the fallback and as an upper bound (scipy's milp takes 
 solution, so the greedy count is given to HiGHS as the constraint ``Σx <= greedy``).
 
 HiGHS does not look at the clock during presolve, which on large sites (10 000 samples ×
-30 000 candidates) can run for many minutes. So on Linux the integer program runs in a forked
-child process that is stopped at the time limit; the greedy cover is then the plan, and its
-gap is measured against a packing lower bound (samples that share no candidate each need a
-station of their own).
+30 000 candidates) can run for many minutes. So large models run in a separate process that
+is stopped at the time limit; the greedy cover is then the plan, and its gap is measured
+against a packing lower bound (samples that share no candidate each need a station of their
+own).
 """
 
 from __future__ import annotations
 
-import multiprocessing
+import subprocess
 import sys
+import tempfile
 import time
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 import scipy.sparse as sp
@@ -123,46 +125,56 @@ def _milp(a: sp.csr_matrix, dem: np.ndarray, upper: int, time_limit_s: float):
     return res.status, res.message, res.x, getattr(res, "mip_dual_bound", None)
 
 
-_CHILD_INPUT: tuple | None = None
-
-
-def _child(conn) -> None:  # pragma: no cover - runs in the forked process
-    try:
-        conn.send(_milp(*_CHILD_INPUT))
-    except BaseException as exc:
-        conn.send((4, f"milp failed: {exc}", None, None))
-    finally:
-        conn.close()
+#: Models up to this many nonzeros are solved in-process (HiGHS presolve is quick there);
+#: larger ones in a separate process that is stopped at the time limit.
+IN_PROCESS_NNZ = 400_000
 
 
 def _milp_with_deadline(a, dem, upper, time_limit_s):
-    """Run the integer program, stopping it at ``time_limit_s`` (+ a grace of 2 s) for sure."""
-    global _CHILD_INPUT
-    if sys.platform != "linux":
+    """Run the integer program, stopping it at ``time_limit_s`` (+ a grace of 5 s) for sure.
+
+    Large models run in a worker process (``python -m planner._milp_worker``), killed at the
+    deadline; not a fork (a fork of a process with threads, such as a Jupyter kernel, can
+    deadlock) and not multiprocessing's spawn (it re-runs the caller's main module).
+    """
+    if a.nnz <= IN_PROCESS_NNZ:
         return _milp(a, dem, upper, time_limit_s)
-    ctx = multiprocessing.get_context("fork")
-    _CHILD_INPUT = (a, dem, upper, time_limit_s)
-    parent, child = ctx.Pipe(duplex=False)
-    proc = ctx.Process(target=_child, args=(child,), daemon=True)
-    try:
-        proc.start()
-        child.close()
-        if parent.poll(time_limit_s + 2.0):
-            result = parent.recv()
-        else:
-            result = (
+    a = sp.csr_matrix(a)
+    with tempfile.TemporaryDirectory(prefix="planner-milp-") as tmp:
+        src, dst = Path(tmp) / "in.npz", Path(tmp) / "out.npz"
+        np.savez(
+            src,
+            data=a.data,
+            indices=a.indices,
+            indptr=a.indptr,
+            shape=np.array(a.shape),
+            dem=dem,
+            upper=upper,
+            time_limit=time_limit_s,
+        )
+        proc = subprocess.Popen(
+            [sys.executable, "-m", "planner._milp_worker", str(src), str(dst)],
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.PIPE,
+        )
+        try:
+            _, err = proc.communicate(timeout=time_limit_s + 5.0)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.communicate()
+            return (
                 1,
                 "stopped at the time limit (HiGHS presolve does not check the clock)",
                 None,
                 None,
             )
-    finally:
-        _CHILD_INPUT = None
-        if proc.is_alive():
-            proc.kill()
-        proc.join(1.0)
-        parent.close()
-    return result
+        if proc.returncode != 0 or not dst.exists():
+            tail = err.decode(errors="replace").strip().splitlines()[-1:] or ["no message"]
+            return 4, f"the solver process failed ({tail[0]})", None, None
+        with np.load(dst) as r:
+            x = r["x"] if bool(r["has_x"]) else None
+            dual = None if np.isnan(r["dual"]) else float(r["dual"])
+            return int(r["status"]), str(r["message"]), x, dual
 
 
 def solve_cover(
