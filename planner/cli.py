@@ -277,12 +277,20 @@ def _print_table(df: pd.DataFrame, decimals: int = 3) -> None:
 def _write_profile(args: argparse.Namespace, **results) -> None:
     from planner.calibration import profile_from_calibration
 
-    if not args.profile_out:
+    if not args.profile_out and not args.install:
         return
+    from planner.scanner import user_profile_dir
+
     base = load_scanner(args.base_scanner)
-    name = args.name or Path(args.profile_out).stem
+    name = args.name or (Path(args.profile_out).stem if args.profile_out else None)
+    if not name:
+        raise InputError("--install needs a profile name: give --name NAME")
     scanner, notes = profile_from_calibration(name, base=base, **results)
-    path = scanner.save(args.profile_out)
+    out = args.profile_out or user_profile_dir() / f"{name}.toml"
+    path = scanner.save(out)
+    if args.install and args.profile_out:
+        scanner.save(user_profile_dir() / f"{name}.toml")
+        print(f"installed as {name!r} in {user_profile_dir()} (use --scanner {name})")
     print(
         f"\nProfile {scanner.name!r} written to {path}: ranging {scanner.range_rms_mm:.2f} mm + "
         f"{scanner.range_ppm:.1f} ppm, angles {scanner.angle_rms_arcsec:.1f}″ H, "
@@ -625,6 +633,12 @@ def build_parser() -> argparse.ArgumentParser:
 
     def profile_options(p: argparse.ArgumentParser) -> None:
         p.add_argument("--profile-out", metavar="FILE.toml", help="write a scanner profile")
+        p.add_argument(
+            "--install",
+            action="store_true",
+            help="also install the profile in your profile folder, to use it by name "
+            "($TLS_PLANNER_PROFILES or ~/.tls-planner/scanners)",
+        )
         p.add_argument("--name", help="profile name (default: the file's stem)")
         p.add_argument(
             "--base-scanner",

@@ -23,7 +23,7 @@ from numpy.typing import ArrayLike
 from planner._array import as_float_array
 from planner.errors import InputError
 
-__all__ = ["Scanner", "catalogue", "load_scanner", "read_scanner_file"]
+__all__ = ["Scanner", "catalogue", "load_scanner", "read_scanner_file", "user_profile_dir"]
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -138,14 +138,15 @@ class Scanner:
     # -- construction ---------------------------------------------------------------------
     @classmethod
     def from_name(cls, name: str) -> Scanner:
-        """The catalogue profile called ``name`` (case-insensitive).
+        """The profile called ``name`` (case-insensitive): shipped, or installed by the user
+        in :func:`user_profile_dir` (``planner calibrate … --install``).
 
         Raises
         ------
         InputError
             For an unknown name; the message lists the valid names.
         """
-        cat = catalogue()
+        cat = {**catalogue(), **_user_profiles()}
         key = str(name).strip().lower()
         if key in cat:
             return cat[key]
@@ -274,6 +275,25 @@ def read_scanner_file(path: str | Path) -> list[Scanner]:
     except UnicodeDecodeError:
         raise InputError(f"{p} is not a UTF-8 text file; a scanner profile is TOML text") from None
     return _parse_toml(text, str(p))
+
+
+def user_profile_dir() -> Path:
+    """Where a user's own profiles live: ``$TLS_PLANNER_PROFILES``, else
+    ``~/.tls-planner/scanners``. Every ``*.toml`` there is found by name."""
+    import os
+
+    env = os.environ.get("TLS_PLANNER_PROFILES")
+    return Path(env).expanduser() if env else Path.home() / ".tls-planner" / "scanners"
+
+
+def _user_profiles() -> dict[str, Scanner]:
+    folder = user_profile_dir()
+    out: dict[str, Scanner] = {}
+    if folder.is_dir():
+        for path in sorted(folder.glob("*.toml")):
+            for s in read_scanner_file(path):
+                out[s.name.lower()] = s
+    return out
 
 
 @cache

@@ -193,6 +193,19 @@ def write(tmp_path, name, df):
     return p
 
 
+def test_installed_profile_is_found_by_name(tmp_path, monkeypatch):
+    monkeypatch.setenv("TLS_PLANNER_PROFILES", str(tmp_path / "profiles"))
+    a = write(tmp_path, "axes.csv", simulate_axes())
+    code, out, err = run("calibrate", "axes", str(a), "--install", "--name", "site-scanner")
+    assert code == 0, err
+    assert (tmp_path / "profiles" / "site-scanner.toml").is_file()
+    assert Scanner.from_name("site-scanner").extra["calibration"]["angles_from"] == "axes"
+    code, out, _ = run("accuracy", "--scanner", "site-scanner", "--distances", "10")
+    assert code == 0 and "site-scanner" in out
+    code, _, err = run("calibrate", "axes", str(a), "--install")
+    assert code == 2 and "--install needs a profile name" in err
+
+
 def test_calibrate_cli_writes_a_profile(tmp_path):
     ref, scan = simulate_lab()
     r, s = write(tmp_path, "ref.csv", ref), write(tmp_path, "scan.csv", scan)
