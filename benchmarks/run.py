@@ -67,7 +67,7 @@ def run_case(case: str) -> dict:
     from planner.candidates import candidate_grid, reach_m
     from planner.evaluate import Context, evaluate_candidates
     from planner.facades import build_facades
-    from planner.plan import plan
+    from planner.planning import plan
     from planner.requirements import PlanSettings, Requirements
     from planner.scanner import Scanner
 

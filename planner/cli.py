@@ -188,7 +188,7 @@ def _xy(text: str) -> float | tuple[float, float]:
 
 
 def run_plan(args: argparse.Namespace) -> int:
-    from planner.plan import plan
+    from planner.planning import plan
     from planner.requirements import PlanSettings, Requirements
     from planner.siteio import default_site, read_site
 

@@ -216,7 +216,7 @@ class StationPlanner:
 
     def run(self) -> None:
         """Plan with the current inputs and show the result (errors as a readable message)."""
-        from planner.plan import plan
+        from planner.planning import plan
 
         self.error.value = ""
         self.plan_button.disabled = True

@@ -184,7 +184,7 @@ def make_figures(out_dir: str | Path = "figures") -> list[Path]:
     out = Path(out_dir)
     paper = Scanner.from_name("leica-4mm-60urad")
     from planner.maps import plot_coverage, plot_plan_map
-    from planner.plan import plan
+    from planner.planning import plan
 
     default_plan = plan()
     written = [

@@ -18,7 +18,7 @@ from IPython.display import Markdown
 
 from planner.errors import InputError, PlannerError
 from planner.io import write_text_atomic
-from planner.plan import Plan, plan
+from planner.planning import Plan, plan
 from planner.requirements import PlanSettings, Requirements
 from planner.scanner import load_scanner
 

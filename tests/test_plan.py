@@ -13,7 +13,7 @@ from planner import Scanner, height_rms, planimetric_rms, sight_geometry
 from planner.candidates import reach_m
 from planner.evaluate import Context, evaluate_stations
 from planner.facades import build_facades
-from planner.plan import plan
+from planner.planning import plan
 from planner.requirements import PlanSettings, Requirements
 from planner.site import Building, Obstacle, Site
 from planner.visibility import clear_height

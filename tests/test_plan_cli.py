@@ -10,7 +10,7 @@ from test_cli import run
 
 import planner.io
 from planner.cli import main
-from planner.plan import COVERAGE_COLUMNS, STATION_COLUMNS, TARGET_COLUMNS, plan
+from planner.planning import COVERAGE_COLUMNS, STATION_COLUMNS, TARGET_COLUMNS, plan
 
 FAST = ["--sample-spacing-m", "3", "--sample-height-step-m", "3"]
 
