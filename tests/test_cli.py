@@ -12,6 +12,9 @@ import pytest
 
 from planner.cli import main
 
+#: The paper's scanner and 5 mm / 5 mm: the arguments most plan and report tests share.
+PAPER_5MM = ["--scanner", "leica-4mm-60urad", "--max-xy-mm", "5", "--max-z-mm", "5"]
+
 
 def run(*argv: str) -> tuple[int, str, str]:
     out, err = io.StringIO(), io.StringIO()

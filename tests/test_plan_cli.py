@@ -6,7 +6,7 @@ import json
 
 import pandas as pd
 import pytest
-from test_cli import run
+from test_cli import PAPER_5MM, run
 
 import planner.io
 from planner.cli import main
@@ -19,12 +19,7 @@ def test_default_site_plan_meets_and_writes_the_contract(tmp_path):
     out = tmp_path / "plan"
     code, stdout, _ = run(
         "plan",
-        "--scanner",
-        "leica-4mm-60urad",
-        "--max-xy-mm",
-        "5",
-        "--max-z-mm",
-        "5",
+        *PAPER_5MM,
         "--out",
         str(out),
         "-q",
@@ -58,12 +53,7 @@ def test_wall_just_above_a_lower_neighbours_roof_is_unseen_from_the_ground(tmp_p
     (12 m deep): from 1.5 m they would be seen only from ~144 m away — out of reach."""
     code, stdout, _ = run(
         "plan",
-        "--scanner",
-        "leica-4mm-60urad",
-        "--max-xy-mm",
-        "5",
-        "--max-z-mm",
-        "5",
+        *PAPER_5MM,
         "--out",
         str(tmp_path),
         "-q",
@@ -112,12 +102,7 @@ def test_bad_input_exits_2_and_writes_nothing(tmp_path, extra, message):
     out = tmp_path / "never"
     argv = [
         "plan",
-        "--scanner",
-        "leica-4mm-60urad",
-        "--max-xy-mm",
-        "5",
-        "--max-z-mm",
-        "5",
+        *PAPER_5MM,
         "--out",
         str(out),
         "-q",
@@ -135,12 +120,7 @@ def test_bad_site_file_exits_2(tmp_path):
     code, _, err = run(
         "plan",
         str(bad),
-        "--scanner",
-        "leica-4mm-60urad",
-        "--max-xy-mm",
-        "5",
-        "--max-z-mm",
-        "5",
+        *PAPER_5MM,
         "--out",
         str(tmp_path / "o"),
     )

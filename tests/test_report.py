@@ -4,19 +4,14 @@ from __future__ import annotations
 
 import re
 
-from test_cli import run
+from test_cli import PAPER_5MM, run
 
 
 def test_report_html_is_self_contained(tmp_path):
     out = tmp_path / "report.html"
     code, stdout, err = run(
         "report",
-        "--scanner",
-        "leica-4mm-60urad",
-        "--max-xy-mm",
-        "5",
-        "--max-z-mm",
-        "5",
+        *PAPER_5MM,
         "--out",
         str(out),
         "-q",
@@ -54,12 +49,7 @@ def test_report_bad_input_exits_2(tmp_path):
     assert not (tmp_path / "r.html").exists()
     code, _, err = run(
         "report",
-        "--scanner",
-        "leica-4mm-60urad",
-        "--max-xy-mm",
-        "5",
-        "--max-z-mm",
-        "5",
+        *PAPER_5MM,
         "--out",
         str(tmp_path / "r.pdf"),
     )
