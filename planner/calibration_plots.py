@@ -30,16 +30,13 @@ def plot_lab(t: LabTest) -> Figure:
     axes[0].set_xlabel("target")
     axes[0].set_ylabel("mm")
     axes[0].legend(fontsize=7)
-    for ax, col, key, unit, title in (
-        (axes[1], "d_distance_mm", "distance_mm", "mm", "distance"),
-        (axes[2], "d_horizontal_arcsec", "horizontal_arcsec", "″", "horizontal direction φ"),
-        (axes[3], "d_vertical_arcsec", "vertical_arcsec", "″", "vertical direction θ"),
+    for ax, part, key, unit, title in (
+        (axes[1], "distance", "distance_mm", "mm", "distance"),
+        (axes[2], "horizontal", "horizontal_arcsec", "″", "horizontal direction φ"),
+        (axes[3], "vertical", "vertical_arcsec", "″", "vertical direction θ"),
     ):
-        sig = t.pairs[
-            f"significant_{title.split()[0]}"
-            if title == "distance"
-            else ("significant_horizontal" if "horizontal" in title else "significant_vertical")
-        ]
+        col = f"d_{key}"
+        sig = t.pairs[f"significant_{part}"]
         ax.scatter(t.pairs["distance_m"], t.pairs[col], s=3, c=np.where(sig, "crimson", "0.4"))
         big = t.M_r[key]
         ax.axhline(big, color="crimson", ls="--", lw=0.8)

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import base64
 import html
+import json
 import tempfile
 import traceback
 from pathlib import Path
@@ -279,7 +280,7 @@ class StationPlanner:
             ("coverage.csv", p.coverage_csv().encode(), "text/csv"),
             (
                 "plan.geojson",
-                __import__("json").dumps(p.geojson(), indent=1).encode(),
+                json.dumps(p.geojson(), indent=1).encode(),
                 "application/geo+json",
             ),
         ]

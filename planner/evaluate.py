@@ -291,10 +291,10 @@ def best_achievable(
     meets). Arrays aligned with ``samples``; inf where no candidate sees the sample."""
     fac = ctx.facades
     out = {k: np.full(len(samples), np.inf) for k in BEST_KEYS}
-    pos = {int(s): i for i, s in enumerate(samples)}
+    samples = np.asarray(samples)
     for f in np.unique(fac.facade[samples]):
-        smp = np.array([s for s in samples if fac.facade[s] == f])
-        idx = np.array([pos[int(s)] for s in smp])
+        idx = np.flatnonzero(fac.facade[samples] == f)
+        smp = samples[idx]
         cand = ctx.front_candidates(f, cand_xy)
         step = max(1, PAIR_CHUNK // len(smp))
         for lo in range(0, len(cand), step):

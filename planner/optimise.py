@@ -63,7 +63,7 @@ def _reduce(a: sp.csr_matrix, demand: np.ndarray) -> tuple[sp.csr_matrix, np.nda
     a = a[rows]
     demand = demand[rows]
     used = np.flatnonzero(np.asarray(a.sum(axis=0)).ravel() > 0)
-    return a[:, used].tocsc().tocsr(), demand, used
+    return a[:, used].tocsr(), demand, used
 
 
 def greedy_cover(a: sp.csr_matrix, demand: np.ndarray) -> np.ndarray:

@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from planner.accuracy import station_rms_pair
 from planner.candidates import candidate_grid, reach_m
 from planner.errors import InputError
 from planner.evaluate import (
@@ -334,8 +335,6 @@ def plan(
 
     say(0.0, "sampling facades")
     fac = build_facades(site, st.sample_spacing_m, st.sample_height_step_m)
-    from planner.accuracy import station_rms_pair
-
     reach = reach_m(sc, req, station_rms_pair(st.station_rms_mm))
     cand = candidate_grid(site, fac, reach, st.grid_m, st.clearance_m)
     ctx = Context.build(site, fac, sc, req, st, reach)
@@ -383,7 +382,7 @@ def plan(
             "samples_met": dense["ok"].sum(axis=0) if len(ids) else [],
         }
     )
-    targets, links = _targets_and_links(ctx, tc, net, station_xy, ids)
+    targets, links = _targets_and_links(ctx, tc, net, ids)
     timings["coverage"] = time.perf_counter() - t
     if net is not None:
         messages.append(f"Registration: {net.message}.")
@@ -537,13 +536,13 @@ def _facade_summary(fac: Any, cov: pd.DataFrame) -> pd.DataFrame:
 
 
 def _targets_and_links(
-    ctx: Context, tc: Any, net: Any, station_xy: np.ndarray, ids: list[str]
+    ctx: Context, tc: Any, net: Any, ids: list[str]
 ) -> tuple[pd.DataFrame, pd.DataFrame]:
     tcols = [*TARGET_COLUMNS, "item"]
     lcols = ["station_a", "station_b", "common_targets", "targets_placed"]
     if net is None or not len(ids):
         return pd.DataFrame(columns=tcols), pd.DataFrame(columns=lcols)
-    rows = target_table_rows(ctx, tc, net, station_xy)
+    rows = target_table_rows(ctx, tc, net)
     targets = pd.DataFrame(
         {
             "target_id": [f"T{i + 1:02d}" for i in range(len(rows))],

@@ -168,6 +168,8 @@ class Network:
     target_links: dict[int, list[tuple[int, int]]]
     n_components: int
     message: str
+    usable: np.ndarray  # (T, K) target usable from each of ``stations``
+    need_mm: np.ndarray  # (T, K) minimum target size there [mm]
 
 
 #: Linking stations are searched on a grid this coarse (a subset of the candidates) [m].
@@ -185,21 +187,23 @@ def connect(ctx: Context, tc: TargetCandidates, cand_xy: np.ndarray, chosen: np.
     """Link the chosen stations; add the fewest linking stations found if they are not
     connected; choose three targets per link of a spanning tree, reusing targets."""
     stations = list(int(c) for c in chosen)
-    usable, _ = usability(ctx, tc, cand_xy[stations])
+    usable, need = usability(ctx, tc, cand_xy[stations])
     links = link_matrix(usable, tc.xyz)
     n_comp, labels = connected_components(sp.csr_matrix(links > 0), directed=False)
     added = 0
     if n_comp > 1 and len(tc.xyz):
         pool = _coarse(cand_xy, max(LINK_GRID_M, ctx.settings.grid_m))
-        all_usable, _ = usability(ctx, tc, cand_xy[pool])
+        all_usable, all_need = usability(ctx, tc, cand_xy[pool])
+        taken = set(np.flatnonzero(np.isin(pool, stations)).tolist())
         while n_comp > 1:
-            taken = {int(np.searchsorted(pool, s)) for s in stations if s in set(pool.tolist())}
             best = _best_bridge(all_usable, usable, labels, n_comp, tc.xyz, taken)
             if best is None:
                 break
             for c in best:
                 stations.append(int(pool[c]))
+                taken.add(c)
                 usable = np.column_stack([usable, all_usable[:, c]])
+                need = np.column_stack([need, all_need[:, c]])
                 added += 1
             links = link_matrix(usable, tc.xyz)
             n_comp, labels = connected_components(sp.csr_matrix(links > 0), directed=False)
@@ -237,7 +241,16 @@ def connect(ctx: Context, tc: TargetCandidates, cand_xy: np.ndarray, chosen: np.
             "coordinated with a total station"
         )
     return Network(
-        np.array(stations), added, all_links, tree_links, chosen_targets, target_links, n_comp, msg
+        np.array(stations),
+        added,
+        all_links,
+        tree_links,
+        chosen_targets,
+        target_links,
+        n_comp,
+        msg,
+        usable,
+        need,
     )
 
 
@@ -285,11 +298,9 @@ def _best_bridge(
     return None
 
 
-def target_table_rows(
-    ctx: Context, tc: TargetCandidates, net: Network, station_xy: np.ndarray
-) -> list[dict]:
+def target_table_rows(ctx: Context, tc: TargetCandidates, net: Network) -> list[dict]:
     """Rows of the target list: position, type, minimum and chosen size, stations."""
-    usable, need = usability(ctx, tc, station_xy)
+    usable, need = net.usable, net.need_mm
     rows = []
     for t in net.targets:
         users = sorted({s for link in net.target_links[t] for s in link})

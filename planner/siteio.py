@@ -268,6 +268,10 @@ def _csv_features(text: str, origin: str) -> list[Feature]:
     )
     props: dict[str, dict[str, Any]] = {}
     order: list[str] = []
+    optional = {
+        k: _col(lowmap, k)
+        for k in ("part", "ring", "height", "height_m", "role", "plan", "kind", "name")
+    }
     for rowno, row in enumerate(reader, start=2):
         ident = (row.get(cols["id"]) or "").strip()
         if not ident:
@@ -275,8 +279,8 @@ def _csv_features(text: str, origin: str) -> list[Feature]:
         try:
             x = float(row[cols["x"]])
             y = float(row[cols["y"]])
-            part = int(float(row.get(_col(lowmap, "part")) or 0)) if _col(lowmap, "part") else 0
-            ring = int(float(row.get(_col(lowmap, "ring")) or 0)) if _col(lowmap, "ring") else 0
+            part = int(float(row.get(optional["part"]) or 0)) if optional["part"] else 0
+            ring = int(float(row.get(optional["ring"]) or 0)) if optional["ring"] else 0
         except (TypeError, ValueError):
             raise InputError(
                 f"{origin} line {rowno}: x, y (and ring, part) must be numbers"
@@ -285,7 +289,7 @@ def _csv_features(text: str, origin: str) -> list[Feature]:
             order.append(ident)
             props[ident] = {"id": ident}
         for key in ("height", "height_m", "role", "plan", "kind", "name"):
-            c = _col(lowmap, key)
+            c = optional[key]
             if c and (row.get(c) or "").strip():
                 props[ident][key] = row[c].strip()
         rings[ident][(part, ring)].append((x, y))
