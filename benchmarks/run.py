@@ -64,11 +64,11 @@ def run_case(case: str) -> dict:
     """Run one case in this process and return its measurements."""
     import numpy as np
 
-    from planner.candidates import candidate_grid, reach_m
-    from planner.evaluate import Context, evaluate_candidates
-    from planner.facades import build_facades
-    from planner.planning import plan
-    from planner.requirements import PlanSettings, Requirements
+    from planner.pipeline.candidates import candidate_grid
+    from planner.pipeline.evaluate import Context, evaluate_candidates
+    from planner.pipeline.facades import build_facades
+    from planner.pipeline.planning import plan, reach_m
+    from planner.pipeline.requirements import PlanSettings, Requirements
     from planner.scanner import Scanner
 
     site = build_site(case)

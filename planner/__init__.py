@@ -8,63 +8,76 @@ Unit rule (for the whole package, stated once):
 
 an argument that breaks the rule says so in its name (``step_mm_at_10m``, ``range_ppm``).
 
-Layers: formula functions (:mod:`planner.accuracy`, :mod:`planner.spacing`,
-:mod:`planner.targets`, :mod:`planner.polar`) → data classes (:class:`Scanner`) →
-orchestration (:func:`plan`, in :mod:`planner.planning`); the command line
-(:mod:`planner.cli`), notebooks and reports hold no science.
+Layers, each importing only the ones above it in this list:
+
+1. formulas and data classes, flat in :mod:`planner` — :mod:`~planner.accuracy`
+   (eq. 2 and 4), :mod:`~planner.polar`, :mod:`~planner.spacing`, :mod:`~planner.targets`,
+   :mod:`~planner.scanner`, :mod:`~planner.site`, :mod:`~planner.siteio`,
+   :mod:`~planner.calibration`, :mod:`~planner.reference` (the papers);
+2. the planning pipeline, :mod:`planner.pipeline` — requirements, facades, candidates,
+   visibility, evaluation, the optimiser, registration, :func:`plan` and :class:`Plan`;
+3. the application, :mod:`planner.app` — command line, dashboards, reports, maps, figures;
+   nothing below imports it, and it holds no science.
+
+The names below are imported lazily (on first use), so ``import planner`` stays cheap.
 """
 
-from planner.accuracy import height_rms, planimetric_rms, ranging_rms_mm
-from planner.errors import InputError, PlannerError
-from planner.planning import Plan, plan
-from planner.polar import deviation_angle_deg, polar_to_xyz, sight_geometry, tilt_deg
-from planner.requirements import PlanSettings, Requirements
-from planner.scanner import Scanner, catalogue, load_scanner
-from planner.site import Area, Building, Obstacle, Site
-from planner.siteio import default_site, read_site
-from planner.spacing import facade_point_spacing_mm, point_spacing_mm
-from planner.targets import (
-    DEFAULT_INVENTORY,
-    TargetItem,
-    max_target_distance_m,
-    min_target_size_mm,
-    recommend_targets,
-)
-from planner.units import RHO_ARCSEC, arcsec_to_urad, urad_to_arcsec
+from __future__ import annotations
 
-__version__ = "0.1.0"
+import importlib
+from typing import Any
 
-__all__ = [
-    "DEFAULT_INVENTORY",
-    "RHO_ARCSEC",
-    "Area",
-    "Building",
-    "InputError",
-    "Obstacle",
-    "Plan",
-    "PlanSettings",
-    "PlannerError",
-    "Requirements",
-    "Scanner",
-    "Site",
-    "TargetItem",
-    "arcsec_to_urad",
-    "catalogue",
-    "default_site",
-    "deviation_angle_deg",
-    "facade_point_spacing_mm",
-    "height_rms",
-    "load_scanner",
-    "max_target_distance_m",
-    "min_target_size_mm",
-    "plan",
-    "planimetric_rms",
-    "point_spacing_mm",
-    "polar_to_xyz",
-    "ranging_rms_mm",
-    "read_site",
-    "recommend_targets",
-    "sight_geometry",
-    "tilt_deg",
-    "urad_to_arcsec",
-]
+__version__ = "0.2.0"
+
+#: Public name → the module that defines it (one place; ``__all__`` is derived from it).
+_EXPORTS: dict[str, str] = {
+    "DEFAULT_INVENTORY": "planner.targets",
+    "DEFAULT_SCANNER": "planner.scanner",
+    "RHO_ARCSEC": "planner.units",
+    "Area": "planner.site",
+    "Building": "planner.site",
+    "InputError": "planner.errors",
+    "Obstacle": "planner.site",
+    "Plan": "planner.pipeline.result",
+    "PlanSettings": "planner.pipeline.requirements",
+    "PlannerError": "planner.errors",
+    "Requirements": "planner.pipeline.requirements",
+    "Scanner": "planner.scanner",
+    "Site": "planner.site",
+    "TargetItem": "planner.targets",
+    "arcsec_to_urad": "planner.units",
+    "catalogue": "planner.scanner",
+    "default_site": "planner.siteio",
+    "deviation_angle_deg": "planner.polar",
+    "facade_point_spacing_mm": "planner.spacing",
+    "height_rms": "planner.accuracy",
+    "load_scanner": "planner.scanner",
+    "max_distance_m": "planner.accuracy",
+    "max_target_distance_m": "planner.targets",
+    "min_target_size_mm": "planner.targets",
+    "plan": "planner.pipeline.planning",
+    "planimetric_rms": "planner.accuracy",
+    "point_spacing_mm": "planner.spacing",
+    "polar_to_xyz": "planner.polar",
+    "ranging_rms_mm": "planner.accuracy",
+    "read_site": "planner.siteio",
+    "recommend_targets": "planner.targets",
+    "sight_geometry": "planner.polar",
+    "tilt_deg": "planner.polar",
+    "urad_to_arcsec": "planner.units",
+}
+
+__all__ = sorted(_EXPORTS)
+
+
+def __getattr__(name: str) -> Any:
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module 'planner' has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value  # later look-ups skip this function
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *__all__})

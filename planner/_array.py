@@ -7,10 +7,10 @@ the valid range and the first offending value.
 
 from __future__ import annotations
 
+import sys
 from typing import Any
 
 import numpy as np
-import pandas as pd
 
 from planner.errors import InputError
 
@@ -73,8 +73,9 @@ def like_input(result: np.ndarray, *inputs: Any) -> Any:
     A float for all-scalar input, a Series (with the first Series' index) when a Series
     came in and the shapes agree, otherwise the ndarray.
     """
+    pd = sys.modules.get("pandas")  # a Series can only come in if pandas is loaded
     for x in inputs:
-        if isinstance(x, pd.Series) and result.shape == (len(x),):
+        if pd is not None and isinstance(x, pd.Series) and result.shape == (len(x),):
             return pd.Series(result, index=x.index)
     if result.ndim == 0:
         return float(result)

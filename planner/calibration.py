@@ -1,17 +1,18 @@
 """From a scanner's calibration measurements to its planning profile.
 
-* :func:`lab_test` — the laboratory uncertainty test of seed 002 (Belgrade metrological
-  laboratory): a 6-parameter rigid (Helmert) transformation of the scanner's target
-  coordinates into the lab frame by least squares, then for target pairs the differences
-  of distance, horizontal direction φ = arctan(ΔX/ΔY) and vertical direction
+* :func:`lab_test` — the laboratory uncertainty test of the Belgrade procedure
+  ("Laboratory procedure for terrestrial laser scanners calibration", University of
+  Belgrade metrological laboratory): a 6-parameter rigid (Helmert) transformation of the
+  scanner's target coordinates into the lab frame by least squares, then for target pairs
+  the differences of distance, horizontal direction φ = arctan(ΔX/ΔY) and vertical direction
   θ = arctan(ΔZ/√(ΔX²+ΔY²)) between reference and scanner; ``m_r = √(ΣΔ²/n)`` (eq. 1, 3, 5),
   expanded ``M_r = k·m_r`` (eq. 7–8, k = 2) and every pair with ``|Δ| > M_r`` (eq. 9).
 * :func:`baseline_calibration` — additive constant k and scale R from distances measured
-  on a baseline of known lengths, ``D_ref = D + k + R·D`` (seed 004, baseline comparison).
+  on a baseline of known lengths, ``D_ref = D + k + R·D`` (Liu & Zhang, baseline comparison).
 * :func:`six_segment_constant` — the additive constant alone from all combinations of
-  distances between points of an unknown baseline (seed 004, Schwendener's method).
+  distances between points of an unknown baseline (Liu & Zhang, Schwendener's method).
 * :func:`axis_errors` — collimation c (effect c / cos α) and trunnion-axis tilt i (effect
-  i·tan α) from horizontal directions at several vertical angles α (seed 004, eq. 5–6).
+  i·tan α) from horizontal directions at several vertical angles α (Liu & Zhang, eq. 5–6).
 * :func:`profile_from_calibration` — a :class:`~planner.scanner.Scanner` built from these,
   with the calibration recorded in it.
 
@@ -30,7 +31,7 @@ import numpy as np
 import pandas as pd
 
 from planner.errors import InputError
-from planner.scanner import Scanner
+from planner.scanner import DEFAULT_SCANNER, Scanner
 from planner.units import RHO_ARCSEC
 
 __all__ = [
@@ -53,7 +54,7 @@ __all__ = [
 
 #: Targets whose coordinates spread less than this across their line are collinear [m].
 MIN_SPREAD_M = 0.01
-#: Seed 002: "angular values are inflated by the very short lab distances"; below this
+#: The Belgrade paper: "angular values are inflated by the very short lab distances"; below this
 #: median pair distance the profile carries a warning [m].
 SHORT_LAB_DISTANCE_M = 10.0
 
@@ -214,7 +215,7 @@ def helmert6(
 # -- the lab test --------------------------------------------------------------------------
 @dataclass
 class LabTest:
-    """Result of seed 002's laboratory uncertainty test."""
+    """Result of the Belgrade laboratory uncertainty test."""
 
     helmert: HelmertResult
     pairs: pd.DataFrame  # one row per target pair: Δ of distance [mm], φ and θ [″], flags
@@ -226,7 +227,7 @@ class LabTest:
 
     @property
     def significant(self) -> pd.DataFrame:
-        """Pairs with at least one |Δ| > M_r (eq. 9 of seed 002)."""
+        """Pairs with at least one |Δ| > M_r (eq. 9 of the Belgrade procedure)."""
         flags = self.pairs[
             ["significant_distance", "significant_horizontal", "significant_vertical"]
         ]
@@ -279,7 +280,7 @@ def lab_test(
     reference_precision_mm: float | None = None,
     declared_target_precision_mm: float | None = None,
 ) -> LabTest:
-    """Seed 002's laboratory uncertainty test of a scanner.
+    """The Belgrade laboratory uncertainty test of a scanner.
 
     Parameters
     ----------
@@ -293,7 +294,7 @@ def lab_test(
     reference_precision_mm, declared_target_precision_mm : float, optional
         The reference network's point precision (default: the largest ``sigma_mm``) and the
         scanner's declared target precision: the network is good enough when the first is at
-        most a third of the second (seed 002: 0.7 mm against 2 mm).
+        most a third of the second (the Belgrade paper: 0.7 mm against 2 mm).
     """
     ref = read_points(
         reference, None if not isinstance(reference, str | Path) else Path(reference).name
@@ -368,7 +369,8 @@ def lab_test(
     if median < SHORT_LAB_DISTANCE_M:
         warnings.append(
             f"the target pairs are short (median {median:.1f} m): angular figures from them are "
-            "inflated (seed 002's own caution: its 1–7 m lab gave 284–1232″ horizontally); "
+            "inflated (the Belgrade paper's own caution: its 1–7 m lab gave 284–1232″ "
+            "horizontally); "
             "prefer datasheet or long-range angular figures for planning"
         )
     return LabTest(hm, table, m_r, M_r, float(k), network, warnings)
@@ -389,7 +391,7 @@ class BaselineResult:
 
 
 def baseline_calibration(data: pd.DataFrame | str | Path) -> BaselineResult:
-    """Baseline comparison (seed 004): ``D_ref − D = k + R·D`` by least squares.
+    """Baseline comparison (Liu & Zhang): ``D_ref − D = k + R·D`` by least squares.
 
     ``data`` has columns ``measured_m`` and ``reference_m`` (one row per distance, at
     least 3 distinct lengths).
@@ -437,7 +439,7 @@ class SixSegmentResult:
 
 
 def six_segment_constant(data: pd.DataFrame | str | Path) -> SixSegmentResult:
-    """Schwendener's six-segment (all-combinations) method (seed 004, eq. 1–2).
+    """Schwendener's six-segment (all-combinations) method (Liu & Zhang, eq. 1–2).
 
     ``data``: columns ``from, to, distance_m``; points in order along a straight line (their
     order of first appearance, or numeric ids); the model ``D_jk + C + v = x_k − x_j`` with
@@ -509,7 +511,7 @@ def axis_errors(data: pd.DataFrame | str | Path, *, orientation: bool = True) ->
     """Collimation and trunnion-axis errors from directions at several vertical angles.
 
     ``data``: columns ``vertical_angle_deg`` (α), ``observed_deg`` (the scanner's horizontal
-    direction) and ``reference_deg`` (from a total station). Model (seed 004, eq. 5–6):
+    direction) and ``reference_deg`` (from a total station). Model (Liu & Zhang, eq. 5–6):
     ``observed − reference = c / cos α + i·tan α`` (+ an orientation constant o when
     ``orientation`` is True: the scanner's and the reference's zero directions differ in
     practice; eq. 6 assumes them equal).
@@ -567,11 +569,12 @@ def profile_from_calibration(
 
     ``range_from``: "lab" (m_r of distances) or "baseline" (residual RMS after k and R);
     ``angles_from``: "lab" (m_r of φ and θ) or "axes" (residual RMS of the directions after
-    c and i, horizontal only). Figures not chosen come from ``base`` (default: the seed-003
-    Leica class). ``include_scale`` adds |R| as the ppm part, for data that will not be
-    corrected for scale. The calibration is recorded in the profile's ``calibration`` table.
+    c and i, horizontal only). Figures not chosen come from ``base`` (default:
+    :data:`~planner.scanner.DEFAULT_SCANNER`, the Leica class of Voroshilov & Karachentsev).
+    ``include_scale`` adds |R| as the ppm part, for data that will not be corrected for
+    scale. The calibration is recorded in the profile's ``calibration`` table.
     """
-    base = base or Scanner.from_name("leica-4mm-60urad")
+    base = base or Scanner.from_name(DEFAULT_SCANNER)
     fig: dict[str, Any] = {
         "range_rms_mm": base.range_rms_mm,
         "range_ppm": base.range_ppm,
@@ -668,7 +671,7 @@ def simulate_lab(
     translation_m: tuple[float, float, float] = (0.52, -2.28, 1.45),
     seed: int = 2,
 ) -> tuple[pd.DataFrame, pd.DataFrame]:
-    """Targets on the walls and ceiling of a room (seed 002's lab is 9.3 × 7 × 3.3 m) and their
+    """Targets on the walls and ceiling of a room (the Belgrade lab is 9.3 × 7 × 3.3 m) and their
     scanner-frame coordinates from noisy polar measurements (range, horizontal and vertical
     angle with the given RMS) by a scanner at ``translation_m`` rotated by ``angles_deg``.
 
@@ -717,7 +720,7 @@ def simulate_baseline(
     points_m: Sequence[float] = (0, 5, 10, 20, 30, 40, 50),
     seed: int = 4,
 ) -> pd.DataFrame:
-    """All-combination distances on seed 004's baseline (points at 0, 5, 10, 20, 30, 40, 50 m)
+    """All-combination distances on Liu & Zhang's baseline (points at 0, 5, 10, 20, 30, 40, 50 m)
     as an instrument with additive constant k and scale R measures them:
     ``D = (D_ref − k) / (1 + R)`` plus noise. Columns ``from, to, measured_m, reference_m``."""
     rng = np.random.default_rng(seed)
@@ -741,7 +744,7 @@ def simulate_axes(
     seed: int = 5,
 ) -> pd.DataFrame:
     """Directions to targets at several vertical angles, affected by collimation c and
-    trunnion-axis tilt i (seed 004's HDS3000 values by default)."""
+    trunnion-axis tilt i (Liu & Zhang's HDS3000 values by default)."""
     rng = np.random.default_rng(seed)
     alpha = np.radians(np.asarray(alphas_deg, dtype=float))
     reference = np.linspace(10.0, 170.0, len(alpha))

@@ -1,4 +1,4 @@
-"""Polar measurement geometry: eq. 1 of seed 003, and D, S, γ, ν from coordinates.
+"""Polar measurement geometry: eq. 1 of Voroshilov & Karachentsev, and D, S, γ, ν from coordinates.
 
 Coordinates are metres in any right-handed frame with z up (a projected CRS plus height).
 Arrays broadcast: points as ``(..., 3)``, horizontal vectors as ``(..., 2)``.
@@ -40,7 +40,7 @@ def polar_to_xyz(
     nu_deg: ArrayLike,
     instrument_height_m: ArrayLike = 0.0,
 ) -> np.ndarray:
-    """Point coordinates from one station's polar measurement — eq. 1 of seed 003.
+    """Point coordinates from one station's polar measurement — eq. 1 of Voroshilov & Karachentsev.
 
     ``x = x_c + D·cos(α0 + β)``, ``y = y_c + D·sin(α0 + β)``, ``z = z_c + S·sin ν + i_c``
     with ``D = S·cos ν``. Angles are counted from the x axis towards y (the paper's

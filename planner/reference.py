@@ -1,7 +1,12 @@
-"""The papers' printed tables, transcribed once, and their comparison with the formulas.
+"""The papers: how they are cited, their printed tables, and the tables' comparison with the
+formulas.
 
-Used by the tests, the figures and the accuracy notebook, so that a misprint is recorded in
-one place. Printed values are as in the papers (decimal commas read as points).
+:data:`REFERENCES` is the one place a citation is written; code, reports and messages use
+it (or its short key in a docstring). The printed tables are transcribed once and used by
+the tests, the figures and the accuracy notebook, so that a misprint is recorded in one
+place. Printed values are as in the papers (decimal commas read as points). Where a venue,
+year or DOI is not printed in the copy the project worked from, the citation says so rather
+than guess.
 """
 
 from __future__ import annotations
@@ -9,10 +14,11 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from planner.scanner import Scanner
+from planner.scanner import DEFAULT_SCANNER, Scanner
 from planner.tables import height_table, planimetric_table, target_size_table
 
 __all__ = [
+    "REFERENCES",
     "SOSSA_TABLE2",
     "VOROSHILOV_TABLE1",
     "VOROSHILOV_TABLE2",
@@ -21,9 +27,46 @@ __all__ = [
     "compare_table2",
 ]
 
+#: Full citations by short key (the key is what docstrings use: "Voroshilov & Karachentsev").
+REFERENCES: dict[str, str] = {
+    "voroshilov": (
+        'A. P. Voroshilov, Yu. A. Karachentsev, "Choice of station location at surface laser '
+        'scanning of buildings and constructions" (in Russian: «Выбор местоположения станций '
+        "при наземном лазерном сканировании зданий и сооружений»), eq. 1–4, Tables 1–2; "
+        "journal and year are not printed in the copy used"
+    ),
+    "sossa": (
+        'B. R. Sossa, "Determination of optimal type and size of plane-based targets used in '
+        'terrestrial laser scanners calibration" (in Ukrainian), Inzhenerna heodeziia '
+        "(Engineering Geodesy), issue 65, 2018, ISSN 0130-6014, Tables 1–2"
+    ),
+    "belgrade": (
+        '"Laboratory procedure for terrestrial laser scanners calibration" (in Serbian), '
+        "Metrology Laboratory, Faculty of Civil Engineering, University of Belgrade, eq. 1–9 and "
+        "Table 3; authors and venue are not printed in the copy used"
+    ),
+    "liu-zhang": (
+        'Liu Chun, Zhang Yunling (Tongji University), "Calibration and accuracy assessment of '
+        'terrestrial 3-D laser scanners" (in Chinese: «地面三维激光扫描仪的检校与精度评估»), '
+        "baseline and six-segment models, eq. 5–6 (axis errors), Leica HDS3000 figures; venue "
+        "and year are not printed in the copy used"
+    ),
+    "xia2020": (
+        'Xia Guisuo, Niu Zhisheng, Liu Fang, Fu Yanjun, "Error analysis and calibration of '
+        'terrestrial 3D laser scanner", Chinese Journal of Sensors and Actuators 33(11), 2020, '
+        "doi:10.3969/j.issn.1004-1699.2020.11.014"
+    ),
+    "deformation-tls": (
+        '"Experimental study of the deformation accuracy of terrestrial 3-D laser scanners" '
+        "(in Chinese: «地面三维激光扫描仪变形精度试验研究»): Leica ScanStation2 modelled surface "
+        "±2 mm, target acquisition ±1.5 mm at 50 m; authors and venue are not printed in the "
+        "copy used"
+    ),
+}
+
 _D = [10, 20, 30, 40, 50, 60, 80, 100, 120]
 
-#: Seed 003, Table 1 as printed: m_x, m_y [mm] vs D [m] for γ = 0°, 30°, 60°.
+#: Voroshilov & Karachentsev, Table 1 as printed: m_x, m_y [mm] vs D [m] for γ = 0°, 30°, 60°.
 VOROSHILOV_TABLE1 = pd.DataFrame(
     {
         ("m_x", 0): [0.6, 1.2, 1.8, 2.4, 3.0, 3.6, 4.8, 6.0, 7.2],
@@ -39,7 +82,7 @@ VOROSHILOV_TABLE1.columns = pd.MultiIndex.from_tuples(
     VOROSHILOV_TABLE1.columns, names=["rms", "gamma_deg"]
 )
 
-#: Seed 003, Table 2 as printed: m_z [mm] vs S [m] for ν = 0°, 30°, 60°, 90°.
+#: Voroshilov & Karachentsev, Table 2 as printed: m_z [mm] vs S [m] for ν = 0°, 30°, 60°, 90°.
 VOROSHILOV_TABLE2 = pd.DataFrame(
     {
         0: [0.8, 1.7, 2.5, 3.4, 4.2, 5.1, 6.8, 8.4, 10.0],
@@ -83,23 +126,24 @@ def _compare(printed: pd.DataFrame, computed: pd.DataFrame, tol: float) -> pd.Da
 
 
 def compare_table1(scanner: Scanner | None = None) -> pd.DataFrame:
-    """Seed 003's Table 1, printed vs eq. 2, one row per cell, misprints flagged.
+    """Voroshilov & Karachentsev's Table 1, printed vs eq. 2, one row per cell, misprints flagged.
 
     The whole m_y(γ = 60°) column is a misprint: the paper printed
     cos γ·√(m_S² + (D·m_β/ρ)²), i.e. used cos²γ where eq. 2 has sin²γ.
     """
-    sc = scanner or Scanner.from_name("leica-4mm-60urad")
+    sc = scanner or Scanner.from_name(DEFAULT_SCANNER)
     computed = planimetric_table(sc, _D, [0, 30, 60])
     return _compare(VOROSHILOV_TABLE1, computed, TABLE1_TOLERANCE_MM)
 
 
 def compare_table2(scanner: Scanner | None = None) -> pd.DataFrame:
-    """Seed 003's Table 2, printed vs eq. 4 (S_0 = S, m_ν0 = m_ν), misprints flagged.
+    """Voroshilov & Karachentsev's Table 2, printed vs eq. 4 (S_0 = S, m_ν0 = m_ν), misprints
+    flagged.
 
     Two cells of the ν = 0° column are slips: 8.4 mm at 100 m and 10.0 mm at 120 m, where
     eq. 4 gives 8.50 and 10.20 mm.
     """
-    sc = scanner or Scanner.from_name("leica-4mm-60urad")
+    sc = scanner or Scanner.from_name(DEFAULT_SCANNER)
     computed = height_table(sc, _D, [0, 30, 60, 90])
     return _compare(VOROSHILOV_TABLE2, computed, TABLE2_TOLERANCE_MM)
 

@@ -23,7 +23,18 @@ from numpy.typing import ArrayLike
 from planner._array import as_float_array
 from planner.errors import InputError
 
-__all__ = ["Scanner", "catalogue", "load_scanner", "read_scanner_file", "user_profile_dir"]
+__all__ = [
+    "DEFAULT_SCANNER",
+    "Scanner",
+    "catalogue",
+    "load_scanner",
+    "read_scanner_file",
+    "user_profile_dir",
+]
+
+#: The scanner of Voroshilov & Karachentsev's worked example (m_S = 4 mm, 60 µrad): the
+#: default everywhere a scanner is not given (CLI, dashboard, report, ``plan()``).
+DEFAULT_SCANNER = "leica-4mm-60urad"
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -130,6 +141,14 @@ class Scanner:
         v = self.vertical_angle_rms_arcsec
         return self.angle_rms_arcsec if v is None else v
 
+    @property
+    def initial_tilt_rms_arcsec(self) -> float:
+        """RMS ``m_ν0`` of the initial (horizontal) direction in eq. 4 of Voroshilov &
+        Karachentsev [″]: the levelling (compensator) figure of a levelled scanner, else
+        ``m_ν`` as the paper's Table 2 assumes. The one place this default is decided."""
+        v = self.levelling_rms_arcsec
+        return self.tilt_rms_arcsec if v is None else v
+
     def range_rms_at(self, distance_m: ArrayLike) -> np.ndarray:
         """Ranging RMS ``m_S = a + b·D`` [mm] at ``distance_m`` [m] (b in ppm = mm/km)."""
         d = as_float_array(distance_m, "distance_m")
@@ -216,7 +235,7 @@ class Scanner:
 
     def save(self, path: str | Path) -> Path:
         """Write this profile as a TOML file (atomically: a good file is never half-replaced)."""
-        from planner.io import write_text_atomic
+        from planner.atomic import write_text_atomic
 
         return write_text_atomic(path, _TOML_HEADER + "\n" + self.to_toml())
 

@@ -1,7 +1,8 @@
 """Point spacing of a scan: d(D) from the scan step (Sossa, Table 1), and on a facade.
 
-Reference: B. Sossa, "Determination of optimal type and size of plane-based targets used in
-TLS calibration", Inzhenerna heodeziia 65 (2018) (seeds 000/001; MODEL.md §5).
+Reference: B. R. Sossa, "Determination of optimal type and size of plane-based targets used
+in terrestrial laser scanners calibration", Inzhenerna heodeziia 65 (2018), Table 1 (full
+citation in :data:`planner.reference.REFERENCES`; explained in ``docs/science.md``).
 """
 
 from __future__ import annotations
@@ -15,7 +16,15 @@ from planner._array import as_float_array, check_range, like_input
 from planner.errors import InputError
 from planner.scanner import Scanner
 
-__all__ = ["facade_point_spacing_mm", "point_spacing_mm", "resolve_step_mm"]
+__all__ = [
+    "facade_point_spacing_mm",
+    "facade_spacing_kernel",
+    "point_spacing_mm",
+    "resolve_step_mm",
+]
+
+#: Below this cosine a beam is taken as grazing: the spacing along it is infinite.
+GRAZING_COS = 1e-12
 
 
 def resolve_step_mm(
@@ -79,14 +88,27 @@ def facade_point_spacing_mm(
     nu = np.radians(
         check_range(as_float_array(nu_deg, "nu_deg"), "nu_deg", "deg", hi=90.0, absolute=True)
     )
-    delta_mm_per_m = step / 10.0
-    with np.errstate(divide="ignore"):
-        cos_g = np.cos(g)
-        cos_nu = np.cos(nu)
-        horizontal = np.where(
-            cos_g > 1e-12, s * cos_nu * delta_mm_per_m / np.maximum(cos_g, 1e-300), np.inf
-        )
-        vertical = np.where(cos_nu > 1e-12, s * delta_mm_per_m / np.maximum(cos_nu, 1e-300), np.inf)
-    out = np.fmax(horizontal, vertical)
+    out = facade_spacing_kernel(s * np.cos(nu), s, np.cos(g), step)
     out = np.where(np.isnan(s) | np.isnan(g) | np.isnan(nu), np.nan, out)
     return like_input(out, slope_distance_m, gamma_deg, nu_deg)
+
+
+def facade_spacing_kernel(
+    distance_m: np.ndarray,
+    slope_distance_m: np.ndarray,
+    cos_gamma: np.ndarray,
+    step_mm_at_10m: float,
+) -> np.ndarray:
+    """The array kernel of :func:`facade_point_spacing_mm` (no validation; the planner's hot
+    path calls it): ``δ·max(D / cos γ, S² / D)`` [mm] with δ = step / 10 m, S²/D = S / cos ν.
+    Infinite where the beam grazes the facade (cos γ or cos ν below :data:`GRAZING_COS`)."""
+    delta = step_mm_at_10m / 10.0  # mm per metre of distance
+    with np.errstate(divide="ignore", invalid="ignore"):
+        horizontal = np.where(cos_gamma > GRAZING_COS, distance_m / cos_gamma, np.inf)
+        vertical = np.where(
+            distance_m > GRAZING_COS * slope_distance_m,
+            slope_distance_m * slope_distance_m / distance_m,
+            np.inf,
+        )
+    out = delta * np.maximum(horizontal, vertical)
+    return np.where(slope_distance_m == 0.0, 0.0, out)  # at the scanner itself

@@ -39,7 +39,8 @@ def planimetric_table(
     gammas_deg: Sequence[float] = PAPER_GAMMAS_DEG,
     station_rms_mm: float | tuple[float, float] = 0.0,
 ) -> pd.DataFrame:
-    """m_x and m_y [mm] vs D (rows) and γ (columns) — the layout of seed 003's Table 1.
+    """m_x and m_y [mm] vs D (rows) and γ (columns) — the layout of Table 1 of Voroshilov &
+    Karachentsev.
 
     Columns are a MultiIndex ``(component, γ)`` with component ``m_x`` or ``m_y``.
     """
@@ -60,7 +61,7 @@ def height_table(
     slope_distances_m: Sequence[float] = PAPER_DISTANCES_M,
     nus_deg: Sequence[float] = PAPER_NUS_DEG,
 ) -> pd.DataFrame:
-    """m_z [mm] vs S (rows) and ν (columns) — the layout of seed 003's Table 2."""
+    """m_z [mm] vs S (rows) and ν (columns) — the layout of Table 2 of Voroshilov & Karachentsev."""
     s = np.asarray(slope_distances_m, dtype=float)[:, None]
     nu = np.asarray(nus_deg, dtype=float)[None, :]
     m_z = height_rms(s, nu, scanner)

@@ -1,6 +1,7 @@
 """Registration target sizing: Sossa's 2d / 4d rule and a user's target inventory.
 
-Reference: B. Sossa (2018), seeds 000/001; MODEL.md §5. A target is usable at a distance
+Reference: B. R. Sossa (2018), Table 2 (full citation in :data:`planner.reference.REFERENCES`;
+explained in ``docs/science.md``). A target is usable at a distance
 when it spans enough scan points to fit its surface unambiguously:
 
 * flat (plane): 3 non-collinear points span d, plus one d for the beam missing the ideal
@@ -36,7 +37,9 @@ __all__ = [
     "choose_target",
     "max_target_distance_m",
     "min_target_size_mm",
+    "parse_inventory",
     "recommend_targets",
+    "target_size_kernel",
 ]
 
 #: The scan step Sossa's tables use [mm at 10 m].
@@ -56,7 +59,7 @@ def _check_type(target_type: str) -> str:
     return t
 
 
-def _incidence_factor(target_type: str, incidence_deg: ArrayLike) -> np.ndarray:
+def _cos_incidence(target_type: str, incidence_deg: ArrayLike) -> np.ndarray:
     inc = check_range(
         as_float_array(incidence_deg, "incidence_deg"),
         "incidence_deg",
@@ -64,10 +67,17 @@ def _incidence_factor(target_type: str, incidence_deg: ArrayLike) -> np.ndarray:
         hi=90.0,
         absolute=True,
     )
-    if target_type != "flat":
-        return np.ones_like(inc)
+    return np.cos(np.radians(inc)) if target_type == "flat" else np.ones_like(inc)
+
+
+def target_size_kernel(
+    factor: np.ndarray | float, spacing_mm: np.ndarray, cos_incidence: np.ndarray | float = 1.0
+) -> np.ndarray:
+    """The array kernel of the 2d / 4d rule (no validation; registration planning calls it):
+    ``factor · d / cos θ`` [mm], ``factor`` from :data:`SPACING_FACTOR`, ``cos_incidence`` 1
+    for spheres and cylinders. Infinite for a flat target seen edge-on."""
     with np.errstate(divide="ignore"):
-        return 1.0 / np.cos(np.radians(inc))
+        return factor * spacing_mm / np.where(cos_incidence > 0, cos_incidence, 0.0)
 
 
 def min_target_size_mm(
@@ -91,8 +101,8 @@ def min_target_size_mm(
     """
     t = _check_type(target_type)
     step = resolve_step_mm(scanner, step_mm_at_10m, default=SOSSA_STEP_MM_AT_10M)
-    d = point_spacing_mm(distance_m, step_mm_at_10m=step)
-    size = SPACING_FACTOR[t] * np.asarray(d) * _incidence_factor(t, incidence_deg)
+    d = np.asarray(point_spacing_mm(distance_m, step_mm_at_10m=step))
+    size = target_size_kernel(SPACING_FACTOR[t], d, _cos_incidence(t, incidence_deg))
     return like_input(np.asarray(size, dtype=float), distance_m)
 
 
@@ -108,7 +118,7 @@ def max_target_distance_m(
     t = _check_type(target_type)
     step = resolve_step_mm(scanner, step_mm_at_10m, default=SOSSA_STEP_MM_AT_10M)
     size = check_range(as_float_array(size_mm, "size_mm"), "size_mm", "mm", lo=0.0)
-    dist = size * 10.0 / (SPACING_FACTOR[t] * step * _incidence_factor(t, incidence_deg))
+    dist = size * 10.0 * _cos_incidence(t, incidence_deg) / (SPACING_FACTOR[t] * step)
     return like_input(np.asarray(dist, dtype=float), size_mm)
 
 
@@ -150,6 +160,35 @@ def as_inventory(
     if not out:
         raise InputError("the target inventory is empty; list at least one (name, type, size_mm)")
     return out
+
+
+def parse_inventory(text: str) -> tuple[TargetItem, ...]:
+    """An inventory from text, one item per line: ``name, type, size_mm`` (``#`` comments).
+
+    Examples
+    --------
+    >>> parse_inventory("sphere-200, sphere, 200  # the usual ones")
+    (TargetItem(name='sphere-200', type='sphere', size_mm=200.0),)
+    """
+    items = []
+    for lineno, line in enumerate(str(text).splitlines(), start=1):
+        line = line.split("#", 1)[0].strip()
+        if not line:
+            continue
+        parts = [p.strip() for p in line.split(",")]
+        if len(parts) != 3:
+            raise InputError(
+                f"inventory line {lineno} ({line!r}): write name, type, size in mm "
+                "(e.g. sphere-200, sphere, 200)"
+            )
+        try:
+            size = float(parts[2])
+        except ValueError:
+            raise InputError(
+                f"inventory line {lineno}: the size {parts[2]!r} is not a number of mm"
+            ) from None
+        items.append(TargetItem(parts[0], parts[1], size))
+    return as_inventory(items)
 
 
 def recommend_targets(

@@ -10,7 +10,7 @@ from contextlib import redirect_stderr, redirect_stdout
 import pandas as pd
 import pytest
 
-from planner.cli import main
+from planner.app.cli import main
 
 #: The paper's scanner and 5 mm / 5 mm: the arguments most plan and report tests share.
 PAPER_5MM = ["--scanner", "leica-4mm-60urad", "--max-xy-mm", "5", "--max-z-mm", "5"]

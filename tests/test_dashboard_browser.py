@@ -14,8 +14,8 @@ from pathlib import Path
 
 import pytest
 
-from planner.cli import free_port, voila_command
-from planner.dashboard import notebook_path
+from planner.app.cli import free_port, voila_command
+from planner.app.notebooks import notebook_path
 
 pytestmark = pytest.mark.browser
 
@@ -90,8 +90,8 @@ def test_plan_then_bad_upload_in_a_real_browser(dashboard_url, tmp_path):
         first = count.inner_text()
         assert first.endswith("stations")
         # a stricter requirement needs more stations
-        _set_number(page, "max m_x [mm]", "3")
-        _set_number(page, "max m_y [mm]", "3")
+        _set_number(page, "largest m_x [mm]", "3")
+        _set_number(page, "largest m_y [mm]", "3")
         page.get_by_role("button", name="Plan", exact=True).click()
         page.wait_for_function(
             "(old) => { const e = document.querySelector('.station-count');"

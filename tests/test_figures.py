@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from planner.cli import main
-from planner.figures import make_figures
+from planner.app.cli import main
+from planner.app.figures import make_figures
 
 
 def test_make_figures_writes_pngs(tmp_path):

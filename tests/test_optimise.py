@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 import scipy.sparse as sp
 
-import planner.optimise as opt
+import planner.pipeline.optimise as opt
 
 
 def random_cover(n_rows=80, n_cols=120, density=0.05, seed=3):

@@ -9,14 +9,21 @@ import pytest
 import shapely
 from sites import E0, N0, courtyard_site, l_site, multipolygon_site, rect, square_site
 
-from planner import Scanner, height_rms, planimetric_rms, sight_geometry
-from planner.candidates import reach_m
-from planner.evaluate import Context, evaluate_stations
-from planner.facades import build_facades
-from planner.planning import plan
-from planner.requirements import PlanSettings, Requirements
+from planner import (
+    Scanner,
+    facade_point_spacing_mm,
+    height_rms,
+    min_target_size_mm,
+    planimetric_rms,
+    sight_geometry,
+)
+from planner.pipeline.evaluate import Context, evaluate_stations
+from planner.pipeline.export import coverage_csv
+from planner.pipeline.facades import build_facades
+from planner.pipeline.planning import plan, reach_m
+from planner.pipeline.requirements import PlanSettings, Requirements
+from planner.pipeline.visibility import clear_height
 from planner.site import Building, Obstacle, Site
-from planner.visibility import clear_height
 
 PAPER = Scanner.from_name("leica-4mm-60urad")
 LOOSE = Requirements(max_xy_mm=20.0, max_z_mm=20.0)
@@ -164,7 +171,7 @@ def test_party_wall_is_reported_not_demanded():
     assert not east.loc[east["z"] > 6, "party_wall"].any()  # above the neighbour's roof
     assert p.meets_all
     assert int(p.facades["party_wall_samples"].sum()) == int(east["party_wall"].sum()) == 15
-    csv = p.coverage_csv()
+    csv = coverage_csv(p)
     party_ids = east.loc[east["party_wall"], "sample_id"]
     assert not any(f",{sid}," in csv for sid in party_ids)  # party rows are not in the CSV
     assert sum(f",{sid}," in csv for sid in east.loc[~east["party_wall"], "sample_id"]) == 15
@@ -235,7 +242,29 @@ def test_coverage_rows_recomputed_from_coordinates_with_the_science_layer(rich_p
     np.testing.assert_allclose(cov["m_x_mm"], m_x, atol=1e-9)  # mm
     np.testing.assert_allclose(cov["m_y_mm"], m_y, atol=1e-9)  # mm
     np.testing.assert_allclose(cov["m_z_mm"], m_z, atol=1e-9)  # mm
+    spacing = facade_point_spacing_mm(g.slope_distance_m, g.gamma_deg, g.nu_deg, p.scanner)
+    np.testing.assert_allclose(cov["spacing_mm"], spacing, rtol=1e-9)  # mm
     assert len(cov) > 100
+
+
+def test_target_sizes_recomputed_with_the_science_layer(rich_plan):
+    """Every target's minimum size is Sossa's 2d / 4d rule (2d / cos θ for a flat target on
+    its wall) at the farthest of its stations, recomputed from the coordinates."""
+    p = rich_plan
+    st = p.stations.set_index("station_id")
+    assert len(p.targets) >= 3
+    for r in p.targets.itertuples():
+        need = []
+        for sid in r.station_ids:
+            dx, dy = st.loc[sid, "x"] - r.x, st.loc[sid, "y"] - r.y
+            s = float(np.hypot(np.hypot(dx, dy), r.z - st.loc[sid, "instrument_height_m"]))
+            theta = 0.0
+            if r.type == "flat":
+                nx, ny = np.sin(np.radians(r.facing_deg)), np.cos(np.radians(r.facing_deg))
+                theta = float(np.degrees(np.arccos((dx * nx + dy * ny) / s)))
+            need.append(min_target_size_mm(s, r.type, scanner=p.scanner, incidence_deg=theta))
+        assert r.min_size_mm == pytest.approx(max(need), abs=1e-6)  # mm
+        assert r.size_mm >= r.min_size_mm
 
 
 def test_every_meets_row_really_meets_the_requirements(rich_plan):
@@ -251,7 +280,7 @@ def test_every_meets_row_really_meets_the_requirements(rich_plan):
     # and the CSV says the same to its printed precision
     from io import StringIO
 
-    csv = pd.read_csv(StringIO(p.coverage_csv()))
+    csv = pd.read_csv(StringIO(coverage_csv(p)))
     assert list(csv.columns) == [
         "building_id",
         "facade_id",

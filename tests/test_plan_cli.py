@@ -8,9 +8,10 @@ import pandas as pd
 import pytest
 from test_cli import PAPER_5MM, run
 
-import planner.io
-from planner.cli import main
-from planner.planning import COVERAGE_COLUMNS, STATION_COLUMNS, TARGET_COLUMNS, plan
+import planner.atomic
+from planner.app.cli import main
+from planner.pipeline.export import COVERAGE_COLUMNS, STATION_COLUMNS, TARGET_COLUMNS
+from planner.pipeline.planning import plan
 
 FAST = ["--sample-spacing-m", "3", "--sample-height-step-m", "3"]
 
@@ -94,7 +95,7 @@ def test_unmet_samples_exit_1_and_are_listed(tmp_path):
     [
         (["--buildings", "nope"], "no building with id 'nope'"),
         (["--max-gamma-deg", "95"], "max_gamma_deg must be > 0 and <= 89"),
-        (["--grid-m", "-1"], "grid_m must be > 0"),
+        (["--grid-m", "-1"], "grid_m must be >= 0.25"),
         (["--scanner", "unknown"], "Unknown scanner"),
     ],
 )
@@ -175,7 +176,7 @@ def test_writes_are_atomic(tmp_path, monkeypatch):
     first = p.save(tmp_path)
     before = {f.name: f.read_bytes() for f in first}
     calls = {"n": 0}
-    real_replace = planner.io.os.replace
+    real_replace = planner.atomic.os.replace
 
     def failing_replace(src, dst):
         calls["n"] += 1
@@ -183,7 +184,7 @@ def test_writes_are_atomic(tmp_path, monkeypatch):
             raise OSError(28, "No space left on device")
         return real_replace(src, dst)
 
-    monkeypatch.setattr(planner.io.os, "replace", failing_replace)
+    monkeypatch.setattr(planner.atomic.os, "replace", failing_replace)
     with pytest.raises(OSError):
         p.save(tmp_path)
     after = {f.name: f.read_bytes() for f in first}

@@ -27,8 +27,8 @@ def test_report_html_is_self_contained(tmp_path):
     # embedded figures: the plan map and three coverage plots at least
     assert len(re.findall(r'src="data:image/png;base64,', html)) >= 4
     # no input cells, no code
-    assert 'class="jp-CodeMirrorEditor' not in html and "ReportContent.from_parameters" not in html
-    assert "site_path = None" not in html  # not even the parameters
+    assert 'class="jp-CodeMirrorEditor' not in html and "ReportContent.load" not in html
+    assert "plan_path" not in html  # not even the parameters
     # nothing fetched from the network when it opens
     assert not re.search(r'<(script|link|img)[^>]+(src|href)="https?://', html)
 

@@ -23,12 +23,13 @@ from pathlib import Path
 
 import numpy as np
 import scipy.sparse as sp
-from scipy.optimize import Bounds, LinearConstraint, milp
+
+from planner.errors import PlannerError
 
 __all__ = ["CoverSolution", "greedy_cover", "solve_cover"]
 
 
-@dataclass
+@dataclass(kw_only=True)
 class CoverSolution:
     """Chosen candidate indices and how they were found."""
 
@@ -110,6 +111,8 @@ def packing_lower_bound(a: sp.csr_matrix, demand: np.ndarray) -> int:
 
 
 def _milp(a: sp.csr_matrix, dem: np.ndarray, upper: int, time_limit_s: float):
+    from scipy.optimize import Bounds, LinearConstraint, milp  # heavy: only when solving
+
     n = a.shape[1]
     constraints = [
         LinearConstraint(a.astype(float), lb=dem, ub=np.inf),
@@ -133,8 +136,8 @@ IN_PROCESS_NNZ = 400_000
 def _milp_with_deadline(a, dem, upper, time_limit_s):
     """Run the integer program, stopping it at ``time_limit_s`` (+ a grace of 5 s) for sure.
 
-    Large models run in a worker process (``python -m planner._milp_worker``), killed at the
-    deadline; not a fork (a fork of a process with threads, such as a Jupyter kernel, can
+    Large models run in a worker process (``python -m planner.pipeline._milp_worker``), killed
+    at the deadline; not a fork (a fork of a process with threads, such as a Jupyter kernel, can
     deadlock) and not multiprocessing's spawn (it re-runs the caller's main module).
     """
     if a.nnz <= IN_PROCESS_NNZ:
@@ -153,7 +156,7 @@ def _milp_with_deadline(a, dem, upper, time_limit_s):
             time_limit=time_limit_s,
         )
         proc = subprocess.Popen(
-            [sys.executable, "-m", "planner._milp_worker", str(src), str(dst)],
+            [sys.executable, "-m", "planner.pipeline._milp_worker", str(src), str(dst)],
             stdout=subprocess.DEVNULL,
             stderr=subprocess.PIPE,
         )
@@ -183,7 +186,8 @@ def solve_cover(
     """Fewest columns of ``ok`` (samples × candidates) covering each row ``demand`` times.
 
     ``demand`` must already be capped at what each row can get (its number of candidates).
-    ``method``: "auto" (milp, greedy as fallback), "milp" or "greedy". The greedy cover is
+    ``method``: "auto" (milp, greedy as fallback), "milp" (the integer program or an error)
+    or "greedy". The greedy cover is
     always computed; its gap is measured against the packing bound, or the integer
     program's dual bound when that is better.
     """
@@ -191,26 +195,26 @@ def solve_cover(
     a, dem, used = _reduce(sp.csr_matrix(ok), np.asarray(demand))
     if a.shape[0] == 0:
         return CoverSolution(
-            np.empty(0, dtype=np.int64),
-            "greedy",
-            "nothing to cover",
-            0,
-            0.0,
-            0.0,
-            time.perf_counter() - t0,
-            0,
+            chosen=np.empty(0, dtype=np.int64),
+            method="greedy",
+            status="nothing to cover",
+            objective=0,
+            lower_bound=0.0,
+            gap=0.0,
+            seconds=time.perf_counter() - t0,
+            greedy_objective=0,
         )
     g = greedy_cover(a, dem)
     packing = packing_lower_bound(a, dem)
     greedy = CoverSolution(
-        np.sort(used[g]),
-        "greedy",
-        "as requested",
-        len(g),
-        float(packing),
-        (len(g) - packing) / len(g),
-        time.perf_counter() - t0,
-        len(g),
+        chosen=np.sort(used[g]),
+        method="greedy",
+        status="as requested",
+        objective=len(g),
+        lower_bound=float(packing),
+        gap=(len(g) - packing) / len(g),
+        seconds=time.perf_counter() - t0,
+        greedy_objective=len(g),
     )
     if packing == len(g):
         greedy.status, greedy.gap = "optimal: meets the packing lower bound", 0.0
@@ -221,6 +225,12 @@ def solve_cover(
     status, message, x_raw, dual = _milp_with_deadline(a, dem, len(g), remaining)
     greedy.seconds = time.perf_counter() - t0
     if x_raw is None:
+        if method == "milp":
+            raise PlannerError(
+                f"the integer program found no plan within the time limit of "
+                f"{time_limit_s:g} s ({message}); raise the time limit (--time-limit-s) or "
+                "let the planner fall back to greedy set cover (--method auto)"
+            )
         greedy.status = f"integer program: {message}"
         return greedy
     x = np.flatnonzero(x_raw > 0.5)
@@ -234,12 +244,12 @@ def solve_cover(
         greedy.status = "integer program stopped at the time limit with a worse plan"
         return greedy
     return CoverSolution(
-        np.sort(used[x]),
-        "milp",
-        "optimal" if status == 0 else "time limit",
-        len(x),
-        bound,
-        max(0.0, (len(x) - bound) / len(x)),
-        greedy.seconds,
-        len(g),
+        chosen=np.sort(used[x]),
+        method="milp",
+        status="optimal" if status == 0 else "time limit",
+        objective=len(x),
+        lower_bound=bound,
+        gap=max(0.0, (len(x) - bound) / len(x)),
+        seconds=greedy.seconds,
+        greedy_objective=len(g),
     )

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import base64
 import html
-import json
 import tempfile
 import traceback
 from pathlib import Path
@@ -22,21 +21,18 @@ import pandas as pd
 from IPython.display import display
 
 from planner.errors import PlannerError
-from planner.scanner import Scanner, catalogue
-from planner.tables import height_table, planimetric_table
+from planner.pipeline.requirements import (
+    FieldSpec,
+    PlanSettings,
+    Requirements,
+    field_specs,
+    requirements_and_settings,
+)
+from planner.scanner import DEFAULT_SCANNER, Scanner, catalogue
+from planner.tables import SOSSA_DISTANCES_M, height_table, planimetric_table
+from planner.targets import DEFAULT_INVENTORY, SOSSA_STEP_MM_AT_10M
 
-__all__ = ["AccuracyExplorer", "StationPlanner", "TargetExplorer", "notebook_path"]
-
-DEFAULT_SCANNER = "leica-4mm-60urad"
-
-
-def notebook_path(name: str) -> Path:
-    """A shipped notebook: inside the installed package, or ``notebooks/`` of a checkout."""
-    here = Path(__file__).resolve().parent
-    for folder in (here / "notebooks", here.parent / "notebooks"):
-        if (folder / name).is_file():
-            return folder / name
-    raise PlannerError(f"notebook {name!r} is not installed (looked in {here / 'notebooks'})")
+__all__ = ["AccuracyExplorer", "StationPlanner", "TargetExplorer"]
 
 
 def _error_html(message: str) -> str:
@@ -76,6 +72,26 @@ def _number(
     )
 
 
+#: Upper bound of a number box whose field has none (the data class decides beyond it).
+_NO_UPPER = 1e6
+
+
+def _field_box(spec: FieldSpec, label: str | None = None) -> w.Widget:
+    """A number box for a requirement or setting, with the data class's default, bounds and
+    unit; an optional field shows 0 for "not required" (0 is outside its valid range)."""
+    text = f"{label or spec.label} [{spec.unit}]" + (" (0: none)" if spec.optional else "")
+    value = spec.default if spec.default is not None else 0.0
+    if isinstance(value, tuple):
+        value = value[0]
+    lo = 0.0 if spec.lo is None else spec.lo
+    hi = _NO_UPPER if spec.hi is None else spec.hi
+    if isinstance(spec.default, int) and not isinstance(spec.default, bool):
+        return w.BoundedIntText(
+            value=value, min=int(lo), max=int(hi), description=text, style=_STYLE, layout=_FULL
+        )
+    return _number(float(value), lo, hi, spec.step, text)
+
+
 def _scanner_dropdown() -> w.Dropdown:
     names = list(catalogue())
     return w.Dropdown(
@@ -91,9 +107,7 @@ class StationPlanner:
     """The station-planner dashboard: site, scanner, requirements, Plan, results, downloads."""
 
     def __init__(self) -> None:
-        from planner.requirements import PlanSettings, Requirements
-
-        req, st = Requirements(), PlanSettings()
+        rq, ps = field_specs(Requirements), field_specs(PlanSettings)
         self.site_source = w.ToggleButtons(
             options=["Default site", "Upload a file"], value="Default site"
         )
@@ -109,15 +123,13 @@ class StationPlanner:
             layout=_FULL,
         )
         self.scanner = _scanner_dropdown()
-        self.max_x = _number(req.max_x_mm, 0.1, 100, 0.5, "max m_x [mm]")
-        self.max_y = _number(req.max_y_mm, 0.1, 100, 0.5, "max m_y [mm]")
-        self.max_z = _number(req.max_z_mm, 0.1, 100, 0.5, "max m_z [mm]")
-        self.max_gamma = _number(req.max_gamma_deg, 1, 89, 5, "max deviation γ [deg]")
-        self.max_spacing = _number(0.0, 0.0, 1000, 1, "max point spacing [mm] (0: none)")
-        self.per_sample = w.BoundedIntText(
-            value=1, min=1, max=5, description="stations per sample", style=_STYLE, layout=_FULL
-        )
-        self.grid = _number(st.grid_m, 0.5, 20, 0.5, "candidate grid [m]")
+        self.max_x = _field_box(rq["max_xy_mm"], "largest m_x")
+        self.max_y = _field_box(rq["max_xy_mm"], "largest m_y")
+        self.max_z = _field_box(rq["max_z_mm"])
+        self.max_gamma = _field_box(rq["max_gamma_deg"])
+        self.max_spacing = _field_box(rq["max_spacing_mm"])
+        self.per_sample = _field_box(rq["stations_per_sample"])
+        self.grid = _field_box(ps["grid_m"])
         self.plan_button = w.Button(description="Plan", button_style="primary")
         self.progress = w.FloatProgress(value=0.0, min=0.0, max=1.0, description="", layout=_FULL)
         self.status = w.HTML("")
@@ -170,7 +182,6 @@ class StationPlanner:
         results = w.VBox([self.summary, self.tabs], layout=w.Layout(width="66%"))
         self.widget = w.HBox([controls, results])
         self.plan = None
-        self._site_file: Path | None = None
         self._tmp = tempfile.TemporaryDirectory(prefix="planner-upload-")
         # links: thin callbacks
         self.plan_button.on_click(lambda _b: self.run())
@@ -180,12 +191,11 @@ class StationPlanner:
 
     # -- actions -----------------------------------------------------------------------------
     def _inputs(self):
-        from planner.requirements import PlanSettings, Requirements
         from planner.siteio import default_site, read_site
 
         ids = [s.strip() for s in self.buildings.value.split(",") if s.strip()] or None
         if self.site_source.value == "Default site":
-            site, self._site_file = default_site(buildings=ids), None
+            site = default_site(buildings=ids)
         else:
             files = self.upload.value
             if not files:
@@ -196,20 +206,17 @@ class StationPlanner:
             path = Path(self._tmp.name) / Path(f["name"]).name
             path.write_bytes(bytes(f["content"]))
             site = read_site(path, default_height_m=self.height.value or None, buildings=ids)
-            self._site_file = path
-        req = Requirements(
-            max_xy_mm=(self.max_x.value, self.max_y.value),
-            max_z_mm=self.max_z.value,
-            max_gamma_deg=self.max_gamma.value,
-            max_spacing_mm=self.max_spacing.value or None,
-            stations_per_sample=int(self.per_sample.value),
+        req, settings = requirements_and_settings(
+            {
+                "max_xy_mm": (self.max_x.value, self.max_y.value),
+                "max_z_mm": self.max_z.value,
+                "max_gamma_deg": self.max_gamma.value,
+                "max_spacing_mm": self.max_spacing.value or None,
+                "stations_per_sample": int(self.per_sample.value),
+                "grid_m": self.grid.value,
+            }
         )
-        return (
-            site,
-            Scanner.from_name(self.scanner.value),
-            req,
-            PlanSettings(grid_m=self.grid.value),
-        )
+        return site, Scanner.from_name(self.scanner.value), req, settings
 
     def _progress(self, fraction: float, message: str) -> None:
         self.progress.value = fraction
@@ -217,7 +224,7 @@ class StationPlanner:
 
     def run(self) -> None:
         """Plan with the current inputs and show the result (errors as a readable message)."""
-        from planner.planning import plan
+        from planner.pipeline.planning import plan
 
         self.error.value = ""
         self.plan_button.disabled = True
@@ -238,7 +245,7 @@ class StationPlanner:
         self._show_results()
 
     def _show_results(self) -> None:
-        from planner.maps import plot_plan_map
+        from planner.app.maps import plot_plan_map
 
         p = self.plan
         n_met = int(p.coverage.loc[~p.coverage["party_wall"], "meets"].sum())
@@ -260,12 +267,7 @@ class StationPlanner:
         if p.unmet.empty:
             _show(self.unmet_out, w.HTML("<p>Every sample meets the requirements.</p>"))
         else:
-            g = (
-                p.unmet.groupby(["facade_id", "reason"])
-                .agg(samples=("sample_id", "size"), z_from=("z", "min"), z_to=("z", "max"))
-                .reset_index()
-                .round(1)
-            )
+            g = p.unmet_areas()
             _show(
                 self.unmet_out,
                 w.HTML(
@@ -274,30 +276,27 @@ class StationPlanner:
                 ),
                 g.style.hide(axis="index"),
             )
-        files = [
-            ("stations.csv", p.stations_csv().encode(), "text/csv"),
-            ("targets.csv", p.targets_csv().encode(), "text/csv"),
-            ("coverage.csv", p.coverage_csv().encode(), "text/csv"),
-            (
-                "plan.geojson",
-                json.dumps(p.geojson(), indent=1).encode(),
-                "application/geo+json",
-            ),
+        from planner.pipeline.export import render
+
+        mime = {".csv": "text/csv", ".geojson": "application/geo+json", ".txt": "text/plain"}
+        links = [
+            _download_link(name, text.encode(), mime[Path(name).suffix])
+            for name, text in render(p).items()
         ]
-        self.downloads.value = "<p>" + "".join(_download_link(*f) for f in files) + "</p>"
+        self.downloads.value = "<p>" + "".join(links) + "</p>"
         self.report_status.value = ""
         self.progress.value = 1.0
         self.status.value = f"<i>planned in {p.timings_s['total']:.1f} s</i>"
 
     def _show_coverage(self) -> None:
         if self.plan is not None:
-            from planner.maps import plot_coverage
+            from planner.app.maps import plot_coverage
 
             _show(self.cov_out, plot_coverage(self.plan, self.quantity.value))
 
     def make_report(self) -> None:
         """Render the static HTML report of the current inputs and offer it for download."""
-        from planner.report import make_report
+        from planner.app.report import make_report
 
         if self.plan is None:
             self.report_status.value = _error_html("make a plan first")
@@ -305,22 +304,8 @@ class StationPlanner:
         self.report_status.value = "<i>rendering the report (a few seconds)…</i>"
         self.report_button.disabled = True
         try:
-            p = self.plan
-            req = p.requirements
-            params = dict(
-                site_path=str(self._site_file) if self._site_file else None,
-                default_height_m=self.height.value or None,
-                buildings=[b.id for b in p.site.planned] if self._site_file else None,
-                scanner=p.scanner.name,
-                max_xy_mm=[req.max_x_mm, req.max_y_mm],
-                max_z_mm=req.max_z_mm,
-                max_gamma_deg=req.max_gamma_deg,
-                max_spacing_mm=req.max_spacing_mm,
-                stations_per_sample=req.stations_per_sample,
-                grid_m=p.settings.grid_m,
-            )
             out = Path(self._tmp.name) / "report.html"
-            make_report(out, **params)
+            make_report(self.plan, out)
             self.report_status.value = _download_link("report.html", out.read_bytes(), "text/html")
         except Exception as exc:
             self.report_status.value = _error_html(f"the report failed: {exc}")
@@ -336,19 +321,40 @@ class AccuracyExplorer:
 
     def __init__(self) -> None:
         style = {"description_width": "12em"}
+        paper = Scanner.from_name(DEFAULT_SCANNER)  # typed figures start from the paper's
         self.source = w.ToggleButtons(options=["Catalogue", "Typed figures"], value="Catalogue")
         self.scanner = _scanner_dropdown()
         self.range_mm = w.BoundedFloatText(
-            value=4.0, min=0.01, max=100, step=0.1, description="ranging a [mm]", style=style
+            value=paper.range_rms_mm,
+            min=0.01,
+            max=100,
+            step=0.1,
+            description="ranging a [mm]",
+            style=style,
         )
         self.range_ppm = w.BoundedFloatText(
-            value=0.0, min=0, max=1000, step=10, description="ranging b [ppm]", style=style
+            value=paper.range_ppm,
+            min=0,
+            max=1000,
+            step=10,
+            description="ranging b [ppm]",
+            style=style,
         )
         self.h_angle = w.BoundedFloatText(
-            value=12.4, min=0.01, max=5000, step=0.1, description="H angle RMS [″]", style=style
+            value=paper.angle_rms_arcsec,
+            min=0.01,
+            max=5000,
+            step=0.1,
+            description="H angle RMS [″]",
+            style=style,
         )
         self.v_angle = w.BoundedFloatText(
-            value=12.4, min=0.01, max=5000, step=0.1, description="V angle RMS [″]", style=style
+            value=paper.tilt_rms_arcsec,
+            min=0.01,
+            max=5000,
+            step=0.1,
+            description="V angle RMS [″]",
+            style=style,
         )
         self.distance = w.FloatRangeSlider(
             value=(0.0, 120.0),
@@ -409,8 +415,8 @@ class AccuracyExplorer:
         )
 
     def update(self) -> None:
-        from planner.accuracy import height_rms, planimetric_rms
-        from planner.figures import plot_height, plot_planimetric
+        from planner.accuracy import max_distance_m
+        from planner.app.figures import plot_height, plot_planimetric
 
         self.error.value = ""
         try:
@@ -421,22 +427,16 @@ class AccuracyExplorer:
         lo, hi = self.distance.value
         hi = max(hi, lo + 5.0)
         g, nu, limit = self.gamma.value, self.nu.value, self.limit.value
-        d = np.linspace(lo, hi, 601)
-        m_x, m_y = planimetric_rms(d, g, sc)
-        m_z = height_rms(d, nu, sc)
         lines = []
-        for name, vals in (("m_x", m_x), ("m_y", m_y), ("m_z", m_z)):
-            bad = np.flatnonzero(vals > limit)
-            angle = f"ν = {nu:g}°" if name == "m_z" else f"γ = {g:g}°"
-            if not len(bad):
+        for name in ("m_x", "m_y", "m_z"):
+            angle, var = (f"ν = {nu:g}°", "S") if name == "m_z" else (f"γ = {g:g}°", "D")
+            reach = max_distance_m(limit, sc, name, nu if name == "m_z" else g)
+            if np.isnan(reach) or reach < lo:
+                lines.append(f"{name} > {limit:g} mm already at {lo:.0f} m ({angle})")
+            elif reach >= hi:
                 lines.append(f"{name} ≤ {limit:g} mm over the whole range ({angle})")
-            elif bad[0] == 0:
-                lines.append(f"{name} > {limit:g} mm already at {d[0]:.0f} m ({angle})")
             else:
-                lines.append(
-                    f"{name} ≤ {limit:g} mm up to {'D' if name != 'm_z' else 'S'} = "
-                    f"{d[bad[0] - 1]:.0f} m at {angle}"
-                )
+                lines.append(f"{name} ≤ {limit:g} mm up to {var} = {reach:.1f} m at {angle}")
         self.verdict.value = "<ul>" + "".join(f"<li>{html.escape(t)}</li>" for t in lines) + "</ul>"
         fig, axes = plt.subplots(1, 3, figsize=(13, 3.8), layout="constrained")
         plot_planimetric(
@@ -493,7 +493,7 @@ class TargetExplorer:
     def __init__(self) -> None:
         style = {"description_width": "12em"}
         self.step = w.BoundedFloatText(
-            value=2.0,
+            value=SOSSA_STEP_MM_AT_10M,
             min=0.1,
             max=50.0,
             step=0.1,
@@ -501,11 +501,15 @@ class TargetExplorer:
             style=style,
         )
         self.max_distance = w.BoundedFloatText(
-            value=350.0, min=10, max=2000, step=10, description="up to [m]", style=style
+            value=max(SOSSA_DISTANCES_M),
+            min=10,
+            max=2000,
+            step=10,
+            description="up to [m]",
+            style=style,
         )
         self.inventory = w.Textarea(
-            value="flat-70, flat, 70\nsphere-200, sphere, 200\nsphere-400, sphere, 400\n"
-            "cylinder-150, cylinder, 150",
+            value="\n".join(f"{i.name}, {i.type}, {i.size_mm:g}" for i in DEFAULT_INVENTORY),
             description="inventory (name, type, size mm)",
             style=style,
             layout=w.Layout(width="60%", height="7em"),
@@ -517,19 +521,13 @@ class TargetExplorer:
         self.widget = w.VBox([self.step, self.max_distance, self.inventory, self.error, self.out])
 
     def update(self) -> None:
-        from planner.figures import plot_target_sizes
+        from planner.app.figures import plot_target_sizes
         from planner.tables import target_size_table
-        from planner.targets import TargetItem, recommend_targets
+        from planner.targets import parse_inventory, recommend_targets
 
         self.error.value = ""
         try:
-            items = []
-            for line in self.inventory.value.splitlines():
-                if line.strip():
-                    parts = [p.strip() for p in line.split(",")]
-                    if len(parts) != 3:
-                        raise PlannerError(f"inventory line {line!r}: write name, type, size in mm")
-                    items.append(TargetItem(parts[0], parts[1], float(parts[2])))
+            items = parse_inventory(self.inventory.value)
             fig = plot_target_sizes(self.step.value, self.max_distance.value, items)
             table = target_size_table(step_mm_at_10m=self.step.value)
             reach = recommend_targets(

@@ -1,29 +1,42 @@
 """Candidate × sample evaluation: sight geometry, line of sight, predicted RMS, requirements.
 
 For every candidate station and facade sample: horizontal distance D, slope distance S,
-deviation γ, tilt ν, line of sight (:mod:`planner.visibility`), the scanner's range and
-vertical field of view, m_x, m_y (eq. 2, ranging RMS at the measured slope distance S),
-m_z (eq. 4, S_0 = S) and the point spacing on the facade. Vectorised per facade and chunked
-over candidates so memory stays bounded; no trigonometry on the hot path (cos²γ, sin²ν
-come from dot products).
+deviation γ, tilt ν, line of sight (:mod:`planner.pipeline.visibility`), the scanner's range
+and vertical field of view, m_x, m_y (eq. 2 of Voroshilov & Karachentsev, ranging RMS at the
+measured slope distance S), m_z (eq. 4, S_0 = S) and the point spacing on the facade — each
+through the science layer's array kernels. Whether a pair meets the requirements is decided
+by the table :data:`~planner.pipeline.requirements.CHECKS`, against per-sample limits.
+
+Vectorised per facade and chunked over candidates so memory stays bounded; no trigonometry
+on the geometry (cos γ and sin ν come from dot products).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import scipy.sparse as sp
 
-from planner.accuracy import eq2_variances, eq4_variance, station_rms_pair
-from planner.facades import SIGHT_OFFSET_M, FacadeSet, footprint_edges
-from planner.requirements import PlanSettings, Requirements
+from planner.accuracy import eq2_variances, eq4_variance
+from planner.pipeline.facades import SIGHT_OFFSET_M, FacadeSet, footprint_edges
+from planner.pipeline.requirements import CHECKS, Check, PlanSettings, Requirements
+from planner.pipeline.visibility import clear_height, edges_in_box, edges_in_front
 from planner.scanner import Scanner
 from planner.site import Site
-from planner.visibility import clear_height, edges_in_box, edges_in_front
+from planner.spacing import facade_spacing_kernel
 
-__all__ = ["Context", "PairMetrics", "evaluate_candidates", "evaluate_stations"]
+__all__ = [
+    "METRIC_KEYS",
+    "CandidateEvaluation",
+    "Context",
+    "PairMetrics",
+    "best_achievable",
+    "evaluate_candidates",
+    "evaluate_stations",
+]
 
 Progress = Callable[[float, str], None]
 
@@ -43,7 +56,7 @@ METRIC_KEYS = (
 PAIR_CHUNK = 65_536
 
 
-@dataclass
+@dataclass(kw_only=True)
 class Context:
     """Everything the evaluation needs, prepared once per plan."""
 
@@ -53,12 +66,13 @@ class Context:
     req: Requirements
     settings: PlanSettings
     reach_m: float
-    edges: np.ndarray
-    edge_heights: np.ndarray
+    edges: np.ndarray  # (M, 4) every blocking footprint edge
+    edge_heights: np.ndarray  # (M,)
     edge_mask: list[np.ndarray]  # per facade: edges that can block its sight lines
-    cols_of: list[np.ndarray]
-    samples_of: list[np.ndarray]
+    cols_of: list[np.ndarray]  # per facade: its columns
+    samples_of: list[np.ndarray]  # per facade: its samples
     step_mm_at_10m: float
+    limits: dict[str, np.ndarray]  # per check key: (N,) limit of every sample (±inf: none)
 
     @classmethod
     def build(
@@ -89,20 +103,25 @@ class Context:
             masks.append(np.flatnonzero(edges_in_front(edges, a, facades.normal[f], bbox)))
             cols_of.append(col_order[col_bounds[f] : col_bounds[f + 1]])
             samples_of.append(smp_order[smp_bounds[f] : smp_bounds[f + 1]])
-        step = settings.step_mm_at_10m or scanner.step_mm_at_10m
+        n = len(facades.z)
+        limits = {}
+        for c in CHECKS:
+            limit = c.limit_of(req)
+            limits[c.key] = np.full(n, c.no_limit() if limit is None else float(limit))
         return cls(
-            site,
-            facades,
-            scanner,
-            req,
-            settings,
-            reach,
-            edges,
-            heights,
-            masks,
-            cols_of,
-            samples_of,
-            step,
+            site=site,
+            facades=facades,
+            scanner=scanner,
+            req=req,
+            settings=settings,
+            reach_m=reach,
+            edges=edges,
+            edge_heights=heights,
+            edge_mask=masks,
+            cols_of=cols_of,
+            samples_of=samples_of,
+            step_mm_at_10m=settings.step_mm_at_10m or scanner.step_mm_at_10m,
+            limits=limits,
         )
 
     def front_candidates(self, f: int, cand_xy: np.ndarray) -> np.ndarray:
@@ -115,30 +134,80 @@ class Context:
         dist = np.hypot(*(rel - t[:, None] * v).T)
         return np.flatnonzero(ahead & (dist <= self.reach_m))
 
+    def active_checks(self, smp: np.ndarray) -> list[tuple[Check, np.ndarray]]:
+        """The checks with a limit at any of ``smp``, with those samples' limits (1, n)."""
+        out = []
+        for c in CHECKS:
+            lim = self.limits[c.key][smp]
+            if np.isfinite(lim).any():
+                out.append((c, lim[None, :]))
+        return out
 
-@dataclass
+
 class PairMetrics:
-    """Metrics of ``c`` candidates × ``n`` samples of one facade (arrays of shape (c, n))."""
+    """Metrics of ``c`` candidates × ``n`` samples of one facade (arrays of shape (c, n)).
 
-    distance_m: np.ndarray
-    slope_distance_m: np.ndarray
-    cos_gamma: np.ndarray
-    sin_nu: np.ndarray
-    var_x: np.ndarray
-    var_y: np.ndarray
-    var_z: np.ndarray
-    spacing_mm: np.ndarray
-    view: np.ndarray  # sees the sample: in front, line of sight, range, field of view
-    ok: np.ndarray  # view and every requirement
+    The geometry and the variances are computed up front; the quantities the checks and the
+    reports read (``m_x_mm``, ``gamma_deg``, ``spacing_mm``…) on first use.
+    """
+
+    def __init__(
+        self,
+        *,
+        distance_m: np.ndarray,
+        slope_distance_m: np.ndarray,
+        cos_gamma: np.ndarray,
+        sin_nu: np.ndarray,
+        var_x: np.ndarray,
+        var_y: np.ndarray,
+        var_z: np.ndarray,
+        view: np.ndarray,
+        step_mm_at_10m: float,
+    ) -> None:
+        self.distance_m = distance_m
+        self.slope_distance_m = slope_distance_m
+        self.cos_gamma = cos_gamma
+        self.sin_nu = sin_nu
+        self.var_x, self.var_y, self.var_z = var_x, var_y, var_z
+        self.view = view  # sees the sample: in front, line of sight, range, field of view
+        self.step_mm_at_10m = step_mm_at_10m
+
+    @cached_property
+    def m_x_mm(self) -> np.ndarray:
+        return np.sqrt(self.var_x)
+
+    @cached_property
+    def m_y_mm(self) -> np.ndarray:
+        return np.sqrt(self.var_y)
+
+    @cached_property
+    def m_z_mm(self) -> np.ndarray:
+        return np.sqrt(self.var_z)
+
+    @cached_property
+    def gamma_deg(self) -> np.ndarray:
+        return np.degrees(np.arccos(np.clip(self.cos_gamma, -1.0, 1.0)))
+
+    @cached_property
+    def nu_deg(self) -> np.ndarray:
+        return np.degrees(np.arcsin(np.clip(self.sin_nu, -1.0, 1.0)))
+
+    @cached_property
+    def spacing_mm(self) -> np.ndarray:
+        return facade_spacing_kernel(
+            self.distance_m, self.slope_distance_m, self.cos_gamma, self.step_mm_at_10m
+        )
+
+    def value(self, metric: str) -> np.ndarray:
+        return getattr(self, metric)
 
 
 def facade_pairs(
-    ctx: Context, f: int, cand_xy: np.ndarray, smp: np.ndarray | None = None, *, full: bool = True
+    ctx: Context, f: int, cand_xy: np.ndarray, smp: np.ndarray | None = None
 ) -> PairMetrics:
     """Evaluate candidates ``cand_xy`` against the samples ``smp`` (default: all) of facade
-    ``f``. ``full=False`` skips what only reports need (point spacing without a spacing
-    requirement)."""
-    fac, sc, req = ctx.facades, ctx.scanner, ctx.req
+    ``f``: geometry, visibility and the predicted variances."""
+    fac, sc = ctx.facades, ctx.scanner
     hi = ctx.settings.instrument_height_m
     cols = ctx.cols_of[f]
     smp = ctx.samples_of[f] if smp is None else smp
@@ -165,8 +234,7 @@ def facade_pairs(
     dz = fac.z[smp] - hi
     d2 = dx * dx + dy * dy
     d = np.sqrt(d2)
-    s2 = d2 + dz * dz
-    s = np.sqrt(s2)
+    s = np.sqrt(d2 + dz * dz)
     cdot = dx * n[0] + dy * n[1]
     with np.errstate(divide="ignore", invalid="ignore"):
         cos_g = np.where(d > 0, cdot / d, 0.0)
@@ -180,53 +248,38 @@ def facade_pairs(
         & (sin_nu >= lo - 1e-12)
         & (sin_nu <= up + 1e-12)
     )
-    m_s = sc.range_rms_mm + sc.range_ppm * 1e-3 * s if sc.range_ppm else sc.range_rms_mm
-    st = station_rms_pair(ctx.settings.station_rms_mm)
-    cos2 = cos_g * cos_g
-    var_x, var_y = eq2_variances(d, cos2, m_s, sc.angle_rms_arcsec, (st[0] ** 2, st[1] ** 2))
-    m_nu0 = sc.levelling_rms_arcsec or sc.tilt_rms_arcsec
-    var_z = eq4_variance(s, sin_nu * sin_nu, m_s, sc.tilt_rms_arcsec, s, m_nu0)
-    delta = ctx.step_mm_at_10m / 10.0  # mm per metre of distance
-    with np.errstate(divide="ignore", invalid="ignore"):
-        spacing = delta * np.maximum(
-            np.where(cdot > 0, d2 / cdot, np.inf), np.where(d > 0, s2 / d, np.inf)
-        )
-    cos_gmax = np.cos(np.radians(req.max_gamma_deg))
-    ok = (
-        view
-        & (var_x <= req.max_x_mm**2 * (1 + 1e-12))
-        & (var_y <= req.max_y_mm**2 * (1 + 1e-12))
-        & (var_z <= req.max_z_mm**2 * (1 + 1e-12))
-        & (cos_g >= cos_gmax - 1e-12)
+    m_s = sc.range_rms_at(s)
+    m_xc, m_yc = ctx.settings.station_rms_pair
+    var_x, var_y = eq2_variances(
+        d, cos_g * cos_g, m_s, sc.angle_rms_arcsec, (m_xc * m_xc, m_yc * m_yc)
     )
-    if req.max_spacing_mm is not None:
-        ok &= spacing <= req.max_spacing_mm
-    if req.min_range_m is not None:
-        ok &= s >= req.min_range_m
-    if req.max_range_m is not None:
-        ok &= s <= req.max_range_m
-    return PairMetrics(d, s, cos_g, sin_nu, var_x, var_y, var_z, spacing, view, ok)
+    var_z = eq4_variance(s, sin_nu * sin_nu, m_s, sc.tilt_rms_arcsec, s, sc.initial_tilt_rms_arcsec)
+    return PairMetrics(
+        distance_m=d,
+        slope_distance_m=s,
+        cos_gamma=cos_g,
+        sin_nu=sin_nu,
+        var_x=var_x,
+        var_y=var_y,
+        var_z=var_z,
+        view=view,
+        step_mm_at_10m=ctx.step_mm_at_10m,
+    )
 
 
-def score(ctx: Context, m: PairMetrics) -> np.ndarray:
-    """How far a pair is from meeting the requirements: max of value / limit (<= 1 meets),
-    inf where the station does not see the sample."""
-    req = ctx.req
-    with np.errstate(invalid="ignore"):
-        gamma = np.degrees(np.arccos(np.clip(m.cos_gamma, -1, 1)))
-    parts = [
-        np.sqrt(m.var_x) / req.max_x_mm,
-        np.sqrt(m.var_y) / req.max_y_mm,
-        np.sqrt(m.var_z) / req.max_z_mm,
-        gamma / req.max_gamma_deg,
-    ]
-    if req.max_spacing_mm is not None:
-        parts.append(m.spacing_mm / req.max_spacing_mm)
-    if req.min_range_m is not None:
-        parts.append(req.min_range_m / m.slope_distance_m)
-    if req.max_range_m is not None:
-        parts.append(m.slope_distance_m / req.max_range_m)
-    out = np.maximum.reduce(parts)
+def meets(ctx: Context, m: PairMetrics, smp: np.ndarray) -> np.ndarray:
+    """Where a pair sees its sample and passes every check there (the table's rows)."""
+    ok = m.view.copy()
+    for check, limit in ctx.active_checks(smp):
+        ok &= check.passes(m.value(check.metric), limit)
+    return ok
+
+
+def score(ctx: Context, m: PairMetrics, smp: np.ndarray) -> np.ndarray:
+    """How far a pair is from meeting the requirements: the largest value / limit over the
+    checks (<= 1 meets), inf where the station does not see the sample."""
+    parts = [c.ratio(m.value(c.metric), lim) for c, lim in ctx.active_checks(smp)]
+    out = np.maximum.reduce(parts) if parts else np.zeros(m.view.shape)
     return np.where(m.view, out, np.inf)
 
 
@@ -256,8 +309,8 @@ def evaluate_candidates(
         step = max(1, PAIR_CHUNK // len(smp))
         for lo in range(0, len(cand), step):
             ci = cand[lo : lo + step]
-            m = facade_pairs(ctx, f, cand_xy[ci], full=False)
-            r, c = np.nonzero(m.ok)
+            m = facade_pairs(ctx, f, cand_xy[ci])
+            r, c = np.nonzero(meets(ctx, m, smp))
             rows.append(smp[c])
             cols.append(ci[r])
             n_view[smp] += m.view.sum(axis=0)
@@ -270,28 +323,17 @@ def evaluate_candidates(
     return CandidateEvaluation(ok, n_view)
 
 
-def _blocks(xy: np.ndarray, per_block: int) -> np.ndarray:
-    """An order of the points by square blocks of about ``per_block`` points each."""
-    if len(xy) <= per_block:
-        return np.arange(len(xy))
-    span = np.ptp(xy, axis=0).max() + 1e-9
-    side = span * np.sqrt(per_block / len(xy))
-    cell = np.floor((xy - xy.min(axis=0)) / side).astype(np.int64)
-    return np.lexsort((xy[:, 0], xy[:, 1], cell[:, 0], cell[:, 1]))
-
-
-BEST_KEYS = ("m_x_mm", "m_y_mm", "m_z_mm", "gamma_deg", "spacing_mm", "score")
-
-
 def best_achievable(
     ctx: Context, cand_xy: np.ndarray, samples: np.ndarray
 ) -> dict[str, np.ndarray]:
-    """For the given samples, the best value of each quantity over every candidate that sees
-    them (each minimised on its own), and the best ``score`` (max of value / limit, <= 1
-    meets). Arrays aligned with ``samples``; inf where no candidate sees the sample."""
+    """For the given samples, the best value of each checked quantity over every candidate
+    that sees them (each on its own, keyed by the check's key), and the best ``score``
+    (largest value / limit, <= 1 meets). Arrays aligned with ``samples``; the worst value
+    (±inf) where no candidate sees the sample."""
     fac = ctx.facades
-    out = {k: np.full(len(samples), np.inf) for k in BEST_KEYS}
     samples = np.asarray(samples)
+    out = {c.key: np.full(len(samples), c.worst_value()) for c in CHECKS}
+    out["score"] = np.full(len(samples), np.inf)
     for f in np.unique(fac.facade[samples]):
         idx = np.flatnonzero(fac.facade[samples] == f)
         smp = samples[idx]
@@ -299,27 +341,20 @@ def best_achievable(
         step = max(1, PAIR_CHUNK // len(smp))
         for lo in range(0, len(cand), step):
             m = facade_pairs(ctx, int(f), cand_xy[cand[lo : lo + step]], smp)
-            cos_best = np.where(m.view, m.cos_gamma, -np.inf).max(axis=0)
-            with np.errstate(invalid="ignore"):
-                gamma = np.where(
-                    np.isfinite(cos_best), np.degrees(np.arccos(np.clip(cos_best, -1, 1))), np.inf
+            for c, _ in ctx.active_checks(smp):
+                seen = np.where(m.view, m.value(c.metric), c.worst_value())
+                best = c.best(seen, axis=0)
+                prev = out[c.key][idx]
+                out[c.key][idx] = (
+                    np.minimum(prev, best) if c.sense == "max" else np.maximum(prev, best)
                 )
-            vals = {
-                "m_x_mm": np.sqrt(np.where(m.view, m.var_x, np.inf).min(axis=0)),
-                "m_y_mm": np.sqrt(np.where(m.view, m.var_y, np.inf).min(axis=0)),
-                "m_z_mm": np.sqrt(np.where(m.view, m.var_z, np.inf).min(axis=0)),
-                "gamma_deg": gamma,
-                "spacing_mm": np.where(m.view, m.spacing_mm, np.inf).min(axis=0),
-                "score": score(ctx, m).min(axis=0),
-            }
-            for key, v in vals.items():
-                out[key][idx] = np.minimum(out[key][idx], v)
+            out["score"][idx] = np.minimum(out["score"][idx], score(ctx, m, smp).min(axis=0))
     return out
 
 
 def evaluate_stations(ctx: Context, station_xy: np.ndarray) -> dict[str, np.ndarray]:
     """Dense metrics of every sample × station: arrays of shape (N, K), NaN where the
-    station is not in front of the facade or out of reach of the evaluation."""
+    station is not in front of the facade."""
     fac = ctx.facades
     n, k = len(fac.z), len(station_xy)
     out = {key: np.full((n, k), np.nan) for key in (*METRIC_KEYS, "score")}
@@ -332,21 +367,10 @@ def evaluate_stations(ctx: Context, station_xy: np.ndarray) -> dict[str, np.ndar
         if not len(ahead) or not len(smp):
             continue
         m = facade_pairs(ctx, f, station_xy[ahead])
-        with np.errstate(invalid="ignore"):
-            gamma = np.degrees(np.arccos(np.clip(m.cos_gamma, -1, 1)))
-        vals = {
-            "distance_m": m.distance_m,
-            "slope_distance_m": m.slope_distance_m,
-            "gamma_deg": gamma,
-            "nu_deg": np.degrees(np.arcsin(np.clip(m.sin_nu, -1, 1))),
-            "m_x_mm": np.sqrt(m.var_x),
-            "m_y_mm": np.sqrt(m.var_y),
-            "m_z_mm": np.sqrt(m.var_z),
-            "spacing_mm": m.spacing_mm,
-            "score": score(ctx, m),
-            "view": m.view,
-            "ok": m.ok,
-        }
+        vals = {key: m.value(key) for key in METRIC_KEYS}
+        vals["score"] = score(ctx, m, smp)
+        vals["view"] = m.view
+        vals["ok"] = meets(ctx, m, smp)
         ix = np.ix_(smp, ahead)
         for key, val in vals.items():
             out[key][ix] = val.T

@@ -14,10 +14,11 @@ import numpy as np
 import scipy.sparse as sp
 from scipy.sparse.csgraph import connected_components, minimum_spanning_tree
 
-from planner.evaluate import Context
-from planner.facades import PARTY_WALL_GAP_M, SIGHT_OFFSET_M, party_wall_mask
-from planner.targets import SPACING_FACTOR, choose_target
-from planner.visibility import clear_height, edges_in_box
+from planner.pipeline.evaluate import Context
+from planner.pipeline.facades import PARTY_WALL_GAP_M, SIGHT_OFFSET_M, party_wall_mask
+from planner.pipeline.visibility import clear_height, edges_in_box
+from planner.spacing import point_spacing_mm
+from planner.targets import SPACING_FACTOR, choose_target, target_size_kernel
 
 __all__ = ["Network", "TargetCandidates", "connect", "target_candidates", "usability"]
 
@@ -25,13 +26,14 @@ __all__ = ["Network", "TargetCandidates", "connect", "target_candidates", "usabi
 MIN_SPREAD_M = 0.5
 
 
-@dataclass
+@dataclass(kw_only=True)
 class TargetCandidates:
     """Where targets could go: (T, 3) positions, type, and wall normal (zero for stands)."""
 
     xyz: np.ndarray
     type: np.ndarray  # "flat" or "sphere"
     normal: np.ndarray  # (T, 2)
+    facade: np.ndarray  # (T,) facade index of a flat target, -1 for a stand
 
 
 def target_candidates(ctx: Context, stand_xy: np.ndarray) -> TargetCandidates:
@@ -39,7 +41,7 @@ def target_candidates(ctx: Context, stand_xy: np.ndarray) -> TargetCandidates:
     for the target types the inventory holds."""
     fac, st = ctx.facades, ctx.settings
     types = {i.type for i in st.inventory}
-    xyz, kind, nrm, owner = [], [], [], []
+    xyz, kind, nrm, owner, wall = [], [], [], [], []
     if "flat" in types:
         for f in range(fac.n_facades):
             z = min(st.target_height_m, fac.height_m[f] - 0.2)
@@ -51,6 +53,7 @@ def target_candidates(ctx: Context, stand_xy: np.ndarray) -> TargetCandidates:
                 kind.append("flat")
                 nrm.append(fac.normal[f])
                 owner.append(fac.building_id[f])
+                wall.append(f)
         if xyz:
             walls = np.array(xyz)
             probe = walls[:, :2] + PARTY_WALL_GAP_M * np.array(nrm)
@@ -58,15 +61,18 @@ def target_candidates(ctx: Context, stand_xy: np.ndarray) -> TargetCandidates:
             xyz = [p for p, k in zip(xyz, keep, strict=True) if k]
             nrm = [p for p, k in zip(nrm, keep, strict=True) if k]
             kind = [p for p, k in zip(kind, keep, strict=True) if k]
+            wall = [p for p, k in zip(wall, keep, strict=True) if k]
     if "sphere" in types:
         for xy in stand_xy:
             xyz.append([xy[0], xy[1], st.target_height_m])
             kind.append("sphere")
             nrm.append([0.0, 0.0])
+            wall.append(-1)
     return TargetCandidates(
-        np.array(xyz).reshape(-1, 3),
-        np.array(kind, dtype=object),
-        np.array(nrm, dtype=float).reshape(-1, 2),
+        xyz=np.array(xyz).reshape(-1, 3),
+        type=np.array(kind, dtype=object),
+        normal=np.array(nrm, dtype=float).reshape(-1, 2),
+        facade=np.array(wall, dtype=np.int64),
     )
 
 
@@ -89,7 +95,6 @@ def usability(
         for ty in ("flat", "sphere")
     }
     hi = st.instrument_height_m
-    delta = ctx.step_mm_at_10m / 10.0
     cos_max = np.cos(np.radians(st.max_target_incidence_deg))
     is_flat = tc.type == "flat"
     for j, sxy in enumerate(station_xy):
@@ -111,11 +116,10 @@ def usability(
         )
         seen = tc.xyz[idx, 2] >= zc - 1e-9
         idx = idx[seen]
-        spacing = delta * s[idx]
+        spacing = point_spacing_mm(s[idx], step_mm_at_10m=ctx.step_mm_at_10m)
         factor = np.array([SPACING_FACTOR[ty] for ty in tc.type[idx]], dtype=float)
-        with np.errstate(divide="ignore"):
-            incidence = np.where(is_flat[idx], s[idx] / np.maximum(cdot[idx], 1e-12), 1.0)
-        need[idx, j] = factor * spacing * incidence
+        cos_incidence = np.where(is_flat[idx], cdot[idx] / s[idx], 1.0)
+        need[idx, j] = target_size_kernel(factor, spacing, cos_incidence)
     big = np.array([largest[ty] for ty in tc.type])[:, None]
     return need <= big, need
 
@@ -156,7 +160,7 @@ def link_matrix(usable: np.ndarray, xyz: np.ndarray) -> np.ndarray:
     return out
 
 
-@dataclass
+@dataclass(kw_only=True)
 class Network:
     """The registration network over the chosen stations."""
 
@@ -241,16 +245,16 @@ def connect(ctx: Context, tc: TargetCandidates, cand_xy: np.ndarray, chosen: np.
             "coordinated with a total station"
         )
     return Network(
-        np.array(stations),
-        added,
-        all_links,
-        tree_links,
-        chosen_targets,
-        target_links,
-        n_comp,
-        msg,
-        usable,
-        need,
+        stations=np.array(stations),
+        n_link_stations=added,
+        links=all_links,
+        tree=tree_links,
+        targets=chosen_targets,
+        target_links=target_links,
+        n_components=n_comp,
+        message=msg,
+        usable=usable,
+        need_mm=need,
     )
 
 
@@ -299,15 +303,19 @@ def _best_bridge(
 
 
 def target_table_rows(ctx: Context, tc: TargetCandidates, net: Network) -> list[dict]:
-    """Rows of the target list: position, type, minimum and chosen size, stations."""
+    """Rows of the target list: position, type, the wall it goes on and which way it faces,
+    the minimum size for every station listed (Sossa's rule at the farthest) and the
+    inventory item chosen, and the stations that use it."""
     usable, need = net.usable, net.need_mm
+    fac = ctx.facades
     rows = []
     for t in net.targets:
         users = sorted({s for link in net.target_links[t] for s in link})
-        min_size = float(need[t, users].max())
-        item = choose_target(min_size, tc.type[t], ctx.settings.inventory)
+        item = choose_target(float(need[t, users].max()), tc.type[t], ctx.settings.inventory)
         size = item.size_mm if item else float("nan")
         seen_by = np.flatnonzero(usable[t] & (need[t] <= size))
+        f = int(tc.facade[t])
+        nx, ny = tc.normal[t]
         rows.append(
             {
                 "t": t,
@@ -315,10 +323,13 @@ def target_table_rows(ctx: Context, tc: TargetCandidates, net: Network) -> list[
                 "y": tc.xyz[t, 1],
                 "z": tc.xyz[t, 2],
                 "type": tc.type[t],
-                "min_size_mm": min_size,
+                "min_size_mm": float(need[t, seen_by].max()),
                 "size_mm": size,
                 "item": item.name if item else "",
                 "stations": seen_by,
+                "facade_id": fac.facade_id[f] if f >= 0 else "",
+                # which way a wall target faces: azimuth of its normal, clockwise from grid north
+                "facing_deg": float(np.degrees(np.arctan2(nx, ny)) % 360.0) if f >= 0 else np.nan,
             }
         )
     return rows

@@ -14,7 +14,7 @@ from matplotlib.figure import Figure
 from matplotlib.patches import PathPatch, Wedge
 from matplotlib.path import Path as MplPath
 
-from planner.planning import Plan
+from planner.pipeline.result import Plan
 from planner.site import Site
 
 __all__ = ["plot_coverage", "plot_plan_map", "plot_site"]

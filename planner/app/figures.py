@@ -16,13 +16,13 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from planner.accuracy import height_rms, planimetric_rms
-from planner.io import write_bytes_atomic
+from planner.atomic import write_bytes_atomic
 from planner.reference import (
     SOSSA_TABLE2,
     compare_table1,
     compare_table2,
 )
-from planner.scanner import Scanner
+from planner.scanner import DEFAULT_SCANNER, Scanner
 from planner.targets import (
     DEFAULT_INVENTORY,
     SOSSA_STEP_MM_AT_10M,
@@ -182,9 +182,9 @@ def _save(fig: Figure, path: Path) -> Path:
 def make_figures(out_dir: str | Path = "figures") -> list[Path]:
     """Regenerate the README figures in ``out_dir``; returns the files written."""
     out = Path(out_dir)
-    paper = Scanner.from_name("leica-4mm-60urad")
-    from planner.maps import plot_coverage, plot_plan_map
-    from planner.planning import plan
+    paper = Scanner.from_name(DEFAULT_SCANNER)
+    from planner.app.maps import plot_coverage, plot_plan_map
+    from planner.pipeline.planning import plan
 
     default_plan = plan()
     written = [

@@ -1,6 +1,9 @@
 """The ``planner`` command line. It parses, calls the package and prints: no science here.
 
-Exit codes: 0 success; 2 bad input (a message on stderr, nothing written).
+Exit codes (one meaning each): 0 success; 1 plan written, some samples unmet (``plan``
+only); 2 bad input or an unusable output place (a message on stderr, nothing written);
+3 an internal error (a bug: a one-line message and the log file with the details);
+130 stopped by Ctrl+C.
 """
 
 from __future__ import annotations
@@ -13,7 +16,7 @@ from pathlib import Path
 import pandas as pd
 
 from planner.errors import InputError, PlannerError
-from planner.scanner import Scanner, catalogue, load_scanner
+from planner.scanner import DEFAULT_SCANNER, Scanner, catalogue, load_scanner
 from planner.tables import (
     PAPER_DISTANCES_M,
     PAPER_GAMMAS_DEG,
@@ -25,11 +28,11 @@ from planner.tables import (
 )
 from planner.targets import recommend_targets
 
-DEFAULT_SCANNER = "leica-4mm-60urad"
-
 EXIT_OK = 0
 EXIT_UNMET = 1
 EXIT_BAD_INPUT = 2
+EXIT_INTERNAL = 3
+EXIT_INTERRUPTED = 130
 
 
 class _Parser(argparse.ArgumentParser):
@@ -69,7 +72,7 @@ def _scanner_arg(p: argparse.ArgumentParser) -> None:
         "--scanner",
         default=DEFAULT_SCANNER,
         metavar="NAME|FILE.toml",
-        help=f"catalogue name ('planner scanners') or a profile file; default {DEFAULT_SCANNER}",
+        help=f"catalogue name ('planner scanners') or a profile file (default {DEFAULT_SCANNER})",
     )
 
 
@@ -141,7 +144,7 @@ def cmd_targets(args: argparse.Namespace) -> int:
 
 
 def cmd_figures(args: argparse.Namespace) -> int:
-    from planner.figures import make_figures
+    from planner.app.figures import make_figures
 
     for path in make_figures(args.out):
         print(path)
@@ -187,10 +190,13 @@ def _xy(text: str) -> float | tuple[float, float]:
     raise argparse.ArgumentTypeError("expected one number (m_x = m_y) or two (m_x,m_y) in mm")
 
 
-def run_plan(args: argparse.Namespace) -> int:
-    from planner.planning import plan
-    from planner.requirements import PlanSettings, Requirements
+def plan_inputs(args: argparse.Namespace):
+    """Site, scanner, requirements and settings from the options shared by ``plan`` and
+    ``report`` — the one function both use, so a report shows exactly the plan ``plan``
+    makes. Options not given are None, and the data classes' defaults apply."""
+    from planner.pipeline.requirements import requirements_and_settings
     from planner.siteio import default_site, read_site
+    from planner.targets import parse_inventory
 
     if args.site:
         site = read_site(
@@ -201,28 +207,27 @@ def run_plan(args: argparse.Namespace) -> int:
         )
     else:
         site = default_site(buildings=args.buildings)
-    sc = load_scanner(args.scanner)
-    req = Requirements(
-        max_xy_mm=args.max_xy_mm,
-        max_z_mm=args.max_z_mm,
-        max_gamma_deg=args.max_gamma_deg,
-        max_spacing_mm=args.max_spacing_mm,
-        min_range_m=args.min_range_m,
-        max_range_m=args.max_range_m,
-        stations_per_sample=args.stations_per_sample,
-    )
-    settings = PlanSettings(
-        grid_m=args.grid_m,
-        clearance_m=args.clearance_m,
-        sample_spacing_m=args.sample_spacing_m,
-        sample_height_step_m=args.sample_height_step_m,
-        instrument_height_m=args.instrument_height_m,
-        station_rms_mm=args.station_rms_mm,
-        step_mm_at_10m=args.step_mm_at_10m,
-        time_limit_s=args.time_limit_s,
-        method=args.method,
-    )
-    result = plan(site, sc, req, settings, progress=_StderrProgress(args.quiet))
+    options = dict(vars(args))
+    if args.inventory:
+        options["inventory"] = parse_inventory(_read_text(args.inventory, "inventory file"))
+    req, settings = requirements_and_settings(options)
+    return site, load_scanner(args.scanner or DEFAULT_SCANNER), req, settings
+
+
+def _read_text(path: str, what: str) -> str:
+    p = Path(path)
+    if not p.is_file():
+        raise InputError(f"{what} {path!r} does not exist")
+    try:
+        return p.read_text(encoding="utf-8-sig")
+    except UnicodeDecodeError:
+        raise InputError(f"{what} {path!r} is not UTF-8 text") from None
+
+
+def run_plan(args: argparse.Namespace) -> int:
+    from planner.pipeline.planning import plan
+
+    result = plan(*plan_inputs(args), progress=_StderrProgress(args.quiet))
     written = result.save(args.out)
     print(result.summary())
     unmet = result.unmet
@@ -245,27 +250,16 @@ def run_plan(args: argparse.Namespace) -> int:
 
 
 def cmd_report(args: argparse.Namespace) -> int:
-    from planner.report import make_report
+    from planner.app.report import make_report
+    from planner.pipeline.planning import plan
 
     out = Path(args.out)
     if out.suffix.lower() not in (".html", ".htm"):
         raise InputError(f"--out must name an .html file; got {args.out!r}")
-    xy = list(args.max_xy_mm) if isinstance(args.max_xy_mm, tuple) else args.max_xy_mm
+    result = plan(*plan_inputs(args), progress=_StderrProgress(args.quiet))
     if not args.quiet:
-        print("planner: executing the report notebook …", file=sys.stderr)
-    path = make_report(
-        out,
-        site_path=args.site,
-        default_height_m=args.height,
-        buildings=args.buildings,
-        scanner=args.scanner,
-        max_xy_mm=xy,
-        max_z_mm=args.max_z_mm,
-        max_gamma_deg=args.max_gamma_deg,
-        max_spacing_mm=args.max_spacing_mm,
-        stations_per_sample=args.stations_per_sample,
-        grid_m=args.grid_m,
-    )
+        print("planner: rendering the report …", file=sys.stderr)
+    path = make_report(result, out)
     print(f"Wrote {path} ({path.stat().st_size / 1e6:.1f} MB, self-contained)")
     return EXIT_OK
 
@@ -327,7 +321,9 @@ def cmd_calibrate_lab(args: argparse.Namespace) -> int:
         f"{h.std_errors['kappa_arcsec']:.1f}″)"
     )
     print(f"  residual RMS of a coordinate σ₀ = {h.sigma0_mm:.2f} mm (redundancy {h.redundancy})")
-    print(f"\nUncertainty from {len(t.pairs)} target pairs (seed 002, eq. 1–9):")
+    print(
+        f"\nUncertainty from {len(t.pairs)} target pairs (Belgrade laboratory procedure, eq. 1–9):"
+    )
     _print_table(t.summary())
     sig = t.significant
     print(f"\nPairs with a significant difference (|Δ| > M_r): {len(sig)}")
@@ -364,9 +360,7 @@ def cmd_calibrate_baseline(args: argparse.Namespace) -> int:
     )
     if {"from", "to", "distance_m"} <= cols:
         r = six_segment_constant(args.file)
-        print(
-            "Six-segment (all-combinations) method (seed 004): additive constant of the instrument"
-        )
+        print("Six-segment (all-combinations) method: additive constant of the instrument")
         print(
             f"  k = {r.k_mm:+.2f} mm ± {r.k_se_mm:.2f} mm;  σ₀ of a distance {r.sigma0_mm:.2f} mm"
         )
@@ -379,7 +373,7 @@ def cmd_calibrate_baseline(args: argparse.Namespace) -> int:
             )
         return EXIT_OK
     r = baseline_calibration(args.file)
-    print(f"Baseline comparison of {r.n} distances (seed 004): D_ref = D + k + R·D")
+    print(f"Baseline comparison of {r.n} distances: D_ref = D + k + R·D")
     print(
         f"  k = {r.k_mm:+.2f} mm ± {r.k_se_mm:.2f} mm;  "
         f"R = {r.scale_ppm:+.1f} ppm ± {r.scale_se_ppm:.1f} ppm"
@@ -394,7 +388,7 @@ def cmd_calibrate_axes(args: argparse.Namespace) -> int:
     from planner.calibration import axis_errors
 
     r = axis_errors(args.file, orientation=not args.no_orientation)
-    print(f"Axis errors from {len(r.residuals)} directions (seed 004, eq. 5–6):")
+    print(f"Axis errors from {len(r.residuals)} directions (c / cos α + i·tan α):")
     print(f"  collimation c = {r.c_deg:.4f}° ± {r.c_se_deg:.4f}°  ({r.c_deg * 3600:.1f}″)")
     print(f"  trunnion-axis tilt i = {r.i_deg:.4f}° ± {r.i_se_deg:.4f}°  ({r.i_deg * 3600:.1f}″)")
     if r.orientation_deg is not None:
@@ -448,7 +442,7 @@ def voila_command(notebook: Path, port: int) -> tuple[list[str], dict[str, str]]
 def cmd_serve(args: argparse.Namespace) -> int:
     import subprocess
 
-    from planner.dashboard import notebook_path
+    from planner.app.notebooks import notebook_path
 
     nb = notebook_path(args.notebook)
     port = free_port(args.port)
@@ -467,7 +461,11 @@ def cmd_default(args: argparse.Namespace) -> int:
 
 
 def _plan_arguments(pl: argparse.ArgumentParser) -> None:
-    """The site, scanner, requirement and setting options shared by plan and report."""
+    """The site, scanner, requirement and setting options shared by plan and report. The
+    requirement and setting options are made from the data classes' fields (name, unit,
+    help, default), so both commands and the data classes cannot drift apart."""
+    from planner.pipeline.requirements import METHODS, PlanSettings, Requirements, field_specs
+
     pl.add_argument(
         "site",
         nargs="?",
@@ -493,54 +491,37 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         action="store_true",
         help="repair invalid outlines (repeated vertices, make_valid) instead of stopping",
     )
-    pl.add_argument("--scanner", required=True, metavar="NAME|FILE.toml")
     pl.add_argument(
-        "--max-xy-mm",
-        type=_xy,
-        required=True,
-        metavar="X[,Y]",
-        help="largest m_x and m_y in the facade frame [mm]",
-    )
-    pl.add_argument("--max-z-mm", type=float, required=True, metavar="Z", help="largest m_z [mm]")
-    pl.add_argument(
-        "--max-gamma-deg",
-        type=float,
-        default=75.0,
-        metavar="G",
-        help="largest deviation from the facade normal [deg] (default 75)",
-    )
-    pl.add_argument(
-        "--max-spacing-mm",
-        type=float,
+        "--scanner",
         default=None,
-        help="largest point spacing on the facade [mm]",
+        metavar="NAME|FILE.toml",
+        help=f"catalogue name ('planner scanners') or a profile file (default {DEFAULT_SCANNER})",
     )
-    pl.add_argument("--min-range-m", type=float, default=None)
-    pl.add_argument("--max-range-m", type=float, default=None)
+    pairs = {"max_xy_mm": "X[,Y]", "station_rms_mm": "MXC[,MYC]"}
+    for cls in (Requirements, PlanSettings):
+        for name, spec in field_specs(cls).items():
+            kind = _xy if name in pairs else int if isinstance(spec.default, int) else float
+            default = "none" if spec.default is None else f"{spec.default:g}"
+            pl.add_argument(
+                spec.flag,
+                type=kind,
+                default=None,
+                metavar=pairs.get(name, name.rsplit("_", 1)[-1].upper()),
+                help=f"{spec.help} [{spec.unit}] (default {default})",
+            )
+    pl.add_argument("--method", choices=METHODS, default=None, help="station optimiser")
     pl.add_argument(
-        "--stations-per-sample",
-        type=int,
-        default=1,
-        help="stations that must each meet the requirements at every sample",
+        "--inventory",
+        metavar="FILE",
+        default=None,
+        help="the targets you own, one per line: name, type (flat/sphere/cylinder), size in mm",
     )
-    pl.add_argument("--grid-m", type=float, default=2.0, help="candidate grid spacing [m]")
-    pl.add_argument(
-        "--clearance-m",
-        type=float,
-        default=1.0,
-        help="free space around buildings and obstacles [m]",
-    )
-    pl.add_argument("--sample-spacing-m", type=float, default=2.0)
-    pl.add_argument("--sample-height-step-m", type=float, default=2.0)
-    pl.add_argument("--instrument-height-m", type=float, default=1.5)
-    pl.add_argument("--station-rms-mm", type=_xy, default=0.0, metavar="MXC[,MYC]")
-    pl.add_argument("--step-mm-at-10m", type=float, default=None)
-    pl.add_argument("--time-limit-s", type=float, default=20.0)
-    pl.add_argument("--method", choices=["auto", "milp", "greedy"], default="auto")
     pl.add_argument("-q", "--quiet", action="store_true", help="no progress messages")
 
 
 def build_parser() -> argparse.ArgumentParser:
+    from planner.app.notebooks import DASHBOARDS
+
     p = _Parser(
         prog="planner", description="Plan terrestrial laser scanner stations around buildings."
     )
@@ -623,7 +604,7 @@ def build_parser() -> argparse.ArgumentParser:
     sv.add_argument(
         "--notebook",
         default="station_planner.ipynb",
-        choices=["station_planner.ipynb", "accuracy_explorer.ipynb", "targets.ipynb"],
+        choices=DASHBOARDS,
         help="which dashboard (default: the station planner)",
     )
     sv.set_defaults(func=cmd_serve)
@@ -647,7 +628,7 @@ def build_parser() -> argparse.ArgumentParser:
             help="profile giving the figures not calibrated (step, ranges, field of view)",
         )
 
-    lab = csub.add_parser("lab", help="seed 002's lab uncertainty test (Helmert, m_r, M_r)")
+    lab = csub.add_parser("lab", help="laboratory uncertainty test (Helmert, m_r, M_r)")
     lab.add_argument("reference", metavar="REF.csv", help="lab-frame targets: id,x,y,z[,sigma_mm]")
     lab.add_argument("scan", metavar="SCAN.csv", help="scanner-frame targets: id,x,y,z")
     lab.add_argument("--k", type=float, default=2.0, help="coverage factor of M_r (default 2)")
@@ -674,7 +655,7 @@ def build_parser() -> argparse.ArgumentParser:
     profile_options(lab)
     lab.set_defaults(func=cmd_calibrate_lab)
 
-    bl = csub.add_parser("baseline", help="additive constant and scale (seed 004)")
+    bl = csub.add_parser("baseline", help="additive constant and scale from a baseline")
     bl.add_argument(
         "file",
         metavar="FILE.csv",
@@ -688,7 +669,7 @@ def build_parser() -> argparse.ArgumentParser:
     profile_options(bl)
     bl.set_defaults(func=cmd_calibrate_baseline)
 
-    ax = csub.add_parser("axes", help="collimation and trunnion-axis errors (seed 004)")
+    ax = csub.add_parser("axes", help="collimation and trunnion-axis errors")
     ax.add_argument(
         "file", metavar="FILE.csv", help="vertical_angle_deg,observed_deg,reference_deg"
     )
@@ -706,7 +687,27 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
+def _log_internal_error(exc: BaseException) -> Path | None:
+    """Write the traceback of an unexpected error to a log file; its path, or None."""
+    import tempfile
+    import time
+    import traceback
+
+    try:
+        fd, name = tempfile.mkstemp(
+            prefix=f"tls-planner-error-{time.strftime('%Y%m%d-%H%M%S')}-", suffix=".log"
+        )
+        with open(fd, "w", encoding="utf-8") as fh:
+            fh.write(f"planner {' '.join(sys.argv[1:])}\n\n")
+            fh.write("".join(traceback.format_exception(exc)))
+        return Path(name)
+    except OSError:
+        return None
+
+
 def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command; the one boundary that turns every error into a message and an exit
+    code (never a traceback): bad input 2, an unusable output place 2, a bug 3."""
     args = build_parser().parse_args(argv)
     func: Callable[[argparse.Namespace], int] = args.func
     try:
@@ -714,5 +715,24 @@ def main(argv: Sequence[str] | None = None) -> int:
     except PlannerError as exc:
         print(f"planner: error: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
-    except BrokenPipeError:
-        return EXIT_OK
+    except OSError as exc:
+        if isinstance(exc, BrokenPipeError):
+            return EXIT_OK
+        where = f" {exc.filename!r}" if exc.filename else ""
+        print(
+            f"planner: error: cannot use{where}: {exc.strerror or exc}; check the path, the "
+            "permissions and the free disk space",
+            file=sys.stderr,
+        )
+        return EXIT_BAD_INPUT
+    except KeyboardInterrupt:
+        print("planner: stopped", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    except Exception as exc:  # a bug: one line, and the details in a log file
+        log = _log_internal_error(exc)
+        print(
+            f"planner: internal error ({type(exc).__name__}: {str(exc)[:200]}); this is a bug"
+            + (f" — details in {log}" if log else ""),
+            file=sys.stderr,
+        )
+        return EXIT_INTERNAL

@@ -1,9 +1,11 @@
-"""Worker process of the station optimiser: ``python -m planner._milp_worker IN.npz OUT.npz``.
+"""Worker process of the station optimiser.
+
+``python -m planner.pipeline._milp_worker IN.npz OUT.npz``:
 
 Reads the cover matrix, demand, upper bound and time limit, solves the integer program with
 ``scipy.optimize.milp`` and writes status, solution and dual bound. Run by
-:func:`planner.optimise.solve_cover` for large models, so that the parent can stop it at the
-time limit (HiGHS does not check the clock during presolve).
+:func:`planner.pipeline.optimise.solve_cover` for large models, so that the parent can stop
+it at the time limit (HiGHS does not check the clock during presolve).
 """
 
 from __future__ import annotations
@@ -15,7 +17,7 @@ import scipy.sparse as sp
 
 
 def main(src: str, dst: str) -> None:
-    from planner.optimise import _milp
+    from planner.pipeline.optimise import _milp
 
     with np.load(src) as d:
         a = sp.csr_matrix((d["data"], d["indices"], d["indptr"]), shape=tuple(d["shape"]))

@@ -1,0 +1,229 @@
+"""The plan's files: stations, targets, coverage and facades as CSV, everything as GeoJSON,
+and the summary text — rendered here, written by :func:`save`.
+
+The column lists below are the file contract (one place each).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from planner.atomic import write_text_atomic
+from planner.errors import InputError
+from planner.pipeline.result import Plan
+
+__all__ = [
+    "COVERAGE_COLUMNS",
+    "STATION_COLUMNS",
+    "TARGET_COLUMNS",
+    "coverage_csv",
+    "geojson",
+    "render",
+    "save",
+    "stations_csv",
+    "targets_csv",
+]
+
+STATION_COLUMNS = ["station_id", "x", "y", "instrument_height_m"]
+TARGET_COLUMNS = [
+    "target_id",
+    "x",
+    "y",
+    "z",
+    "type",
+    "min_size_mm",
+    "size_mm",
+    "item",
+    "station_ids",
+    "facade_id",
+    "facing_deg",
+]
+COVERAGE_COLUMNS = [
+    "building_id",
+    "facade_id",
+    "sample_id",
+    "x",
+    "y",
+    "z",
+    "station_id",
+    "distance_m",
+    "slope_distance_m",
+    "gamma_deg",
+    "nu_deg",
+    "m_x_mm",
+    "m_y_mm",
+    "m_z_mm",
+    "meets",
+]
+
+
+def stations_csv(p: Plan) -> str:
+    return p.stations[STATION_COLUMNS].to_csv(index=False, float_format="%.3f")
+
+
+def targets_csv(p: Plan) -> str:
+    t = p.targets.copy()
+    t["station_ids"] = t["station_ids"].map(lambda ids: ";".join(ids))
+    return t[TARGET_COLUMNS].to_csv(index=False, float_format="%.3f")
+
+
+def coverage_csv(p: Plan) -> str:
+    return p.scanned[COVERAGE_COLUMNS].to_csv(index=False, float_format="%.3f")
+
+
+def facades_csv(p: Plan) -> str:
+    return p.facades.to_csv(index=False, float_format="%.3f")
+
+
+def summary_text(p: Plan, limit: int = 50) -> str:
+    """The summary and the first ``limit`` unmet samples with their reasons."""
+    u = p.unmet
+    if u.empty:
+        listing = "Every sample meets the requirements."
+    else:
+        lines = [f"Unmet samples: {len(u)} (first {min(limit, len(u))}):"]
+        for r in u.head(limit).itertuples():
+            lines.append(f"  {r.sample_id} at ({r.x:.2f}, {r.y:.2f}, z {r.z:.1f} m): {r.reason}")
+        listing = "\n".join(lines)
+    return p.summary() + "\n" + listing + "\n"
+
+
+def _to_geojson(geom: Any) -> dict:
+    import shapely
+
+    return json.loads(shapely.to_geojson(shapely.set_precision(geom, 0.001)))
+
+
+def _clean(props: dict[str, Any]) -> dict[str, Any]:
+    out = {}
+    for k, v in props.items():
+        if isinstance(v, np.generic):
+            v = v.item()
+        if isinstance(v, float) and not math.isfinite(v):
+            v = None
+        elif isinstance(v, float):
+            v = round(v, 3)
+        out[k] = v
+    return out
+
+
+def geojson(p: Plan) -> dict:
+    """Buildings, obstacles, no-go areas, facades, stations, links, targets and unmet samples
+    as one GeoJSON FeatureCollection (a ``layer`` property on every feature)."""
+    feats: list[dict] = []
+
+    def add(geom: dict, **props: Any) -> None:
+        feats.append({"type": "Feature", "geometry": geom, "properties": _clean(props)})
+
+    for b in p.site.buildings:
+        add(
+            _to_geojson(b.footprint),
+            layer="building",
+            building_id=b.id,
+            height_m=b.height_m,
+            planned=b.planned,
+            name=b.name,
+        )
+    for o in p.site.obstacles:
+        add(
+            _to_geojson(o.geometry),
+            layer="obstacle",
+            obstacle_id=o.id,
+            kind=o.kind,
+            height_m=o.height_m,
+        )
+    for a in p.site.no_go:
+        add(_to_geojson(a.geometry), layer="no-go", area_id=a.id)
+    for r in p.facades.itertuples():
+        add(
+            {"type": "LineString", "coordinates": [[r.x0, r.y0], [r.x1, r.y1]]},
+            layer="facade",
+            building_id=r.building_id,
+            facade_id=r.facade_id,
+            length_m=r.length_m,
+            samples=r.samples,
+            party_wall_samples=r.party_wall_samples,
+            met=r.met,
+            unmet=r.unmet,
+            stations=r.stations,
+        )
+    st = p.stations.set_index("station_id")
+    for r in p.stations.itertuples():
+        add(
+            {"type": "Point", "coordinates": [r.x, r.y]},
+            layer="station",
+            station_id=r.station_id,
+            instrument_height_m=r.instrument_height_m,
+            purpose=r.purpose,
+            samples_met=r.samples_met,
+        )
+    for r in p.links.itertuples():
+        a, b = st.loc[r.station_a], st.loc[r.station_b]
+        add(
+            {"type": "LineString", "coordinates": [[a.x, a.y], [b.x, b.y]]},
+            layer="link",
+            station_a=r.station_a,
+            station_b=r.station_b,
+            common_targets=r.common_targets,
+            targets_placed=r.targets_placed,
+        )
+    for r in p.targets.itertuples():
+        add(
+            {"type": "Point", "coordinates": [r.x, r.y, r.z]},
+            layer="target",
+            target_id=r.target_id,
+            type=r.type,
+            min_size_mm=r.min_size_mm,
+            size_mm=r.size_mm,
+            item=r.item,
+            station_ids=";".join(r.station_ids),
+        )
+    for r in p.unmet.itertuples():
+        add(
+            {"type": "Point", "coordinates": [r.x, r.y, r.z]},
+            layer="unmet",
+            building_id=r.building_id,
+            facade_id=r.facade_id,
+            sample_id=r.sample_id,
+            reason=r.reason,
+        )
+    out: dict[str, Any] = {"type": "FeatureCollection", "name": f"tls-planner plan: {p.site.name}"}
+    if p.site.crs:
+        out["crs"] = {"type": "name", "properties": {"name": p.site.crs}}
+    out["features"] = feats
+    return out
+
+
+def geojson_text(p: Plan) -> str:
+    return json.dumps(geojson(p), indent=1, allow_nan=False) + "\n"
+
+
+#: Every file of a plan folder and how it is rendered (one list: save, downloads, zip).
+FILES = {
+    "stations.csv": stations_csv,
+    "targets.csv": targets_csv,
+    "coverage.csv": coverage_csv,
+    "facades.csv": facades_csv,
+    "plan.geojson": geojson_text,
+    "summary.txt": summary_text,
+}
+
+
+def render(p: Plan) -> dict[str, str]:
+    """Every file of the plan as text, by file name."""
+    return {name: make(p) for name, make in FILES.items()}
+
+
+def save(p: Plan, out_dir: str | Path) -> list[Path]:
+    """Write the plan's files into ``out_dir``. Every file is rendered first, then written
+    atomically: a failure never leaves a half-written file over a good one."""
+    out = Path(out_dir)
+    if out.exists() and not out.is_dir():
+        raise InputError(f"{out} exists and is not a folder; choose another --out")
+    texts = render(p)
+    return [write_text_atomic(out / name, text) for name, text in texts.items()]

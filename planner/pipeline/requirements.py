@@ -1,0 +1,433 @@
+"""What the client needs (:class:`Requirements`), how the planner works (:class:`PlanSettings`),
+and the one table of requirement checks (:data:`CHECKS`).
+
+One source of truth:
+
+* every default, unit, bound and label of a requirement or a setting is written once, in
+  the fields below (their ``metadata``); the command line, the dashboard and the report
+  read them from here (:func:`field_specs`);
+* every requirement that judges a facade sample is one row of :data:`CHECKS`; the
+  evaluation (which candidate meets which sample), the "best achievable" diagnosis, the
+  reasons, the summary, the report and the dashboard all read that table. Adding a
+  requirement means adding its limit field here and its row to :data:`CHECKS` (and the
+  metric, if the evaluation does not compute it yet).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field, fields
+from typing import Any, Literal
+
+import numpy as np
+
+from planner.accuracy import station_rms_pair
+from planner.errors import InputError
+from planner.targets import DEFAULT_INVENTORY, TargetItem, as_inventory
+
+__all__ = [
+    "CHECKS",
+    "Check",
+    "FieldSpec",
+    "PlanSettings",
+    "Requirements",
+    "field_specs",
+    "requirements_and_settings",
+]
+
+
+# -- field metadata -----------------------------------------------------------------------
+def _spec(
+    default: Any,
+    unit: str,
+    label: str,
+    *,
+    lo: float | None = 0.0,
+    hi: float | None = None,
+    open_lo: bool = True,
+    optional: bool = False,
+    step: float = 1.0,
+    help: str = "",
+) -> Any:
+    """A dataclass field carrying its unit, valid range and label (read by validation,
+    the command line and the widgets)."""
+    meta = {
+        "unit": unit,
+        "label": label,
+        "lo": lo,
+        "hi": hi,
+        "open_lo": open_lo,
+        "optional": optional,
+        "step": step,
+        "help": help,
+    }
+    return field(default=default, metadata=meta)
+
+
+@dataclass(frozen=True)
+class FieldSpec:
+    """A requirement or setting as the user interfaces show it."""
+
+    name: str
+    default: Any
+    unit: str
+    label: str
+    lo: float | None
+    hi: float | None
+    open_lo: bool
+    optional: bool
+    step: float
+    help: str
+
+    @property
+    def flag(self) -> str:
+        """The command-line option: ``max_z_mm`` → ``--max-z-mm``."""
+        return "--" + self.name.replace("_", "-")
+
+    def rule(self) -> str:
+        """The valid range in words, e.g. ``> 0 and <= 89``."""
+        parts = []
+        if self.lo is not None:
+            parts.append(f"{'>' if self.open_lo else '>='} {self.lo:g}")
+        if self.hi is not None:
+            parts.append(f"<= {self.hi:g}")
+        return " and ".join(parts) or "any number"
+
+
+def field_specs(cls: type) -> dict[str, FieldSpec]:
+    """The fields of :class:`Requirements` or :class:`PlanSettings` that carry a spec."""
+    out = {}
+    for f in fields(cls):
+        if "unit" in f.metadata:
+            out[f.name] = FieldSpec(name=f.name, default=f.default, **f.metadata)
+    return out
+
+
+def _number(value: Any, spec: FieldSpec) -> float | None:
+    if value is None and spec.optional:
+        return None
+    if isinstance(value, bool) or isinstance(value, str):
+        raise InputError(
+            f"{spec.name} must be a number [{spec.unit}] ({spec.rule()}); got {value!r}"
+        )
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise InputError(
+            f"{spec.name} must be a number [{spec.unit}] ({spec.rule()}); got {value!r}"
+        ) from None
+    bad = not math.isfinite(v)
+    if spec.lo is not None:
+        bad |= v <= spec.lo if spec.open_lo else v < spec.lo
+    if spec.hi is not None:
+        bad |= v > spec.hi
+    if bad:
+        raise InputError(f"{spec.name} must be {spec.rule()} [{spec.unit}]; got {value!r}")
+    return v
+
+
+def _validate_numbers(obj: Any, skip: tuple[str, ...] = ()) -> None:
+    for name, spec in field_specs(type(obj)).items():
+        if name not in skip:
+            object.__setattr__(obj, name, _number(getattr(obj, name), spec))
+
+
+# -- requirements -------------------------------------------------------------------------
+@dataclass(frozen=True, kw_only=True)
+class Requirements:
+    """Accuracy and coverage the plan must meet at every facade sample.
+
+    Parameters
+    ----------
+    max_xy_mm : float or (float, float), default 5
+        Largest m_x and m_y in the facade frame [mm] (one value for both, or a pair).
+    max_z_mm : float, default 5
+        Largest m_z [mm].
+    max_gamma_deg : float, default 75
+        Largest deviation γ of the beam from the facade normal, measured in plan [deg];
+        grazing beams give sparse, noisy points. At most 89.
+    max_spacing_mm : float, optional
+        Largest point spacing on the facade [mm] at the scan step in use.
+    min_range_m, max_range_m : float, optional
+        Slope-distance window [m]; by default the scanner's.
+    stations_per_sample : int, default 1
+        How many stations must each meet every requirement at a sample.
+    """
+
+    max_xy_mm: float | tuple[float, float] = _spec(
+        5.0, "mm", "largest m_x, m_y", step=0.5, help="largest m_x and m_y in the facade frame"
+    )
+    max_z_mm: float = _spec(5.0, "mm", "largest m_z", step=0.5, help="largest height RMS m_z")
+    max_gamma_deg: float = _spec(
+        75.0,
+        "deg",
+        "largest deviation γ",
+        hi=89.0,
+        step=5.0,
+        help="largest deviation of the beam from the facade normal, in plan",
+    )
+    max_spacing_mm: float | None = _spec(
+        None,
+        "mm",
+        "largest point spacing",
+        optional=True,
+        help="largest point spacing on the facade at the scan step in use",
+    )
+    min_range_m: float | None = _spec(
+        None,
+        "m",
+        "shortest distance",
+        open_lo=False,
+        optional=True,
+        help="shortest slope distance station to point (default: the scanner's)",
+    )
+    max_range_m: float | None = _spec(
+        None,
+        "m",
+        "longest distance",
+        optional=True,
+        step=5.0,
+        help="longest slope distance station to point (default: the scanner's)",
+    )
+    stations_per_sample: int = _spec(
+        1,
+        "stations",
+        "stations per sample",
+        lo=1,
+        hi=10,
+        open_lo=False,
+        help="how many stations must each meet every requirement at a sample",
+    )
+
+    def __post_init__(self) -> None:
+        xy = self.max_xy_mm
+        pair = tuple(xy) if isinstance(xy, tuple | list) else (xy, xy)
+        if len(pair) != 2:
+            raise InputError(f"max_xy_mm must be one number or a pair (m_x, m_y) [mm]; got {xy!r}")
+        spec = field_specs(Requirements)["max_xy_mm"]
+        pair = tuple(_number(v, spec) for v in pair)
+        object.__setattr__(self, "max_xy_mm", pair if pair[0] != pair[1] else pair[0])
+        k = self.stations_per_sample
+        if isinstance(k, bool) or not isinstance(k, int | np.integer) or not 1 <= k <= 10:
+            raise InputError(f"stations_per_sample must be a whole number from 1 to 10; got {k!r}")
+        object.__setattr__(self, "stations_per_sample", int(k))
+        _validate_numbers(self, skip=("max_xy_mm", "stations_per_sample"))
+        lo, hi = self.min_range_m, self.max_range_m
+        if lo is not None and hi is not None and lo >= hi:
+            raise InputError(f"min_range_m ({lo:g} m) must be smaller than max_range_m ({hi:g} m)")
+
+    @property
+    def max_x_mm(self) -> float:
+        xy = self.max_xy_mm
+        return xy[0] if isinstance(xy, tuple) else xy
+
+    @property
+    def max_y_mm(self) -> float:
+        xy = self.max_xy_mm
+        return xy[1] if isinstance(xy, tuple) else xy
+
+    def active_checks(self) -> list[tuple[Check, float]]:
+        """The checks this requirement sets, with their limits (unset limits left out)."""
+        return [(c, c.limit_of(self)) for c in CHECKS if c.limit_of(self) is not None]
+
+    def describe(self) -> str:
+        """The requirement in one line: ``m_x <= 5 mm, m_y <= 5 mm, …``."""
+        text = ", ".join(c.text(limit) for c, limit in self.active_checks())
+        k = self.stations_per_sample
+        return text + (f", {k} stations per sample" if k > 1 else "")
+
+
+# -- the table of checks ------------------------------------------------------------------
+@dataclass(frozen=True)
+class Check:
+    """One requirement judged at every sample: ``metric`` compared with ``limit``.
+
+    ``metric`` names a per-pair quantity of the evaluation (``m_x_mm``, ``gamma_deg``…),
+    ``limit`` the attribute of :class:`Requirements` holding the limit, ``sense`` whether
+    the value must stay below (``"max"``) or above (``"min"``) it.
+    """
+
+    key: str
+    label: str
+    unit: str
+    metric: str
+    limit: str
+    sense: Literal["max", "min"]
+
+    #: Relative slack of the comparison, so a value equal to its limit meets it.
+    TOLERANCE = 1e-9
+
+    def limit_of(self, req: Requirements) -> float | None:
+        return getattr(req, self.limit)
+
+    def no_limit(self) -> float:
+        """The limit meaning "not required" in arrays: +inf for a maximum, -inf for a minimum."""
+        return math.inf if self.sense == "max" else -math.inf
+
+    def passes(self, value: np.ndarray, limit: np.ndarray | float) -> np.ndarray:
+        """Where ``value`` meets ``limit`` (arrays broadcast; an infinite limit always passes)."""
+        if self.sense == "max":
+            return value <= limit * (1.0 + self.TOLERANCE)
+        return value >= limit * (1.0 - self.TOLERANCE)
+
+    def ratio(self, value: np.ndarray, limit: np.ndarray | float) -> np.ndarray:
+        """How far ``value`` is from ``limit``: <= 1 meets (value/limit, or limit/value for a
+        minimum); 0 where there is no limit."""
+        with np.errstate(divide="ignore", invalid="ignore"):
+            r = value / limit if self.sense == "max" else limit / value
+        return np.where(np.isfinite(limit), r, 0.0)
+
+    def best(self, values: np.ndarray, axis: int = 0) -> np.ndarray:
+        """The best value along ``axis`` (the smallest for a maximum, the largest for a
+        minimum); values that do not count must be given as the worst (±inf)."""
+        return values.min(axis=axis) if self.sense == "max" else values.max(axis=axis)
+
+    def worst_value(self) -> float:
+        return math.inf if self.sense == "max" else -math.inf
+
+    def text(self, limit: float) -> str:
+        """``m_x <= 5 mm``."""
+        op = "<=" if self.sense == "max" else ">="
+        return f"{self.label} {op} {limit:g} {self.unit}".replace(" °", "°")
+
+    def shortfall(self, best: float, limit: float) -> str:
+        """``best achievable m_x 5.3 mm > 5 mm``."""
+        op = ">" if self.sense == "max" else "<"
+        return f"best achievable {self.label} {best:.1f} {self.unit} {op} {limit:g} {self.unit}"
+
+
+#: Every requirement judged at a sample (one row each; see the module docstring).
+CHECKS: tuple[Check, ...] = (
+    Check("m_x", "m_x", "mm", "m_x_mm", "max_x_mm", "max"),
+    Check("m_y", "m_y", "mm", "m_y_mm", "max_y_mm", "max"),
+    Check("m_z", "m_z", "mm", "m_z_mm", "max_z_mm", "max"),
+    Check("gamma", "γ", "°", "gamma_deg", "max_gamma_deg", "max"),
+    Check("spacing", "point spacing", "mm", "spacing_mm", "max_spacing_mm", "max"),
+    Check("min_range", "distance", "m", "slope_distance_m", "min_range_m", "min"),
+    Check("max_range", "distance", "m", "slope_distance_m", "max_range_m", "max"),
+)
+
+
+# -- settings -----------------------------------------------------------------------------
+METHODS = ("auto", "milp", "greedy")
+
+
+@dataclass(frozen=True, kw_only=True)
+class PlanSettings:
+    """How the planner samples the site and solves (sensible defaults for a building).
+
+    Parameters
+    ----------
+    grid_m : float, default 2
+        Spacing of candidate stations [m], >= 0.25.
+    clearance_m : float, default 1
+        Free space kept around buildings and obstacles for the tripod [m].
+    sample_spacing_m, sample_height_step_m : float, default 2
+        Facade sample spacing along the facade and up its height [m].
+    instrument_height_m : float, default 1.5
+        Scanner centre above the ground [m].
+    station_rms_mm : float or (float, float), default 0
+        Station / registration RMS m_xc, m_yc added to eq. 2 [mm].
+    step_mm_at_10m : float, optional
+        Scan step in use [mm at 10 m]; default the scanner's.
+    inventory : targets the surveyor owns (default: Sossa's practice).
+    target_height_m : float, default 1.6
+        Height of targets on stands and on walls [m].
+    target_spacing_m : float, default 6
+        Spacing of candidate target positions along facades and on free ground [m].
+    max_target_incidence_deg : float, default 60
+        Beyond this incidence a flat target is not used.
+    time_limit_s : float, default 20
+        Time limit of the integer program.
+    method : "auto", "milp" or "greedy"
+        ``auto``: the integer program, greedy set cover when it finds nothing in time;
+        ``milp``: the integer program only (an error if it finds no plan in time);
+        ``greedy``: greedy set cover only.
+    """
+
+    grid_m: float = _spec(
+        2.0, "m", "candidate grid", lo=0.25, open_lo=False, step=0.5, help="candidate grid spacing"
+    )
+    clearance_m: float = _spec(
+        1.0,
+        "m",
+        "clearance",
+        open_lo=False,
+        step=0.5,
+        help="free space kept around buildings and obstacles for the tripod",
+    )
+    sample_spacing_m: float = _spec(
+        2.0, "m", "sample spacing along", step=0.5, help="facade sample spacing along the facade"
+    )
+    sample_height_step_m: float = _spec(
+        2.0, "m", "sample spacing up", step=0.5, help="facade sample spacing up the facade"
+    )
+    instrument_height_m: float = _spec(
+        1.5, "m", "instrument height", step=0.1, help="scanner centre above the ground"
+    )
+    station_rms_mm: float | tuple[float, float] = _spec(
+        0.0,
+        "mm",
+        "station RMS m_xc, m_yc",
+        open_lo=False,
+        step=0.5,
+        help="station / registration RMS m_xc, m_yc added to eq. 2",
+    )
+    step_mm_at_10m: float | None = _spec(
+        None,
+        "mm",
+        "scan step at 10 m",
+        optional=True,
+        step=0.5,
+        help="scan step in use at 10 m (default: the scanner's)",
+    )
+    inventory: tuple[TargetItem, ...] = field(default=DEFAULT_INVENTORY)
+    target_height_m: float = _spec(
+        1.6, "m", "target height", step=0.1, help="height of targets on stands and on walls"
+    )
+    target_spacing_m: float = _spec(
+        6.0,
+        "m",
+        "target spacing",
+        step=1.0,
+        help="spacing of candidate target positions along facades and on free ground",
+    )
+    max_target_incidence_deg: float = _spec(
+        60.0,
+        "deg",
+        "largest target incidence",
+        hi=89.0,
+        step=5.0,
+        help="beyond this incidence a flat target is not used",
+    )
+    time_limit_s: float = _spec(
+        20.0, "s", "time limit", step=5.0, help="time limit of the integer program"
+    )
+    method: str = "auto"
+
+    def __post_init__(self) -> None:
+        station_rms_pair(self.station_rms_mm)
+        _validate_numbers(self, skip=("station_rms_mm",))
+        object.__setattr__(self, "inventory", as_inventory(self.inventory))
+        if self.method not in METHODS:
+            raise InputError(f"method must be one of {', '.join(METHODS)}; got {self.method!r}")
+
+    @property
+    def station_rms_pair(self) -> tuple[float, float]:
+        """``(m_xc, m_yc)`` [mm]."""
+        return station_rms_pair(self.station_rms_mm)
+
+
+def requirements_and_settings(
+    options: Mapping[str, Any],
+) -> tuple[Requirements, PlanSettings]:
+    """:class:`Requirements` and :class:`PlanSettings` from a flat mapping of options (the
+    command line's, the dashboard's, the report's): keys are field names, a value of None
+    means "not given" so the data class default applies. Other keys are ignored."""
+    req_names = {f.name for f in fields(Requirements)}
+    set_names = {f.name for f in fields(PlanSettings)}
+    given = {k: v for k, v in options.items() if v is not None}
+    req = Requirements(**{k: v for k, v in given.items() if k in req_names})
+    settings = PlanSettings(**{k: v for k, v in given.items() if k in set_names})
+    return req, settings

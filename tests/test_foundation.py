@@ -1,0 +1,304 @@
+"""The package's structure holds: layers, one source of truth, doctests that run, the report
+showing exactly the plan ``plan`` makes, and a strict ``milp`` method."""
+
+from __future__ import annotations
+
+import ast
+import doctest
+import html.parser
+import importlib
+import inspect
+import subprocess
+import sys
+from dataclasses import fields
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+import scipy.sparse as sp
+from test_cli import run
+
+import planner
+from planner.errors import PlannerError
+from planner.pipeline import optimise
+from planner.pipeline.evaluate import METRIC_KEYS, PairMetrics
+from planner.pipeline.requirements import (
+    CHECKS,
+    PlanSettings,
+    Requirements,
+    field_specs,
+    requirements_and_settings,
+)
+from planner.scanner import DEFAULT_SCANNER
+
+PACKAGE = Path(planner.__file__).resolve().parent
+
+
+def _modules() -> list[tuple[str, Path]]:
+    out = []
+    for path in sorted(PACKAGE.rglob("*.py")):
+        rel = path.relative_to(PACKAGE.parent).with_suffix("")
+        name = ".".join(rel.parts)
+        out.append((name.removesuffix(".__init__"), path))
+    return out
+
+
+def _imports(path: Path) -> set[str]:
+    """Every planner module a file imports, at the top or inside a function."""
+    found = set()
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.Import):
+            found |= {a.name for a in node.names}
+        elif isinstance(node, ast.ImportFrom) and node.module:
+            found.add(node.module)
+            found |= {f"{node.module}.{a.name}" for a in node.names}
+    return {m for m in found if m.startswith("planner")}
+
+
+def _layer(module: str) -> int:
+    if module.startswith("planner.app") or module == "planner.__main__":
+        return 3
+    if module.startswith("planner.pipeline"):
+        return 2
+    return 1
+
+
+def test_layers_import_only_downwards():
+    """Formulas and data classes (1) import neither the pipeline (2) nor the application (3);
+    the pipeline does not import the application."""
+    wrong = []
+    for name, path in _modules():
+        if name == "planner":  # the lazy re-exports map names to modules, importing none
+            continue
+        for imported in _imports(path):
+            if _layer(imported) > _layer(name):
+                wrong.append(f"{name} imports {imported}")
+    assert wrong == []
+    assert len(_modules()) > 30
+
+
+def test_the_layering_test_can_fail(tmp_path):
+    bad = tmp_path / "bad.py"
+    bad.write_text("def f():\n    from planner.app.maps import plot_site\n")
+    assert "planner.app.maps" in _imports(bad)
+
+
+def _loaded_after(code: str) -> set[str]:
+    out = subprocess.run(
+        [sys.executable, "-c", f"{code}; import sys; print(' '.join(sys.modules))"],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout.split()
+    return set(out)
+
+
+def test_science_layer_loads_no_ui_plotting_or_solver():
+    loaded = _loaded_after("import planner.accuracy")
+    for heavy in ("ipywidgets", "matplotlib", "scipy.optimize", "pandas", "planner.app"):
+        assert heavy not in loaded, heavy
+    assert "planner.accuracy" in loaded
+
+
+def test_import_planner_is_lazy():
+    loaded = _loaded_after("import planner")
+    assert "numpy" not in loaded and "planner.pipeline" not in loaded
+    # and the names still resolve on use
+    assert planner.plan is importlib.import_module("planner.pipeline.planning").plan
+    assert set(planner.__all__) <= set(dir(planner))
+
+
+def test_every_module_imports_and_its_doctests_pass():
+    finder, runner = doctest.DocTestFinder(), doctest.DocTestRunner(verbose=False)
+    attempted = 0
+    for name, _ in _modules():
+        if name.endswith("__main__"):
+            continue
+        module = importlib.import_module(name)
+        for test in finder.find(module, name):
+            runner.run(test)
+        attempted = runner.summarize(verbose=False).attempted
+    assert runner.summarize(verbose=False).failed == 0
+    assert attempted >= 20  # the suite really runs the examples
+
+
+# -- one table of requirement checks ------------------------------------------------------
+def test_every_requirement_limit_has_exactly_one_check():
+    limits = {c.limit for c in CHECKS}
+    req_fields = {f.name for f in fields(Requirements)} - {"max_xy_mm", "stations_per_sample"}
+    assert req_fields | {"max_x_mm", "max_y_mm"} == limits
+    assert len({c.key for c in CHECKS}) == len(CHECKS)
+    for c in CHECKS:
+        assert c.metric in METRIC_KEYS, c
+        assert c.metric in inspect.signature(PairMetrics).parameters or hasattr(
+            PairMetrics, c.metric
+        ), c
+
+
+def test_the_table_drives_summary_and_reasons():
+    from planner.pipeline.planning import plan
+
+    req = Requirements(max_xy_mm=5.0, max_z_mm=5.0, max_spacing_mm=0.5)  # 0.5 mm: unreachable
+    p = plan(None, None, req, PlanSettings(sample_spacing_m=6, sample_height_step_m=5))
+    assert "point spacing <= 0.5 mm" in p.summary()
+    reasons = set(p.unmet["reason"])
+    assert any(r.startswith("best achievable point spacing") for r in reasons), reasons
+    assert not p.meets_all
+
+
+def test_check_passes_and_ratio_in_both_senses():
+    by = {c.key: c for c in CHECKS}
+    v = np.array([1.0, 2.0, 3.0])
+    assert by["m_x"].passes(v, 2.0).tolist() == [True, True, False]
+    assert by["min_range"].passes(v, 2.0).tolist() == [False, True, True]
+    assert by["m_x"].ratio(v, np.inf).tolist() == [0.0, 0.0, 0.0]
+    assert by["min_range"].ratio(v, 2.0).tolist() == pytest.approx([2.0, 1.0, 2 / 3])
+
+
+# -- defaults in one place ----------------------------------------------------------------
+def _string_literals_outside_docstrings(path: Path) -> list[str]:
+    tree = ast.parse(path.read_text())
+    docstrings = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Module | ast.ClassDef | ast.FunctionDef):
+            body = node.body
+            if body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant):
+                docstrings.add(id(body[0].value))
+    return [
+        n.value
+        for n in ast.walk(tree)
+        if isinstance(n, ast.Constant) and isinstance(n.value, str) and id(n) not in docstrings
+    ]
+
+
+def test_the_default_scanner_is_named_once():
+    where = [
+        name
+        for name, path in _modules()
+        if any(DEFAULT_SCANNER in s for s in _string_literals_outside_docstrings(path))
+    ]
+    assert where == ["planner.scanner"]
+    notebooks = PACKAGE.parent / "notebooks"
+    assert not [p for p in notebooks.glob("*.ipynb") if DEFAULT_SCANNER in p.read_text()]
+
+
+def test_options_not_given_leave_the_data_class_defaults():
+    req, st = requirements_and_settings({"max_z_mm": None, "grid_m": None, "other": 3})
+    assert req == Requirements() and st == PlanSettings()
+    req, st = requirements_and_settings({"max_z_mm": 4.0, "grid_m": 3.0})
+    assert req.max_z_mm == 4.0 and st.grid_m == 3.0
+
+
+def test_widgets_take_default_and_bounds_from_the_data_classes():
+    from planner.app.dashboard import StationPlanner
+
+    ui = StationPlanner()
+    rq, ps = field_specs(Requirements), field_specs(PlanSettings)
+    assert ui.max_gamma.value == rq["max_gamma_deg"].default == Requirements().max_gamma_deg
+    assert ui.max_gamma.max == rq["max_gamma_deg"].hi == 89.0
+    assert ui.per_sample.min == 1 and ui.per_sample.max == rq["stations_per_sample"].hi == 10
+    assert ui.grid.value == PlanSettings().grid_m and ui.grid.min == ps["grid_m"].lo == 0.25
+    assert ui.max_x.value == Requirements().max_x_mm
+
+
+def test_cli_defaults_are_the_data_class_defaults(tmp_path):
+    code, out, err = run("plan", "--out", str(tmp_path / "p"), "-q")
+    assert code == 0, err
+    assert f"Scanner {DEFAULT_SCANNER}; required {Requirements().describe()}" in out
+
+
+# -- the report shows exactly the plan ``plan`` makes -------------------------------------
+class _Cells(html.parser.HTMLParser):
+    """The text of every table cell, row by row."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.rows: list[list[str]] = []
+        self._cell: list[str] | None = None
+
+    def handle_starttag(self, tag, attrs):
+        if tag == "tr":
+            self.rows.append([])
+        elif tag in ("td", "th"):
+            self._cell = []
+
+    def handle_endtag(self, tag):
+        if tag in ("td", "th") and self._cell is not None and self.rows:
+            self.rows[-1].append("".join(self._cell).strip())
+            self._cell = None
+
+    def handle_data(self, data):
+        if self._cell is not None:
+            self._cell.append(data)
+
+
+def test_report_describes_the_plan_that_plan_makes(tmp_path, monkeypatch):
+    """Non-default settings and a scanner profile given by a relative path: the report's
+    station table equals stations.csv of ``plan`` with the same arguments."""
+    monkeypatch.chdir(tmp_path)
+    Path("profiles").mkdir()
+    Path("profiles/mine.toml").write_text(
+        '[[scanner]]\nname = "mine"\nrange_rms_mm = 2.0\nangle_rms_arcsec = 8.0\n'
+        "vertical_angle_rms_arcsec = 10.0\nmax_range_m = 80.0\n"
+    )
+    flags = [
+        "--scanner",
+        "profiles/mine.toml",
+        "--max-xy-mm",
+        "4",
+        "--max-z-mm",
+        "4.5",
+        "--grid-m",
+        "3",
+        "--clearance-m",
+        "1.5",
+        "--instrument-height-m",
+        "1.8",
+        "--sample-spacing-m",
+        "3",
+        "--sample-height-step-m",
+        "3",
+        "--station-rms-mm",
+        "0.5",
+        "--step-mm-at-10m",
+        "3",
+        "--max-range-m",
+        "70",
+        "--method",
+        "greedy",
+        "-q",
+    ]
+    code, _, err = run("plan", *flags, "--out", "plan")
+    assert code in (0, 1), err
+    code, _, err = run("report", *flags, "--out", "report.html")
+    assert code == 0, err
+    stations = pd.read_csv("plan/stations.csv")
+    parser = _Cells()
+    parser.feed(Path("report.html").read_text())
+    reported = {r[0]: r for r in parser.rows if r and r[0].startswith("S") and r[0][1:].isdigit()}
+    assert sorted(reported) == sorted(stations["station_id"])
+    for s in stations.itertuples():
+        row = reported[s.station_id]
+        assert float(row[1]) == pytest.approx(s.x, abs=1e-3)  # m
+        assert float(row[2]) == pytest.approx(s.y, abs=1e-3)  # m
+        assert float(row[3]) == pytest.approx(1.8)  # the instrument height given
+    summary = Path("plan/summary.txt").read_text().splitlines()[2]
+    assert "greedy" in summary and summary in Path("report.html").read_text()
+
+
+# -- strict milp --------------------------------------------------------------------------
+def test_milp_method_is_strict(monkeypatch):
+    """``method="milp"`` never falls back to greedy silently; ``auto`` does, and says so."""
+    rng = np.random.default_rng(3)
+    a = sp.csr_matrix(rng.random((40, 30)) < 0.15)
+    a = a[np.asarray(a.sum(axis=1)).ravel() > 0]
+    demand = np.ones(a.shape[0], dtype=int)
+    monkeypatch.setattr(
+        optimise, "_milp_with_deadline", lambda *a, **k: (1, "stopped at the limit", None, None)
+    )
+    monkeypatch.setattr(optimise, "packing_lower_bound", lambda a, d: 0)
+    with pytest.raises(PlannerError, match="found no plan within the time limit"):
+        optimise.solve_cover(a, demand, 5.0, "milp")
+    auto = optimise.solve_cover(a, demand, 5.0, "auto")
+    assert auto.method == "greedy" and "stopped at the limit" in auto.status
