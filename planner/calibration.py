@@ -95,13 +95,25 @@ def _table(
         origin = origin or p.name
         if not p.is_file():
             raise InputError(f"{str(p)!r} does not exist")
+        head = p.read_bytes()[:4096]
+        if not head.strip():
+            raise InputError(f"{origin} is empty; it needs a header line and one row per value")
+        if b"\x00" in head:
+            raise InputError(f"{origin} is a binary file, not a CSV table")
         try:
-            df = pd.read_csv(p, sep=None, engine="python")
-        except (pd.errors.ParserError, UnicodeDecodeError, ValueError) as exc:
-            raise InputError(f"{origin} is not a readable CSV table ({exc})") from None
+            df = pd.read_csv(p, sep=None, engine="python", encoding="utf-8-sig")
+        except Exception as exc:  # the CSV reader's boundary: any failure is the file's
+            first = str(exc).splitlines()[0][:200] if str(exc) else type(exc).__name__
+            raise InputError(f"{origin} is not a readable CSV table ({first})") from None
     if df.empty:
         raise InputError(f"{origin} has no rows")
     return _columns(df, wanted, origin)
+
+
+def table_columns(path: str | Path) -> set[str]:
+    """The column names (lower case) of a calibration CSV file — to tell its kind."""
+    df = _table(path, [], None)
+    return {str(c).strip().lower() for c in df.columns}
 
 
 def read_points(data: pd.DataFrame | str | Path, origin: str | None = None) -> pd.DataFrame:
@@ -114,6 +126,13 @@ def read_points(data: pd.DataFrame | str | Path, origin: str | None = None) -> p
     if len(dup):
         raise InputError(f"{origin}: target id {dup.iloc[0]!r} appears twice")
     return df.set_index("id")
+
+
+#: A baseline difference (reference − measured) beyond this is a blunder, not a constant [mm].
+MAX_BASELINE_DIFFERENCE_MM = 1000.0
+#: Calibrated figures beyond these describe no working scanner: the profile is refused.
+MAX_PROFILE_RANGE_RMS_MM = 100.0
+MAX_PROFILE_ANGLE_RMS_ARCSEC = 3600.0
 
 
 # -- Helmert -------------------------------------------------------------------------------
@@ -388,6 +407,7 @@ class BaselineResult:
     residual_rms_mm: float  # after correcting k and R
     residuals: pd.DataFrame
     n: int
+    warnings: list[str] = field(default_factory=list)
 
 
 def baseline_calibration(data: pd.DataFrame | str | Path) -> BaselineResult:
@@ -404,6 +424,14 @@ def baseline_calibration(data: pd.DataFrame | str | Path) -> BaselineResult:
     )
     d = df["measured_m"].to_numpy()
     lv = (df["reference_m"].to_numpy() - d) * 1000.0  # mm
+    absurd = np.flatnonzero(np.abs(lv) > MAX_BASELINE_DIFFERENCE_MM)
+    if len(absurd):
+        i = int(absurd[0])
+        raise InputError(
+            f"{origin or 'the table'} row {i + 2}: measured {d[i]:g} m against reference "
+            f"{df['reference_m'].iloc[i]:g} m differ by {lv[i] / 1000:.3g} m — not the same "
+            "distance (a typo, a unit slip, a wrong target?); correct or remove the row"
+        )
     if len(d) < 3 or np.ptp(d) < 1.0:
         raise InputError(
             "the baseline comparison needs at least 3 distances spanning more than 1 m "
@@ -415,15 +443,25 @@ def baseline_calibration(data: pd.DataFrame | str | Path) -> BaselineResult:
     dof = len(d) - 2
     s0 = math.sqrt((v**2).sum() / dof) if dof > 0 else float("nan")
     cov = s0**2 * np.linalg.inv(a.T @ a) if dof > 0 else np.full((2, 2), np.nan)
-    res = df.assign(correction_mm=a @ x, residual_mm=v)
+    # outliers: residuals beyond 3 robust standard deviations (MAD), flagged for the user
+    mad = 1.4826 * float(np.median(np.abs(v - np.median(v))))
+    scale = max(mad, 1e-3)
+    outlier = np.abs(v) > 3.0 * scale
+    res = df.assign(correction_mm=a @ x, residual_mm=v, outlier=outlier)
+    warnings = [
+        f"row {i + 2} (measured {d[i]:g} m) is an outlier: residual {v[i]:+.2f} mm against a "
+        f"robust spread of {scale:.2f} mm; check it, and remove it if it is a blunder"
+        for i in np.flatnonzero(outlier)
+    ]
     return BaselineResult(
-        float(x[0]),
-        float(math.sqrt(cov[0, 0])),
-        float(x[1] * 1e6),
-        float(math.sqrt(cov[1, 1]) * 1e6),
-        float(np.sqrt(np.mean(v**2))),
-        res,
-        len(d),
+        k_mm=float(x[0]),
+        k_se_mm=float(math.sqrt(cov[0, 0])),
+        scale_ppm=float(x[1] * 1e6),
+        scale_se_ppm=float(math.sqrt(cov[1, 1]) * 1e6),
+        residual_rms_mm=float(np.sqrt(np.mean(v**2))),
+        residuals=res,
+        n=len(d),
+        warnings=warnings,
     )
 
 
@@ -640,6 +678,16 @@ def profile_from_calibration(
         }
     record["range_from"] = range_from or "base profile"
     record["angles_from"] = angles_from or "base profile"
+    for key, unit, limit in (
+        ("range_rms_mm", "mm", MAX_PROFILE_RANGE_RMS_MM),
+        ("angle_rms_arcsec", "″", MAX_PROFILE_ANGLE_RMS_ARCSEC),
+        ("vertical_angle_rms_arcsec", "″", MAX_PROFILE_ANGLE_RMS_ARCSEC),
+    ):
+        if fig[key] is not None and not fig[key] <= limit:
+            raise InputError(
+                f"the calibration gives {key} = {fig[key]:.4g} {unit}, beyond any working scanner "
+                f"({limit:g} {unit}); check the measurements for blunders before making a profile"
+            )
     scanner = Scanner(
         name=name,
         range_rms_mm=fig["range_rms_mm"],

@@ -9,6 +9,8 @@ from __future__ import annotations
 import difflib
 import json
 import math
+import os
+import re
 import tomllib
 from collections.abc import Mapping
 from dataclasses import asdict, dataclass, field, fields
@@ -27,9 +29,11 @@ __all__ = [
     "DEFAULT_SCANNER",
     "Scanner",
     "catalogue",
+    "check_profile_name",
     "load_scanner",
     "read_scanner_file",
     "user_profile_dir",
+    "user_profiles",
 ]
 
 #: The scanner of Voroshilov & Karachentsev's worked example (m_S = 4 mm, 60 µrad): the
@@ -165,7 +169,7 @@ class Scanner:
         InputError
             For an unknown name; the message lists the valid names.
         """
-        cat = {**catalogue(), **_user_profiles()}
+        cat = {**catalogue(), **user_profiles()[0]}
         key = str(name).strip().lower()
         if key in cat:
             return cat[key]
@@ -180,9 +184,27 @@ class Scanner:
     def from_dict(cls, data: Mapping[str, Any]) -> Scanner:
         """Build a profile from a mapping (e.g. one ``[[scanner]]`` table of a TOML file).
 
-        Unknown keys are kept in ``extra`` (so a calibration record survives a round trip).
+        A key that is neither a field nor a known record (``calibration``) is refused, with
+        the field it most likely meant; records are kept in ``extra`` (so a calibration
+        survives a round trip).
         """
+        if not isinstance(data, Mapping):
+            raise InputError(
+                f"a scanner profile must be a table of key = value pairs; got a "
+                f"{type(data).__name__}"
+            )
         known = {f.name for f in fields(cls)} - {"extra"}
+        unknown = [k for k in data if k not in known and k not in RECORD_KEYS]
+        if unknown:
+            who = data.get("name", "<unnamed>")
+            hints = []
+            for k in unknown:
+                close = difflib.get_close_matches(str(k), sorted(known), n=1)
+                hints.append(f"{k!r}" + (f" (did you mean {close[0]!r}?)" if close else ""))
+            raise InputError(
+                f"scanner profile {who!r} has unknown key(s) {', '.join(hints)}; the keys are "
+                f"{', '.join(sorted(known))}"
+            )
         kwargs = {k: v for k, v in data.items() if k in known}
         extra = {k: v for k, v in data.items() if k not in known}
         missing = [k for k in ("name", "range_rms_mm", "angle_rms_arcsec") if k not in kwargs]
@@ -242,6 +264,23 @@ class Scanner:
 
 _TOML_HEADER = "# tls-planner scanner profile (units: mm, ppm, arc-seconds, m, deg)\n"
 
+#: Tables a profile may carry besides its fields (kept as records, not used for planning).
+RECORD_KEYS = ("calibration",)
+
+#: A profile name: lower-case letters, digits, '.', '_' and '-' (it becomes a file name).
+_NAME = re.compile(r"[a-z0-9][a-z0-9._-]{0,63}")
+
+
+def check_profile_name(name: str) -> str:
+    """``name`` if it can name a profile (and its file), else an InputError saying why."""
+    key = str(name).strip().lower()
+    if not _NAME.fullmatch(key) or ".." in key:
+        raise InputError(
+            f"{name!r} cannot name a scanner profile: use 1–64 lower-case letters, digits, "
+            "'.', '_' or '-', starting with a letter or digit (e.g. my-p20)"
+        )
+    return key
+
 
 def _number(value: Any, what: str, unit: str, *, lo: float, open_lo: bool = False) -> float:
     if isinstance(value, bool) or not isinstance(value, int | float | np.integer | np.floating):
@@ -277,9 +316,10 @@ def _parse_toml(text: str, origin: str) -> list[Scanner]:
     tables = data.get("scanner")
     if tables is None and "name" in data:
         tables = [data]  # a single profile written without the [[scanner]] header
-    if not tables or not isinstance(tables, list):
+    if not tables or not isinstance(tables, list) or not all(isinstance(t, dict) for t in tables):
         raise InputError(
-            f"{origin} holds no [[scanner]] tables; see planner/data/scanners.toml for the format"
+            f"{origin} holds no [[scanner]] tables (a scanner profile is one or more "
+            "[[scanner]] tables of key = value pairs; see planner/data/scanners.toml)"
         )
     return [Scanner.from_dict(t) for t in tables]
 
@@ -299,20 +339,38 @@ def read_scanner_file(path: str | Path) -> list[Scanner]:
 def user_profile_dir() -> Path:
     """Where a user's own profiles live: ``$TLS_PLANNER_PROFILES``, else
     ``~/.tls-planner/scanners``. Every ``*.toml`` there is found by name."""
-    import os
-
     env = os.environ.get("TLS_PLANNER_PROFILES")
     return Path(env).expanduser() if env else Path.home() / ".tls-planner" / "scanners"
 
 
-def _user_profiles() -> dict[str, Scanner]:
+def user_profiles() -> tuple[dict[str, Scanner], list[str]]:
+    """The profiles installed in :func:`user_profile_dir`, and warnings about the files that
+    were skipped: unreadable ones, and ones taking a catalogue name (catalogue names are
+    reserved, so ``--scanner leica-p20-lab`` always means the shipped figures)."""
     folder = user_profile_dir()
     out: dict[str, Scanner] = {}
-    if folder.is_dir():
-        for path in sorted(folder.glob("*.toml")):
-            for s in read_scanner_file(path):
-                out[s.name.lower()] = s
-    return out
+    warnings: list[str] = []
+    if not folder.is_dir():
+        return out, warnings
+    reserved = set(catalogue())
+    for path in sorted(folder.glob("*.toml")):
+        try:
+            scanners = read_scanner_file(path)
+        except InputError as exc:
+            warnings.append(f"skipped the profile file {path}: {exc}")
+            continue
+        for s in scanners:
+            key = s.name.lower()
+            if key in reserved:
+                warnings.append(
+                    f"skipped the profile {s.name!r} in {path}: the name is the catalogue's; "
+                    "rename your profile (name = ...) to use it"
+                )
+            elif key in out:
+                warnings.append(f"skipped a second profile {s.name!r} in {path}")
+            else:
+                out[key] = s
+    return out, warnings
 
 
 @cache

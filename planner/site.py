@@ -17,7 +17,7 @@ from shapely.geometry.base import BaseGeometry
 
 from planner.errors import InputError
 
-__all__ = ["Area", "Building", "Obstacle", "Site", "repair_geometry"]
+__all__ = ["Area", "Building", "Obstacle", "Site", "SiteLimits", "repair_geometry"]
 
 Polygonal = Polygon | MultiPolygon
 
@@ -25,6 +25,50 @@ Polygonal = Polygon | MultiPolygon
 OVERLAP_TOLERANCE_M2 = 0.01
 #: Consecutive vertices closer than this make a zero-length edge [m].
 ZERO_EDGE_M = 1e-3
+
+
+@dataclass(frozen=True, kw_only=True)
+class SiteLimits:
+    """What a real site can hold; a site beyond these is refused before any work (most often
+    a unit slip: millimetres for metres, degrees for metres). Raise them explicitly for a
+    site that really is that large (``--max-building-height-m``, ``--max-site-size-m``).
+
+    Parameters
+    ----------
+    max_building_height_m : float, default 1000
+        The tallest building of the world is 828 m.
+    min_building_height_m : float, default 1
+        Anything lower is not a building to scan (give it as an obstacle).
+    max_building_size_m : float, default 2000
+        Largest extent of one footprint (the longest buildings are about 1.5 km).
+    max_site_size_m : float, default 50 000
+        Largest extent of the whole site.
+    """
+
+    max_building_height_m: float = 1000.0
+    min_building_height_m: float = 1.0
+    max_building_size_m: float = 2000.0
+    max_site_size_m: float = 50_000.0
+
+    def __post_init__(self) -> None:
+        for name in (
+            "max_building_height_m",
+            "min_building_height_m",
+            "max_building_size_m",
+            "max_site_size_m",
+        ):
+            v = getattr(self, name)
+            if (
+                isinstance(v, bool)
+                or not isinstance(v, int | float)
+                or not math.isfinite(v)
+                or v <= 0
+            ):
+                raise InputError(f"{name} must be a number > 0 [m]; got {v!r}")
+
+
+#: Projected coordinates beyond this are not on Earth in any metric CRS [m].
+MAX_COORDINATE_M = 1e8
 
 
 @dataclass(frozen=True)
@@ -76,6 +120,11 @@ def _where(what: str, ident: str) -> str:
 
 
 def _check_kind(geom: BaseGeometry, who: str) -> None:
+    if geom is not None and not isinstance(geom, BaseGeometry):
+        raise InputError(
+            f"{who} has a {type(geom).__name__} where a shapely Polygon is expected "
+            "(e.g. shapely.box(x0, y0, x1, y1) or shapely.Polygon([(x, y), ...]))"
+        )
     if geom is None or geom.is_empty:
         raise InputError(f"{who} has an empty geometry; remove the feature or draw its outline")
     if not isinstance(geom, Polygon | MultiPolygon):
@@ -114,14 +163,56 @@ def _rings(geom: Polygonal) -> Iterable:
         yield from poly.interiors
 
 
-def _check_height(h: float, who: str) -> float:
+def _check_height(h: float, who: str, lo: float, hi: float) -> float:
+    """A height [m] in (0, hi], at least ``lo``; a bool or a text that is not a number is
+    refused (``true`` is not a height)."""
+    if isinstance(h, bool):
+        raise InputError(f"{who} has height {h!r}; give the height in metres as a number")
     try:
         v = float(h)
     except (TypeError, ValueError):
         raise InputError(f"{who} has height {h!r}; give the height in metres as a number") from None
     if not math.isfinite(v) or v <= 0:
         raise InputError(f"{who} has height {h!r}; it must be a number > 0 [m]")
+    if v > hi:
+        raise InputError(
+            f"{who} has height {v:g} m, higher than any building ({hi:g} m); check the unit "
+            "(heights are metres), or raise the limit if it is real (--max-building-height-m)"
+        )
+    if v < lo:
+        raise InputError(
+            f"{who} has height {v:g} m, lower than a building to scan ({lo:g} m); check the "
+            "unit (heights are metres), or give it as an obstacle (role obstacle)"
+        )
     return v
+
+
+def _check_extent(
+    geoms: Sequence[tuple[BaseGeometry, str]], buildings: Sequence[Building], limits: SiteLimits
+) -> None:
+    """Coordinates on Earth, footprints and the site no larger than a real one."""
+    for geom, who in geoms:
+        x0, y0, x1, y1 = geom.bounds
+        if max(abs(x0), abs(y0), abs(x1), abs(y1)) > MAX_COORDINATE_M:
+            raise InputError(
+                f"{who} has coordinates of {max(abs(x0), abs(y0), abs(x1), abs(y1)):.3g}, "
+                "beyond any projected CRS in metres; check the file's coordinates and CRS"
+            )
+    for b in buildings:
+        x0, y0, x1, y1 = b.footprint.bounds
+        if max(x1 - x0, y1 - y0) > limits.max_building_size_m:
+            raise InputError(
+                f"building {b.id!r} is {max(x1 - x0, y1 - y0):.0f} m across, larger than a real "
+                f"building ({limits.max_building_size_m:g} m); check the unit (coordinates are "
+                "metres), or raise the limit if it is real (--max-building-size-m)"
+            )
+    bounds = np.array([g.bounds for g, _ in geoms])
+    size = max(bounds[:, 2].max() - bounds[:, 0].min(), bounds[:, 3].max() - bounds[:, 1].min())
+    if size > limits.max_site_size_m:
+        raise InputError(
+            f"the site is {size / 1000:.1f} km across, more than {limits.max_site_size_m:g} m; "
+            "check the coordinates, plan it in parts, or raise the limit (--max-site-size-m)"
+        )
 
 
 def _looks_like_degrees(geoms: Sequence[BaseGeometry]) -> bool:
@@ -153,8 +244,21 @@ class Site:
     crs: str | None = None
     name: str = "site"
     warnings: list[str] = field(default_factory=list)
+    limits: SiteLimits = field(default_factory=SiteLimits)
 
     def __post_init__(self) -> None:
+        for name, kind in (("buildings", Building), ("obstacles", Obstacle), ("no_go", Area)):
+            items = getattr(self, name)
+            if isinstance(items, str | bytes) or not hasattr(items, "__iter__"):
+                raise InputError(
+                    f"Site {name} must be a list of {kind.__name__}; got {items!r}"[:160]
+                )
+            bad = [i for i in items if not isinstance(i, kind)]
+            if bad:
+                raise InputError(
+                    f"Site {name} must hold {kind.__name__} objects; got "
+                    f"{type(bad[0]).__name__} {bad[0]!r}"[:200]
+                )
         self.buildings = list(self.buildings)
         self.obstacles = list(self.obstacles)
         self.no_go = list(self.no_go)
@@ -166,13 +270,22 @@ class Site:
             named.append((self.boundary, "the site boundary"))
         for geom, who in named:
             _check_kind(geom, who)
+        _check_extent(named, self.buildings, self.limits)
+        lim = self.limits
         for b in self.buildings:
             if b.id in seen:
                 raise InputError(f"building {b.id!r} appears twice; building ids must be unique")
             seen.add(b.id)
-            object.__setattr__(b, "height_m", _check_height(b.height_m, _where("building", b.id)))
+            h = _check_height(
+                b.height_m,
+                _where("building", b.id),
+                lim.min_building_height_m,
+                lim.max_building_height_m,
+            )
+            object.__setattr__(b, "height_m", h)
         for o in self.obstacles:
-            object.__setattr__(o, "height_m", _check_height(o.height_m, _where(o.kind, o.id)))
+            h = _check_height(o.height_m, _where(o.kind, o.id), 0.0, lim.max_building_height_m)
+            object.__setattr__(o, "height_m", h)
         everything = [b.footprint for b in self.buildings] + [o.geometry for o in self.obstacles]
         if _looks_like_degrees(everything):
             raise InputError(

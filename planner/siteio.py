@@ -16,11 +16,14 @@ All inputs are in a projected metric CRS; coordinates are kept as given.
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import io
 import json
+import math
+import os
 from collections import defaultdict
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
@@ -32,7 +35,7 @@ from shapely.geometry import MultiPolygon, Polygon, shape
 from shapely.geometry.base import BaseGeometry
 
 from planner.errors import InputError
-from planner.site import Area, Building, Obstacle, Site, repair_geometry
+from planner.site import Area, Building, Obstacle, Site, SiteLimits, repair_geometry
 
 __all__ = ["default_site", "read_site", "site_from_features", "site_from_geojson"]
 
@@ -75,6 +78,7 @@ def site_from_features(
     repair: bool = False,
     crs: str | None = None,
     name: str = "site",
+    limits: SiteLimits | None = None,
 ) -> Site:
     """Turn parsed features into a validated :class:`Site`."""
     warnings: list[str] = []
@@ -124,6 +128,7 @@ def site_from_features(
             no_go.append(Area(f.ident, geom))
         else:
             boundaries.append(geom)
+    _check_crs_label(crs, [f.geometry for f in features if f.geometry is not None])
     if len(boundaries) > 1:
         raise InputError(f"the file has {len(boundaries)} boundary features; keep one")
     if not blds:
@@ -138,8 +143,25 @@ def site_from_features(
         crs=crs,
         name=name,
         warnings=warnings,
+        limits=limits or SiteLimits(),
     )
     return site.select(buildings)
+
+
+#: CRS labels meaning longitude/latitude degrees.
+_GEOGRAPHIC = ("crs84", "epsg:4326", "epsg::4326", "wgs 84", "wgs84", "4326")
+
+
+def _check_crs_label(crs: str | None, geoms: Sequence[BaseGeometry]) -> None:
+    """A CRS label that contradicts the coordinates is an error, never written back."""
+    if not crs or not geoms or not any(g in crs.lower() for g in _GEOGRAPHIC):
+        return
+    xy = shapely.get_coordinates(list(geoms))
+    if len(xy) and ((abs(xy[:, 0]) > 180).any() or (abs(xy[:, 1]) > 90).any()):
+        raise InputError(
+            f"the file says its coordinates are longitude/latitude ({crs}) but they are not "
+            f"(e.g. {xy[0, 0]:.3f}, {xy[0, 1]:.3f}); fix the file's CRS label or its coordinates"
+        )
 
 
 # -- GeoJSON ------------------------------------------------------------------------------
@@ -173,6 +195,11 @@ def _geojson_features(obj: Any, origin: str) -> tuple[list[Feature], str | None]
         if not isinstance(feat, dict) or feat.get("type") != "Feature":
             raise InputError(f"{origin}: item {i} of 'features' is not a GeoJSON Feature")
         props = feat.get("properties") or {}
+        if not isinstance(props, dict):
+            raise InputError(
+                f"{origin}: feature {i} has 'properties' of type {type(props).__name__}; it "
+                'must be an object of key: value pairs (e.g. {"height": 12})'
+            )
         gj = feat.get("geometry")
         try:
             geom = shape(gj) if gj else None
@@ -192,13 +219,15 @@ def _geojson_features(obj: Any, origin: str) -> tuple[list[Feature], str | None]
 
 def site_from_geojson(obj: dict | str, **kwargs: Any) -> Site:
     """A site from a GeoJSON object (or its text)."""
-    if isinstance(obj, str):
-        try:
-            obj = json.loads(obj)
-        except json.JSONDecodeError as exc:
-            raise InputError(f"the text is not valid JSON: {exc}") from None
-    features, crs = _geojson_features(obj, kwargs.pop("origin", "the GeoJSON"))
-    return site_from_features(features, crs=kwargs.pop("crs", None) or crs, **kwargs)
+    origin = kwargs.pop("origin", "the GeoJSON")
+    with _reading(origin, "geojson"):
+        if isinstance(obj, str):
+            try:
+                obj = json.loads(obj)
+            except json.JSONDecodeError as exc:
+                raise InputError(f"the text is not valid JSON: {exc}") from None
+        features, crs = _geojson_features(obj, origin)
+        return site_from_features(features, crs=kwargs.pop("crs", None) or crs, **kwargs)
 
 
 # -- WKT ----------------------------------------------------------------------------------
@@ -279,19 +308,31 @@ def _csv_features(text: str, origin: str) -> list[Feature]:
         try:
             x = float(row[cols["x"]])
             y = float(row[cols["y"]])
+            if not (math.isfinite(x) and math.isfinite(y)):
+                raise ValueError
             part = int(float(row.get(optional["part"]) or 0)) if optional["part"] else 0
             ring = int(float(row.get(optional["ring"]) or 0)) if optional["ring"] else 0
         except (TypeError, ValueError):
             raise InputError(
-                f"{origin} line {rowno}: x, y (and ring, part) must be numbers"
+                f"{origin} line {rowno}: x, y (and ring, part) must be finite numbers; got "
+                f"{row.get(cols['x'])!r}, {row.get(cols['y'])!r}"
             ) from None
         if ident not in props:
             order.append(ident)
             props[ident] = {"id": ident}
         for key in ("height", "height_m", "role", "plan", "kind", "name"):
             c = optional[key]
-            if c and (row.get(c) or "").strip():
-                props[ident][key] = row[c].strip()
+            value = (row.get(c) or "").strip() if c else ""
+            if not value:
+                continue
+            known = props[ident].get(key)
+            if known is not None and known != value:
+                raise InputError(
+                    f"{origin} line {rowno}: id {ident!r} has {key} {value!r} here but "
+                    f"{known!r} on an earlier vertex; one feature has one {key} — give it "
+                    "the same on every vertex (or only on the first)"
+                )
+            props[ident][key] = value
         rings[ident][(part, ring)].append((x, y))
     out = []
     for ident in order:
@@ -342,6 +383,7 @@ def read_site(
     default_height_m: float | None = None,
     buildings: Sequence[str] | None = None,
     repair: bool = False,
+    limits: SiteLimits | None = None,
 ) -> Site:
     """Read a site file (``.geojson``/``.json``, ``.wkt``/``.txt`` or ``.csv``).
 
@@ -354,13 +396,22 @@ def read_site(
     repair : bool
         Apply the explicit geometry repair (repeated vertices, ``make_valid``).
     """
+    if not isinstance(path, str | os.PathLike):
+        raise InputError(f"a site file is named by a path; got {type(path).__name__} {path!r}")
     p = Path(path)
     if not p.is_file():
         raise InputError(f"site file {str(p)!r} does not exist")
+    if p.stat().st_size == 0:
+        raise InputError(f"{p.name} is empty; export the site again")
     kind = SUFFIXES.get(p.suffix.lower())
     if kind is None:
         raise InputError(
             f"{p.name}: unknown file type {p.suffix!r}; use .geojson/.json, .wkt/.txt or .csv"
+        )
+    if p.stat().st_size > MAX_FILE_BYTES:
+        raise InputError(
+            f"{p.name} is {p.stat().st_size / 1e6:.0f} MB; a site file of more than "
+            f"{MAX_FILE_BYTES / 1e6:.0f} MB is not a site — split it, or plan parts of it"
         )
     raw = p.read_bytes()
     if b"\x00" in raw[:4096]:
@@ -380,18 +431,62 @@ def read_site(
         "buildings": buildings,
         "repair": repair,
         "name": p.stem,
+        "limits": limits,
     }
-    if kind == "geojson":
-        try:
-            obj = json.loads(text)
-        except json.JSONDecodeError as exc:
-            raise InputError(f"{p.name} is not valid JSON (line {exc.lineno}: {exc.msg})") from None
-        return site_from_geojson(obj, origin=p.name, **kw)
-    parse: Callable[[str, str], list[Feature]] = _wkt_features if kind == "wkt" else _csv_features
-    return site_from_features(parse(text, p.name), **kw)
+    with _reading(p.name, kind):
+        if kind == "geojson":
+            try:
+                obj = json.loads(text)
+            except json.JSONDecodeError as exc:
+                raise InputError(
+                    f"{p.name} is not valid JSON (line {exc.lineno}: {exc.msg})"
+                ) from None
+            return site_from_geojson(obj, origin=p.name, **kw)
+        parse: Callable[[str, str], list[Feature]] = (
+            _wkt_features if kind == "wkt" else _csv_features
+        )
+        return site_from_features(parse(text, p.name), **kw)
 
 
-def default_site(buildings: Sequence[str] | None = None) -> Site:
+#: A site file larger than this is refused before it is read [bytes].
+MAX_FILE_BYTES = 256_000_000
+
+#: What a parser raises on data it cannot make sense of (turned into an InputError).
+_PARSE_ERRORS = (
+    csv.Error,
+    RecursionError,
+    ValueError,
+    TypeError,
+    KeyError,
+    AttributeError,
+    IndexError,
+    OverflowError,
+    GEOSException,
+    ShapelyError,
+)
+
+
+@contextlib.contextmanager
+def _reading(origin: str, kind: str) -> Iterator[None]:
+    """The reader's boundary: whatever the parsers raise on malformed content becomes an
+    InputError naming the file (our own InputErrors pass unchanged)."""
+    try:
+        yield
+    except InputError:
+        raise
+    except _PARSE_ERRORS as exc:
+        what = (
+            "it is nested too deeply"
+            if isinstance(exc, RecursionError)
+            else f"{type(exc).__name__}: {str(exc).splitlines()[0][:200] if str(exc) else ''}"
+        )
+        raise InputError(
+            f"{origin}: cannot read it as a {kind.upper()} site ({what}); check the file "
+            "against the formats in the README"
+        ) from None
+
+
+def default_site(buildings: Sequence[str] | None = None, limits: SiteLimits | None = None) -> Site:
     """The built-in default site (``planner/data/default_site.geojson``).
 
     A courtyard block 'main' (48 × 34 m, 15 m high; courtyard 22 × 14 m reached through a
@@ -402,5 +497,9 @@ def default_site(buildings: Sequence[str] | None = None) -> Site:
     """
     text = resources.files("planner.data").joinpath("default_site.geojson").read_text("utf-8")
     return site_from_geojson(
-        text, origin="default_site.geojson", buildings=buildings, name="default site"
+        text,
+        origin="default_site.geojson",
+        buildings=buildings,
+        name="default site",
+        limits=limits,
     )

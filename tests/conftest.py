@@ -2,9 +2,21 @@
 
 from __future__ import annotations
 
+import os
+
 import pytest
 
 from planner import Scanner
+
+
+@pytest.fixture(autouse=True, scope="session")
+def _own_profile_folder(tmp_path_factory):
+    """No test reads or writes the real user profile folder (~/.tls-planner/scanners)."""
+    folder = tmp_path_factory.mktemp("profiles")
+    mp = pytest.MonkeyPatch()
+    mp.setenv("TLS_PLANNER_PROFILES", str(folder))
+    yield folder
+    mp.undo()
 
 
 @pytest.fixture(scope="session")
@@ -26,3 +38,13 @@ def ppm_scanner() -> Scanner:
         min_range_m=0.5,
         max_range_m=120.0,
     )
+
+
+try:  # property-based tests: the same examples on every CI run, fresh ones locally
+    from hypothesis import settings as _hypothesis_settings
+
+    _hypothesis_settings.register_profile("ci", derandomize=True, database=None)
+    _hypothesis_settings.register_profile("dev", database=None)
+    _hypothesis_settings.load_profile("ci" if os.environ.get("CI") else "dev")
+except ImportError:  # pragma: no cover - hypothesis is a dev dependency
+    pass

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import os
 import shutil
+import socket
 import subprocess
 import time
 import urllib.request
@@ -14,8 +15,8 @@ from pathlib import Path
 
 import pytest
 
-from planner.app.cli import free_port, voila_command
 from planner.app.notebooks import notebook_path
+from planner.app.serve import voila_command
 
 pytestmark = pytest.mark.browser
 
@@ -29,6 +30,12 @@ FLAGS = [
     "--disable-sync",
     "--no-first-run",
 ]
+
+
+def free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
 
 
 def _need_browser():
@@ -45,7 +52,7 @@ def _need_browser():
 @pytest.fixture(scope="module")
 def dashboard_url():
     _need_browser()
-    port = free_port(0)
+    port = free_port()
     cmd, env = voila_command(notebook_path("station_planner.ipynb"), port)
     proc = subprocess.Popen(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
     url = f"http://127.0.0.1:{port}/"

@@ -8,10 +8,8 @@ import pandas as pd
 import pytest
 from test_cli import PAPER_5MM, run
 
-import planner.atomic
 from planner.app.cli import main
 from planner.pipeline.export import COVERAGE_COLUMNS, STATION_COLUMNS, TARGET_COLUMNS
-from planner.pipeline.planning import plan
 
 FAST = ["--sample-spacing-m", "3", "--sample-height-step-m", "3"]
 
@@ -171,39 +169,22 @@ def test_site_file_with_height_and_selection(tmp_path):
     assert set(cov["building_id"]) == {"h2"}
 
 
-def test_writes_are_atomic(tmp_path, monkeypatch):
-    p = plan(settings=None)
-    first = p.save(tmp_path)
-    before = {f.name: f.read_bytes() for f in first}
-    calls = {"n": 0}
-    real_replace = planner.atomic.os.replace
-
-    def failing_replace(src, dst):
-        calls["n"] += 1
-        if calls["n"] == 3:
-            raise OSError(28, "No space left on device")
-        return real_replace(src, dst)
-
-    monkeypatch.setattr(planner.atomic.os, "replace", failing_replace)
-    with pytest.raises(OSError):
-        p.save(tmp_path)
-    after = {f.name: f.read_bytes() for f in first}
-    assert after == before  # every file is either the old one or a complete new one
-    assert not list(tmp_path.glob(".*.tmp"))  # no temporary file left behind
-
-
-def test_main_job_serves_the_dashboard_on_loopback(monkeypatch, capsys):
-    import subprocess
+def test_main_job_serves_the_dashboard_on_loopback(monkeypatch):
+    """``planner`` alone serves the station planner (the serving itself: test_serve.py)."""
+    import planner.app.serve as serve_module
 
     seen = {}
 
-    def fake_call(cmd, env=None):
-        seen["cmd"], seen["env"] = cmd, env
+    def fake_serve(notebook, port, **kw):
+        seen.update(notebook=notebook, port=port, **kw)
         return 0
 
-    monkeypatch.setattr(subprocess, "call", fake_call)
+    monkeypatch.setattr(serve_module, "serve", fake_serve)
     assert main([]) == 0
-    cmd = seen["cmd"]
-    assert cmd[1:3] == ["-m", "voila"] and cmd[3].endswith("station_planner.ipynb")
+    assert seen["notebook"].name == "station_planner.ipynb" and seen["port"] == 8866
+    cmd, env = serve_module.voila_command(seen["notebook"], 8866)
+    assert cmd[1:3] == ["-m", "planner.app.voila_server"] and cmd[3].endswith(".ipynb")
     assert "--Voila.ip=127.0.0.1" in cmd and "--template=planner-offline" in cmd
-    assert "http://127.0.0.1:" in capsys.readouterr().out
+    assert "--Voila.port_retries=0" in cmd
+    assert any(a.startswith("--MappingKernelManager.cull_idle_timeout=") for a in cmd)
+    assert "jupyter" in env["JUPYTER_PATH"]

@@ -9,8 +9,10 @@ only); 2 bad input or an unusable output place (a message on stderr, nothing wri
 from __future__ import annotations
 
 import argparse
+import contextlib
 import sys
 from collections.abc import Callable, Sequence
+from dataclasses import fields
 from pathlib import Path
 
 import pandas as pd
@@ -77,6 +79,11 @@ def _scanner_arg(p: argparse.ArgumentParser) -> None:
 
 
 def cmd_scanners(args: argparse.Namespace) -> int:
+    from planner.scanner import user_profile_dir, user_profiles
+
+    mine, warnings = user_profiles()
+    listed = [(s, "catalogue") for s in catalogue().values()]
+    listed += [(s, f"your profile ({user_profile_dir()})") for s in mine.values()]
     rows = [
         {
             "name": s.name,
@@ -85,15 +92,18 @@ def cmd_scanners(args: argparse.Namespace) -> int:
             "V angle ″": s.tilt_rms_arcsec,
             "step@10m mm": s.step_mm_at_10m,
             "range m": f"{s.min_range_m:g}-{s.max_range_m:g}",
+            "from": "catalogue" if origin == "catalogue" else "your profile",
             "label": s.label,
         }
-        for s in catalogue().values()
+        for s, origin in listed
     ]
     df = pd.DataFrame(rows).set_index("name")
     print(df.to_csv() if args.format == "csv" else df.to_string())
     if args.verbose:
-        for s in catalogue().values():
-            print(f"\n{s.name}\n  source: {s.source}\n  notes:  {s.notes}")
+        for s, origin in listed:
+            print(f"\n{s.name} ({origin})\n  source: {s.source}\n  notes:  {s.notes}")
+    for warning in warnings:
+        print(f"planner: warning: {warning}", file=sys.stderr)
     return EXIT_OK
 
 
@@ -195,18 +205,23 @@ def plan_inputs(args: argparse.Namespace):
     ``report`` — the one function both use, so a report shows exactly the plan ``plan``
     makes. Options not given are None, and the data classes' defaults apply."""
     from planner.pipeline.requirements import requirements_and_settings
+    from planner.site import SiteLimits
     from planner.siteio import default_site, read_site
     from planner.targets import parse_inventory
 
+    limits = SiteLimits(
+        **{f.name: getattr(args, f.name) for f in fields(SiteLimits) if getattr(args, f.name)}
+    )
     if args.site:
         site = read_site(
             args.site,
             default_height_m=args.height,
             buildings=args.buildings,
             repair=args.make_valid,
+            limits=limits,
         )
     else:
-        site = default_site(buildings=args.buildings)
+        site = default_site(buildings=args.buildings, limits=limits)
     options = dict(vars(args))
     if args.inventory:
         options["inventory"] = parse_inventory(_read_text(args.inventory, "inventory file"))
@@ -251,11 +266,13 @@ def run_plan(args: argparse.Namespace) -> int:
 
 def cmd_report(args: argparse.Namespace) -> int:
     from planner.app.report import make_report
+    from planner.atomic import check_output_file
     from planner.pipeline.planning import plan
 
     out = Path(args.out)
     if out.suffix.lower() not in (".html", ".htm"):
         raise InputError(f"--out must name an .html file; got {args.out!r}")
+    check_output_file(out)
     result = plan(*plan_inputs(args), progress=_StderrProgress(args.quiet))
     if not args.quiet:
         print("planner: rendering the report …", file=sys.stderr)
@@ -268,22 +285,37 @@ def _print_table(df: pd.DataFrame, decimals: int = 3) -> None:
     print(df.to_string(float_format=lambda v: f"{v:.{decimals}f}"))
 
 
-def _write_profile(args: argparse.Namespace, **results) -> None:
-    from planner.calibration import profile_from_calibration
+def _profile_name(args: argparse.Namespace) -> str | None:
+    """The name of the profile to write, checked before any work (None: none is written)."""
+    from planner.scanner import check_profile_name
 
     if not args.profile_out and not args.install:
-        return
-    from planner.scanner import user_profile_dir
-
-    base = load_scanner(args.base_scanner)
+        return None
     name = args.name or (Path(args.profile_out).stem if args.profile_out else None)
     if not name:
         raise InputError("--install needs a profile name: give --name NAME")
-    scanner, notes = profile_from_calibration(name, base=base, **results)
+    name = check_profile_name(name)
+    if args.install and name in catalogue():
+        raise InputError(
+            f"{name!r} is a catalogue scanner's name, and catalogue names are reserved; "
+            "install your profile under another name (--name my-...)"
+        )
+    return name
+
+
+def _write_profile(args: argparse.Namespace, **results) -> None:
+    from planner.calibration import profile_from_calibration
+    from planner.scanner import user_profile_dir
+
+    name = _profile_name(args)
+    if name is None:
+        return
+    scanner, notes = profile_from_calibration(name, base=load_scanner(args.base_scanner), **results)
     out = args.profile_out or user_profile_dir() / f"{name}.toml"
     path = scanner.save(out)
     if args.install and args.profile_out:
         scanner.save(user_profile_dir() / f"{name}.toml")
+    if args.install:
         print(f"installed as {name!r} in {user_profile_dir()} (use --scanner {name})")
     print(
         f"\nProfile {scanner.name!r} written to {path}: ranging {scanner.range_rms_mm:.2f} mm + "
@@ -295,6 +327,7 @@ def _write_profile(args: argparse.Namespace, **results) -> None:
 
 
 def cmd_calibrate_lab(args: argparse.Namespace) -> int:
+    _profile_name(args)  # a bad name stops here, before any work
     from planner.calibration import lab_test
 
     t = lab_test(
@@ -348,17 +381,10 @@ def cmd_calibrate_lab(args: argparse.Namespace) -> int:
 
 
 def cmd_calibrate_baseline(args: argparse.Namespace) -> int:
-    from planner.calibration import baseline_calibration, six_segment_constant
+    _profile_name(args)  # a bad name stops here, before any work
+    from planner.calibration import baseline_calibration, six_segment_constant, table_columns
 
-    cols = (
-        {
-            c.strip().lower()
-            for c in pd.read_csv(args.file, sep=None, engine="python", nrows=1).columns
-        }
-        if Path(args.file).is_file()
-        else set()
-    )
-    if {"from", "to", "distance_m"} <= cols:
+    if {"from", "to", "distance_m"} <= table_columns(args.file):
         r = six_segment_constant(args.file)
         print("Six-segment (all-combinations) method: additive constant of the instrument")
         print(
@@ -380,11 +406,14 @@ def cmd_calibrate_baseline(args: argparse.Namespace) -> int:
     )
     print(f"  residual RMS after correction: {r.residual_rms_mm:.2f} mm")
     _print_table(r.residuals.set_index("measured_m"), 4)
+    for warning in r.warnings:
+        print(f"warning: {warning}")
     _write_profile(args, baseline=r, range_from="baseline", include_scale=args.include_scale)
     return EXIT_OK
 
 
 def cmd_calibrate_axes(args: argparse.Namespace) -> int:
+    _profile_name(args)  # a bad name stops here, before any work
     from planner.calibration import axis_errors
 
     r = axis_errors(args.file, orientation=not args.no_orientation)
@@ -398,60 +427,11 @@ def cmd_calibrate_axes(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def free_port(preferred: int) -> int:
-    """``preferred`` if it is free on 127.0.0.1, else any free port."""
-    import socket
-
-    for port in (preferred, 0):
-        with socket.socket() as s:
-            try:
-                s.bind(("127.0.0.1", port))
-            except OSError:
-                continue
-            return s.getsockname()[1]
-    raise InputError("no free port on 127.0.0.1")
-
-
-def voila_command(notebook: Path, port: int) -> tuple[list[str], dict[str, str]]:
-    """The Voilà command line and environment serving ``notebook`` on 127.0.0.1:``port``.
-
-    The page uses the package's ``planner-offline`` template (Voilà's lab template without
-    its CDN stylesheet), found through ``JUPYTER_PATH``.
-    """
-    import os
-
-    jupyter_dir = Path(__file__).resolve().parent / "jupyter"
-    env = dict(os.environ)
-    env["JUPYTER_PATH"] = os.pathsep.join(
-        p for p in (str(jupyter_dir), env.get("JUPYTER_PATH")) if p
-    )
-    cmd = [
-        sys.executable,
-        "-m",
-        "voila",
-        str(notebook),
-        f"--port={port}",
-        "--Voila.ip=127.0.0.1",
-        "--no-browser",
-        "--show_tracebacks=False",
-        "--template=planner-offline",
-    ]
-    return cmd, env
-
-
 def cmd_serve(args: argparse.Namespace) -> int:
-    import subprocess
-
     from planner.app.notebooks import notebook_path
+    from planner.app.serve import serve
 
-    nb = notebook_path(args.notebook)
-    port = free_port(args.port)
-    print(f"Serving the dashboard at http://127.0.0.1:{port}/ (Ctrl+C stops)", flush=True)
-    try:
-        cmd, env = voila_command(nb, port)
-        return subprocess.call(cmd, env=env)
-    except KeyboardInterrupt:
-        return EXIT_OK
+    return serve(notebook_path(args.notebook), args.port, kernel_idle_s=args.kernel_idle_s)
 
 
 def cmd_default(args: argparse.Namespace) -> int:
@@ -509,6 +489,16 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
                 metavar=pairs.get(name, name.rsplit("_", 1)[-1].upper()),
                 help=f"{spec.help} [{spec.unit}] (default {default})",
             )
+    from planner.site import SiteLimits
+
+    for f in fields(SiteLimits):
+        pl.add_argument(
+            "--" + f.name.replace("_", "-"),
+            type=float,
+            default=None,
+            metavar="M",
+            help=f"refuse a site beyond this (default {f.default:g} m): raise it for a real one",
+        )
     pl.add_argument("--method", choices=METHODS, default=None, help="station optimiser")
     pl.add_argument(
         "--inventory",
@@ -598,8 +588,13 @@ def build_parser() -> argparse.ArgumentParser:
     rp.set_defaults(func=cmd_report)
 
     sv = sub.add_parser("serve", help="serve the station-planner dashboard with Voilà on 127.0.0.1")
+    sv.add_argument("--port", type=int, default=8866, help="port on 127.0.0.1 (default 8866)")
     sv.add_argument(
-        "--port", type=int, default=8866, help="port (default 8866; a free one if taken)"
+        "--kernel-idle-s",
+        type=float,
+        default=600.0,
+        metavar="S",
+        help="shut down the kernel of a closed page after this long (default 600 s)",
     )
     sv.add_argument(
         "--notebook",
@@ -705,13 +700,34 @@ def _log_internal_error(exc: BaseException) -> Path | None:
         return None
 
 
+@contextlib.contextmanager
+def _stop_on_signals():
+    """SIGTERM and SIGHUP end the command like Ctrl+C does: as an exception, so that every
+    temporary file is removed on the way out (exit code 128 + the signal's number)."""
+    import signal
+
+    def stop(signum: int, _frame: object) -> None:
+        raise SystemExit(128 + signum)
+
+    previous = {}
+    for sig in (signal.SIGTERM, signal.SIGHUP):
+        with contextlib.suppress(ValueError, OSError):  # not the main thread: leave it be
+            previous[sig] = signal.signal(sig, stop)
+    try:
+        yield
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command; the one boundary that turns every error into a message and an exit
     code (never a traceback): bad input 2, an unusable output place 2, a bug 3."""
     args = build_parser().parse_args(argv)
     func: Callable[[argparse.Namespace], int] = args.func
     try:
-        return func(args)
+        with _stop_on_signals():
+            return func(args)
     except PlannerError as exc:
         print(f"planner: error: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import base64
 import html
+import os
 import tempfile
 import traceback
 from pathlib import Path
@@ -20,6 +21,7 @@ import numpy as np
 import pandas as pd
 from IPython.display import display
 
+from planner.app.serve import UPLOAD_ROOT_ENV
 from planner.errors import PlannerError
 from planner.pipeline.requirements import (
     FieldSpec,
@@ -182,7 +184,10 @@ class StationPlanner:
         results = w.VBox([self.summary, self.tabs], layout=w.Layout(width="66%"))
         self.widget = w.HBox([controls, results])
         self.plan = None
-        self._tmp = tempfile.TemporaryDirectory(prefix="planner-upload-")
+        root = os.environ.get(UPLOAD_ROOT_ENV)  # the server's folder, removed when it stops
+        self._tmp = tempfile.TemporaryDirectory(
+            prefix="planner-upload-", dir=root if root and os.path.isdir(root) else None
+        )
         # links: thin callbacks
         self.plan_button.on_click(lambda _b: self.run())
         self.upload.observe(lambda _c: setattr(self.site_source, "value", "Upload a file"), "value")
@@ -274,7 +279,7 @@ class StationPlanner:
                     "<p>Samples that no station meets, with the reason and the best "
                     "achievable value:</p>"
                 ),
-                g.style.hide(axis="index"),
+                g.set_index("facade_id"),
             )
         from planner.pipeline.export import render
 

@@ -231,7 +231,7 @@ def make_report(p: Plan, out: str | Path, *, timeout_s: int = 600) -> Path:
         exclude_output_prompt=True,
     )
     body, _ = exporter.from_notebook_node(nb)
-    return write_text_atomic(out, _offline(body))
+    return write_text_atomic(out, _offline(body), create_parents=False)
 
 
 _EXTERNAL = re.compile(r"<script[^>]+src=\"https?://[^\"]+\"[^>]*>\s*</script>", re.I)

@@ -7,10 +7,14 @@ import math
 import numpy as np
 import shapely
 
+from planner.errors import InputError
 from planner.pipeline.facades import FacadeSet
 from planner.site import Site
 
-__all__ = ["blocked_ground", "candidate_grid"]
+__all__ = ["MAX_GRID_POINTS", "blocked_ground", "candidate_grid"]
+
+#: The candidate grid is refused beyond this many points (memory: 20 bytes each) [points].
+MAX_GRID_POINTS = 50_000_000
 
 
 def blocked_ground(site: Site, clearance_m: float) -> shapely.Geometry:
@@ -37,6 +41,13 @@ def candidate_grid(
     if area.is_empty:
         return np.empty((0, 2))
     xmin, ymin, xmax, ymax = area.bounds
+    points = ((xmax - xmin) / grid_m + 1) * ((ymax - ymin) / grid_m + 1)
+    if points > MAX_GRID_POINTS:
+        raise InputError(
+            f"the candidate grid would have {points:.3g} points ({grid_m:g} m over "
+            f"{(xmax - xmin) / 1000:.1f} × {(ymax - ymin) / 1000:.1f} km); make the grid "
+            f"coarser (--grid-m) or plan the site in parts"
+        )
     xs = np.arange(math.floor(xmin / grid_m), math.ceil(xmax / grid_m) + 1) * grid_m
     ys = np.arange(math.floor(ymin / grid_m), math.ceil(ymax / grid_m) + 1) * grid_m
     gx, gy = np.meshgrid(xs, ys)

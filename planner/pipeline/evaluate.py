@@ -13,6 +13,8 @@ on the geometry (cos γ and sin ν come from dot products).
 
 from __future__ import annotations
 
+import math
+import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
@@ -30,9 +32,11 @@ from planner.spacing import facade_spacing_kernel
 
 __all__ = [
     "METRIC_KEYS",
+    "Assignment",
     "CandidateEvaluation",
     "Context",
     "PairMetrics",
+    "assign_stations",
     "best_achievable",
     "evaluate_candidates",
     "evaluate_stations",
@@ -133,6 +137,15 @@ class Context:
         t = np.clip(rel @ v / (v @ v), 0.0, 1.0)
         dist = np.hypot(*(rel - t[:, None] * v).T)
         return np.flatnonzero(ahead & (dist <= self.reach_m))
+
+    def pair_count(self, cand_xy: np.ndarray) -> int:
+        """How many candidate × sample pairs the evaluation will compute (the work)."""
+        return int(
+            sum(
+                len(self.front_candidates(f, cand_xy)) * len(self.samples_of[f])
+                for f in range(self.facades.n_facades)
+            )
+        )
 
     def active_checks(self, smp: np.ndarray) -> list[tuple[Check, np.ndarray]]:
         """The checks with a limit at any of ``smp``, with those samples' limits (1, n)."""
@@ -289,52 +302,69 @@ class CandidateEvaluation:
 
     ok: sp.csr_matrix  # (N samples, C candidates) bool
     n_view: np.ndarray  # (N,) candidates that see the sample
+    evaluated: np.ndarray  # (N,) bool: False where the time ran out before the sample's facade
 
 
 def evaluate_candidates(
-    ctx: Context, cand_xy: np.ndarray, progress: Progress | None = None
+    ctx: Context,
+    cand_xy: np.ndarray,
+    progress: Progress | None = None,
+    deadline: float = math.inf,
 ) -> CandidateEvaluation:
-    """Evaluate every candidate against every facade sample (sparse result)."""
+    """Evaluate every candidate against every facade sample (sparse result). Facades not
+    reached by ``deadline`` (a :func:`time.monotonic` time) are left unevaluated."""
     fac = ctx.facades
     n_samples = len(fac.z)
     rows, cols = [], []
     n_view = np.zeros(n_samples, dtype=np.int64)
+    evaluated = np.zeros(n_samples, dtype=bool)
     for f in range(fac.n_facades):
+        if time.monotonic() > deadline:
+            break
         if progress:
             progress(f / fac.n_facades, f"evaluating facade {fac.facade_id[f]}")
         smp = ctx.samples_of[f]
         cand = ctx.front_candidates(f, cand_xy)
         if not len(cand) or not len(smp):
+            evaluated[smp] = True
             continue
         step = max(1, PAIR_CHUNK // len(smp))
         for lo in range(0, len(cand), step):
+            if time.monotonic() > deadline:
+                break  # the facade's samples stay "not evaluated"; the pairs found count
             ci = cand[lo : lo + step]
             m = facade_pairs(ctx, f, cand_xy[ci])
             r, c = np.nonzero(meets(ctx, m, smp))
             rows.append(smp[c])
             cols.append(ci[r])
             n_view[smp] += m.view.sum(axis=0)
+        else:
+            evaluated[smp] = True
     if progress:
         progress(1.0, "evaluation done")
     r = np.concatenate(rows) if rows else np.empty(0, dtype=np.int64)
     c = np.concatenate(cols) if cols else np.empty(0, dtype=np.int64)
     ok = sp.csr_matrix((np.ones(len(r), dtype=bool), (r, c)), shape=(n_samples, len(cand_xy)))
     ok.sum_duplicates()
-    return CandidateEvaluation(ok, n_view)
+    return CandidateEvaluation(ok, n_view, evaluated)
 
 
 def best_achievable(
-    ctx: Context, cand_xy: np.ndarray, samples: np.ndarray
+    ctx: Context, cand_xy: np.ndarray, samples: np.ndarray, deadline: float = math.inf
 ) -> dict[str, np.ndarray]:
     """For the given samples, the best value of each checked quantity over every candidate
     that sees them (each on its own, keyed by the check's key), and the best ``score``
     (largest value / limit, <= 1 meets). Arrays aligned with ``samples``; the worst value
-    (±inf) where no candidate sees the sample."""
+    (±inf) where no candidate sees the sample. ``done`` says which samples were diagnosed
+    before ``deadline``."""
     fac = ctx.facades
     samples = np.asarray(samples)
     out = {c.key: np.full(len(samples), c.worst_value()) for c in CHECKS}
     out["score"] = np.full(len(samples), np.inf)
+    out["done"] = np.zeros(len(samples), dtype=bool)
     for f in np.unique(fac.facade[samples]):
+        if time.monotonic() > deadline:
+            break
         idx = np.flatnonzero(fac.facade[samples] == f)
         smp = samples[idx]
         cand = ctx.front_candidates(f, cand_xy)
@@ -349,12 +379,53 @@ def best_achievable(
                     np.minimum(prev, best) if c.sense == "max" else np.maximum(prev, best)
                 )
             out["score"][idx] = np.minimum(out["score"][idx], score(ctx, m, smp).min(axis=0))
+        out["done"][idx] = True
     return out
+
+
+@dataclass
+class Assignment:
+    """Each sample's assigned station — the best one meeting every requirement there, else
+    the best one that sees it — and that station's metrics."""
+
+    station: np.ndarray  # (N,) index into the stations, -1 where none sees the sample
+    metrics: dict[str, np.ndarray]  # METRIC_KEYS, (N,) each, NaN where none is assigned
+    n_meeting: np.ndarray  # (N,) stations meeting every requirement at the sample
+    met_by_station: np.ndarray  # (K,) samples each station meets
+
+
+def assign_stations(ctx: Context, station_xy: np.ndarray) -> Assignment:
+    """Assign every sample a station (one facade at a time: memory grows with the samples,
+    not samples × stations)."""
+    fac = ctx.facades
+    n, k = len(fac.z), len(station_xy)
+    station = np.full(n, -1, dtype=np.int64)
+    metrics = {key: np.full(n, np.nan) for key in METRIC_KEYS}
+    n_meeting = np.zeros(n, dtype=np.int64)
+    met_by = np.zeros(k, dtype=np.int64)
+    for f in range(fac.n_facades):
+        smp = ctx.samples_of[f]
+        ahead = np.flatnonzero((station_xy - fac.start[f]) @ fac.normal[f] > 0)
+        if not len(ahead) or not len(smp):
+            continue
+        m = facade_pairs(ctx, f, station_xy[ahead])
+        ok = meets(ctx, m, smp)
+        sc = score(ctx, m, smp)
+        rank = np.where(m.view, np.where(ok, sc, sc + 1e6), np.inf)
+        best = np.argmin(rank, axis=0)
+        has = np.isfinite(rank[best, np.arange(len(smp))])
+        station[smp[has]] = ahead[best[has]]
+        for key in METRIC_KEYS:
+            metrics[key][smp[has]] = m.value(key)[best[has], np.flatnonzero(has)]
+        n_meeting[smp] = ok.sum(axis=0)
+        met_by[ahead] += ok.sum(axis=1)
+    return Assignment(station, metrics, n_meeting, met_by)
 
 
 def evaluate_stations(ctx: Context, station_xy: np.ndarray) -> dict[str, np.ndarray]:
     """Dense metrics of every sample × station: arrays of shape (N, K), NaN where the
-    station is not in front of the facade."""
+    station is not in front of the facade — for a handful of stations (the memory grows
+    with samples × stations; :func:`assign_stations` does not)."""
     fac = ctx.facades
     n, k = len(fac.z), len(station_xy)
     out = {key: np.full((n, k), np.nan) for key in (*METRIC_KEYS, "score")}

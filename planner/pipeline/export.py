@@ -12,9 +12,9 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+import pandas as pd
 
-from planner.atomic import write_text_atomic
-from planner.errors import InputError
+from planner.atomic import replace_folder_files
 from planner.pipeline.result import Plan
 
 __all__ = [
@@ -62,22 +62,48 @@ COVERAGE_COLUMNS = [
 ]
 
 
+#: A text cell starting with one of these is a formula to a spreadsheet (CSV injection).
+_FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
+
+
+def neutralise(value: object) -> object:
+    """A text that a spreadsheet would run as a formula, made inert with a leading
+    apostrophe (OWASP's advice for CSV injection); anything else unchanged.
+
+    Examples
+    --------
+    >>> [neutralise(v) for v in ("=1+2", "@SUM(A1)", "main-f01", -3.5)]
+    ["'=1+2", "'@SUM(A1)", 'main-f01', -3.5]
+    """
+    if isinstance(value, str) and value.startswith(_FORMULA_START):
+        return "'" + value
+    return value
+
+
+def to_csv(df: pd.DataFrame) -> str:
+    """A table as CSV: 3 decimals (1 mm), text cells neutralised (:func:`neutralise`)."""
+    out = df.copy()
+    for col in out.select_dtypes(include=["object", "string"]).columns:
+        out[col] = out[col].map(neutralise)
+    return out.to_csv(index=False, float_format="%.3f")
+
+
 def stations_csv(p: Plan) -> str:
-    return p.stations[STATION_COLUMNS].to_csv(index=False, float_format="%.3f")
+    return to_csv(p.stations[STATION_COLUMNS])
 
 
 def targets_csv(p: Plan) -> str:
     t = p.targets.copy()
     t["station_ids"] = t["station_ids"].map(lambda ids: ";".join(ids))
-    return t[TARGET_COLUMNS].to_csv(index=False, float_format="%.3f")
+    return to_csv(t[TARGET_COLUMNS])
 
 
 def coverage_csv(p: Plan) -> str:
-    return p.scanned[COVERAGE_COLUMNS].to_csv(index=False, float_format="%.3f")
+    return to_csv(p.scanned[COVERAGE_COLUMNS])
 
 
 def facades_csv(p: Plan) -> str:
-    return p.facades.to_csv(index=False, float_format="%.3f")
+    return to_csv(p.facades)
 
 
 def summary_text(p: Plan, limit: int = 50) -> str:
@@ -219,11 +245,14 @@ def render(p: Plan) -> dict[str, str]:
     return {name: make(p) for name, make in FILES.items()}
 
 
+#: Every file name a plan folder may hold from any run (so an old plan's file is never
+#: mistaken for one of the user's own and carried into the new plan).
+OWNED_FILES = (*FILES, "plan.dxf", "plan.kml", "stakeout.csv", "booklet.pdf", "route.csv")
+
+
 def save(p: Plan, out_dir: str | Path) -> list[Path]:
-    """Write the plan's files into ``out_dir``. Every file is rendered first, then written
-    atomically: a failure never leaves a half-written file over a good one."""
-    out = Path(out_dir)
-    if out.exists() and not out.is_dir():
-        raise InputError(f"{out} exists and is not a folder; choose another --out")
-    texts = render(p)
-    return [write_text_atomic(out / name, text) for name, text in texts.items()]
+    """Write the plan's files into ``out_dir`` as one set: the folder holds the old plan or
+    the new one, never a mix, whatever happens part-way (an error, a signal, a full disk);
+    the user's own files in it are kept (:func:`planner.atomic.replace_folder_files`)."""
+    data = {name: text.encode("utf-8") for name, text in render(p).items()}
+    return replace_folder_files(out_dir, data, owned=OWNED_FILES)

@@ -15,7 +15,13 @@ import shapely
 
 from planner.site import Site
 
-__all__ = ["FacadeSet", "build_facades", "footprint_edges", "party_wall_mask"]
+__all__ = [
+    "FacadeSet",
+    "build_facades",
+    "estimate_samples",
+    "footprint_edges",
+    "party_wall_mask",
+]
 
 #: A sample whose point, moved this far outward, lies in another building or obstacle
 #: lower than the neighbour's height is on a party wall [m].
@@ -93,6 +99,19 @@ def _merge_ring(xy: np.ndarray, max_turn_deg: float, max_offset_m: float) -> lis
         runs.append((order[i], order[j]))
         i = j
     return runs
+
+
+def estimate_samples(site: Site, sample_spacing_m: float, sample_height_step_m: float) -> int:
+    """About how many samples :func:`build_facades` will make (before making them): every
+    ring edge of a planned building, its length over the spacing, times its rows."""
+    total = 0.0
+    for b in site.planned:
+        rows = max(1.0, round(b.height_m / sample_height_step_m))
+        for poly in shapely.get_parts(b.footprint):
+            for ring in [poly.exterior, *poly.interiors]:
+                edges = len(ring.coords) - 1
+                total += (ring.length / sample_spacing_m + edges) * rows
+    return int(total)
 
 
 def build_facades(

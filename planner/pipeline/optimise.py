@@ -134,7 +134,7 @@ IN_PROCESS_NNZ = 400_000
 
 
 def _milp_with_deadline(a, dem, upper, time_limit_s):
-    """Run the integer program, stopping it at ``time_limit_s`` (+ a grace of 5 s) for sure.
+    """Run the integer program, stopping it at ``time_limit_s`` (+ a grace of 1 s) for sure.
 
     Large models run in a worker process (``python -m planner.pipeline._milp_worker``), killed
     at the deadline; not a fork (a fork of a process with threads, such as a Jupyter kernel, can
@@ -161,7 +161,7 @@ def _milp_with_deadline(a, dem, upper, time_limit_s):
             stderr=subprocess.PIPE,
         )
         try:
-            _, err = proc.communicate(timeout=time_limit_s + 5.0)
+            _, err = proc.communicate(timeout=time_limit_s + 1.0)
         except subprocess.TimeoutExpired:
             proc.kill()
             proc.communicate()

@@ -10,23 +10,27 @@ summary and unmet samples with the reason. The result type is
 
 from __future__ import annotations
 
+import math
 import time
 from collections.abc import Callable
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
 from planner.accuracy import reach_bound_m
+from planner.errors import InputError
 from planner.pipeline.candidates import candidate_grid
 from planner.pipeline.evaluate import (
     METRIC_KEYS,
+    Assignment,
     CandidateEvaluation,
     Context,
+    assign_stations,
     best_achievable,
     evaluate_candidates,
-    evaluate_stations,
 )
-from planner.pipeline.facades import FacadeSet, build_facades
+from planner.pipeline.facades import FacadeSet, build_facades, estimate_samples
 from planner.pipeline.optimise import solve_cover
 from planner.pipeline.registration import (
     Network,
@@ -47,6 +51,11 @@ Progress = Callable[[float, str], None]
 #: Candidate stations farther than this from a facade are not searched [m] (the accuracy
 #: bound usually stops well before).
 MIN_SEARCH_RADIUS_M = 25.0
+#: Evaluation speed used to put a work estimate in minutes [pairs per second].
+PAIRS_PER_S = 20e6
+#: The optimiser always gets at least this long, even when the evaluation used the budget
+#: (greedy set cover takes well under it) [s].
+MIN_SOLVER_S = 2.0
 
 
 def reach_m(scanner: Scanner, req: Requirements, station_rms_mm: tuple[float, float]) -> float:
@@ -78,6 +87,14 @@ def plan(
 
     timings: dict[str, float] = {}
     t0 = time.perf_counter()
+    _expect(site, Site, "site", "read one with planner.read_site(path) or planner.default_site()")
+    _expect(requirements, Requirements, "requirements", "e.g. Requirements(max_xy_mm=4)")
+    _expect(settings, PlanSettings, "settings", "e.g. PlanSettings(grid_m=2)")
+    if scanner is not None and not isinstance(scanner, Scanner | str | Path):
+        raise InputError(
+            f"scanner must be a Scanner, a catalogue name or a profile file; got "
+            f"{type(scanner).__name__}"
+        )
     site = site or default_site()
     sc = load_scanner(scanner or DEFAULT_SCANNER)
     req = requirements or Requirements()
@@ -85,11 +102,28 @@ def plan(
     say = progress or (lambda _f, _m: None)
     messages = list(site.warnings)
 
+    deadline = time.monotonic() + st.time_limit_s
     say(0.0, "sampling facades")
+    n_est = estimate_samples(site, st.sample_spacing_m, st.sample_height_step_m)
+    if n_est > st.max_samples:
+        raise InputError(
+            f"the facades would need about {n_est:,} samples at {st.sample_spacing_m:g} m × "
+            f"{st.sample_height_step_m:g} m, more than {st.max_samples:,.0f}; use coarser "
+            "samples (--sample-spacing-m, --sample-height-step-m), plan fewer buildings, or "
+            "raise the limit (--max-samples)"
+        )
     fac = build_facades(site, st.sample_spacing_m, st.sample_height_step_m)
     reach = reach_m(sc, req, st.station_rms_pair)
     cand = candidate_grid(site, fac, reach, st.grid_m, st.clearance_m)
     ctx = Context.build(site, fac, sc, req, st, reach)
+    pairs = ctx.pair_count(cand)
+    if pairs > st.max_pairs:
+        raise InputError(
+            f"the plan would evaluate {pairs:.3g} station × sample pairs (about "
+            f"{pairs / PAIRS_PER_S / 60:.0f} min), more than {st.max_pairs:.3g}; use a coarser "
+            "grid (--grid-m) or coarser samples, plan fewer buildings, or raise the limit "
+            "(--max-pairs)"
+        )
     timings["setup"] = time.perf_counter() - t0
     if len(cand) == 0:
         messages.append(
@@ -98,14 +132,23 @@ def plan(
         )
 
     t = time.perf_counter()
-    ev = evaluate_candidates(ctx, cand, progress=lambda f, m: say(0.05 + 0.6 * f, m))
+    ev = evaluate_candidates(
+        ctx, cand, progress=lambda f, m: say(0.05 + 0.6 * f, m), deadline=deadline
+    )
     timings["evaluate"] = time.perf_counter() - t
+    if not ev.evaluated.all():
+        messages.append(
+            f"The time limit of {st.time_limit_s:g} s ran out during the evaluation: "
+            f"{int(ev.evaluated.sum())} of {len(fac.z)} samples were evaluated; the plan covers "
+            "those. Raise --time-limit-s for the whole site."
+        )
 
     say(0.7, "choosing the fewest stations")
     t = time.perf_counter()
     n_ok = np.asarray(ev.ok.sum(axis=1)).ravel()
     demand = np.where(fac.party_wall, 0, np.minimum(req.stations_per_sample, n_ok))
-    sol = solve_cover(ev.ok, demand, st.time_limit_s, st.method)
+    remaining = max(MIN_SOLVER_S, deadline - time.monotonic())
+    sol = solve_cover(ev.ok, demand, remaining, st.method)
     timings["optimise"] = time.perf_counter() - t
 
     say(0.85, "registration network and targets")
@@ -120,8 +163,8 @@ def plan(
     t = time.perf_counter()
     station_xy = cand[station_idx] if len(station_idx) else np.empty((0, 2))
     ids = [f"S{i + 1:02d}" for i in range(len(station_idx))]
-    dense = evaluate_stations(ctx, station_xy)
-    coverage = _coverage(ctx, ev, dense, ids, cand)
+    assignment = assign_stations(ctx, station_xy)
+    coverage = _coverage(ctx, ev, assignment, ids, cand, deadline)
     n_link = net.n_link_stations if net else 0
     stations = pd.DataFrame(
         {
@@ -130,7 +173,7 @@ def plan(
             "y": station_xy[:, 1],
             "instrument_height_m": st.instrument_height_m,
             "purpose": ["cover"] * (len(ids) - n_link) + ["link"] * n_link,
-            "samples_met": dense["ok"].sum(axis=0),
+            "samples_met": assignment.met_by_station,
         }
     )
     targets, links = _targets_and_links(ctx, tc, net, ids)
@@ -154,6 +197,7 @@ def plan(
         "reach_m": reach,
         "candidates": len(cand),
         "samples": int((~fac.party_wall).sum()),
+        "pairs": pairs,
     }
     timings["total"] = time.perf_counter() - t0
     say(1.0, "plan ready")
@@ -172,6 +216,15 @@ def plan(
         messages=messages,
         timings_s=timings,
     )
+
+
+def _expect(value: object, kind: type, name: str, hint: str) -> None:
+    """The Python API's boundary: a wrong type is an InputError saying what to pass."""
+    if value is not None and not isinstance(value, kind):
+        raise InputError(
+            f"{name} must be a planner.{kind.__name__} ({hint}); got {type(value).__name__}"
+            + (f" {value!r}"[:80] if isinstance(value, str | Path) else "")
+        )
 
 
 def _reason(ctx: Context, sample: int, n_view: int, best: dict[str, float], n_meet: int) -> str:
@@ -197,38 +250,37 @@ def _reason(ctx: Context, sample: int, n_view: int, best: dict[str, float], n_me
 def _coverage(
     ctx: Context,
     ev: CandidateEvaluation,
-    dense: dict[str, np.ndarray],
+    assignment: Assignment,
     ids: list[str],
     cand_xy: np.ndarray,
+    deadline: float = math.inf,
 ) -> pd.DataFrame:
     fac = ctx.facades
     n = len(fac.z)
     k_req = ctx.req.stations_per_sample
     n_ok_cand = np.asarray(ev.ok.sum(axis=1)).ravel()
-    if ids:  # the assigned station: the best meeting one, else the best that sees the sample
-        score = np.where(dense["ok"], dense["score"], dense["score"] + 1e6)
-        score = np.where(dense["view"], score, np.inf)
-        assigned = np.argmin(score, axis=1)
-        has = np.isfinite(score[np.arange(n), assigned])
-        picked = {k: np.where(has, dense[k][np.arange(n), assigned], np.nan) for k in METRIC_KEYS}
-        station = np.where(has, np.array(ids, dtype=object)[assigned], "")
-        n_meeting = dense["ok"].sum(axis=1)
-    else:
-        picked = {k: np.full(n, np.nan) for k in METRIC_KEYS}
-        station = np.full(n, "", dtype=object)
-        n_meeting = np.zeros(n, dtype=int)
-    meets = (n_meeting >= k_req) & ~fac.party_wall
+    picked, n_meeting = assignment.metrics, assignment.n_meeting
+    names = np.array([*ids, ""], dtype=object)
+    station = names[assignment.station]  # -1 picks the "" at the end
+    demanded = ~fac.party_wall
+    meets = (n_meeting >= k_req) & demanded
     reason = np.full(n, "", dtype=object)
-    short = np.flatnonzero(~meets & ~fac.party_wall & (n_ok_cand >= k_req))
+    short = np.flatnonzero(~meets & demanded & (n_ok_cand >= k_req))
     reason[short] = [
         f"the chosen stations do not cover this sample ({n_meeting[i]} of {k_req})" for i in short
     ]
-    hopeless = np.flatnonzero(~meets & ~fac.party_wall & (n_ok_cand < k_req))
+    hopeless = np.flatnonzero(~meets & demanded & (n_ok_cand < k_req) & ev.evaluated)
     if len(hopeless):
-        diag = best_achievable(ctx, cand_xy, hopeless)
+        diag = best_achievable(ctx, cand_xy, hopeless, deadline)
         for j, i in enumerate(hopeless):
+            if not diag["done"][j]:
+                reason[i] = "no station meets it (not diagnosed further: the time limit ran out)"
+                continue
             best = {key: float(v[j]) for key, v in diag.items()}
             reason[i] = _reason(ctx, int(i), int(ev.n_view[i]), best, int(n_ok_cand[i]))
+    reason[~meets & demanded & ~ev.evaluated] = (
+        f"not evaluated: the time limit of {ctx.settings.time_limit_s:g} s ran out"
+    )
     reason[fac.party_wall] = "party wall (against a neighbour): not scanned"
     return pd.DataFrame(
         {

@@ -338,8 +338,13 @@ class PlanSettings:
         Spacing of candidate target positions along facades and on free ground [m].
     max_target_incidence_deg : float, default 60
         Beyond this incidence a flat target is not used.
-    time_limit_s : float, default 20
-        Time limit of the integer program.
+    time_limit_s : float, default 60
+        Time budget of the whole plan: evaluation, optimiser and registration share it;
+        when it runs out, the best plan found so far is kept and says so.
+    max_samples, max_pairs : float, default 1 000 000 and 10⁹
+        The work the planner accepts before it starts: facade samples, and candidate ×
+        sample evaluations (about 20 million a second). Beyond them the plan is refused with
+        the estimate; raise them explicitly for a site that needs it.
     method : "auto", "milp" or "greedy"
         ``auto``: the integer program, greedy set cover when it finds nothing in time;
         ``milp``: the integer program only (an error if it finds no plan in time);
@@ -402,7 +407,27 @@ class PlanSettings:
         help="beyond this incidence a flat target is not used",
     )
     time_limit_s: float = _spec(
-        20.0, "s", "time limit", step=5.0, help="time limit of the integer program"
+        60.0,
+        "s",
+        "time limit",
+        step=5.0,
+        help="time budget of the whole plan (evaluation, optimiser, registration); when it "
+        "runs out the best plan so far is kept, and says so",
+    )
+    max_samples: float = _spec(
+        1_000_000,
+        "samples",
+        "most facade samples",
+        step=100_000,
+        help="refuse a site that needs more facade samples than this (raise it explicitly)",
+    )
+    max_pairs: float = _spec(
+        1e9,
+        "pairs",
+        "most candidate × sample pairs",
+        step=1e8,
+        help="refuse a plan that needs more station × sample evaluations than this (about "
+        "20 million a second)",
     )
     method: str = "auto"
 

@@ -1,0 +1,79 @@
+"""The Voilà server process that ``planner serve`` supervises (``python -m
+planner.app.voila_server NOTEBOOK [Voilà options]``).
+
+Voilà as shipped answers any ``Host`` header (it sets ``allow_remote_access``), which lets a
+web page on another site reach the dashboard through DNS rebinding. Here every request
+whose ``Host`` is not a loopback name or address is refused with 403 before any handler
+runs — pages, kernels, websockets and static files alike.
+"""
+
+from __future__ import annotations
+
+import ipaddress
+import os
+import re
+import sys
+
+import tornado.web
+
+__all__ = ["is_loopback_host"]
+
+#: Host names that mean this machine.
+LOOPBACK_NAMES = ("localhost", "localhost.localdomain")
+
+
+def is_loopback_host(host_header: str) -> bool:
+    """Whether a ``Host`` header names this machine (``127.0.0.1:8866``, ``[::1]``,
+    ``localhost``).
+
+    Examples
+    --------
+    >>> [is_loopback_host(h) for h in ("127.0.0.1:8866", "localhost", "[::1]:80")]
+    [True, True, True]
+    >>> [is_loopback_host(h) for h in ("evil.example", "10.0.0.2:8866", "")]
+    [False, False, False]
+    """
+    match = re.match(r"^(.*?)(:\d+)?$", host_header or "")
+    host = match.group(1) if match else ""
+    if host.startswith("[") and host.endswith("]"):
+        host = host[1:-1]
+    try:
+        return ipaddress.ip_address(host).is_loopback
+    except ValueError:
+        return host.lower() in LOOPBACK_NAMES
+
+
+#: The path answering with this server's instance id (set by ``planner serve``): how the
+#: supervisor knows that the server answering on the port is its own.
+INSTANCE_PATH = "/tls-planner/instance"
+INSTANCE_ENV = "TLS_PLANNER_INSTANCE"
+
+
+class _InstanceHandler(tornado.web.RequestHandler):
+    def get(self) -> None:
+        self.set_header("Content-Type", "text/plain")
+        self.write(os.environ.get(INSTANCE_ENV, ""))
+
+
+class LoopbackApplication(tornado.web.Application):
+    """A Tornado application that serves loopback ``Host`` names only."""
+
+    def find_handler(self, request, **kwargs):  # type: ignore[override]
+        if not is_loopback_host(request.host):
+            return self.get_handler_delegate(
+                request, tornado.web.ErrorHandler, {"status_code": 403}
+            )
+        if request.path == INSTANCE_PATH:
+            return self.get_handler_delegate(request, _InstanceHandler)
+        return super().find_handler(request, **kwargs)
+
+
+def main(argv: list[str]) -> None:
+    from voila.app import Voila
+
+    tornado.web.Application = LoopbackApplication  # Voilà builds its application from this name
+    Voila.launch_instance(argv)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

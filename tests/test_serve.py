@@ -1,0 +1,139 @@
+"""``planner serve``: ready when it says so, loopback names only, stops whole on any ordinary
+stop signal, refuses a taken port, and frees the kernels of closed pages."""
+
+from __future__ import annotations
+
+import os
+import re
+import signal
+import socket
+import subprocess
+import sys
+import time
+import urllib.error
+import urllib.request
+from pathlib import Path
+
+import pytest
+
+from planner.app.serve import _descendants
+from planner.app.voila_server import is_loopback_host
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def _listening(port: int) -> bool:
+    with socket.socket() as s:
+        return s.connect_ex(("127.0.0.1", port)) == 0
+
+
+def _start(port: int, *extra: str) -> tuple[subprocess.Popen, str]:
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "planner", "serve", "--port", str(port), *extra],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    line = proc.stdout.readline()  # blocks until the server says it is ready
+    return proc, line
+
+
+def _kernels(pid: int) -> list[int]:
+    out = []
+    for child in _descendants(pid):
+        try:
+            cmd = Path(f"/proc/{child}/cmdline").read_bytes()
+        except OSError:
+            continue
+        if b"ipykernel" in cmd:
+            out.append(child)
+    return out
+
+
+def _get(port: int, path: str = "/", host: str | None = None) -> int:
+    req = urllib.request.Request(f"http://127.0.0.1:{port}{path}")
+    if host:
+        req.add_header("Host", host)
+    try:
+        with urllib.request.urlopen(req, timeout=120) as r:
+            return r.status
+    except urllib.error.HTTPError as exc:
+        return exc.code
+
+
+@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGHUP, signal.SIGINT])
+def test_serve_is_ready_when_it_says_so_and_stops_whole_on_a_signal(sig):
+    port = _free_port()
+    proc, line = _start(port)
+    try:
+        assert re.search(rf"ready at http://127\.0\.0\.1:{port}/", line), line
+        assert _get(port, "/tls-planner/instance") == 200  # answers at once: no race
+        assert _get(port) == 200  # a page load starts a kernel
+        family = _descendants(proc.pid)
+        assert _kernels(proc.pid), "a page load should run a kernel"
+        proc.send_signal(sig)
+        assert proc.wait(60) == 0
+        time.sleep(0.5)
+        assert not _listening(port), "the port still answers after the stop"
+        alive = [p for p in family if Path(f"/proc/{p}").exists()]
+        assert alive == [], f"processes left running: {alive}"
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+
+
+def test_serve_refuses_other_host_names_and_a_taken_port():
+    port = _free_port()
+    proc, line = _start(port)
+    try:
+        assert "ready" in line
+        assert _get(port, "/", host="evil.example") == 403  # DNS rebinding
+        assert _get(port, "/voila/static/voila.js", host=f"evil.example:{port}") == 403
+        assert _get(port, "/tls-planner/instance", host=f"localhost:{port}") == 200
+        second = subprocess.run(
+            [sys.executable, "-m", "planner", "serve", "--port", str(port)],
+            capture_output=True,
+            text=True,
+            timeout=60,
+        )
+        assert second.returncode == 2 and f"port {port} on 127.0.0.1 is taken" in second.stderr
+    finally:
+        proc.send_signal(signal.SIGTERM)
+        proc.wait(60)
+
+
+def test_kernels_of_pages_nobody_holds_are_shut_down():
+    """Page loads leave kernels; with nobody connected they are culled after the idle time,
+    and the upload folder goes with the server."""
+    port = _free_port()
+    proc, line = _start(port, "--kernel-idle-s", "4")
+    try:
+        assert "ready" in line
+        for _ in range(3):
+            assert _get(port) == 200
+        assert len(_kernels(proc.pid)) == 3
+        deadline = time.time() + 60
+        while _kernels(proc.pid) and time.time() < deadline:
+            time.sleep(1)
+        assert _kernels(proc.pid) == []
+        uploads = [
+            Path(os.environ.get("TMPDIR", "/tmp"), p)
+            for p in os.listdir(os.environ.get("TMPDIR", "/tmp"))
+            if p.startswith("tls-planner-serve-")
+        ]
+        assert uploads  # the server's upload folder exists while it runs …
+    finally:
+        proc.send_signal(signal.SIGTERM)
+        proc.wait(60)
+    assert not any(p.exists() for p in uploads)  # … and goes with it
+
+
+def test_loopback_host_names():
+    assert is_loopback_host("127.0.0.1:8866") and is_loopback_host("[::1]:8866")
+    assert is_loopback_host("localhost") and is_loopback_host("127.1.2.3")
+    assert not is_loopback_host("evil.example") and not is_loopback_host("10.0.0.1")
+    assert not is_loopback_host("localhost.evil.example")
