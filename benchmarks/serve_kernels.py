@@ -21,7 +21,7 @@ from pathlib import Path
 from _results import machine, write_section
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
-from planner.app.serve import _descendants  # noqa: E402
+from planner.app.serve import _descendants
 
 FLAGS = [
     "--no-sandbox",
@@ -60,8 +60,16 @@ def main() -> None:
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]
     proc = subprocess.Popen(
-        [sys.executable, "-m", "planner", "serve", "--port", str(port), "--kernel-idle-s",
-         str(args.idle_s)],
+        [
+            sys.executable,
+            "-m",
+            "planner",
+            "serve",
+            "--port",
+            str(port),
+            "--kernel-idle-s",
+            str(args.idle_s),
+        ],
         stdout=subprocess.PIPE,
         text=True,
     )
