@@ -17,6 +17,7 @@ from planner.errors import InputError
 __all__ = [
     "SightGeometry",
     "deviation_angle_deg",
+    "incidence_deg",
     "polar_to_xyz",
     "sight_geometry",
     "tilt_deg",
@@ -87,6 +88,23 @@ def tilt_deg(station_xyz: ArrayLike, point_xyz: ArrayLike) -> np.ndarray:
     pt = _xyz(point_xyz, "point_xyz", 3)
     d = np.hypot(pt[..., 0] - st[..., 0], pt[..., 1] - st[..., 1])
     return np.degrees(np.arctan2(pt[..., 2] - st[..., 2], d))
+
+
+def incidence_deg(gamma_deg: ArrayLike, nu_deg: ArrayLike) -> np.ndarray:
+    """3-D incidence θ [deg] of a beam on a vertical wall: ``cos θ = cos γ · cos ν``.
+
+    γ is measured in plan (the deviation from the wall's normal in the horizontal plane)
+    and ν is the beam's tilt; the angle between the beam and the wall's normal is larger
+    than either as soon as both are non-zero.
+
+    Examples
+    --------
+    >>> incidence_deg([0, 60, 60], [0, 0, 45]).round(2).tolist()
+    [0.0, 60.0, 69.3]
+    """
+    g = np.radians(as_float_array(gamma_deg, "gamma_deg"))
+    nu = np.radians(as_float_array(nu_deg, "nu_deg"))
+    return np.degrees(np.arccos(np.clip(np.cos(g) * np.cos(nu), -1.0, 1.0)))
 
 
 class SightGeometry(NamedTuple):

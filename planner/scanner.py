@@ -67,8 +67,15 @@ class Scanner:
     measurement_rate_hz : float or None
         Points per second, if known.
     levelling_rms_arcsec : float or None
-        RMS of the initial (horizontal) direction ``m_ν0`` of a levelled or compensated
-        scanner [″]. None: eq. 4 uses ``m_ν0 = m_ν`` as the paper's Table 2 does.
+        Accuracy of the dual-axis compensator (how well the vertical axis is levelled,
+        per axis) [″]. A scanner with one is *levelled*: eq. 4 uses it as ``m_ν0``, the 3-D
+        model as the tilt of the vertical axis, and registration fixes the two tilts (4
+        parameters instead of 6). None: no compensator; eq. 4 uses ``m_ν0 = m_ν`` as the
+        paper's Table 2 does, and so does the 3-D model for the tilt.
+    beam_divergence_mrad : float or None
+        Full-angle beam divergence [mrad] (the beam's growth with distance).
+    beam_exit_mm : float or None
+        Beam diameter at the exit window [mm].
     label, source, notes : str
         Display name; where the figures come from; which values are assumptions.
     """
@@ -84,6 +91,8 @@ class Scanner:
     vertical_fov_deg: tuple[float, float] = (-45.0, 90.0)
     measurement_rate_hz: float | None = None
     levelling_rms_arcsec: float | None = None
+    beam_divergence_mrad: float | None = None
+    beam_exit_mm: float | None = None
     label: str = ""
     source: str = "user-defined"
     notes: str = ""
@@ -103,6 +112,8 @@ class Scanner:
             "vertical_angle_rms_arcsec": "arc-seconds",
             "measurement_rate_hz": "points/s",
             "levelling_rms_arcsec": "arc-seconds",
+            "beam_divergence_mrad": "mrad",
+            "beam_exit_mm": "mm",
         }
         for name, unit in positive.items():
             self._set(
@@ -152,6 +163,11 @@ class Scanner:
         ``m_ν`` as the paper's Table 2 assumes. The one place this default is decided."""
         v = self.levelling_rms_arcsec
         return self.tilt_rms_arcsec if v is None else v
+
+    @property
+    def is_levelled(self) -> bool:
+        """Whether a compensator levels the scanner (a ``levelling_rms_arcsec`` is given)."""
+        return self.levelling_rms_arcsec is not None
 
     def range_rms_at(self, distance_m: ArrayLike) -> np.ndarray:
         """Ranging RMS ``m_S = a + b·D`` [mm] at ``distance_m`` [m] (b in ppm = mm/km)."""
@@ -265,7 +281,7 @@ class Scanner:
 _TOML_HEADER = "# tls-planner scanner profile (units: mm, ppm, arc-seconds, m, deg)\n"
 
 #: Tables a profile may carry besides its fields (kept as records, not used for planning).
-RECORD_KEYS = ("calibration",)
+RECORD_KEYS = ("calibration", "datasheet_3d_accuracy_mm")
 
 #: A profile name: lower-case letters, digits, '.', '_' and '-' (it becomes a file name).
 _NAME = re.compile(r"[a-z0-9][a-z0-9._-]{0,63}")

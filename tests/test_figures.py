@@ -14,6 +14,7 @@ def test_make_figures_writes_pngs(tmp_path):
         "sossa_target_sizes.png",
         "default_site_plan.png",
         "default_site_m_z.png",
+        "models_paper_vs_3d.png",
     }
     for p in paths:
         data = p.read_bytes()

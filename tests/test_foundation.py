@@ -126,7 +126,11 @@ def test_every_module_imports_and_its_doctests_pass():
 # -- one table of requirement checks ------------------------------------------------------
 def test_every_requirement_limit_has_exactly_one_check():
     limits = {c.limit for c in CHECKS}
-    req_fields = {f.name for f in fields(Requirements)} - {"max_xy_mm", "stations_per_sample"}
+    req_fields = {f.name for f in fields(Requirements)} - {
+        "max_xy_mm",
+        "stations_per_sample",
+        "accuracy_class",
+    }
     assert req_fields | {"max_x_mm", "max_y_mm"} == limits
     assert len({c.key for c in CHECKS}) == len(CHECKS)
     for c in CHECKS:

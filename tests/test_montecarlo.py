@@ -137,3 +137,109 @@ def test_simulation_rejects_a_swapped_convention(paper_scanner):
     assert _rms(e_x) == pytest.approx(m_x_right, rel=REL_TOL)
     assert abs(_rms(e_x) - m_x_swapped) > 10 * REL_TOL * m_x_right
     assert D * 1000 / RHO_ARCSEC * 12.4 > 4.0  # the angular term dominates at 80 m
+
+
+# -- the full 3-D model (planner.accuracy3d) ----------------------------------------------
+def _rotation(tau_x: np.ndarray, tau_y: np.ndarray) -> np.ndarray:
+    """Rotation matrices (N, 3, 3) tilting the vertical axis by τ_x about x and τ_y about y."""
+    cx, sx, cy, sy = np.cos(tau_x), np.sin(tau_x), np.cos(tau_y), np.sin(tau_y)
+    one, zero = np.ones_like(tau_x), np.zeros_like(tau_x)
+    rx = np.stack([one, zero, zero, zero, cx, -sx, zero, sx, cx], axis=-1).reshape(-1, 3, 3)
+    ry = np.stack([cy, zero, sy, zero, one, zero, -sy, zero, cy], axis=-1).reshape(-1, 3, 3)
+    return rx @ ry
+
+
+def _simulate_scanner(scanner, station, point, u, n, rng):
+    """A real polar measurement: noisy slope distance, horizontal and vertical angle, on a
+    vertical axis tilted by the levelling's residual (σ_τ per axis), exactly (no
+    linearisation). Errors of the point in the facade frame [mm]."""
+    alpha0 = rng.uniform(0, 360)
+    d = point - station
+    D = np.hypot(d[0], d[1])
+    S = np.hypot(D, d[2])
+    beta = np.degrees(np.arctan2(d[1], d[0])) - alpha0
+    nu = np.degrees(np.arctan2(d[2], D))
+    m_s = scanner.range_rms_mm + scanner.range_ppm * 1e-3 * S
+    s_n = S + rng.normal(0, m_s / 1000, N)
+    a_n = np.radians(alpha0 + beta + rng.normal(0, scanner.angle_rms_arcsec / 3600, N))
+    nu_n = np.radians(nu + rng.normal(0, scanner.tilt_rms_arcsec / 3600, N))
+    v = np.column_stack(
+        [s_n * np.cos(nu_n) * np.cos(a_n), s_n * np.cos(nu_n) * np.sin(a_n), s_n * np.sin(nu_n)]
+    )
+    tau = scanner.initial_tilt_rms_arcsec / RHO_ARCSEC
+    rot = _rotation(rng.normal(0, tau, N), rng.normal(0, tau, N))
+    xyz = station + np.einsum("nij,nj->ni", rot, v)
+    err = xyz - point
+    return err[:, :2] @ u * 1000, err[:, :2] @ n * 1000, err[:, 2] * 1000
+
+
+@pytest.fixture(scope="module")
+def levelled_scanner():
+    """1 mm / 8″ with a 1.5″ compensator: the issue's example of eq. 2 understating."""
+    from planner import Scanner
+
+    return Scanner(
+        name="levelled", range_rms_mm=1.0, angle_rms_arcsec=8.0, levelling_rms_arcsec=1.5
+    )
+
+
+# (slope distance S [m], deviation γ [deg], tilt ν [deg], facade azimuth [deg])
+CASES_3D = [
+    (10.0, 0.0, 0.0, 20.0),
+    (40.0, 0.0, 60.0, 75.0),
+    (25.0, 30.0, 45.0, 140.0),
+    (60.0, 60.0, 20.0, 230.0),
+    (15.0, 45.0, 75.0, 310.0),
+    (90.0, 20.0, -25.0, 5.0),
+]
+
+
+def _geometry(S, gamma, nu, azimuth):
+    u, n = _facade_frame(azimuth)
+    point = np.array([1000.0, 2000.0, 10.0])
+    g, t = np.radians(gamma), np.radians(nu)
+    D = S * np.cos(t)
+    station = point - np.array([*(D * -(np.sin(g) * u + np.cos(g) * n)), S * np.sin(t)])
+    return u, n, point, station
+
+
+@pytest.mark.parametrize(("S", "gamma", "nu", "azimuth"), CASES_3D)
+@pytest.mark.parametrize("which", ["paper_scanner", "ppm_scanner", "levelled_scanner"])
+def test_3d_model_matches_a_simulated_scanner(S, gamma, nu, azimuth, which, request):
+    from planner.accuracy3d import point_rms_3d
+
+    scanner = request.getfixturevalue(which)
+    rng = np.random.default_rng(_seed("3d", S, gamma, nu, azimuth, which))
+    u, n, point, station = _geometry(S, gamma, nu, azimuth)
+    geom = sight_geometry(station, point, n)
+    assert geom.gamma_deg == pytest.approx(gamma, abs=1e-9)
+    assert geom.nu_deg == pytest.approx(nu, abs=1e-9)
+    e = _simulate_scanner(scanner, station, point, u, n, rng)
+    model = point_rms_3d(S, gamma, nu, scanner)
+    for component, value in zip(e, model, strict=True):
+        assert _rms(component) == pytest.approx(value, rel=REL_TOL)
+
+
+def test_3d_simulation_tells_the_models_apart(levelled_scanner):
+    """Negative controls: at a steep beam the simulated scanner disagrees with eq. 2 (the
+    issue's 1 mm / 8″ example: 1.00 mm by eq. 2, 1.43–1.46 mm measured) and with a 3-D
+    model that forgets the vertical angle's horizontal share — both by far more than the
+    tolerance that the right model passes."""
+    from planner.accuracy3d import point_rms_3d
+
+    sc = levelled_scanner
+    rng = np.random.default_rng(11)
+    u, n, point, station = _geometry(40.0, 0.0, 60.0, 33.0)
+    _, e_y, _ = _simulate_scanner(sc, station, point, u, n, rng)
+    measured = _rms(e_y)
+    _, m_y_3d, _ = point_rms_3d(40.0, 0.0, 60.0, sc)
+    _, m_y_eq2 = planimetric_rms(40.0 * np.cos(np.radians(60.0)), 0.0, sc)
+    assert m_y_eq2 == pytest.approx(1.00, abs=0.005)  # mm: eq. 2 gives m_S alone
+    assert measured == pytest.approx(m_y_3d, rel=REL_TOL)
+    assert measured == pytest.approx(1.46, abs=0.01)  # mm
+    assert abs(measured - m_y_eq2) > 20 * REL_TOL * measured
+    # a model without the vertical angle's share in the horizontal plane fails too
+    k = 1000 / RHO_ARCSEC
+    tilt = 40.0 * np.sin(np.radians(60.0)) * k * sc.initial_tilt_rms_arcsec
+    forgetful = np.hypot(np.cos(np.radians(60.0)) * 1.0, tilt)
+    assert abs(measured - forgetful) > 20 * REL_TOL * measured

@@ -17,12 +17,14 @@ from planner import (
     planimetric_rms,
     sight_geometry,
 )
+from planner.accuracy3d import point_rms_3d
 from planner.pipeline.evaluate import Context, evaluate_stations
 from planner.pipeline.export import coverage_csv
 from planner.pipeline.facades import build_facades
 from planner.pipeline.planning import plan, reach_m
 from planner.pipeline.requirements import PlanSettings, Requirements
 from planner.pipeline.visibility import clear_height
+from planner.polar import incidence_deg
 from planner.site import Building, Obstacle, Site
 
 PAPER = Scanner.from_name("leica-4mm-60urad")
@@ -147,7 +149,7 @@ def test_infeasible_tolerance_does_not_crash_and_says_what_is_achievable():
         square_site(),
         PAPER,
         Requirements(max_xy_mm=0.5, max_z_mm=5),
-        PlanSettings(sample_spacing_m=4.0, sample_height_step_m=5.0),
+        PlanSettings(sample_spacing_m=4.0, sample_height_step_m=5.0, model="paper"),
     )
     assert not p.meets_all
     assert len(p.unmet) == len(p.coverage)
@@ -231,10 +233,18 @@ def test_coverage_rows_recomputed_from_coordinates_with_the_science_layer(rich_p
         cov[["x", "y", "z"]].to_numpy(),
         cov[["nx", "ny"]].to_numpy(),
     )
-    m_x, m_y = planimetric_rms(
-        g.distance_m, g.gamma_deg, p.scanner, (1.0, 1.5), ranging_distance_m=g.slope_distance_m
+    assert p.settings.model == "3d" and p.settings.incidence_noise
+    m_x, m_y, m_z = point_rms_3d(
+        g.slope_distance_m,
+        g.gamma_deg,
+        g.nu_deg,
+        p.scanner,
+        station_rms_mm=(1.0, 1.5),
+        incidence_noise=True,
     )
-    m_z = height_rms(g.slope_distance_m, g.nu_deg, p.scanner)
+    np.testing.assert_allclose(
+        cov["incidence_deg"], incidence_deg(g.gamma_deg, g.nu_deg), atol=1e-6
+    )  # deg
     np.testing.assert_allclose(cov["distance_m"], g.distance_m, atol=1e-9)  # m
     np.testing.assert_allclose(cov["slope_distance_m"], g.slope_distance_m, atol=1e-9)  # m
     np.testing.assert_allclose(cov["gamma_deg"], g.gamma_deg, atol=1e-6)  # deg
@@ -245,6 +255,32 @@ def test_coverage_rows_recomputed_from_coordinates_with_the_science_layer(rich_p
     spacing = facade_point_spacing_mm(g.slope_distance_m, g.gamma_deg, g.nu_deg, p.scanner)
     np.testing.assert_allclose(cov["spacing_mm"], spacing, rtol=1e-9)  # mm
     assert len(cov) > 100
+
+
+def test_the_paper_model_reproduces_eq2_and_eq4_row_by_row():
+    sc = Scanner(name="ppm", range_rms_mm=2.0, range_ppm=100.0, angle_rms_arcsec=10.0)
+    p = plan(
+        square_site(),
+        sc,
+        Requirements(max_xy_mm=4.0, max_z_mm=4.0),
+        PlanSettings(model="paper", station_rms_mm=(1.0, 1.5), sample_spacing_m=3.0),
+    )
+    cov = p.coverage[p.coverage["station_id"] != ""].join(_normals(p), on="facade_id")
+    st = p.stations.set_index("station_id").loc[cov["station_id"]]
+    g = sight_geometry(
+        np.column_stack([st["x"], st["y"], st["instrument_height_m"]]),
+        cov[["x", "y", "z"]].to_numpy(),
+        cov[["nx", "ny"]].to_numpy(),
+    )
+    m_x, m_y = planimetric_rms(
+        g.distance_m, g.gamma_deg, sc, (1.0, 1.5), ranging_distance_m=g.slope_distance_m
+    )
+    np.testing.assert_allclose(cov["m_x_mm"], m_x, atol=1e-9)  # mm
+    np.testing.assert_allclose(cov["m_y_mm"], m_y, atol=1e-9)  # mm
+    np.testing.assert_allclose(
+        cov["m_z_mm"], height_rms(g.slope_distance_m, g.nu_deg, sc), atol=1e-9
+    )  # mm
+    assert (cov["model"] == "paper").all() and len(cov) > 20
 
 
 def test_target_sizes_recomputed_with_the_science_layer(rich_plan):
@@ -293,10 +329,12 @@ def test_every_meets_row_really_meets_the_requirements(rich_plan):
         "slope_distance_m",
         "gamma_deg",
         "nu_deg",
+        "incidence_deg",
         "m_x_mm",
         "m_y_mm",
         "m_z_mm",
         "meets",
+        "model",
     ]
     assert (csv.loc[csv["meets"], "m_x_mm"] <= 4.0 + 0.0005).all()
 

@@ -4,9 +4,11 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
 from planner import InputError, Scanner, catalogue, load_scanner
+from planner.scanner import DEFAULT_SCANNER as DEFAULT
 from planner.scanner import read_scanner_file
 
 REQUIRED = [
@@ -135,3 +137,38 @@ def test_file_with_several_profiles_and_bad_files(tmp_path):
     binary.write_bytes(b"\xff\xfe\x00bad")
     with pytest.raises(InputError, match="not a UTF-8 text file"):
         Scanner.from_file(binary)
+
+
+TODAYS = [
+    "leica-rtc360",
+    "leica-p50",
+    "leica-blk360",
+    "faro-focus-premium",
+    "trimble-x7",
+    "zf-imager-5016",
+    "riegl-vz-400i",
+]
+
+
+@pytest.mark.parametrize("name", TODAYS)
+def test_todays_scanners_reproduce_their_datasheets_3d_point_accuracy(name):
+    """Each profile's ranging and angles, combined as √(m_S² + 2·(D·m/ρ)²), give the 3-D
+    point accuracy its datasheet publishes within 25 % — a check of the transcription and
+    of the assumptions its notes state."""
+    s = catalogue()[name]
+    assert "datasheet" in s.source and s.notes
+    for distance, published in s.extra.get("datasheet_3d_accuracy_mm", []):
+        lateral = distance * 1000 / 206264.806
+        model = np.sqrt(
+            float(s.range_rms_at(distance)) ** 2
+            + (lateral * s.angle_rms_arcsec) ** 2
+            + (lateral * s.tilt_rms_arcsec) ** 2
+        )
+        assert model == pytest.approx(published, rel=0.25), (distance, published, model)
+
+
+def test_levelled_scanners_and_beam_figures():
+    cat = catalogue()
+    assert cat["leica-p50"].is_levelled and cat["leica-p50"].levelling_rms_arcsec == 1.5
+    assert not cat["leica-rtc360"].is_levelled and not cat[DEFAULT].is_levelled
+    assert cat["faro-focus-premium"].beam_divergence_mrad == 0.3

@@ -92,6 +92,7 @@ def cmd_scanners(args: argparse.Namespace) -> int:
             "V angle ″": s.tilt_rms_arcsec,
             "step@10m mm": s.step_mm_at_10m,
             "range m": f"{s.min_range_m:g}-{s.max_range_m:g}",
+            "compensator ″": s.levelling_rms_arcsec if s.is_levelled else "-",
             "from": "catalogue" if origin == "catalogue" else "your profile",
             "label": s.label,
         }
@@ -444,7 +445,13 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
     """The site, scanner, requirement and setting options shared by plan and report. The
     requirement and setting options are made from the data classes' fields (name, unit,
     help, default), so both commands and the data classes cannot drift apart."""
-    from planner.pipeline.requirements import METHODS, PlanSettings, Requirements, field_specs
+    from planner.pipeline.requirements import (
+        METHODS,
+        MODELS,
+        PlanSettings,
+        Requirements,
+        field_specs,
+    )
 
     pl.add_argument(
         "site",
@@ -499,7 +506,36 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
             metavar="M",
             help=f"refuse a site beyond this (default {f.default:g} m): raise it for a real one",
         )
+    pl.add_argument(
+        "--class",
+        dest="accuracy_class",
+        default=None,
+        metavar="CLASS",
+        help="an accuracy class instead of --max-xy-mm/--max-z-mm: DIN 18710-1 OGL0-5 "
+        "(position) / OGH0-5 (height), e.g. OGL4/OGH3, or USIBD LOA20-50 (at 95 %%)",
+    )
     pl.add_argument("--method", choices=METHODS, default=None, help="station optimiser")
+    pl.add_argument(
+        "--model",
+        choices=MODELS,
+        default=None,
+        help="accuracy model: 3d, the full 3-D propagation (default), or paper, eq. 2 and 4 "
+        "of Voroshilov & Karachentsev",
+    )
+    pl.add_argument(
+        "--no-incidence-noise",
+        dest="incidence_noise",
+        action="store_false",
+        default=None,
+        help="3-D model without the ranging noise's growth with incidence",
+    )
+    pl.add_argument(
+        "--no-beam-footprint",
+        dest="beam_footprint",
+        action="store_false",
+        default=None,
+        help="3-D model without the beam footprint in the spacing check",
+    )
     pl.add_argument(
         "--inventory",
         metavar="FILE",

@@ -132,6 +132,23 @@ class StationPlanner:
         self.max_spacing = _field_box(rq["max_spacing_mm"])
         self.per_sample = _field_box(rq["stations_per_sample"])
         self.grid = _field_box(ps["grid_m"])
+        self.accuracy_class = w.Combobox(
+            value="",
+            placeholder="none: the limits above; or e.g. OGL4/OGH3, LOA40",
+            options=[*(f"OGL{i}/OGH{i}" for i in range(2, 6)), "LOA30", "LOA40", "LOA50"],
+            description="accuracy class",
+            style=_STYLE,
+            layout=_FULL,
+            ensure_option=False,
+        )
+        self.class_note = w.HTML("")
+        self.model = w.ToggleButtons(
+            options=[("3-D model", "3d"), ("paper (eq. 2, 4)", "paper")],
+            value=PlanSettings().model,
+            description="accuracy model",
+            style=_STYLE,
+        )
+        self.accuracy_class.observe(lambda _c: self._show_class(), "value")
         self.plan_button = w.Button(description="Plan", button_style="primary")
         self.progress = w.FloatProgress(value=0.0, min=0.0, max=1.0, description="", layout=_FULL)
         self.status = w.HTML("")
@@ -173,6 +190,9 @@ class StationPlanner:
                 self.max_gamma,
                 self.max_spacing,
                 self.per_sample,
+                self.accuracy_class,
+                self.class_note,
+                self.model,
                 self.grid,
                 self.plan_button,
                 self.progress,
@@ -211,10 +231,13 @@ class StationPlanner:
             path = Path(self._tmp.name) / Path(f["name"]).name
             path.write_bytes(bytes(f["content"]))
             site = read_site(path, default_height_m=self.height.value or None, buildings=ids)
+        cls = self.accuracy_class.value.strip() or None
         req, settings = requirements_and_settings(
             {
-                "max_xy_mm": (self.max_x.value, self.max_y.value),
-                "max_z_mm": self.max_z.value,
+                "accuracy_class": cls,
+                "max_xy_mm": None if cls else (self.max_x.value, self.max_y.value),
+                "max_z_mm": None if cls else self.max_z.value,
+                "model": self.model.value,
                 "max_gamma_deg": self.max_gamma.value,
                 "max_spacing_mm": self.max_spacing.value or None,
                 "stations_per_sample": int(self.per_sample.value),
@@ -222,6 +245,29 @@ class StationPlanner:
             }
         )
         return site, Scanner.from_name(self.scanner.value), req, settings
+
+    def _show_class(self) -> None:
+        """The chosen class, what it means and what it sets (the limit boxes follow it)."""
+        from planner.classes import class_limits, parse_class
+
+        text = self.accuracy_class.value.strip()
+        for box in (self.max_x, self.max_y, self.max_z):
+            box.disabled = bool(text)
+        if not text:
+            self.class_note.value = ""
+            return
+        try:
+            classes, limits = parse_class(text), class_limits(text)
+        except PlannerError as exc:
+            self.class_note.value = _error_html(str(exc))
+            return
+        if "max_xy_mm" in limits:
+            self.max_x.value = self.max_y.value = limits["max_xy_mm"]
+        if "max_z_mm" in limits:
+            self.max_z.value = limits["max_z_mm"]
+        self.class_note.value = (
+            "<small>" + "<br>".join(html.escape(c.describe()) for c in classes) + "</small>"
+        )
 
     def _progress(self, fraction: float, message: str) -> None:
         self.progress.value = fraction
@@ -421,7 +467,8 @@ class AccuracyExplorer:
 
     def update(self) -> None:
         from planner.accuracy import max_distance_m
-        from planner.app.figures import plot_height, plot_planimetric
+        from planner.accuracy3d import max_distance_3d_m
+        from planner.app.figures import plot_height, plot_models, plot_planimetric
 
         self.error.value = ""
         try:
@@ -434,14 +481,14 @@ class AccuracyExplorer:
         g, nu, limit = self.gamma.value, self.nu.value, self.limit.value
         lines = []
         for name in ("m_x", "m_y", "m_z"):
-            angle, var = (f"ν = {nu:g}°", "S") if name == "m_z" else (f"γ = {g:g}°", "D")
-            reach = max_distance_m(limit, sc, name, nu if name == "m_z" else g)
-            if np.isnan(reach) or reach < lo:
-                lines.append(f"{name} > {limit:g} mm already at {lo:.0f} m ({angle})")
-            elif reach >= hi:
-                lines.append(f"{name} ≤ {limit:g} mm over the whole range ({angle})")
-            else:
-                lines.append(f"{name} ≤ {limit:g} mm up to {var} = {reach:.1f} m at {angle}")
+            reach_paper = float(max_distance_m(limit, sc, name, nu if name == "m_z" else g))
+            if name != "m_z":  # eq. 2 works in the horizontal distance D = S·cos ν
+                reach_paper /= max(np.cos(np.radians(nu)), 1e-9)
+            reach_3d = float(max_distance_3d_m(limit, sc, name, g, nu, incidence_noise=True))
+            lines.append(
+                f"{name} ≤ {limit:g} mm at γ = {g:g}°, ν = {nu:g}°: "
+                f"paper {_reach_text(reach_paper, lo, hi)}; 3-D {_reach_text(reach_3d, lo, hi)}"
+            )
         self.verdict.value = "<ul>" + "".join(f"<li>{html.escape(t)}</li>" for t in lines) + "</ul>"
         fig, axes = plt.subplots(1, 3, figsize=(13, 3.8), layout="constrained")
         plot_planimetric(
@@ -457,8 +504,12 @@ class AccuracyExplorer:
         for ax in axes:
             ax.axhline(limit, color="crimson", lw=0.8, ls="--")
             ax.set_xlim(lo, hi)
-        fig.suptitle("")
-        _show(self.plots, fig)
+            ax.set_title(ax.get_title(), fontsize=10)
+        fig.suptitle("The paper's tables: eq. 2 (m_x, m_y vs D) and eq. 4 (m_z vs S)", fontsize=11)
+        models = plot_models(sc, g, nu, hi, limit_mm=limit)
+        for ax in models.axes:
+            ax.set_xlim(lo, hi)
+        _show(self.plots, fig, models)
         t1 = planimetric_table(sc)
         t1.columns = [f"{a} γ={b:g}°" for a, b in t1.columns]
         t2 = height_table(sc)
@@ -490,6 +541,14 @@ class AccuracyExplorer:
     def show(self) -> None:
         self.update()
         display(self.widget)
+
+
+def _reach_text(reach: float, lo: float, hi: float) -> str:
+    if np.isnan(reach) or reach < lo:
+        return f"exceeded already at {lo:.0f} m"
+    if reach >= hi:
+        return f"over the whole range to {hi:.0f} m"
+    return f"up to S = {reach:.1f} m"
 
 
 class TargetExplorer:

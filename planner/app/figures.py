@@ -32,9 +32,21 @@ from planner.targets import (
     min_target_size_mm,
 )
 
-__all__ = ["make_figures", "plot_height", "plot_planimetric", "plot_target_sizes"]
+__all__ = [
+    "make_figures",
+    "plot_height",
+    "plot_models",
+    "plot_planimetric",
+    "plot_target_sizes",
+]
 
-_COLOURS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728"]
+_COLOURS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b"]
+#: The paper's angles keep their colours wherever they appear; any other angle is black.
+_ANGLE_COLOURS = {0.0: "#1f77b4", 30.0: "#ff7f0e", 60.0: "#2ca02c", 90.0: "#d62728"}
+
+
+def _angle_colour(angle: float) -> str:
+    return _ANGLE_COLOURS.get(float(angle), "k")
 
 
 def plot_planimetric(
@@ -52,8 +64,8 @@ def plot_planimetric(
     fig = axes[0].figure
     d = np.linspace(0.0, max_distance_m, 241)
     t1 = compare_table1(scanner) if paper else None
-    for i, g in enumerate(gammas_deg):
-        c = _COLOURS[i % len(_COLOURS)]
+    for g in sorted({float(v) for v in gammas_deg}):
+        c = _angle_colour(g)
         m_x, m_y = planimetric_rms(d, g, scanner, station_rms_mm)
         axes[0].plot(d, m_x, color=c, label=f"γ = {g:g}°")
         axes[1].plot(d, m_y, color=c, label=f"γ = {g:g}°")
@@ -91,8 +103,8 @@ def plot_height(
     fig = ax.figure
     s = np.linspace(0.0, max_distance_m, 241)
     t2 = compare_table2(scanner) if paper else None
-    for i, nu in enumerate(nus_deg):
-        c = _COLOURS[i % len(_COLOURS)]
+    for nu in sorted({float(v) for v in nus_deg}):
+        c = _angle_colour(nu)
         ax.plot(s, height_rms(s, nu, scanner), color=c, label=f"ν = {nu:g}°")
         if t2 is not None and nu in (0, 30, 60, 90):
             cells = t2.xs(nu, level=1)
@@ -107,6 +119,49 @@ def plot_height(
     ax.grid(alpha=0.3)
     ax.legend()
     ax.set_title(f"Height RMS, eq. 4 — {scanner.label}")
+    return fig
+
+
+def plot_models(
+    scanner: Scanner,
+    gamma_deg: float = 0.0,
+    nu_deg: float = 60.0,
+    max_distance_m: float = 120.0,
+    *,
+    incidence_noise: bool = True,
+    limit_mm: float | None = None,
+    axes: Sequence[Axes] | None = None,
+) -> Figure:
+    """m_x, m_y and m_z vs the slope distance for one beam geometry (γ, ν), by the paper's
+    eq. 2 and 4 (dashed) and by the full 3-D model (solid; with the incidence term dotted
+    when ``incidence_noise``) — the two models side by side."""
+    from planner.accuracy3d import point_rms_3d
+
+    if axes is None:
+        fig, axes = plt.subplots(1, 3, figsize=(13, 3.8), sharey=True, layout="constrained")
+    fig = axes[0].figure
+    s = np.linspace(0.0, max_distance_m, 241)
+    d = s * np.cos(np.radians(nu_deg))
+    paper_xy = planimetric_rms(d, gamma_deg, scanner, ranging_distance_m=s)
+    paper = (*paper_xy, height_rms(s, nu_deg, scanner))
+    model = point_rms_3d(s, gamma_deg, nu_deg, scanner)
+    noisy = point_rms_3d(s, gamma_deg, nu_deg, scanner, incidence_noise=True)
+    names = ("m_x (along the facade)", "m_y (along the normal)", "m_z (height)")
+    for ax, name, a, b, c in zip(axes, names, paper, model, noisy, strict=True):
+        ax.plot(s, a, "--", color="#7f7f7f", label="paper: eq. 2 / eq. 4")
+        ax.plot(s, b, "-", color="#1f77b4", label="3-D propagation")
+        if incidence_noise:
+            ax.plot(s, c, ":", color="#d62728", lw=1.8, label="3-D + incidence noise")
+        if limit_mm is not None:
+            ax.axhline(limit_mm, color="crimson", lw=0.8, ls="--", label=f"limit {limit_mm:g} mm")
+        ax.set_title(name, fontsize=10)
+        ax.set_xlabel("slope distance S [m]")
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("RMS [mm]")
+    axes[0].legend(fontsize=8)
+    fig.suptitle(
+        f"The two models at γ = {gamma_deg:g}°, ν = {nu_deg:g}° — {scanner.label}", fontsize=11
+    )
     return fig
 
 
@@ -191,6 +246,7 @@ def make_figures(out_dir: str | Path = "figures") -> list[Path]:
         _save(plot_planimetric(paper, paper=True), out / "table1_planimetric_rms.png"),
         _save(plot_height(paper, paper=True), out / "table2_height_rms.png"),
         _save(plot_target_sizes(paper=True), out / "sossa_target_sizes.png"),
+        _save(plot_models(paper, 0.0, 60.0), out / "models_paper_vs_3d.png"),
         _save(plot_plan_map(default_plan), out / "default_site_plan.png"),
         _save(plot_coverage(default_plan, "m_z_mm"), out / "default_site_m_z.png"),
     ]

@@ -115,6 +115,12 @@ class ReportContent:
             ("source of the figures", sc.source),
             ("requirement", req.describe()),
         ]
+        if req.accuracy_class:
+            from planner.classes import parse_class
+
+            for c in parse_class(req.accuracy_class):
+                rows.append((f"class {c.name}", f"{c.describe()} — {c.source}"))
+        rows.append(("accuracy model", st.model_description()))
         for name, spec in field_specs(PlanSettings).items():
             value = getattr(st, name)
             shown = "the scanner's" if value is None else f"{value} {spec.unit}"
@@ -160,9 +166,8 @@ class ReportContent:
         notes = "".join(f"<li>{html.escape(m)}</li>" for m in p.messages) or "<li>none</li>"
         refs = "".join(f"<li>{html.escape(text)}</li>" for text in REFERENCES.values())
         items = [
-            "Accuracy: m_x, m_y by eq. 2 and m_z by eq. 4 (S₀ = S, m_ν0 = m_ν unless the scanner "
-            "has a levelling figure) of Voroshilov &amp; Karachentsev, with the ranging RMS at "
-            "the slope distance; station/registration RMS "
+            f"Accuracy model: {html.escape(p.settings.model_description())}, the ranging RMS at "
+            "the slope distance (docs/science.md of tls-planner); station/registration RMS "
             f"{html.escape(str(p.settings.station_rms_mm))} mm.",
             "Visibility: 2.5-D — footprints extruded to their heights block the beam; flat ground.",
             "Target sizes: Sossa's 2d (flat) / 4d (sphere, cylinder) rule at the farther station, "

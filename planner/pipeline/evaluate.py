@@ -17,12 +17,13 @@ import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
-from functools import cached_property
+from functools import cached_property, partial
 
 import numpy as np
 import scipy.sparse as sp
 
 from planner.accuracy import eq2_variances, eq4_variance
+from planner.accuracy3d import footprint_mm, incidence_ranging_rms_mm, variances_3d
 from planner.pipeline.facades import SIGHT_OFFSET_M, FacadeSet, footprint_edges
 from planner.pipeline.requirements import CHECKS, Check, PlanSettings, Requirements
 from planner.pipeline.visibility import clear_height, edges_in_box, edges_in_front
@@ -50,6 +51,7 @@ METRIC_KEYS = (
     "slope_distance_m",
     "gamma_deg",
     "nu_deg",
+    "incidence_deg",
     "m_x_mm",
     "m_y_mm",
     "m_z_mm",
@@ -176,6 +178,7 @@ class PairMetrics:
         var_z: np.ndarray,
         view: np.ndarray,
         step_mm_at_10m: float,
+        footprint: Callable[[np.ndarray, np.ndarray], np.ndarray] | None = None,
     ) -> None:
         self.distance_m = distance_m
         self.slope_distance_m = slope_distance_m
@@ -184,6 +187,20 @@ class PairMetrics:
         self.var_x, self.var_y, self.var_z = var_x, var_y, var_z
         self.view = view  # sees the sample: in front, line of sight, range, field of view
         self.step_mm_at_10m = step_mm_at_10m
+        self.footprint = footprint  # (S, cos θ) -> footprint [mm], when the model counts it
+
+    @cached_property
+    def cos_incidence(self) -> np.ndarray:
+        """cos θ = cos γ · cos ν, θ the 3-D incidence on the (vertical) facade."""
+        with np.errstate(divide="ignore", invalid="ignore"):
+            cos_nu = np.where(
+                self.slope_distance_m > 0, self.distance_m / self.slope_distance_m, 1.0
+            )
+        return self.cos_gamma * cos_nu
+
+    @cached_property
+    def incidence_deg(self) -> np.ndarray:
+        return np.degrees(np.arccos(np.clip(self.cos_incidence, -1.0, 1.0)))
 
     @cached_property
     def m_x_mm(self) -> np.ndarray:
@@ -207,9 +224,14 @@ class PairMetrics:
 
     @cached_property
     def spacing_mm(self) -> np.ndarray:
-        return facade_spacing_kernel(
+        """The point spacing on the facade; where the model counts the beam's footprint,
+        the larger of the spacing and the footprint (the finest detail resolved)."""
+        spacing = facade_spacing_kernel(
             self.distance_m, self.slope_distance_m, self.cos_gamma, self.step_mm_at_10m
         )
+        if self.footprint is None:
+            return spacing
+        return np.maximum(spacing, self.footprint(self.slope_distance_m, self.cos_incidence))
 
     def value(self, metric: str) -> np.ndarray:
         return getattr(self, metric)
@@ -261,12 +283,33 @@ def facade_pairs(
         & (sin_nu >= lo - 1e-12)
         & (sin_nu <= up + 1e-12)
     )
+    st = ctx.settings
     m_s = sc.range_rms_at(s)
-    m_xc, m_yc = ctx.settings.station_rms_pair
-    var_x, var_y = eq2_variances(
-        d, cos_g * cos_g, m_s, sc.angle_rms_arcsec, (m_xc * m_xc, m_yc * m_yc)
-    )
-    var_z = eq4_variance(s, sin_nu * sin_nu, m_s, sc.tilt_rms_arcsec, s, sc.initial_tilt_rms_arcsec)
+    m_xc, m_yc = st.station_rms_pair
+    station_var = (m_xc * m_xc, m_yc * m_yc)
+    footprint = None
+    if st.model == "paper":  # eq. 2 and 4 of Voroshilov & Karachentsev
+        var_x, var_y = eq2_variances(d, cos_g * cos_g, m_s, sc.angle_rms_arcsec, station_var)
+        var_z = eq4_variance(
+            s, sin_nu * sin_nu, m_s, sc.tilt_rms_arcsec, s, sc.initial_tilt_rms_arcsec
+        )
+    else:  # the full 3-D propagation, with its optional terms
+        if st.incidence_noise:
+            with np.errstate(divide="ignore", invalid="ignore"):
+                cos_theta = cos_g * np.where(s > 0, d / s, 1.0)
+            m_s = incidence_ranging_rms_mm(m_s, cos_theta)
+        var_x, var_y, var_z = variances_3d(
+            s,
+            cos_g,
+            sin_nu,
+            m_s,
+            sc.angle_rms_arcsec,
+            sc.tilt_rms_arcsec,
+            sc.initial_tilt_rms_arcsec,
+            station_var,
+        )
+        if st.beam_footprint and (sc.beam_divergence_mrad or sc.beam_exit_mm):
+            footprint = partial(footprint_mm, scanner=sc)
     return PairMetrics(
         distance_m=d,
         slope_distance_m=s,
@@ -277,6 +320,7 @@ def facade_pairs(
         var_z=var_z,
         view=view,
         step_mm_at_10m=ctx.step_mm_at_10m,
+        footprint=footprint,
     )
 
 

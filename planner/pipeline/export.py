@@ -55,10 +55,12 @@ COVERAGE_COLUMNS = [
     "slope_distance_m",
     "gamma_deg",
     "nu_deg",
+    "incidence_deg",
     "m_x_mm",
     "m_y_mm",
     "m_z_mm",
     "meets",
+    "model",
 ]
 
 
@@ -98,8 +100,13 @@ def targets_csv(p: Plan) -> str:
     return to_csv(t[TARGET_COLUMNS])
 
 
+#: Columns written only when the plan has them (an accuracy class was asked for).
+OPTIONAL_COVERAGE_COLUMNS = ["class_achieved"]
+
+
 def coverage_csv(p: Plan) -> str:
-    return to_csv(p.scanned[COVERAGE_COLUMNS])
+    extra = [c for c in OPTIONAL_COVERAGE_COLUMNS if c in p.coverage.columns]
+    return to_csv(p.scanned[COVERAGE_COLUMNS + extra])
 
 
 def facades_csv(p: Plan) -> str:
@@ -218,7 +225,11 @@ def geojson(p: Plan) -> dict:
             sample_id=r.sample_id,
             reason=r.reason,
         )
-    out: dict[str, Any] = {"type": "FeatureCollection", "name": f"tls-planner plan: {p.site.name}"}
+    out: dict[str, Any] = {
+        "type": "FeatureCollection",
+        "name": f"tls-planner plan: {p.site.name}",
+        "accuracy_model": p.settings.model_description(),
+    }
     if p.site.crs:
         out["crs"] = {"type": "name", "properties": {"name": p.site.crs}}
     out["features"] = feats

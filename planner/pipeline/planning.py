@@ -19,6 +19,7 @@ import numpy as np
 import pandas as pd
 
 from planner.accuracy import reach_bound_m
+from planner.accuracy3d import reach_bound_3d_m
 from planner.errors import InputError
 from planner.pipeline.candidates import candidate_grid
 from planner.pipeline.evaluate import (
@@ -58,12 +59,21 @@ PAIRS_PER_S = 20e6
 MIN_SOLVER_S = 2.0
 
 
-def reach_m(scanner: Scanner, req: Requirements, station_rms_mm: tuple[float, float]) -> float:
+def reach_m(
+    scanner: Scanner,
+    req: Requirements,
+    station_rms_mm: tuple[float, float],
+    model: str = "3d",
+) -> float:
     """Search radius for candidate stations [m]: the distance beyond which no station can
-    meet the requirements (:func:`planner.accuracy.reach_bound_m`), within the scanner's and
-    the requirement's range, and never below :data:`MIN_SEARCH_RADIUS_M` — so that even an
-    infeasible requirement gets candidates close by and the plan can say what is achievable."""
-    bound = reach_bound_m(scanner, req.max_x_mm, req.max_y_mm, req.max_z_mm, station_rms_mm)
+    meet the requirements under ``model`` (:func:`planner.accuracy.reach_bound_m`,
+    :func:`planner.accuracy3d.reach_bound_3d_m`), within the scanner's and the requirement's
+    range, and never below :data:`MIN_SEARCH_RADIUS_M` — so that even an infeasible
+    requirement gets candidates close by and the plan can say what is achievable."""
+    if model == "paper":
+        bound = reach_bound_m(scanner, req.max_x_mm, req.max_y_mm, req.max_z_mm, station_rms_mm)
+    else:
+        bound = reach_bound_3d_m(scanner, req.max_x_mm, req.max_y_mm, station_rms_mm)
     limit = min(scanner.max_range_m, req.max_range_m or np.inf)
     return float(min(limit, max(bound, MIN_SEARCH_RADIUS_M)))
 
@@ -113,7 +123,7 @@ def plan(
             "raise the limit (--max-samples)"
         )
     fac = build_facades(site, st.sample_spacing_m, st.sample_height_step_m)
-    reach = reach_m(sc, req, st.station_rms_pair)
+    reach = reach_m(sc, req, st.station_rms_pair, st.model)
     cand = candidate_grid(site, fac, reach, st.grid_m, st.clearance_m)
     ctx = Context.build(site, fac, sc, req, st, reach)
     pairs = ctx.pair_count(cand)
@@ -199,6 +209,7 @@ def plan(
         "samples": int((~fac.party_wall).sum()),
         "pairs": pairs,
     }
+    messages.insert(0, f"Accuracy model: {st.model_description()}.")
     timings["total"] = time.perf_counter() - t0
     say(1.0, "plan ready")
     return Plan(
@@ -282,6 +293,14 @@ def _coverage(
         f"not evaluated: the time limit of {ctx.settings.time_limit_s:g} s ran out"
     )
     reason[fac.party_wall] = "party wall (against a neighbour): not scanned"
+    extra = {}
+    if ctx.req.accuracy_class:  # the class each sample achieves, beside pass/fail
+        from planner.classes import achieved_class, parse_class
+
+        family = parse_class(ctx.req.accuracy_class)[0].family
+        extra["class_achieved"] = achieved_class(
+            picked["m_x_mm"], picked["m_y_mm"], picked["m_z_mm"], family
+        )
     return pd.DataFrame(
         {
             "building_id": fac.building_id[fac.facade],
@@ -293,10 +312,12 @@ def _coverage(
             "station_id": station,
             **{k: picked[k] for k in METRIC_KEYS if k != "spacing_mm"},
             "meets": meets,
+            "model": ctx.settings.model,
             "spacing_mm": picked["spacing_mm"],
             "stations_meeting": n_meeting,
             "party_wall": fac.party_wall,
             "reason": reason,
+            **extra,
         }
     )
 

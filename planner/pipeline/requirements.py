@@ -147,12 +147,18 @@ class Requirements:
     max_gamma_deg : float, default 75
         Largest deviation γ of the beam from the facade normal, measured in plan [deg];
         grazing beams give sparse, noisy points. At most 89.
+    max_incidence_deg : float, optional
+        Largest 3-D incidence θ, the angle between the beam and the facade normal in space
+        (cos θ = cos γ · cos ν, so θ ≥ γ) [deg]. At most 89.
     max_spacing_mm : float, optional
         Largest point spacing on the facade [mm] at the scan step in use.
     min_range_m, max_range_m : float, optional
         Slope-distance window [m]; by default the scanner's.
     stations_per_sample : int, default 1
         How many stations must each meet every requirement at a sample.
+    accuracy_class : str, optional
+        A contract's accuracy class (``OGL4/OGH3``, ``LOA40``; :mod:`planner.classes`),
+        which sets ``max_xy_mm`` and/or ``max_z_mm``.
     """
 
     max_xy_mm: float | tuple[float, float] = _spec(
@@ -182,6 +188,15 @@ class Requirements:
         optional=True,
         help="shortest slope distance station to point (default: the scanner's)",
     )
+    max_incidence_deg: float | None = _spec(
+        None,
+        "deg",
+        "largest incidence θ",
+        hi=89.0,
+        optional=True,
+        step=5.0,
+        help="largest 3-D angle between the beam and the facade normal (cos θ = cos γ·cos ν)",
+    )
     max_range_m: float | None = _spec(
         None,
         "m",
@@ -199,8 +214,11 @@ class Requirements:
         open_lo=False,
         help="how many stations must each meet every requirement at a sample",
     )
+    accuracy_class: str | None = None
 
     def __post_init__(self) -> None:
+        if self.accuracy_class is not None:
+            self._apply_class()
         xy = self.max_xy_mm
         pair = tuple(xy) if isinstance(xy, tuple | list) else (xy, xy)
         if len(pair) != 2:
@@ -216,6 +234,22 @@ class Requirements:
         lo, hi = self.min_range_m, self.max_range_m
         if lo is not None and hi is not None and lo >= hi:
             raise InputError(f"min_range_m ({lo:g} m) must be smaller than max_range_m ({hi:g} m)")
+
+    def _apply_class(self) -> None:
+        """Set the limits the accuracy class implies; a different explicit limit for the
+        same quantity is a conflict (give one or the other)."""
+        from planner.classes import class_limits, parse_class
+
+        names = "/".join(c.name for c in parse_class(self.accuracy_class))
+        object.__setattr__(self, "accuracy_class", names)
+        for key, value in class_limits(names).items():
+            given, default = getattr(self, key), field_specs(Requirements)[key].default
+            if given != default and given != value:
+                raise InputError(
+                    f"{key}={given!r} conflicts with the accuracy class {names} ({value:g} mm); "
+                    "give the class or the limit, not both"
+                )
+            object.__setattr__(self, key, value)
 
     @property
     def max_x_mm(self) -> float:
@@ -235,7 +269,8 @@ class Requirements:
         """The requirement in one line: ``m_x <= 5 mm, m_y <= 5 mm, …``."""
         text = ", ".join(c.text(limit) for c, limit in self.active_checks())
         k = self.stations_per_sample
-        return text + (f", {k} stations per sample" if k > 1 else "")
+        text += f", {k} stations per sample" if k > 1 else ""
+        return f"class {self.accuracy_class}: {text}" if self.accuracy_class else text
 
 
 # -- the table of checks ------------------------------------------------------------------
@@ -303,6 +338,7 @@ CHECKS: tuple[Check, ...] = (
     Check("m_y", "m_y", "mm", "m_y_mm", "max_y_mm", "max"),
     Check("m_z", "m_z", "mm", "m_z_mm", "max_z_mm", "max"),
     Check("gamma", "γ", "°", "gamma_deg", "max_gamma_deg", "max"),
+    Check("incidence", "θ", "°", "incidence_deg", "max_incidence_deg", "max"),
     Check("spacing", "point spacing", "mm", "spacing_mm", "max_spacing_mm", "max"),
     Check("min_range", "distance", "m", "slope_distance_m", "min_range_m", "min"),
     Check("max_range", "distance", "m", "slope_distance_m", "max_range_m", "max"),
@@ -311,6 +347,8 @@ CHECKS: tuple[Check, ...] = (
 
 # -- settings -----------------------------------------------------------------------------
 METHODS = ("auto", "milp", "greedy")
+#: The accuracy models: eq. 2 and 4 of Voroshilov & Karachentsev, or the full 3-D propagation.
+MODELS = ("3d", "paper")
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -349,6 +387,13 @@ class PlanSettings:
         ``auto``: the integer program, greedy set cover when it finds nothing in time;
         ``milp``: the integer program only (an error if it finds no plan in time);
         ``greedy``: greedy set cover only.
+    model : "3d" or "paper", default "3d"
+        ``3d``: the full 3-D propagation (:mod:`planner.accuracy3d`); ``paper``: eq. 2 and
+        4 of Voroshilov & Karachentsev as printed. ``docs/science.md`` says why 3-D is the
+        default.
+    incidence_noise, beam_footprint : bool, default True
+        The 3-D model's optional terms: ranging noise growing with the 3-D incidence, and
+        the beam's footprint bounding the detail a scan resolves (in the spacing check).
     """
 
     grid_m: float = _spec(
@@ -430,6 +475,9 @@ class PlanSettings:
         "20 million a second)",
     )
     method: str = "auto"
+    model: str = "3d"
+    incidence_noise: bool = True
+    beam_footprint: bool = True
 
     def __post_init__(self) -> None:
         station_rms_pair(self.station_rms_mm)
@@ -437,6 +485,25 @@ class PlanSettings:
         object.__setattr__(self, "inventory", as_inventory(self.inventory))
         if self.method not in METHODS:
             raise InputError(f"method must be one of {', '.join(METHODS)}; got {self.method!r}")
+        if self.model not in MODELS:
+            raise InputError(f"model must be one of {', '.join(MODELS)}; got {self.model!r}")
+        for name in ("incidence_noise", "beam_footprint"):
+            if not isinstance(getattr(self, name), bool):
+                raise InputError(f"{name} must be True or False; got {getattr(self, name)!r}")
+
+    def model_description(self) -> str:
+        """Which model makes the accuracy figures, in words (every output states it)."""
+        if self.model == "paper":
+            return "eq. 2 and 4 of Voroshilov & Karachentsev (the paper's model)"
+        terms = [
+            t
+            for t, on in (
+                ("incidence-dependent ranging", self.incidence_noise),
+                ("beam footprint", self.beam_footprint),
+            )
+            if on
+        ]
+        return "full 3-D propagation" + (f" with {' and '.join(terms)}" if terms else "")
 
     @property
     def station_rms_pair(self) -> tuple[float, float]:
