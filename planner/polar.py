@@ -19,6 +19,7 @@ __all__ = [
     "deviation_angle_deg",
     "incidence_deg",
     "polar_to_xyz",
+    "separated_directions",
     "sight_geometry",
     "tilt_deg",
 ]
@@ -134,3 +135,26 @@ def sight_geometry(
     return SightGeometry(
         d, s, deviation_angle_deg(st[..., :2], pt[..., :2], normal_xy), tilt_deg(st, pt)
     )
+
+
+def separated_directions(azimuths_deg: ArrayLike, min_angle_deg: float) -> int:
+    """The most directions among ``azimuths_deg`` that are pairwise at least
+    ``min_angle_deg`` apart on the circle: how many truly different views of a point its
+    stations give (two stations side by side are one view). Greedy from each start, which
+    is exact for points on a circle.
+
+    Examples
+    --------
+    >>> separated_directions([0, 5, 90], 30), separated_directions([0, 10, 350], 30)
+    (2, 1)
+    """
+    a = np.sort(np.mod(np.asarray(azimuths_deg, dtype=float).ravel(), 360.0))
+    best = min(len(a), 1)
+    for start in range(len(a)):
+        count, last = 1, a[start]
+        for step in range(1, len(a)):
+            v = a[(start + step) % len(a)] + (360.0 if start + step >= len(a) else 0.0)
+            if v - last >= min_angle_deg and (a[start] + 360.0) - v >= min_angle_deg:
+                count, last = count + 1, v
+        best = max(best, count)
+    return best

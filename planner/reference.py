@@ -56,6 +56,16 @@ REFERENCES: dict[str, str] = {
         'terrestrial 3D laser scanner", Chinese Journal of Sensors and Actuators 33(11), 2020, '
         "doi:10.3969/j.issn.1004-1699.2020.11.014"
     ),
+    "checkerboard-scene": (
+        'Laserscanning Europe, "Principle of detection of checkerboard targets in FARO Scene": '
+        "an incidence of at most 45°, at least 4 scan points on each quadrant; "
+        "https://www.laserscanning-europe.com/en/principle-detection-checkerboard-targets-faro-scene"
+    ),
+    "ghilani": (
+        "C. D. Ghilani, Adjustment Computations: Spatial Data Analysis, 6th ed., Wiley, 2017: "
+        "least squares, the propagation of covariances, three-dimensional conformal "
+        "(rigid-body) coordinate transformations"
+    ),
     "deformation-tls": (
         '"Experimental study of the deformation accuracy of terrestrial 3-D laser scanners" '
         "(in Chinese: «地面三维激光扫描仪变形精度试验研究»): Leica ScanStation2 modelled surface "

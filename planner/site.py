@@ -17,7 +17,15 @@ from shapely.geometry.base import BaseGeometry
 
 from planner.errors import InputError
 
-__all__ = ["Area", "Building", "Obstacle", "Site", "SiteLimits", "repair_geometry"]
+__all__ = [
+    "Area",
+    "Building",
+    "ControlPoint",
+    "Obstacle",
+    "Site",
+    "SiteLimits",
+    "repair_geometry",
+]
 
 Polygonal = Polygon | MultiPolygon
 
@@ -101,6 +109,45 @@ class Area:
 
     id: str
     geometry: Polygonal
+
+
+#: A control point farther than this from every building is not on the site [m].
+MAX_CONTROL_DISTANCE_M = 1000.0
+#: The RMS of a control point's coordinates when the file does not give one [mm].
+DEFAULT_CONTROL_RMS_MM = 2.0
+
+
+@dataclass(frozen=True)
+class ControlPoint:
+    """A target with known coordinates (a site network's point): x, y, z [m] in the site's
+    CRS and height system, and the RMS of those coordinates [mm] per axis. Stations that see
+    three of them are registered to the site network (georeferencing)."""
+
+    id: str
+    xyz: tuple[float, float, float]
+    rms_mm: float = DEFAULT_CONTROL_RMS_MM
+
+    def __post_init__(self) -> None:
+        try:
+            xyz = tuple(float(v) for v in self.xyz)
+            rms = float(self.rms_mm)
+        except (TypeError, ValueError):
+            raise InputError(
+                f"control point {self.id!r} needs three coordinates and an RMS [m, mm]; got "
+                f"{self.xyz!r}, {self.rms_mm!r}"
+            ) from None
+        if len(xyz) != 3 or not all(math.isfinite(v) for v in xyz):
+            raise InputError(
+                f"control point {self.id!r} needs finite x, y, z [m] (the height too); "
+                f"got {self.xyz!r}"
+            )
+        if not math.isfinite(rms) or rms <= 0 or rms > 100:
+            raise InputError(
+                f"control point {self.id!r}: rms_mm must be > 0 and <= 100 [mm]; "
+                f"got {self.rms_mm!r}"
+            )
+        object.__setattr__(self, "xyz", xyz)
+        object.__setattr__(self, "rms_mm", rms)
 
 
 def repair_geometry(geom: BaseGeometry) -> BaseGeometry:
@@ -245,9 +292,15 @@ class Site:
     name: str = "site"
     warnings: list[str] = field(default_factory=list)
     limits: SiteLimits = field(default_factory=SiteLimits)
+    control: list[ControlPoint] = field(default_factory=list)
 
     def __post_init__(self) -> None:
-        for name, kind in (("buildings", Building), ("obstacles", Obstacle), ("no_go", Area)):
+        for name, kind in (
+            ("buildings", Building),
+            ("obstacles", Obstacle),
+            ("no_go", Area),
+            ("control", ControlPoint),
+        ):
             items = getattr(self, name)
             if isinstance(items, str | bytes) or not hasattr(items, "__iter__"):
                 raise InputError(
@@ -260,6 +313,10 @@ class Site:
                     f"{type(bad[0]).__name__} {bad[0]!r}"[:200]
                 )
         self.buildings = list(self.buildings)
+        self.control = list(self.control)
+        ids = [c.id for c in self.control]
+        if len(set(ids)) != len(ids):
+            raise InputError("control point ids must be unique; one appears twice")
         self.obstacles = list(self.obstacles)
         self.no_go = list(self.no_go)
         seen: set[str] = set()
@@ -301,6 +358,29 @@ class Site:
                 "'building', or choose buildings to plan (--buildings ID,ID)"
             )
         self._check_overlaps()
+        self._check_control()
+
+    def _check_control(self) -> None:
+        """Control points must be on the site: not inside a building, not kilometres away
+        (most often another CRS or swapped x, y)."""
+        if not self.control:
+            return
+        foot = shapely.union_all([b.footprint for b in self.buildings])
+        for c in self.control:
+            p = shapely.Point(c.xyz[:2])
+            d = float(foot.distance(p))
+            if d > MAX_CONTROL_DISTANCE_M:
+                raise InputError(
+                    f"control point {c.id!r} is {d:,.0f} m from the nearest building; control "
+                    "points must be given in the site's CRS (is it another CRS, or are x and "
+                    "y swapped?)"
+                )
+            inside = [b.id for b in self.buildings if b.footprint.buffer(-0.05).contains(p)]
+            if inside:
+                raise InputError(
+                    f"control point {c.id!r} is inside building {inside[0]!r}; a scanner "
+                    "must see it: give the point where it stands on open ground or on a wall"
+                )
 
     def _check_overlaps(self) -> None:
         foot = [b.footprint for b in self.buildings]

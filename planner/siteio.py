@@ -35,11 +35,20 @@ from shapely.geometry import MultiPolygon, Polygon, shape
 from shapely.geometry.base import BaseGeometry
 
 from planner.errors import InputError
-from planner.site import Area, Building, Obstacle, Site, SiteLimits, repair_geometry
+from planner.site import (
+    DEFAULT_CONTROL_RMS_MM,
+    Area,
+    Building,
+    ControlPoint,
+    Obstacle,
+    Site,
+    SiteLimits,
+    repair_geometry,
+)
 
-__all__ = ["default_site", "read_site", "site_from_features", "site_from_geojson"]
+__all__ = ["default_site", "read_control", "read_site", "site_from_features", "site_from_geojson"]
 
-ROLES = ("building", "obstacle", "no-go", "boundary")
+ROLES = ("building", "obstacle", "no-go", "boundary", "control")
 _ROLE_ALIASES = {"nogo": "no-go", "no_go": "no-go", "nogo-area": "no-go", "obstruction": "obstacle"}
 SUFFIXES = {".geojson": "geojson", ".json": "geojson", ".wkt": "wkt", ".txt": "wkt", ".csv": "csv"}
 
@@ -86,6 +95,7 @@ def site_from_features(
     obstacles: list[Obstacle] = []
     no_go: list[Area] = []
     boundaries: list[BaseGeometry] = []
+    control: list[ControlPoint] = []
     for f in features:
         role = str(f.props.get("role", "building")).strip().lower()
         role = _ROLE_ALIASES.get(role, role)
@@ -94,6 +104,9 @@ def site_from_features(
         geom = f.geometry
         if geom is None:
             raise InputError(f"{f.who()} has no geometry; remove it or draw its outline")
+        if role == "control":
+            control.append(_control_point(f))
+            continue
         geom = shapely.force_2d(geom)
         if repair:
             repaired = repair_geometry(geom)
@@ -144,8 +157,55 @@ def site_from_features(
         name=name,
         warnings=warnings,
         limits=limits or SiteLimits(),
+        control=control,
     )
     return site.select(buildings)
+
+
+def _control_point(f: Feature) -> ControlPoint:
+    """A control point from a Point feature: z from its third coordinate or a ``z``
+    property, ``rms_mm`` from its properties."""
+    geom = f.geometry
+    if geom.geom_type != "Point":
+        raise InputError(f"control {f.who()} is a {geom.geom_type}; a control point is a Point")
+    z = geom.z if geom.has_z else f.props.get("z", f.props.get("height"))
+    if z is None:
+        raise InputError(
+            f"control {f.who()} has no height: give the point three coordinates or a 'z' "
+            "property [m]"
+        )
+    rms = f.props.get("rms_mm", DEFAULT_CONTROL_RMS_MM)
+    return ControlPoint(f.ident, (geom.x, geom.y, z), rms)
+
+
+def read_control(path: str | Path) -> list[ControlPoint]:
+    """Control points from a CSV file: ``id, x, y, z`` [m] and optionally ``rms_mm``."""
+    p = Path(path)
+    if not p.is_file():
+        raise InputError(f"control point file {str(p)!r} does not exist")
+    with _reading(p.name, "csv"):
+        rows = list(csv.DictReader(io.StringIO(p.read_text(encoding="utf-8-sig"))))
+        if not rows:
+            raise InputError(f"{p.name} has no control points (header id,x,y,z[,rms_mm])")
+        out = []
+        for lineno, row in enumerate(rows, start=2):
+            low = {str(k).strip().lower(): v for k, v in row.items() if k is not None}
+            missing = [c for c in ("id", "x", "y", "z") if not (low.get(c) or "").strip()]
+            if missing:
+                raise InputError(f"{p.name} line {lineno}: missing {', '.join(missing)}")
+            rms = (
+                float(low["rms_mm"])
+                if (low.get("rms_mm") or "").strip()
+                else DEFAULT_CONTROL_RMS_MM
+            )
+            out.append(
+                ControlPoint(
+                    low["id"].strip(),
+                    (float(low["x"]), float(low["y"]), float(low["z"])),
+                    rms,
+                )
+            )
+        return out
 
 
 #: CRS labels meaning longitude/latitude degrees.

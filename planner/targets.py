@@ -39,6 +39,7 @@ __all__ = [
     "min_target_size_mm",
     "parse_inventory",
     "recommend_targets",
+    "size_rules",
     "target_size_kernel",
 ]
 
@@ -120,6 +121,56 @@ def max_target_distance_m(
     size = check_range(as_float_array(size_mm, "size_mm"), "size_mm", "mm", lo=0.0)
     dist = size * 10.0 * _cos_incidence(t, incidence_deg) / (SPACING_FACTOR[t] * step)
     return like_input(np.asarray(dist, dtype=float), size_mm)
+
+
+#: Practice beside Sossa's minimum (the planner's defaults; PlanSettings can change them):
+#: a printed checkerboard's centre is found from its four quadrants, each of which must
+#: hold this many points …
+MIN_POINTS_PER_QUADRANT = 4
+#: … and it is not used beyond this incidence (FARO's guidance for targets in SCENE) [deg];
+MAX_CHECKERBOARD_INCIDENCE_DEG = 45.0
+#: a sphere's centre fit needs this many points on the visible cap.
+MIN_POINTS_ON_SPHERE = 20
+
+
+def size_rules(
+    target_type: str,
+    spacing_mm: np.ndarray,
+    cos_incidence: np.ndarray,
+    *,
+    points_per_quadrant: float = MIN_POINTS_PER_QUADRANT,
+    points_on_sphere: float = MIN_POINTS_ON_SPHERE,
+) -> tuple[np.ndarray, np.ndarray]:
+    """The minimum size [mm] a target needs and the rule that sets it (array kernel).
+
+    The larger of Sossa's 2d / 4d (:func:`target_size_kernel`) and practice: a flat
+    (checkerboard) target of side a seen at incidence θ puts (a/2)²·cos θ / d² points in a
+    quadrant, so it needs ``a >= 2d·√(q / cos θ)``; a sphere of diameter D shows π·D²/4 / d²
+    points, so it needs ``D >= 2d·√(p / π)``. Cylinders keep Sossa's rule. The rule is
+    returned as text (``Sossa 2d``, ``4 points per quadrant``, ``20 points on the sphere``).
+
+    Examples
+    --------
+    >>> need, rule = size_rules("flat", np.array([10.0, 10.0]), np.array([1.0, 0.1]))
+    >>> need.round(1).tolist(), rule.tolist()
+    ([40.0, 200.0], ['4 points per quadrant', 'Sossa 2d'])
+    """
+    t = _check_type(target_type)
+    d = np.asarray(spacing_mm, dtype=float)
+    cos_t = np.asarray(cos_incidence, dtype=float) * np.ones_like(d)
+    sossa = target_size_kernel(SPACING_FACTOR[t], d, cos_t)
+    sossa_rule = f"Sossa {SPACING_FACTOR[t]}d"
+    if t == "flat":
+        with np.errstate(divide="ignore", invalid="ignore"):
+            practice = 2.0 * d * np.sqrt(points_per_quadrant / np.where(cos_t > 0, cos_t, 0.0))
+        practice_rule = f"{points_per_quadrant:g} points per quadrant"
+    elif t == "sphere":
+        practice = 2.0 * d * np.sqrt(points_on_sphere / np.pi)
+        practice_rule = f"{points_on_sphere:g} points on the sphere"
+    else:
+        return sossa, np.full(d.shape, sossa_rule, dtype=object)
+    rule = np.where(practice > sossa, practice_rule, sossa_rule).astype(object)
+    return np.maximum(sossa, practice), rule
 
 
 @dataclass(frozen=True)

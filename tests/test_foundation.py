@@ -129,6 +129,7 @@ def test_every_requirement_limit_has_exactly_one_check():
     req_fields = {f.name for f in fields(Requirements)} - {
         "max_xy_mm",
         "stations_per_sample",
+        "min_view_angle_deg",  # how redundant stations stand, not a limit on a sample
         "accuracy_class",
     }
     assert req_fields | {"max_x_mm", "max_y_mm"} == limits
@@ -280,7 +281,11 @@ def test_report_describes_the_plan_that_plan_makes(tmp_path, monkeypatch):
     stations = pd.read_csv("plan/stations.csv")
     parser = _Cells()
     parser.feed(Path("report.html").read_text())
-    reported = {r[0]: r for r in parser.rows if r and r[0].startswith("S") and r[0][1:].isdigit()}
+    reported = {  # the station table's rows: id, x, y, height, purpose, samples met
+        r[0]: r
+        for r in parser.rows
+        if len(r) == 6 and r[0].startswith("S") and r[0][1:].isdigit() and r[4] in ("cover", "link")
+    }
     assert sorted(reported) == sorted(stations["station_id"])
     for s in stations.itertuples():
         row = reported[s.station_id]

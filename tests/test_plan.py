@@ -3,6 +3,8 @@ optimiser on a case solved by hand, registration, and the consistency of every o
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -15,6 +17,7 @@ from planner import (
     height_rms,
     min_target_size_mm,
     planimetric_rms,
+    point_spacing_mm,
     sight_geometry,
 )
 from planner.accuracy3d import point_rms_3d
@@ -25,7 +28,7 @@ from planner.pipeline.planning import plan, reach_m
 from planner.pipeline.requirements import PlanSettings, Requirements
 from planner.pipeline.visibility import clear_height
 from planner.polar import incidence_deg
-from planner.site import Building, Obstacle, Site
+from planner.site import Building, ControlPoint, Obstacle, Site
 
 PAPER = Scanner.from_name("leica-4mm-60urad")
 LOOSE = Requirements(max_xy_mm=20.0, max_z_mm=20.0)
@@ -91,23 +94,52 @@ def test_occlusion_by_an_obstacle_tall_and_low():
     assert not m["view"][behind, 1].any()
 
 
-def test_courtyard_facades_are_scanned_from_inside_the_courtyard():
+COURTYARD_SETTINGS = PlanSettings(grid_m=2.0, sample_spacing_m=3.0, sample_height_step_m=3.0)
+
+
+def test_a_closed_courtyard_is_scanned_from_inside_but_cannot_be_tied_without_control():
     site = courtyard_site(court=20.0, height=9.0)
-    p = plan(
-        site,
-        PAPER,
-        Requirements(max_xy_mm=6, max_z_mm=6),
-        PlanSettings(grid_m=2.0, sample_spacing_m=3.0, sample_height_step_m=3.0),
-    )
-    assert p.meets_all
+    p = plan(site, PAPER, Requirements(max_xy_mm=6, max_z_mm=6), COURTYARD_SETTINGS)
     hole = shapely.Polygon(site.buildings[0].footprint.interiors[0])
     inside = shapely.contains_xy(hole, p.stations["x"], p.stations["y"])
     assert inside.sum() >= 1 and (~inside).sum() >= 1
     court = p.facades[p.facades["courtyard"]]
-    assert len(court) == 4 and (court["unmet"] == 0).all()
-    assert all(court["stations"].str.len() > 0)
-    # a closed courtyard cannot be tied to the outside by common targets: said so
-    assert any("groups that no common targets can tie" in m for m in p.messages)
+    assert len(court) == 4 and all(court["stations"].str.len() > 0)
+    # no target is seen from inside and outside: the courtyard's samples are not met, and
+    # the plan says why and what to do
+    assert not p.meets_all
+    inner = p.coverage[p.coverage["facade_id"].isin(court["facade_id"])]
+    assert (~inner["meets"]).all()
+    assert inner["reason"].str.contains("cannot be tied to the registration network").all()
+    assert inner["reg_m_x_mm"].isna().all()
+    assert any("cannot be tied" in m and "--control" in m for m in p.messages)
+
+
+def test_control_points_tie_a_closed_courtyard_to_the_site_network():
+    court = courtyard_site(court=20.0, height=9.0)
+    # four control points in the courtyard (brought in by a traverse), three outside
+    marks = [
+        (11, 11, 1.0),
+        (29, 12, 3.0),
+        (28, 29, 2.0),
+        (12, 28, 4.0),
+        (-8, -8, 1),
+        (48, -6, 2),
+        (-6, 48, 3),
+    ]
+    control = [
+        ControlPoint(f"C{i}", (E0 + x, N0 + y, z), 1.0) for i, (x, y, z) in enumerate(marks, 1)
+    ]
+    site = replace(court, control=control)
+    p = plan(site, PAPER, Requirements(max_xy_mm=6, max_z_mm=6), COURTYARD_SETTINGS)
+    assert p.meets_all
+    assert p.links["station_a"].eq("control").any()
+    assert any("tied to the site network through" in m for m in p.messages)
+    cov = p.coverage[~p.coverage["party_wall"]]
+    # the control points' own 1 mm RMS reaches every sample: none is registered better
+    assert (cov[["reg_m_x_mm", "reg_m_y_mm", "reg_m_z_mm"]].max(axis=1) > 0.5).all()
+    used = p.targets[p.targets["type"] == "control"]
+    assert set(used["target_id"]) <= {c.id for c in control} and len(used) >= 3
 
 
 def test_too_small_courtyard_is_reported_unmet_with_the_reason():
@@ -284,8 +316,11 @@ def test_the_paper_model_reproduces_eq2_and_eq4_row_by_row():
 
 
 def test_target_sizes_recomputed_with_the_science_layer(rich_plan):
-    """Every target's minimum size is Sossa's 2d / 4d rule (2d / cos θ for a flat target on
-    its wall) at the farthest of its stations, recomputed from the coordinates."""
+    """Every target's minimum size is the larger of Sossa's 2d / 4d rule (2d / cos θ for a
+    flat target on its wall) and practice — 4 points in each checkerboard quadrant
+    ((a/2)²·cos θ / d² >= 4), 20 points on a sphere's visible disc (π·D²/4 / d² >= 20) — at
+    the most demanding of its stations, recomputed from the coordinates; each target names
+    the rule; no checkerboard is used beyond 45° incidence."""
     p = rich_plan
     st = p.stations.set_index("station_id")
     assert len(p.targets) >= 3
@@ -298,8 +333,17 @@ def test_target_sizes_recomputed_with_the_science_layer(rich_plan):
             if r.type == "flat":
                 nx, ny = np.sin(np.radians(r.facing_deg)), np.cos(np.radians(r.facing_deg))
                 theta = float(np.degrees(np.arccos((dx * nx + dy * ny) / s)))
-            need.append(min_target_size_mm(s, r.type, scanner=p.scanner, incidence_deg=theta))
-        assert r.min_size_mm == pytest.approx(max(need), abs=1e-6)  # mm
+                assert theta <= 45.0 + 1e-9
+            sossa = min_target_size_mm(s, r.type, scanner=p.scanner, incidence_deg=theta)
+            d = float(point_spacing_mm(s, scanner=p.scanner))
+            if r.type == "flat":
+                practice = 2 * d * np.sqrt(4 / np.cos(np.radians(theta)))
+            else:
+                practice = 2 * d * np.sqrt(20 / np.pi)
+            need.append((max(sossa, practice), "points" if practice > sossa else "Sossa"))
+        size, rule = max(need)
+        assert r.min_size_mm == pytest.approx(size, abs=1e-6)  # mm
+        assert rule in r.sized_by
         assert r.size_mm >= r.min_size_mm
 
 
@@ -335,8 +379,21 @@ def test_every_meets_row_really_meets_the_requirements(rich_plan):
         "m_z_mm",
         "meets",
         "model",
+        "scanner_m_x_mm",
+        "scanner_m_y_mm",
+        "scanner_m_z_mm",
+        "reg_m_x_mm",
+        "reg_m_y_mm",
+        "reg_m_z_mm",
+        "spacing_mm",
+        "reason",
     ]
     assert (csv.loc[csv["meets"], "m_x_mm"] <= 4.0 + 0.0005).all()
+    # the totals are the scanner's and the registration's parts added in quadrature
+    for c in "xyz":
+        total = np.hypot(met[f"scanner_m_{c}_mm"], met[f"reg_m_{c}_mm"])
+        np.testing.assert_allclose(met[f"m_{c}_mm"], total, atol=1e-9)  # mm
+    assert (met[["reg_m_x_mm", "reg_m_y_mm", "reg_m_z_mm"]].max(axis=1) > 0.1).mean() > 0.5
 
 
 def test_optimiser_finds_the_minimum_worked_out_by_hand():

@@ -223,6 +223,12 @@ def plan_inputs(args: argparse.Namespace):
         )
     else:
         site = default_site(buildings=args.buildings, limits=limits)
+    if args.control:
+        from dataclasses import replace
+
+        from planner.siteio import read_control
+
+        site = replace(site, control=[*site.control, *read_control(args.control)])
     options = dict(vars(args))
     if args.inventory:
         options["inventory"] = parse_inventory(_read_text(args.inventory, "inventory file"))
@@ -535,6 +541,21 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         action="store_false",
         default=None,
         help="3-D model without the beam footprint in the spacing check",
+    )
+    pl.add_argument(
+        "--no-registration-error",
+        dest="registration_error",
+        action="store_false",
+        default=None,
+        help="judge samples by the scanner's error alone (the paper's eq. 2 and 4 without "
+        "m_xc, m_yc); the registration network is still planned",
+    )
+    pl.add_argument(
+        "--control",
+        metavar="CONTROL.csv",
+        default=None,
+        help="control points with known coordinates (site CRS): id,x,y,z[,rms_mm]; stations "
+        "that see three of them are tied to the site network (the datum)",
     )
     pl.add_argument(
         "--inventory",

@@ -155,11 +155,20 @@ class StationPlanner:
         self.error = w.HTML("")
         self.summary = w.HTML("")
         self.quantity = w.ToggleButtons(
-            options=[("m_x", "m_x_mm"), ("m_y", "m_y_mm"), ("m_z", "m_z_mm")],
+            options=[
+                ("m_x", "m_x_mm"),
+                ("m_y", "m_y_mm"),
+                ("m_z", "m_z_mm"),
+                ("registration x", "reg_m_x_mm"),
+                ("registration y", "reg_m_y_mm"),
+                ("registration z", "reg_m_z_mm"),
+            ],
             value="m_x_mm",
             description="Colour by",
         )
-        self.map_out, self.cov_out, self.fac_out, self.unmet_out = (w.Output() for _ in range(4))
+        self.map_out, self.cov_out, self.fac_out, self.unmet_out, self.reg_out = (
+            w.Output() for _ in range(5)
+        )
         self.downloads = w.HTML("")
         self.report_button = w.Button(description="Make HTML report")
         self.report_status = w.HTML("")
@@ -168,11 +177,13 @@ class StationPlanner:
                 self.map_out,
                 w.VBox([self.quantity, self.cov_out]),
                 self.fac_out,
+                self.reg_out,
                 self.unmet_out,
                 w.VBox([self.downloads, w.HBox([self.report_button]), self.report_status]),
             ]
         )
-        for i, title in enumerate(["Plan map", "Coverage", "Facades", "Unmet", "Downloads"]):
+        titles = ["Plan map", "Coverage", "Facades", "Registration", "Unmet", "Downloads"]
+        for i, title in enumerate(titles):
             self.tabs.set_title(i, title)
         controls = w.VBox(
             [
@@ -315,6 +326,12 @@ class StationPlanner:
         _show(self.map_out, plot_plan_map(p))
         self._show_coverage()
         _show(self.fac_out, p.facade_table())
+        network = [m for m in p.messages if m.startswith(("Registration", "Weakest link"))]
+        _show(
+            self.reg_out,
+            w.HTML("".join(f"<p>{html.escape(m)}</p>" for m in network)),
+            p.links.set_index(["station_a", "station_b"]).round(2),
+        )
         if p.unmet.empty:
             _show(self.unmet_out, w.HTML("<p>Every sample meets the requirements.</p>"))
         else:

@@ -19,7 +19,16 @@ from planner.site import Site
 
 __all__ = ["plot_coverage", "plot_plan_map", "plot_site"]
 
-QUANTITIES = {"m_x_mm": "m_x [mm]", "m_y_mm": "m_y [mm]", "m_z_mm": "m_z [mm]"}
+QUANTITIES = {
+    "m_x_mm": "m_x [mm]",
+    "m_y_mm": "m_y [mm]",
+    "m_z_mm": "m_z [mm]",
+    "reg_m_x_mm": "registration part of m_x [mm]",
+    "reg_m_y_mm": "registration part of m_y [mm]",
+    "reg_m_z_mm": "registration part of m_z [mm]",
+}
+#: The limit each plotted quantity is coloured against (its requirement).
+_LIMIT_OF = {"x": "max_x_mm", "y": "max_y_mm", "z": "max_z_mm"}
 
 
 def _patch(geom, **kw) -> PathPatch:
@@ -112,19 +121,7 @@ def plot_plan_map(
                 )
             )
         ax.add_collection(PatchCollection(wedges, fc="#f5b041", ec="#d68910", alpha=0.12, lw=0.6))
-    for r in p.links.itertuples():
-        a, b = st.loc[r.station_a], st.loc[r.station_b]
-        style = (
-            dict(color="#2e86c1", lw=1.4)
-            if r.targets_placed >= 3
-            else dict(color="#85c1e9", lw=0.6, ls=":")
-        )
-        ax.plot(
-            [a.x - origin[0], b.x - origin[0]],
-            [a.y - origin[1], b.y - origin[1]],
-            **style,
-            zorder=3,
-        )
+    _draw_links(p, ax, origin)
     for kind, marker in (("flat", "s"), ("sphere", "o")):
         t = p.targets[p.targets["type"] == kind]
         if len(t):
@@ -163,7 +160,6 @@ def plot_plan_map(
             label=f"unmet samples ({len(un)})",
         )
     ax.plot([], [], "^", color="#c0392b", mec="k", label="station")
-    ax.plot([], [], color="#2e86c1", label="registration link (3 targets)")
     ax.legend(loc="upper left", fontsize=7, framealpha=0.9)
     crs = f" ({p.site.crs})" if p.site.crs else ""
     ax.set_xlabel(f"E − {origin[0]:.0f} [m]{crs}")
@@ -171,6 +167,56 @@ def plot_plan_map(
     ax.set_title(f"{len(p.stations)} stations, {len(p.targets)} targets — {p.site.name}")
     ax.autoscale_view()
     return fig
+
+
+def _draw_links(p: Plan, ax: Axes, origin: np.ndarray) -> None:
+    """The registrations as lines between stations (to each control point used, for a
+    station tied to the control network), coloured and labelled by the link's own
+    predicted error; the control points as black triangles."""
+    st = p.stations.set_index("station_id")
+    tg = p.targets.set_index("target_id")
+    ctl = p.targets[p.targets["type"] == "control"]
+    if len(ctl):
+        ax.scatter(
+            ctl["x"] - origin[0],
+            ctl["y"] - origin[1],
+            marker="v",
+            s=40,
+            c="k",
+            zorder=4,
+            label="control point",
+        )
+    if not len(p.links):
+        return
+    worst = float(np.nanmax(p.links["link_rms_mm"])) or 1.0
+    cmap = plt.get_cmap("cool")
+    for r in p.links.itertuples():
+        b = st.loc[r.station_b]
+        if r.station_a == "control":
+            ends = [tg.loc[t] for t in r.target_ids.split(";") if t in tg.index]
+            style = dict(color="0.3", lw=0.8, ls="--")
+        else:
+            ends = [st.loc[r.station_a]]
+            share = r.link_rms_mm / worst if np.isfinite(r.link_rms_mm) else 1.0
+            style = dict(color=cmap(share), lw=1.0 + 1.5 * share)
+        for a in ends:
+            ax.plot(
+                [a.x - origin[0], b.x - origin[0]],
+                [a.y - origin[1], b.y - origin[1]],
+                **style,
+                zorder=3,
+            )
+        if r.station_a != "control" and np.isfinite(r.link_rms_mm):
+            a = ends[0]
+            ax.annotate(
+                f"{r.link_rms_mm:.1f}",
+                ((a.x + b.x) / 2 - origin[0], (a.y + b.y) / 2 - origin[1]),
+                fontsize=6,
+                color="#1b4f72",
+                ha="center",
+                zorder=6,
+            )
+    ax.plot([], [], color=cmap(1.0), lw=2.5, label="registration link (its own RMS, mm)")
 
 
 def plot_coverage(p: Plan, quantity: str = "m_x_mm", ax: Axes | None = None) -> Figure:
@@ -191,8 +237,7 @@ def plot_coverage(p: Plan, quantity: str = "m_x_mm", ax: Axes | None = None) -> 
         cov["y"] - f.loc[cov["facade_id"], "y0"].to_numpy(),
     )
     cov["u"] = along + cov["facade_id"].map(off)
-    req = p.requirements
-    limit = {"m_x_mm": req.max_x_mm, "m_y_mm": req.max_y_mm, "m_z_mm": req.max_z_mm}[quantity]
+    limit = getattr(p.requirements, _LIMIT_OF[quantity[-4]])
     ok = cov[~cov["party_wall"]]
     sc = ax.scatter(
         ok["u"],

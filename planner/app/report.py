@@ -142,6 +142,24 @@ class ReportContent:
         t["station_ids"] = t["station_ids"].map(", ".join)
         return t.set_index("target_id").round({"x": 3, "y": 3, "z": 2, "min_size_mm": 1})
 
+    def registration(self) -> pd.DataFrame | HTML:
+        links = self.plan.links
+        if links.empty:
+            return HTML(f"<p>{html.escape(self._network_message())}</p>")
+        return links.set_index(["station_a", "station_b"]).round(2)
+
+    def registration_coverage(self):
+        """The registration part of the error on the facades, for its largest component."""
+        cov = self.plan.scanned
+        parts = ["reg_m_x_mm", "reg_m_y_mm", "reg_m_z_mm"]
+        if cov[parts].isna().all().all():
+            return HTML("<p>No registration error is computed for this plan.</p>")
+        return self.coverage(cov[parts].max().idxmax())
+
+    def _network_message(self) -> str:
+        msg = [m for m in self.plan.messages if m.startswith("Registration:")]
+        return msg[0] if msg else "No registration network."
+
     def plan_map(self):
         from planner.app.maps import plot_plan_map
 
@@ -165,13 +183,29 @@ class ReportContent:
         p = self.plan
         notes = "".join(f"<li>{html.escape(m)}</li>" for m in p.messages) or "<li>none</li>"
         refs = "".join(f"<li>{html.escape(text)}</li>" for text in REFERENCES.values())
+        st = p.settings
+        if not st.computes_registration:
+            reg = (
+                f"a fixed station RMS of {html.escape(str(st.station_rms_mm))} mm (given)"
+                if st.station_rms_pair != (0.0, 0.0)
+                else "not counted (scanner error only)"
+            )
+        else:
+            reg = (
+                "computed from the targets: each target's centre RMS (type, size, distance, "
+                "incidence), pairwise registrations chained from the datum, propagated to "
+                "every sample and added in quadrature"
+            )
         items = [
-            f"Accuracy model: {html.escape(p.settings.model_description())}, the ranging RMS at "
-            "the slope distance (docs/science.md of tls-planner); station/registration RMS "
-            f"{html.escape(str(p.settings.station_rms_mm))} mm.",
+            f"Accuracy model: {html.escape(st.model_description())}, the ranging RMS at "
+            "the slope distance (docs/science.md of tls-planner).",
+            f"Registration error: {reg}.",
             "Visibility: 2.5-D — footprints extruded to their heights block the beam; flat ground.",
-            "Target sizes: Sossa's 2d (flat) / 4d (sphere, cylinder) rule at the farther station, "
-            "a flat target seen at incidence θ needing 2d / cos θ.",
+            "Target sizes: the larger of Sossa's 2d (flat) / 4d (sphere, cylinder) rule (2d / "
+            "cos θ on a wall seen at incidence θ) and practice "
+            f"({st.min_points_per_quadrant:g} points per checkerboard quadrant, "
+            f"{st.min_points_on_sphere:g} points on a sphere), at the most demanding station; "
+            f"checkerboards used up to {st.max_target_incidence_deg:g}° incidence.",
             f"Scanner notes: {html.escape(p.scanner.notes or 'none')}",
         ]
         return HTML(

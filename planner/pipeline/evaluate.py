@@ -27,6 +27,8 @@ from planner.accuracy3d import footprint_mm, incidence_ranging_rms_mm, variances
 from planner.pipeline.facades import SIGHT_OFFSET_M, FacadeSet, footprint_edges
 from planner.pipeline.requirements import CHECKS, Check, PlanSettings, Requirements
 from planner.pipeline.visibility import clear_height, edges_in_box, edges_in_front
+from planner.polar import separated_directions
+from planner.registration_error import pair_registration_variances
 from planner.scanner import Scanner
 from planner.site import Site
 from planner.spacing import facade_spacing_kernel
@@ -37,6 +39,7 @@ __all__ = [
     "CandidateEvaluation",
     "Context",
     "PairMetrics",
+    "Registration",
     "assign_stations",
     "best_achievable",
     "evaluate_candidates",
@@ -56,6 +59,12 @@ METRIC_KEYS = (
     "m_y_mm",
     "m_z_mm",
     "spacing_mm",
+    "scanner_m_x_mm",
+    "scanner_m_y_mm",
+    "scanner_m_z_mm",
+    "reg_m_x_mm",
+    "reg_m_y_mm",
+    "reg_m_z_mm",
 )
 
 #: Candidate × sample pairs evaluated at once: ~20 float arrays of this many stay in cache.
@@ -188,6 +197,58 @@ class PairMetrics:
         self.view = view  # sees the sample: in front, line of sight, range, field of view
         self.step_mm_at_10m = step_mm_at_10m
         self.footprint = footprint  # (S, cos θ) -> footprint [mm], when the model counts it
+        self.scanner_var = (var_x, var_y, var_z)
+        self.reg_var = (0.0, 0.0, 0.0)
+        self.untied = np.zeros((1, 1), dtype=bool)  # stations not tied to the datum
+
+    def add_registration(
+        self,
+        var_x: np.ndarray,
+        var_y: np.ndarray,
+        var_z: np.ndarray,
+        *,
+        untied: np.ndarray | None = None,
+    ) -> None:
+        """Add the registration's variances (c, n): m_x, m_y, m_z become the totals, the
+        scanner's and the registration's parts stay readable. A station not tied to the
+        datum (``untied``, (c, 1)) meets nothing; its registration part reads NaN. Call
+        before reading the metrics."""
+        if untied is not None:
+            self.untied = untied
+            var_x, var_y, var_z = (np.where(untied, 0.0, v) for v in (var_x, var_y, var_z))
+        self.reg_var = (var_x, var_y, var_z)
+        self.var_x = self.scanner_var[0] + var_x
+        self.var_y = self.scanner_var[1] + var_y
+        self.var_z = self.scanner_var[2] + var_z
+        for name in ("m_x_mm", "m_y_mm", "m_z_mm"):
+            self.__dict__.pop(name, None)
+
+    @property
+    def scanner_m_x_mm(self) -> np.ndarray:
+        return np.sqrt(self.scanner_var[0])
+
+    @property
+    def scanner_m_y_mm(self) -> np.ndarray:
+        return np.sqrt(self.scanner_var[1])
+
+    @property
+    def scanner_m_z_mm(self) -> np.ndarray:
+        return np.sqrt(self.scanner_var[2])
+
+    @property
+    def reg_m_x_mm(self) -> np.ndarray:
+        reg = np.sqrt(np.broadcast_to(self.reg_var[0], self.view.shape))
+        return np.where(self.untied, np.nan, reg)
+
+    @property
+    def reg_m_y_mm(self) -> np.ndarray:
+        reg = np.sqrt(np.broadcast_to(self.reg_var[1], self.view.shape))
+        return np.where(self.untied, np.nan, reg)
+
+    @property
+    def reg_m_z_mm(self) -> np.ndarray:
+        reg = np.sqrt(np.broadcast_to(self.reg_var[2], self.view.shape))
+        return np.where(self.untied, np.nan, reg)
 
     @cached_property
     def cos_incidence(self) -> np.ndarray:
@@ -285,11 +346,10 @@ def facade_pairs(
     )
     st = ctx.settings
     m_s = sc.range_rms_at(s)
-    m_xc, m_yc = st.station_rms_pair
-    station_var = (m_xc * m_xc, m_yc * m_yc)
+    no_station = (0.0, 0.0)  # the station's own error is the registration's part, below
     footprint = None
     if st.model == "paper":  # eq. 2 and 4 of Voroshilov & Karachentsev
-        var_x, var_y = eq2_variances(d, cos_g * cos_g, m_s, sc.angle_rms_arcsec, station_var)
+        var_x, var_y = eq2_variances(d, cos_g * cos_g, m_s, sc.angle_rms_arcsec, no_station)
         var_z = eq4_variance(
             s, sin_nu * sin_nu, m_s, sc.tilt_rms_arcsec, s, sc.initial_tilt_rms_arcsec
         )
@@ -306,11 +366,11 @@ def facade_pairs(
             sc.angle_rms_arcsec,
             sc.tilt_rms_arcsec,
             sc.initial_tilt_rms_arcsec,
-            station_var,
+            no_station,
         )
         if st.beam_footprint and (sc.beam_divergence_mrad or sc.beam_exit_mm):
             footprint = partial(footprint_mm, scanner=sc)
-    return PairMetrics(
+    m = PairMetrics(
         distance_m=d,
         slope_distance_m=s,
         cos_gamma=cos_g,
@@ -322,6 +382,11 @@ def facade_pairs(
         step_mm_at_10m=ctx.step_mm_at_10m,
         footprint=footprint,
     )
+    m_xc, m_yc = st.station_rms_pair
+    if m_xc or m_yc:  # the paper's m_xc, m_yc given as a figure: the registration's part
+        zero = np.zeros(view.shape)
+        m.add_registration(zero + m_xc * m_xc, zero + m_yc * m_yc, zero)
+    return m
 
 
 def meets(ctx: Context, m: PairMetrics, smp: np.ndarray) -> np.ndarray:
@@ -354,9 +419,13 @@ def evaluate_candidates(
     cand_xy: np.ndarray,
     progress: Progress | None = None,
     deadline: float = math.inf,
+    registration: Registration | None = None,
+    only: np.ndarray | None = None,
 ) -> CandidateEvaluation:
-    """Evaluate every candidate against every facade sample (sparse result). Facades not
-    reached by ``deadline`` (a :func:`time.monotonic` time) are left unevaluated."""
+    """Evaluate every candidate against every facade sample (sparse result), on the scanner's
+    error plus, when given, the registration's (one entry per candidate); ``only`` (N,) bool
+    restricts it to some samples. Facades not reached by ``deadline`` (a
+    :func:`time.monotonic` time) are left unevaluated."""
     fac = ctx.facades
     n_samples = len(fac.z)
     rows, cols = [], []
@@ -367,9 +436,11 @@ def evaluate_candidates(
             break
         if progress:
             progress(f / fac.n_facades, f"evaluating facade {fac.facade_id[f]}")
-        smp = ctx.samples_of[f]
+        smp = ctx.samples_of[f] if only is None else ctx.samples_of[f][only[ctx.samples_of[f]]]
+        if not len(smp):
+            continue
         cand = ctx.front_candidates(f, cand_xy)
-        if not len(cand) or not len(smp):
+        if not len(cand):
             evaluated[smp] = True
             continue
         step = max(1, PAIR_CHUNK // len(smp))
@@ -377,8 +448,10 @@ def evaluate_candidates(
             if time.monotonic() > deadline:
                 break  # the facade's samples stay "not evaluated"; the pairs found count
             ci = cand[lo : lo + step]
-            m = facade_pairs(ctx, f, cand_xy[ci])
-            r, c = np.nonzero(meets(ctx, m, smp))
+            m = facade_pairs(ctx, f, cand_xy[ci], smp)
+            if registration is not None:
+                add_registration(ctx, m, f, smp, registration, ci)
+            r, c = np.nonzero(meets(ctx, m, smp) & ~m.untied)
             rows.append(smp[c])
             cols.append(ci[r])
             n_view[smp] += m.view.sum(axis=0)
@@ -434,13 +507,50 @@ class Assignment:
 
     station: np.ndarray  # (N,) index into the stations, -1 where none sees the sample
     metrics: dict[str, np.ndarray]  # METRIC_KEYS, (N,) each, NaN where none is assigned
-    n_meeting: np.ndarray  # (N,) stations meeting every requirement at the sample
+    n_meeting: np.ndarray  # (N,) stations meeting every requirement there (separate views)
     met_by_station: np.ndarray  # (K,) samples each station meets
 
 
-def assign_stations(ctx: Context, station_xy: np.ndarray) -> Assignment:
+@dataclass
+class Registration:
+    """The registration error to add to the scanner's: every station's pose covariance
+    (K, 6, 6; shift mm, rotation rad), its scanner centre (K, 3) [m], and whether it is tied
+    to the datum (an untied station's points are not in the common frame: infinite error)."""
+
+    pose_cov: np.ndarray
+    station_xyz: np.ndarray
+    tied: np.ndarray
+
+
+def add_registration(
+    ctx: Context,
+    m: PairMetrics,
+    f: int,
+    smp: np.ndarray,
+    registration: Registration,
+    stations: np.ndarray,
+) -> None:
+    """Add to the pairs ``m`` (stations × samples ``smp`` of facade ``f``) the registration
+    error of ``stations`` (indices into ``registration``), in the facade's frame."""
+    fac = ctx.facades
+    pts = np.column_stack([fac.xy[smp], fac.z[smp]])
+    along = (fac.end[f] - fac.start[f]) / np.hypot(*(fac.end[f] - fac.start[f]))
+    rv = pair_registration_variances(
+        registration.pose_cov[stations],
+        registration.station_xyz[stations],
+        pts,
+        along,
+        fac.normal[f],
+    )
+    m.add_registration(*rv, untied=~registration.tied[stations][:, None])
+
+
+def assign_stations(
+    ctx: Context, station_xy: np.ndarray, registration: Registration | None = None
+) -> Assignment:
     """Assign every sample a station (one facade at a time: memory grows with the samples,
-    not samples × stations)."""
+    not samples × stations), judging the scanner's error plus, when given, the
+    registration's at every pair."""
     fac = ctx.facades
     n, k = len(fac.z), len(station_xy)
     station = np.full(n, -1, dtype=np.int64)
@@ -453,7 +563,9 @@ def assign_stations(ctx: Context, station_xy: np.ndarray) -> Assignment:
         if not len(ahead) or not len(smp):
             continue
         m = facade_pairs(ctx, f, station_xy[ahead])
-        ok = meets(ctx, m, smp)
+        if registration is not None:
+            add_registration(ctx, m, f, smp, registration, ahead)
+        ok = meets(ctx, m, smp) & ~m.untied
         sc = score(ctx, m, smp)
         rank = np.where(m.view, np.where(ok, sc, sc + 1e6), np.inf)
         best = np.argmin(rank, axis=0)
@@ -461,9 +573,25 @@ def assign_stations(ctx: Context, station_xy: np.ndarray) -> Assignment:
         station[smp[has]] = ahead[best[has]]
         for key in METRIC_KEYS:
             metrics[key][smp[has]] = m.value(key)[best[has], np.flatnonzero(has)]
-        n_meeting[smp] = ok.sum(axis=0)
+        n_meeting[smp] = _views(ctx, ok, station_xy[ahead], smp)
         met_by[ahead] += ok.sum(axis=1)
     return Assignment(station, metrics, n_meeting, met_by)
+
+
+def _views(ctx: Context, ok: np.ndarray, station_xy: np.ndarray, smp: np.ndarray) -> np.ndarray:
+    """Per sample, the stations meeting it that count as separate views: all of them when
+    one is required, else those at least ``min_view_angle_deg`` apart in direction (two
+    stations side by side are one view)."""
+    n_ok = ok.sum(axis=0)
+    if ctx.req.stations_per_sample <= 1:
+        return n_ok
+    out = n_ok.copy()
+    xy = ctx.facades.xy[smp]
+    for i in np.flatnonzero(n_ok >= 2):
+        d = station_xy[ok[:, i]] - xy[i]
+        az = np.degrees(np.arctan2(d[:, 1], d[:, 0]))
+        out[i] = separated_directions(az, ctx.req.min_view_angle_deg)
+    return out
 
 
 def evaluate_stations(ctx: Context, station_xy: np.ndarray) -> dict[str, np.ndarray]:

@@ -15,10 +15,11 @@ import numpy as np
 import pandas as pd
 
 from planner.atomic import replace_folder_files
-from planner.pipeline.result import Plan
+from planner.pipeline.result import LINK_COLUMNS, TARGET_COLUMNS, Plan
 
 __all__ = [
     "COVERAGE_COLUMNS",
+    "LINK_COLUMNS",
     "STATION_COLUMNS",
     "TARGET_COLUMNS",
     "coverage_csv",
@@ -29,20 +30,7 @@ __all__ = [
     "targets_csv",
 ]
 
-STATION_COLUMNS = ["station_id", "x", "y", "instrument_height_m"]
-TARGET_COLUMNS = [
-    "target_id",
-    "x",
-    "y",
-    "z",
-    "type",
-    "min_size_mm",
-    "size_mm",
-    "item",
-    "station_ids",
-    "facade_id",
-    "facing_deg",
-]
+STATION_COLUMNS = ["station_id", "x", "y", "instrument_height_m", "purpose"]
 COVERAGE_COLUMNS = [
     "building_id",
     "facade_id",
@@ -61,6 +49,14 @@ COVERAGE_COLUMNS = [
     "m_z_mm",
     "meets",
     "model",
+    "scanner_m_x_mm",
+    "scanner_m_y_mm",
+    "scanner_m_z_mm",
+    "reg_m_x_mm",
+    "reg_m_y_mm",
+    "reg_m_z_mm",
+    "spacing_mm",
+    "reason",
 ]
 
 
@@ -102,6 +98,10 @@ def targets_csv(p: Plan) -> str:
 
 #: Columns written only when the plan has them (an accuracy class was asked for).
 OPTIONAL_COVERAGE_COLUMNS = ["class_achieved"]
+
+
+def links_csv(p: Plan) -> str:
+    return to_csv(p.links[LINK_COLUMNS])
 
 
 def coverage_csv(p: Plan) -> str:
@@ -195,15 +195,29 @@ def geojson(p: Plan) -> dict:
             purpose=r.purpose,
             samples_met=r.samples_met,
         )
+    tg = p.targets.set_index("target_id")
     for r in p.links.itertuples():
-        a, b = st.loc[r.station_a], st.loc[r.station_b]
+        b = st.loc[r.station_b]
+        if r.station_a == "control":  # tied to the control points it uses: a line to each
+            ends = [tg.loc[t] for t in r.target_ids.split(";") if t in tg.index]
+            geom = {
+                "type": "MultiLineString",
+                "coordinates": [[[b.x, b.y], [c.x, c.y]] for c in ends],
+            }
+        else:
+            a = st.loc[r.station_a]
+            geom = {"type": "LineString", "coordinates": [[a.x, a.y], [b.x, b.y]]}
         add(
-            {"type": "LineString", "coordinates": [[a.x, a.y], [b.x, b.y]]},
+            geom,
             layer="link",
             station_a=r.station_a,
             station_b=r.station_b,
             common_targets=r.common_targets,
             targets_placed=r.targets_placed,
+            target_ids=r.target_ids,
+            link_rms_mm=r.link_rms_mm,
+            dilution=r.dilution,
+            station_b_rms_mm=r.station_b_rms_mm,
         )
     for r in p.targets.itertuples():
         add(
@@ -214,7 +228,10 @@ def geojson(p: Plan) -> dict:
             min_size_mm=r.min_size_mm,
             size_mm=r.size_mm,
             item=r.item,
+            sized_by=r.sized_by,
             station_ids=";".join(r.station_ids),
+            facing_deg=r.facing_deg,
+            centre_rms_mm=r.centre_rms_mm,
         )
     for r in p.unmet.itertuples():
         add(
@@ -246,6 +263,7 @@ FILES = {
     "targets.csv": targets_csv,
     "coverage.csv": coverage_csv,
     "facades.csv": facades_csv,
+    "links.csv": links_csv,
     "plan.geojson": geojson_text,
     "summary.txt": summary_text,
 }

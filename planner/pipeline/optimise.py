@@ -25,6 +25,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from planner.errors import PlannerError
+from planner.polar import separated_directions
 
 __all__ = ["CoverSolution", "greedy_cover", "solve_cover"]
 
@@ -253,3 +254,60 @@ def solve_cover(
         seconds=greedy.seconds,
         greedy_objective=len(g),
     )
+
+
+def spread_views(
+    ok: sp.csr_matrix,
+    demand: np.ndarray,
+    chosen: np.ndarray,
+    cand_xy: np.ndarray,
+    sample_xy: np.ndarray,
+    min_angle_deg: float,
+) -> np.ndarray:
+    """Add stations until every sample that needs ``demand`` ≥ 2 stations is met by that
+    many chosen stations seeing it from directions at least ``min_angle_deg`` apart (in
+    plan, from the sample): a sample met twice from beside the same spot has one view, not
+    two. Greedy: the candidate that completes the most samples first. Samples no candidate
+    can complete stay as they are (the plan reports them)."""
+    ok = sp.csr_matrix(ok)
+    taken = np.zeros(ok.shape[1], dtype=bool)
+    taken[np.asarray(chosen, dtype=np.int64)] = True
+    rows = np.flatnonzero(demand >= 2)
+    cols_of = {int(i): ok.indices[ok.indptr[i] : ok.indptr[i + 1]] for i in rows}
+    az_of = {}  # azimuth of every candidate meeting the row, seen from its sample [deg]
+    for i, cols in cols_of.items():
+        d = cand_xy[cols] - sample_xy[i]
+        az_of[i] = np.degrees(np.arctan2(d[:, 1], d[:, 0]))
+
+    def views(i: int) -> int:
+        return separated_directions(az_of[i][taken[cols_of[i]]], min_angle_deg)
+
+    def helpers(i: int, now: int) -> np.ndarray:
+        """The candidates whose addition gives row i one more view."""
+        cols, az = cols_of[i], az_of[i]
+        mask = taken[cols]
+        if now == 0:
+            return cols[~mask]
+        if now == 1:  # a second view: at least the angle from some view taken
+            gap = np.abs((az[~mask, None] - az[None, mask] + 180.0) % 360.0 - 180.0)
+            return cols[~mask][(gap >= min_angle_deg).any(axis=1)]
+        more = [
+            c
+            for c, a in zip(cols[~mask], az[~mask], strict=True)
+            if separated_directions(np.append(az[mask], a), min_angle_deg) > now
+        ]
+        return np.asarray(more, dtype=np.int64)
+
+    now = {int(i): views(int(i)) for i in rows}
+    short = [i for i in now if now[i] < demand[i]]
+    while short:
+        gain = np.zeros(ok.shape[1], dtype=np.int64)
+        for i in short:
+            np.add.at(gain, helpers(i, now[i]), 1)
+        if not gain.any():
+            break
+        taken[int(np.argmax(gain))] = True  # the most rows helped (the lowest index on ties)
+        for i in short:
+            now[i] = views(i)
+        short = [i for i in short if now[i] < demand[i]]
+    return np.flatnonzero(taken)

@@ -13,10 +13,12 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
+import scipy.sparse as sp
 
 from planner.accuracy import reach_bound_m
 from planner.accuracy3d import reach_bound_3d_m
@@ -27,23 +29,26 @@ from planner.pipeline.evaluate import (
     Assignment,
     CandidateEvaluation,
     Context,
+    Registration,
     assign_stations,
     best_achievable,
     evaluate_candidates,
 )
 from planner.pipeline.facades import FacadeSet, build_facades, estimate_samples
-from planner.pipeline.optimise import solve_cover
+from planner.pipeline.optimise import CoverSolution, solve_cover, spread_views
 from planner.pipeline.registration import (
     Network,
+    SightCache,
     TargetCandidates,
-    connect,
+    build_network,
     target_candidates,
-    target_table_rows,
 )
 from planner.pipeline.requirements import CHECKS, PlanSettings, Requirements
-from planner.pipeline.result import Plan
+from planner.pipeline.result import LINK_COLUMNS, TARGET_COLUMNS, Plan
+from planner.registration_error import CONTROL, Link
 from planner.scanner import DEFAULT_SCANNER, Scanner, load_scanner
 from planner.site import Site
+from planner.targets import choose_target
 
 __all__ = ["plan"]
 
@@ -141,11 +146,47 @@ def plan(
             f"({reach:.0f} m, clearance {st.clearance_m:g} m)"
         )
 
-    t = time.perf_counter()
-    ev = evaluate_candidates(
-        ctx, cand, progress=lambda f, m: say(0.05 + 0.6 * f, m), deadline=deadline
-    )
-    timings["evaluate"] = time.perf_counter() - t
+    stand_xy = candidate_grid(site, fac, min(reach, 40.0), st.target_spacing_m, st.clearance_m)
+    tc = target_candidates(ctx, stand_xy)
+    seen = SightCache(ctx, tc, cand)
+    # stations and registration chosen together (docs/science.md): the fewest stations by
+    # the scanner's error, their network, every sample judged on the total; while the
+    # registration keeps samples short, stations are added that meet them with the
+    # registration error they would have (estimated from the network) and the network is
+    # built and judged again; once none is short, the fewest stations are chosen again with
+    # every candidate's estimated registration error, the network's backbone kept
+    ev, sol = _choose(ctx, cand, say, deadline, timings)
+    r = _Round(cover=sol.chosen, net=_network(ctx, cand, seen, sol.chosen, timings))
+    r.judged = _judge(ctx, cand, r)
+    best, rounds, resolved = r, 0, False
+    while st.computes_registration and rounds < MAX_REGISTRATION_ROUNDS:
+        if time.monotonic() > deadline or r.net is None:
+            break
+        short = r.judged.short_by_registration
+        more = np.empty(0, dtype=np.int64)
+        if short.any():
+            say(0.85, f"registration: {int(short.sum())} samples short; adding stations")
+            more = _stations_for(ctx, cand, r.net, short, deadline, timings)
+        if len(more):
+            chosen = np.concatenate([r.net.stations, more])
+            r = _Round(cover=r.cover, added=np.union1d(r.added, more))
+        elif not resolved and len(r.net.stations) > len(sol.chosen):
+            say(0.9, "registration: choosing the fewest stations again")
+            resolved = True
+            backbone = r.net.backbone
+            estimate = r.net.estimate(cand, st.instrument_height_m)
+            _, again = _choose(ctx, cand, say, deadline, timings, estimate, forced=backbone)
+            chosen = again.chosen
+            r = _Round(cover=chosen)
+        else:
+            break
+        rounds += 1
+        r.net = _network(ctx, cand, seen, chosen, timings)
+        r.judged = _judge(ctx, cand, r)
+        if r.judged.better_than(best.judged):
+            best = r
+    r = best
+    net, assignment = r.net, r.judged.assignment
     if not ev.evaluated.all():
         messages.append(
             f"The time limit of {st.time_limit_s:g} s ran out during the evaluation: "
@@ -153,43 +194,38 @@ def plan(
             "those. Raise --time-limit-s for the whole site."
         )
 
-    say(0.7, "choosing the fewest stations")
-    t = time.perf_counter()
-    n_ok = np.asarray(ev.ok.sum(axis=1)).ravel()
-    demand = np.where(fac.party_wall, 0, np.minimum(req.stations_per_sample, n_ok))
-    remaining = max(MIN_SOLVER_S, deadline - time.monotonic())
-    sol = solve_cover(ev.ok, demand, remaining, st.method)
-    timings["optimise"] = time.perf_counter() - t
-
-    say(0.85, "registration network and targets")
-    t = time.perf_counter()
-    stand_xy = candidate_grid(site, fac, min(reach, 40.0), st.target_spacing_m, st.clearance_m)
-    tc = target_candidates(ctx, stand_xy)
-    net = connect(ctx, tc, cand, sol.chosen) if len(sol.chosen) else None
-    station_idx = net.stations if net is not None else np.empty(0, dtype=np.int64)
-    timings["registration"] = time.perf_counter() - t
-
     say(0.93, "coverage of the chosen stations")
     t = time.perf_counter()
+    station_idx = net.stations if net is not None else np.asarray(sol.chosen, dtype=np.int64)
     station_xy = cand[station_idx] if len(station_idx) else np.empty((0, 2))
     ids = [f"S{i + 1:02d}" for i in range(len(station_idx))]
-    assignment = assign_stations(ctx, station_xy)
-    coverage = _coverage(ctx, ev, assignment, ids, cand, deadline)
-    n_link = net.n_link_stations if net else 0
+    coverage = _coverage(ctx, ev, assignment, ids, cand, deadline, net)
+    purpose = np.where(
+        np.isin(station_idx, r.cover),
+        "cover",
+        np.where(np.isin(station_idx, r.added), "registration", "link"),
+    )
     stations = pd.DataFrame(
         {
             "station_id": ids,
             "x": station_xy[:, 0],
             "y": station_xy[:, 1],
             "instrument_height_m": st.instrument_height_m,
-            "purpose": ["cover"] * (len(ids) - n_link) + ["link"] * n_link,
+            "purpose": purpose,
             "samples_met": assignment.met_by_station,
         }
     )
-    targets, links = _targets_and_links(ctx, tc, net, ids)
+    targets, links = _targets_and_links(ctx, tc, net, ids, coverage)
     timings["coverage"] = time.perf_counter() - t
     if net is not None:
         messages.append(f"Registration: {net.message}.")
+        if len(ids) != sol.objective and st.computes_registration:
+            messages.append(
+                f"Stations: {sol.objective} meet the requirement by the scanner's error alone; "
+                f"{len(ids)} with the registration error counted ({rounds} round(s) of "
+                "adding stations and choosing again)."
+            )
+        messages.extend(_registration_messages(coverage, links, st))
     unmet = coverage[~coverage["meets"] & ~coverage["party_wall"]]
     if len(unmet):
         messages.extend(_unmet_messages(unmet))
@@ -208,6 +244,7 @@ def plan(
         "candidates": len(cand),
         "samples": int((~fac.party_wall).sum()),
         "pairs": pairs,
+        "registration_rounds": rounds,
     }
     messages.insert(0, f"Accuracy model: {st.model_description()}.")
     timings["total"] = time.perf_counter() - t0
@@ -223,10 +260,173 @@ def plan(
         facades=_facade_summary(fac, coverage),
         links=links,
         candidates=candidates,
+        network=net,
         solver=solver,
         messages=messages,
         timings_s=timings,
     )
+
+
+#: How many times stations are added for the registration error (each time the network is
+#: built and judged again).
+MAX_REGISTRATION_ROUNDS = 3
+
+
+@dataclass
+class _Judged:
+    """A round's stations judged on the total error against the client's limits."""
+
+    assignment: Assignment
+    n_met: int
+    n_stations: int
+    short_by_registration: np.ndarray  # (N,) met by the scanner's error alone, not the total
+
+    def better_than(self, other: _Judged) -> bool:
+        """More samples met; as many with fewer stations."""
+        return (self.n_met, -self.n_stations) > (other.n_met, -other.n_stations)
+
+
+@dataclass
+class _Round:
+    """Stations tried: those the optimiser chose (``cover``), those added for the
+    registration error (``added``), their network and its judgement."""
+
+    cover: np.ndarray
+    added: np.ndarray = field(default_factory=lambda: np.empty(0, dtype=np.int64))
+    net: Network | None = None
+    judged: _Judged | None = None
+
+
+def _choose(
+    ctx: Context,
+    cand: np.ndarray,
+    say: Progress,
+    deadline: float,
+    timings: dict[str, float],
+    estimate: Registration | None = None,
+    forced: np.ndarray | None = None,
+) -> tuple[CandidateEvaluation, CoverSolution]:
+    """Evaluate every candidate on the scanner's error (plus the ``estimate`` of its
+    registration error) and choose the fewest stations (with the redundant views spread);
+    the ``forced`` candidates are taken and the fewest others added to them."""
+    fac, req, st = ctx.facades, ctx.req, ctx.settings
+    t = time.perf_counter()
+    ev = evaluate_candidates(
+        ctx,
+        cand,
+        progress=lambda f, m: say(0.05 + 0.6 * f, m),
+        deadline=deadline,
+        registration=estimate,
+    )
+    timings["evaluate"] = timings.get("evaluate", 0.0) + time.perf_counter() - t
+    say(0.7, "choosing the fewest stations")
+    t = time.perf_counter()
+    n_ok = np.asarray(ev.ok.sum(axis=1)).ravel()
+    demand = np.where(fac.party_wall, 0, np.minimum(req.stations_per_sample, n_ok))
+    remaining = max(MIN_SOLVER_S, deadline - time.monotonic())
+    if forced is None or not len(forced):
+        sol = solve_cover(ev.ok, demand, remaining, st.method)
+    else:  # the others for what the forced stations leave
+        free = np.ones(len(cand))
+        free[forced] = 0.0
+        left = np.maximum(0, demand - np.asarray(ev.ok[:, forced].sum(axis=1)).ravel())
+        sol = solve_cover(sp.csr_matrix((ev.ok @ sp.diags(free)) > 0), left, remaining, st.method)
+        sol.chosen = np.union1d(sol.chosen, forced)
+        sol.objective = len(sol.chosen)
+    if req.stations_per_sample > 1:
+        spread = spread_views(ev.ok, demand, sol.chosen, cand, fac.xy, req.min_view_angle_deg)
+        if len(spread) > len(sol.chosen):  # the bound still holds; the gap is the spread's
+            sol.status += f"; {len(spread) - len(sol.chosen)} added for separate views"
+            sol.chosen, sol.objective = spread, len(spread)
+            sol.gap = (sol.objective - sol.lower_bound) / sol.objective
+    timings["optimise"] = timings.get("optimise", 0.0) + time.perf_counter() - t
+    return ev, sol
+
+
+def _network(
+    ctx: Context,
+    cand: np.ndarray,
+    seen: SightCache,
+    chosen: np.ndarray,
+    timings: dict[str, float],
+) -> Network | None:
+    """The registration network of the stations ``chosen`` (candidate indices), each
+    probed at the facade points it serves best by the scanner's error."""
+    if not len(chosen):
+        return None
+    t = time.perf_counter()
+    fac, req = ctx.facades, ctx.req
+    scanner_only = assign_stations(ctx, cand[chosen])
+    pts = np.column_stack([fac.xy, fac.z])
+    probes = {j: pts[scanner_only.station == j] for j in range(len(chosen))}
+    tightest = min(req.max_x_mm, req.max_y_mm, req.max_z_mm)
+    net = build_network(
+        ctx,
+        seen.tc,
+        cand,
+        np.asarray(chosen, dtype=np.int64),
+        probes,
+        goal_mm=REGISTRATION_GOAL * tightest,
+        weak_mm=WEAK_LINK * tightest,
+        cache=seen,
+    )
+    timings["registration"] = timings.get("registration", 0.0) + time.perf_counter() - t
+    return net
+
+
+def _stations_for(
+    ctx: Context,
+    cand: np.ndarray,
+    net: Network,
+    short: np.ndarray,
+    deadline: float,
+    timings: dict[str, float],
+) -> np.ndarray:
+    """Candidates to add so that the ``short`` samples meet the total: each candidate judged
+    with the registration error it would have in ``net`` (:meth:`Network.estimate`), the
+    one meeting the most short samples first (greedy), until all are met or none helps."""
+    t = time.perf_counter()
+    estimate = net.estimate(cand, ctx.settings.instrument_height_m)
+    if estimate is None:
+        return np.empty(0, dtype=np.int64)
+    ev = evaluate_candidates(ctx, cand, deadline=deadline, registration=estimate, only=short)
+    keep = np.ones(len(cand))
+    keep[net.stations] = 0.0  # the network's own stations do not meet them already
+    ok = sp.csr_matrix((ev.ok[np.flatnonzero(short)] @ sp.diags(keep)) > 0)
+    demand = np.minimum(1, np.asarray(ok.sum(axis=1)).ravel())
+    sol = solve_cover(ok, demand, 0.0, "greedy")
+    timings["evaluate"] += time.perf_counter() - t
+    return np.asarray(sol.chosen, dtype=np.int64)
+
+
+#: A link's own error is brought below this share of the tightest limit (where targets can):
+#: in quadrature it then adds under 5 % to an error at the limit.
+REGISTRATION_GOAL = 0.3
+#: A link whose own error exceeds this share of the tightest limit is too weak: linking
+#: stations are sought to make a detour round it (kept where the worst error drops).
+WEAK_LINK = 0.5
+
+
+def _judge(ctx: Context, cand: np.ndarray, r: _Round) -> _Judged:
+    """Assign every sample its station and judge it on the total error (scanner ⊕
+    registration); which samples only the registration keeps from meeting the limits."""
+    fac, st = ctx.facades, ctx.settings
+    n = len(fac.z)
+    if r.net is None:
+        a = assign_stations(ctx, np.empty((0, 2)))
+        return _Judged(a, 0, 0, np.zeros(n, dtype=bool))
+    station_xy = cand[r.net.stations]
+    registration = None
+    if st.computes_registration:
+        registration = r.net.registration()
+    a = assign_stations(ctx, station_xy, registration)
+    demanded = ~fac.party_wall
+    met = (a.n_meeting >= ctx.req.stations_per_sample) & demanded
+    scanner_ok = np.ones(n, dtype=bool)
+    for c in "xyz":
+        v = a.metrics[f"scanner_m_{c}_mm"]
+        scanner_ok &= np.isfinite(v) & (v <= ctx.limits[f"m_{c}"] * (1 + 1e-9))
+    return _Judged(a, int(met.sum()), len(station_xy), demanded & ~met & scanner_ok)
 
 
 def _expect(value: object, kind: type, name: str, hint: str) -> None:
@@ -252,6 +452,12 @@ def _reason(ctx: Context, sample: int, n_view: int, best: dict[str, float], n_me
             parts.append(c.shortfall(best[c.key], limit))
     if parts:
         return "; ".join(parts)
+    if best["score"] <= 1.0 and ctx.settings.computes_registration:
+        return (
+            "the registration error leaves too little: the best station meets it by the "
+            f"scanner's error alone ({best['score']:.2f} × the limits), none with the "
+            "registration error of the network added"
+        )
     return (
         f"no single station meets every requirement at once (closest: {best['score']:.2f} × "
         "the limits)"
@@ -265,6 +471,7 @@ def _coverage(
     ids: list[str],
     cand_xy: np.ndarray,
     deadline: float = math.inf,
+    net: Network | None = None,
 ) -> pd.DataFrame:
     fac = ctx.facades
     n = len(fac.z)
@@ -276,10 +483,13 @@ def _coverage(
     demanded = ~fac.party_wall
     meets = (n_meeting >= k_req) & demanded
     reason = np.full(n, "", dtype=object)
-    short = np.flatnonzero(~meets & demanded & (n_ok_cand >= k_req))
-    reason[short] = [
-        f"the chosen stations do not cover this sample ({n_meeting[i]} of {k_req})" for i in short
-    ]
+    candidates_meet = ~meets & demanded & (n_ok_cand >= k_req)
+    untied = np.zeros(n, dtype=bool)
+    if net is not None and net.error is not None and len(ids) > 1:
+        has = assignment.station >= 0
+        untied[has] = ~net.error.tied[assignment.station[has]]
+    for i in np.flatnonzero(candidates_meet):
+        reason[i] = _short_reason(ctx, i, picked, station[i], untied[i], n_meeting[i], k_req)
     hopeless = np.flatnonzero(~meets & demanded & (n_ok_cand < k_req) & ev.evaluated)
     if len(hopeless):
         diag = best_achievable(ctx, cand_xy, hopeless, deadline)
@@ -301,6 +511,7 @@ def _coverage(
         extra["class_achieved"] = achieved_class(
             picked["m_x_mm"], picked["m_y_mm"], picked["m_z_mm"], family
         )
+    shown = [k for k in METRIC_KEYS if k != "spacing_mm" and not k.startswith(("scanner", "reg"))]
     return pd.DataFrame(
         {
             "building_id": fac.building_id[fac.facade],
@@ -310,9 +521,10 @@ def _coverage(
             "y": fac.xy[:, 1],
             "z": fac.z,
             "station_id": station,
-            **{k: picked[k] for k in METRIC_KEYS if k != "spacing_mm"},
+            **{k: picked[k] for k in shown},
             "meets": meets,
             "model": ctx.settings.model,
+            **{k: picked[k] for k in METRIC_KEYS if k.startswith(("scanner", "reg"))},
             "spacing_mm": picked["spacing_mm"],
             "stations_meeting": n_meeting,
             "party_wall": fac.party_wall,
@@ -320,6 +532,40 @@ def _coverage(
             **extra,
         }
     )
+
+
+def _short_reason(
+    ctx: Context,
+    i: int,
+    picked: dict[str, np.ndarray],
+    station: str,
+    untied: bool,
+    n_meeting: int,
+    k_req: int,
+) -> str:
+    """Why a sample some candidate could meet is not met by the chosen stations."""
+    if untied:
+        return f"its station {station} cannot be tied to the registration network"
+    worst = None
+    for c in "xyz":
+        total, scanner = picked[f"m_{c}_mm"][i], picked[f"scanner_m_{c}_mm"][i]
+        reg = picked[f"reg_m_{c}_mm"][i]
+        limit = float(ctx.limits[f"m_{c}"][i])
+        if np.isfinite(limit) and scanner <= limit < total and np.isfinite(reg):
+            if worst is None or total / limit > worst[0]:
+                worst = (total / limit, c, scanner, reg, total, limit)
+    if worst is not None:
+        _, c, scanner, reg, total, limit = worst
+        return (
+            f"the registration error takes it over: m_{c} {scanner:.1f} mm from the scanner "
+            f"⊕ {reg:.1f} mm registration (station {station}) = {total:.1f} mm > {limit:g} mm"
+        )
+    if k_req > 1:
+        return (
+            f"the chosen stations give {n_meeting} of the {k_req} views required (views "
+            f"{ctx.req.min_view_angle_deg:g}° apart in direction)"
+        )
+    return "the chosen stations do not cover this sample"
 
 
 def _facade_summary(fac: FacadeSet, cov: pd.DataFrame) -> pd.DataFrame:
@@ -363,58 +609,128 @@ def _facade_summary(fac: FacadeSet, cov: pd.DataFrame) -> pd.DataFrame:
 
 
 def _targets_and_links(
-    ctx: Context, tc: TargetCandidates, net: Network | None, ids: list[str]
+    ctx: Context,
+    tc: TargetCandidates,
+    net: Network | None,
+    ids: list[str],
+    coverage: pd.DataFrame,
 ) -> tuple[pd.DataFrame, pd.DataFrame]:
-    tcols = [
-        "target_id",
-        "x",
-        "y",
-        "z",
-        "type",
-        "min_size_mm",
-        "size_mm",
-        "station_ids",
-        "item",
-        "facade_id",
-        "facing_deg",
-    ]
-    lcols = ["station_a", "station_b", "common_targets", "targets_placed"]
+    """The target list (where, which type, how big and by which rule, which stations use
+    it) and the per-link report (targets in common, placed, the link's own predicted error
+    and the registration error the child station ends with)."""
     if net is None or not len(ids):
-        return pd.DataFrame(columns=tcols), pd.DataFrame(columns=lcols)
-    rows = target_table_rows(ctx, tc, net)
-    targets = pd.DataFrame(
-        {
-            "target_id": [f"T{i + 1:02d}" for i in range(len(rows))],
-            "x": [r["x"] for r in rows],
-            "y": [r["y"] for r in rows],
-            "z": [r["z"] for r in rows],
-            "type": [r["type"] for r in rows],
-            "min_size_mm": [r["min_size_mm"] for r in rows],
-            "size_mm": [r["size_mm"] for r in rows],
-            "station_ids": [[ids[s] for s in r["stations"]] for r in rows],
-            "item": [r["item"] for r in rows],
-            "facade_id": [r["facade_id"] for r in rows],
-            "facing_deg": [r["facing_deg"] for r in rows],
-        },
-        columns=tcols,
-    )
-    placed: dict[tuple[int, int], int] = {}
+        return pd.DataFrame(columns=TARGET_COLUMNS), pd.DataFrame(columns=LINK_COLUMNS)
+    fac, st = ctx.facades, ctx.settings
+    sight = net.sight
+    users: dict[int, set[int]] = {}
+    for lk in net.links:
+        for t in lk.targets:
+            users.setdefault(t, set()).add(lk.child)
+            if lk.parent != CONTROL:
+                users[t].add(lk.parent)
+    rows = []
+    tid: dict[int, str] = {}
     for t in net.targets:
-        for link in net.target_links[t]:
-            placed[link] = placed.get(link, 0) + 1
+        who = sorted(users.get(t, ()))
+        control = tc.type[t] == "control"
+        if control:
+            size, item = float("nan"), ""
+            seen_by = np.array(who, dtype=int)
+        else:
+            need_users = sight.need_mm[t, who]
+            chosen = choose_target(float(need_users.max()), tc.type[t], st.inventory)
+            size = chosen.size_mm if chosen else float("nan")
+            item = chosen.name if chosen else ""
+            seen_by = np.flatnonzero(sight.usable[t] & (sight.need_mm[t] <= size))
+        far = who[int(np.argmax(sight.need_mm[t, who]))] if who else 0
+        f = int(tc.facade[t])
+        nx, ny = tc.normal[t]
+        label = (
+            tc.control_id[t]
+            if control
+            else f"T{len([x for x in tid.values() if x.startswith('T')]) + 1:02d}"
+        )
+        tid[t] = label
+        rows.append(
+            {
+                "target_id": label,
+                "x": tc.xyz[t, 0],
+                "y": tc.xyz[t, 1],
+                "z": tc.xyz[t, 2],
+                "type": tc.type[t],
+                "min_size_mm": float(sight.need_mm[t, seen_by].max()) if len(seen_by) else np.nan,
+                "size_mm": size,
+                "sized_by": sight.rule[t, far],
+                "station_ids": [ids[s] for s in seen_by],
+                "item": item,
+                "facade_id": fac.facade_id[f] if f >= 0 else "",
+                # which way a wall target faces: azimuth of its normal, clockwise from grid north
+                "facing_deg": float(np.degrees(np.arctan2(nx, ny)) % 360.0) if f >= 0 else np.nan,
+                "centre_rms_mm": max(
+                    (net.centre_rms.get((j, t), np.nan) for j in who), default=np.nan
+                ),
+            }
+        )
+    targets = pd.DataFrame(rows, columns=TARGET_COLUMNS)
+    worst_at = coverage.groupby("station_id")[["reg_m_x_mm", "reg_m_y_mm", "reg_m_z_mm"]].max()
     links = pd.DataFrame(
         [
             {
-                "station_a": ids[a],
-                "station_b": ids[b],
-                "common_targets": n,
-                "targets_placed": placed.get((a, b), 0),
+                "station_a": "control" if lk.parent == CONTROL else ids[lk.parent],
+                "station_b": ids[lk.child],
+                "common_targets": _common_count(net, tc, lk),
+                "targets_placed": len(lk.targets),
+                "target_ids": ";".join(tid[t] for t in lk.targets),
+                "link_rms_mm": net.link_error_mm.get((lk.parent, lk.child), np.nan),
+                "dilution": net.link_error_mm.get((lk.parent, lk.child), np.nan)
+                / net.link_sigma_mm.get((lk.parent, lk.child), np.nan),
+                "station_b_rms_mm": float(worst_at.loc[ids[lk.child]].max())
+                if ids[lk.child] in worst_at.index
+                else np.nan,
             }
-            for a, b, n in net.links
+            for lk in net.links
         ],
-        columns=lcols,
+        columns=LINK_COLUMNS,
     )
     return targets, links
+
+
+def _common_count(net: Network, tc: TargetCandidates, lk: Link) -> int:
+    usable = net.sight.usable
+    if lk.parent == CONTROL:
+        return int((usable[:, lk.child] & tc.is_control).sum())
+    return int((usable[:, lk.parent] & usable[:, lk.child] & ~tc.is_control).sum())
+
+
+def _registration_messages(
+    coverage: pd.DataFrame, links: pd.DataFrame, st: PlanSettings
+) -> list[str]:
+    """The worst predicted registration error and where; the weakest link."""
+    if not st.computes_registration:
+        if st.station_rms_pair != (0.0, 0.0):
+            return [f"Registration error: the fixed station RMS {st.station_rms_mm} mm (as given)."]
+        return ["Registration error: not counted (--no-registration-error)."]
+    cov = coverage[~coverage["party_wall"] & (coverage["station_id"] != "")]
+    if cov.empty:
+        return []
+    parts = cov[["reg_m_x_mm", "reg_m_y_mm", "reg_m_z_mm"]]
+    worst = parts.max(axis=1)
+    if not np.isfinite(worst).any():
+        return []
+    i = worst.idxmax()
+    row = cov.loc[i]
+    out = [
+        f"Registration error: worst {worst[i]:.1f} mm (m_{parts.loc[i].idxmax().split('_')[2]}) at "
+        f"{row['sample_id']} scanned from {row['station_id']}; median {worst.median():.1f} mm."
+    ]
+    if len(links):
+        weak = links.loc[links["link_rms_mm"].idxmax()]
+        out.append(
+            f"Weakest link: {weak['station_a']} → {weak['station_b']}, "
+            f"{weak['targets_placed']} targets of {weak['common_targets']} in common, "
+            f"{weak['link_rms_mm']:.1f} mm on its own (dilution {weak['dilution']:.1f})."
+        )
+    return out
 
 
 def _unmet_messages(unmet: pd.DataFrame) -> list[str]:

@@ -1,59 +1,106 @@
-"""Registration: targets that tie the scans together, and a connected station network.
+"""Registration planning: the targets that tie the scans together, the network of pairwise
+registrations, and its error at every facade sample.
 
-Two stations are linked when at least three targets that both see can be placed, not
-collinear, each big enough by Sossa's 2d / 4d rule at the farther of the two distances
-(a flat target seen at incidence θ needs 2d / cos θ). Candidate targets are flat targets on
-the planned facades and spheres on stands on free ground, both at ``target_height_m``.
+1. **Where targets can go** (:func:`target_candidates`): flat targets on the planned
+   facades at two heights (so that the targets of a link spread in height too), spheres on
+   stands on free ground, and the site's control points.
+2. **What each station sees** (:func:`sights`): line of sight, range, the incidence on a
+   flat target (checkerboards: at most ``max_target_incidence_deg``), the size each target
+   needs there — the larger of Sossa's 2d / 4d and practice (points per quadrant, points on
+   the sphere), with the rule that sets it — and the RMS of its fitted centre
+   (:func:`planner.registration_error.target_centre_rms_mm`).
+3. **Links** (:func:`_choose_link_targets`): for two stations, the common targets are
+   chosen greedily to make the child's registration error at the facade points it serves
+   smallest — not a fixed three, not by a spread rule: a thin triangle or targets all at
+   one height show up as a large predicted error and are avoided — reusing targets already
+   placed, up to ``max_targets_per_link``.
+4. **The network** (:func:`build_network`): stations that cannot be linked get linking
+   stations (searched along chains of candidates, as many hops as needed); the datum is
+   the control network when three control points are seen, else the station that keeps the
+   chain shortest in error; the registrations form a tree from it, each station joined
+   where its accumulated error is smallest; and the error is propagated exactly
+   (:func:`planner.registration_error.propagate`).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import heapq
+from collections.abc import Sequence
+from dataclasses import dataclass, field
 
 import numpy as np
-import scipy.sparse as sp
-from scipy.sparse.csgraph import connected_components, minimum_spanning_tree
+from scipy.spatial import cKDTree
 
-from planner.pipeline.evaluate import Context
+from planner.pipeline.evaluate import Context, Registration
 from planner.pipeline.facades import PARTY_WALL_GAP_M, SIGHT_OFFSET_M, party_wall_mask
 from planner.pipeline.visibility import clear_height, edges_in_box
+from planner.registration_error import (
+    CONTROL,
+    MAX_CONDITION,
+    Link,
+    NetworkError,
+    point_registration_variances,
+    propagate,
+    scaled_condition,
+    target_centre_rms_mm,
+    transport_pose_cov,
+)
 from planner.spacing import point_spacing_mm
-from planner.targets import SPACING_FACTOR, choose_target, target_size_kernel
+from planner.targets import choose_target, size_rules
 
-__all__ = ["Network", "TargetCandidates", "connect", "target_candidates", "usability"]
+__all__ = ["Network", "Sight", "TargetCandidates", "build_network", "sights", "target_candidates"]
 
-#: Three targets whose second principal spread is below this are taken as collinear [m].
-MIN_SPREAD_M = 0.5
+#: Linking stations are searched on a grid this coarse (a subset of the candidates) [m].
+LINK_GRID_M = 4.0
+#: A link stops taking targets once adding one improves its error by less than this.
+MIN_GAIN = 0.03
+LINK_SHARE = 1.0
+#: The weak prior that lets the greedy target choice start from no targets (σ: 1 m, 0.6°).
+_PRIOR = np.diag([1e-6] * 3 + [1e4] * 3)
 
 
 @dataclass(kw_only=True)
 class TargetCandidates:
-    """Where targets could go: (T, 3) positions, type, and wall normal (zero for stands)."""
+    """Where targets could go: (T, 3) positions, type ("flat", "sphere", "control"), the
+    wall's normal (zero elsewhere), the facade of a flat target (-1 elsewhere), and for
+    control points their id and coordinate RMS [mm] (NaN elsewhere)."""
 
     xyz: np.ndarray
-    type: np.ndarray  # "flat" or "sphere"
-    normal: np.ndarray  # (T, 2)
-    facade: np.ndarray  # (T,) facade index of a flat target, -1 for a stand
+    type: np.ndarray
+    normal: np.ndarray
+    facade: np.ndarray
+    control_id: np.ndarray
+    control_rms_mm: np.ndarray
+
+    @property
+    def is_control(self) -> np.ndarray:
+        return self.type == "control"
 
 
 def target_candidates(ctx: Context, stand_xy: np.ndarray) -> TargetCandidates:
-    """Flat targets along the planned facades and spheres on the given stand positions,
-    for the target types the inventory holds."""
+    """Flat targets along the planned facades (at ``target_height_m`` and, where the wall
+    is high enough, ``high_target_height_m``), spheres on the stand positions, for the types
+    the inventory holds; and the site's control points."""
     fac, st = ctx.facades, ctx.settings
     types = {i.type for i in st.inventory}
     xyz, kind, nrm, owner, wall = [], [], [], [], []
     if "flat" in types:
+        heights = [st.target_height_m] + (
+            [st.high_target_height_m] if st.high_target_height_m else []
+        )
         for f in range(fac.n_facades):
-            z = min(st.target_height_m, fac.height_m[f] - 0.2)
-            length = fac.length_m[f]
-            n = max(1, round(length / st.target_spacing_m))
-            for k in range(n):
-                xy = fac.start[f] + (k + 0.5) / n * (fac.end[f] - fac.start[f])
-                xyz.append([*xy, z])
-                kind.append("flat")
-                nrm.append(fac.normal[f])
-                owner.append(fac.building_id[f])
-                wall.append(f)
+            n = max(1, round(fac.length_m[f] / st.target_spacing_m))
+            for row, h in enumerate(heights):
+                if h > fac.height_m[f] - 0.2 and row > 0:
+                    continue
+                z = min(h, fac.height_m[f] - 0.2)
+                for k in range(n):
+                    frac = (k + 0.5 + 0.5 * row) / (n + 0.5 * row)  # the rows staggered
+                    xyz.append([*(fac.start[f] + frac * (fac.end[f] - fac.start[f])), z])
+                    kind.append("flat")
+                    nrm.append(fac.normal[f])
+                    owner.append(fac.building_id[f])
+                    wall.append(f)
         if xyz:
             walls = np.array(xyz)
             probe = walls[:, :2] + PARTY_WALL_GAP_M * np.array(nrm)
@@ -68,32 +115,67 @@ def target_candidates(ctx: Context, stand_xy: np.ndarray) -> TargetCandidates:
             kind.append("sphere")
             nrm.append([0.0, 0.0])
             wall.append(-1)
+    ids, rms = [""] * len(xyz), [np.nan] * len(xyz)
+    for c in ctx.site.control:
+        xyz.append(list(c.xyz))
+        kind.append("control")
+        nrm.append([0.0, 0.0])
+        wall.append(-1)
+        ids.append(c.id)
+        rms.append(c.rms_mm)
     return TargetCandidates(
-        xyz=np.array(xyz).reshape(-1, 3),
+        xyz=np.array(xyz, dtype=float).reshape(-1, 3),
         type=np.array(kind, dtype=object),
         normal=np.array(nrm, dtype=float).reshape(-1, 2),
         facade=np.array(wall, dtype=np.int64),
+        control_id=np.array(ids, dtype=object),
+        control_rms_mm=np.array(rms, dtype=float),
     )
 
 
-def usability(
-    ctx: Context, tc: TargetCandidates, station_xy: np.ndarray
-) -> tuple[np.ndarray, np.ndarray]:
-    """Which targets each station can use, and the size each would need there.
+@dataclass
+class Sight:
+    """What every station sees of every target, (T, K) arrays: usable, the size it needs
+    there [mm] and the rule setting it, the centre's RMS with the largest item [mm]."""
 
-    Returns ``usable`` (T, K) bool and ``need_mm`` (T, K) minimum size [mm] (inf if unseen).
-    A target is usable from a station when it is seen (line of sight, in front of its wall,
-    within the scanner's range) and the inventory's largest item of its type is big enough.
-    """
+    usable: np.ndarray
+    need_mm: np.ndarray
+    rule: np.ndarray
+    slope_m: np.ndarray
+    cos_incidence: np.ndarray
+    spacing_mm: np.ndarray
+
+    def take(self, cols: Sequence[int] | np.ndarray) -> Sight:
+        cols = np.asarray(cols, dtype=np.int64)
+        return Sight(*(getattr(self, f)[:, cols] for f in Sight.__dataclass_fields__))
+
+    def join(self, other: Sight) -> Sight:
+        return Sight(
+            *(
+                np.column_stack([getattr(self, f), getattr(other, f)])
+                for f in Sight.__dataclass_fields__
+            )
+        )
+
+
+def sights(ctx: Context, tc: TargetCandidates, station_xy: np.ndarray) -> Sight:
+    """Which targets each station can use (seen: line of sight, range; a flat target in
+    front of its wall within ``max_target_incidence_deg``; an inventory item big enough)."""
     sc, st = ctx.scanner, ctx.settings
     t, k = len(tc.xyz), len(station_xy)
-    need = np.full((t, k), np.inf)
+    shape = (t, k)
+    need = np.full(shape, np.inf)
+    rule = np.full(shape, "", dtype=object)
+    slope = np.full(shape, np.nan)
+    cos_inc = np.ones(shape)
+    spacing = np.full(shape, np.nan)
     if t == 0 or k == 0:
-        return np.zeros((t, k), dtype=bool), need
+        return Sight(np.zeros(shape, dtype=bool), need, rule, slope, cos_inc, spacing)
     largest = {
         ty: max((i.size_mm for i in st.inventory if i.type == ty), default=0.0)
-        for ty in ("flat", "sphere")
+        for ty in ("flat", "sphere", "cylinder")
     }
+    largest["control"] = np.inf  # a control point is a mark that is there: no size to choose
     hi = st.instrument_height_m
     cos_max = np.cos(np.radians(st.max_target_incidence_deg))
     is_flat = tc.type == "flat"
@@ -103,7 +185,7 @@ def usability(
         s = np.hypot(d, tc.xyz[:, 2] - hi)
         cdot = (rel * tc.normal).sum(axis=1)
         cand = (s >= sc.min_range_m) & (s <= sc.max_range_m)
-        cand &= ~is_flat | (cdot > cos_max * s)  # in front, incidence within the limit
+        cand &= ~is_flat | (cdot > cos_max * s)
         idx = np.flatnonzero(cand)
         if not len(idx):
             continue
@@ -114,222 +196,650 @@ def usability(
         zc = clear_height(
             np.broadcast_to(sxy, (len(idx), 2)), hi, end, e[near], ctx.edge_heights[near]
         )
-        seen = tc.xyz[idx, 2] >= zc - 1e-9
-        idx = idx[seen]
-        spacing = point_spacing_mm(s[idx], step_mm_at_10m=ctx.step_mm_at_10m)
-        factor = np.array([SPACING_FACTOR[ty] for ty in tc.type[idx]], dtype=float)
-        cos_incidence = np.where(is_flat[idx], cdot[idx] / s[idx], 1.0)
-        need[idx, j] = target_size_kernel(factor, spacing, cos_incidence)
+        idx = idx[tc.xyz[idx, 2] >= zc - 1e-9]
+        sp = point_spacing_mm(s[idx], step_mm_at_10m=ctx.step_mm_at_10m)
+        ci = np.where(is_flat[idx], cdot[idx] / s[idx], 1.0)
+        slope[idx, j], cos_inc[idx, j], spacing[idx, j] = s[idx], ci, sp
+        for ty in ("flat", "sphere"):
+            sel = tc.type[idx] == ty
+            if sel.any():
+                n_, r_ = size_rules(
+                    ty,
+                    sp[sel],
+                    ci[sel],
+                    points_per_quadrant=st.min_points_per_quadrant,
+                    points_on_sphere=st.min_points_on_sphere,
+                )
+                need[idx[sel], j], rule[idx[sel], j] = n_, r_
+        ctl = tc.type[idx] == "control"
+        need[idx[ctl], j], rule[idx[ctl], j] = 0.0, "control point"
     big = np.array([largest[ty] for ty in tc.type])[:, None]
-    return need <= big, need
+    return Sight(np.isfinite(need) & (need <= big), need, rule, slope, cos_inc, spacing)
 
 
-def _triple(points: np.ndarray, prefer: np.ndarray) -> np.ndarray | None:
-    """Three well-spread points (indices), preferring ``prefer`` ones; None if all collinear."""
-    if len(points) < 3:
-        return None
-    centred = points - points.mean(axis=0)
-    if np.linalg.svd(centred, compute_uv=False)[1] < MIN_SPREAD_M * np.sqrt(len(points)) / 2:
-        return None
-    pool = np.argsort(~prefer, kind="stable")  # preferred first
-    first = pool[0]
-    dist = np.linalg.norm(points - points[first], axis=1) - 1e3 * (~prefer)
-    second = int(np.argmax(np.where(np.arange(len(points)) == first, -np.inf, dist)))
-    line = points[second] - points[first]
-    rel = points - points[first]
-    area = np.linalg.norm(np.cross(rel, line), axis=1) - 1e3 * (~prefer)  # 3-D points
-    area[[first, second]] = -np.inf
-    third = int(np.argmax(area))
-    tri = np.array([first, second, third])
-    a, b, c = points[tri]
-    if np.linalg.norm(np.cross(b - a, c - a)) / 2 < MIN_SPREAD_M**2:
-        return None
-    return tri
+class SightCache:
+    """What the candidates see of the targets, computed once per candidate for a plan (the
+    registration is built again every round)."""
+
+    def __init__(self, ctx: Context, tc: TargetCandidates, cand_xy: np.ndarray) -> None:
+        self.ctx, self.tc, self.cand_xy = ctx, tc, cand_xy
+        self.column: dict[int, int] = {}
+        self.sight: Sight | None = None
+
+    def __call__(self, idx: Sequence[int] | np.ndarray) -> Sight:
+        """The sights of candidates ``idx``, in that order."""
+        idx = [int(i) for i in idx]
+        new = [i for i in dict.fromkeys(idx) if i not in self.column]
+        if new:
+            fresh = sights(self.ctx, self.tc, self.cand_xy[new])
+            base = 0 if self.sight is None else self.sight.usable.shape[1]
+            self.sight = fresh if self.sight is None else self.sight.join(fresh)
+            self.column.update({i: base + n for n, i in enumerate(new)})
+        if self.sight is None:
+            return sights(self.ctx, self.tc, self.cand_xy[:0])
+        return self.sight.take([self.column[i] for i in idx])
 
 
-def link_matrix(usable: np.ndarray, xyz: np.ndarray) -> np.ndarray:
-    """(K, K) number of common usable targets, zeroed where they are collinear or < 3."""
-    u = sp.csr_matrix(usable.astype(np.int32))
-    common = (u.T @ u).toarray()
-    np.fill_diagonal(common, 0)
-    out = np.where(common >= 3, common, 0)
-    for i, j in zip(*np.nonzero(np.triu(out)), strict=True):
-        both = usable[:, i] & usable[:, j]
-        if _triple(xyz[both], np.zeros(both.sum(), dtype=bool)) is None:
-            out[i, j] = out[j, i] = 0
+def centre_rms(
+    ctx: Context, tc: TargetCandidates, sight: Sight, t: int, j: int, size_mm: float
+) -> float:
+    """RMS [mm] per axis of target ``t``'s centre measured from station column ``j`` with an
+    item of ``size_mm`` (the user's figure when ``target_rms_mm`` is set)."""
+    st, sc = ctx.settings, ctx.scanner
+    if st.target_rms_mm is not None:
+        return float(st.target_rms_mm)
+    ty = "sphere" if tc.type[t] == "control" else tc.type[t]
+    s = sight.slope_m[t, j]
+    return float(
+        target_centre_rms_mm(
+            ty,
+            size_mm,
+            s,
+            sight.cos_incidence[t, j],
+            float(sc.range_rms_at(s)),
+            sc.angle_rms_arcsec,
+            sight.spacing_mm[t, j],
+            floor_mm=st.target_floor_mm,
+        )
+    )
+
+
+def _item_size(ctx: Context, tc: TargetCandidates, t: int, need: float) -> float:
+    if tc.type[t] == "control":
+        return 200.0  # a control point is measured as a sphere-sized mark
+    item = choose_target(need, tc.type[t], ctx.settings.inventory)
+    return item.size_mm if item else float("nan")
+
+
+def _a_matrix(lever_mm: np.ndarray, levelled: bool) -> np.ndarray:
+    """(…, 3, p) design rows of a target at ``lever_mm`` from the child station."""
+    x, y, z = lever_mm[..., 0], lever_mm[..., 1], lever_mm[..., 2]
+    zero, one = np.zeros_like(x), np.ones_like(x)
+    rows = [
+        [one, zero, zero, zero, z, -y],
+        [zero, one, zero, -z, zero, x],
+        [zero, zero, one, y, -x, zero],
+    ]
+    a = np.stack([np.stack(r, axis=-1) for r in rows], axis=-2)
+    return a[..., [0, 1, 2, 5]] if levelled else a
+
+
+def _probe_errors(n_mats: np.ndarray, g: np.ndarray) -> np.ndarray:
+    """Largest per-axis RMS [mm] of the child's error at the probe points, for a stack of
+    normal matrices (B, p, p) of its registration (the link alone); ``g`` (P, 3, p) the
+    probes' design rows. inf where a matrix is singular."""
+    out = np.full(len(n_mats), np.inf)
+    ok = scaled_condition(n_mats) < MAX_CONDITION
+    if ok.any():
+        cov = np.linalg.inv(n_mats[ok])
+        var = np.einsum("nij,bjk,nik->bni", g, cov, g)
+        out[ok] = np.sqrt(var.reshape(len(cov), -1).max(axis=1))
     return out
+
+
+#: The facade points a link's error is judged at: the farthest from the station and a
+#: spread of the rest (the error grows with the lever arm, so these bound it).
+MAX_PROBES = 16
+
+
+def _probes(points: np.ndarray, station: np.ndarray) -> np.ndarray:
+    if len(points) <= MAX_PROBES:
+        return points
+    d = np.linalg.norm(points - station, axis=1)
+    far = np.argsort(d)[-MAX_PROBES // 2 :]
+    spread = np.linspace(0, len(points) - 1, MAX_PROBES // 2).astype(int)
+    return points[np.unique(np.concatenate([far, spread]))]
+
+
+def _choose_link_targets(
+    common: np.ndarray,
+    xyz: np.ndarray,
+    sigma2: np.ndarray,
+    child_xyz: np.ndarray,
+    probes: np.ndarray,
+    placed: set[int],
+    levelled: bool,
+    max_targets: int,
+    goal_mm: float,
+) -> tuple[list[int], float]:
+    """Greedy choice among ``common`` targets (σ_i² + σ_j² per target in ``sigma2``):
+    each step adds the target that lowers the child's predicted error at ``probes`` most
+    (a target already placed wins within :data:`MIN_GAIN`), until three are chosen and the
+    goal is met, adding no longer helps, or ``max_targets`` are chosen. Returns the targets
+    and the link's error [mm] (inf if they cannot fix the registration)."""
+    prior = _PRIOR if not levelled else _PRIOR[np.ix_([0, 1, 2, 5], [0, 1, 2, 5])]
+    a = _a_matrix((xyz[common] - child_xyz) * 1000.0, levelled)  # (C, 3, p)
+    contrib = np.einsum("cip,ciq->cpq", a, a) / sigma2[:, None, None]
+    g = _a_matrix((_probes(probes, child_xyz) - child_xyz) * 1000.0, levelled)
+    reused = np.array([int(t) in placed for t in common])
+    chosen: list[int] = []
+    n_mat = np.zeros(prior.shape)
+    error = np.inf
+    while len(chosen) < max_targets:
+        left = np.array([c for c in range(len(common)) if c not in chosen], dtype=np.int64)
+        if not len(left):
+            break
+        trial = _probe_errors(n_mat + contrib[left] + prior, g)
+        best = int(np.argmin(trial))
+        if reused[left].any():
+            r = int(np.argmin(np.where(reused[left], trial, np.inf)))
+            if trial[r] <= trial[best] * (1 + MIN_GAIN):
+                best = r
+        new_error = float(trial[best])
+        if len(chosen) >= 3 and (error <= goal_mm or new_error > error * (1 - MIN_GAIN)):
+            break
+        chosen.append(int(left[best]))
+        n_mat = n_mat + contrib[left[best]]
+        error = new_error
+    if len(chosen) < 3 or scaled_condition(n_mat) > MAX_CONDITION:
+        return [], np.inf
+    return [int(common[c]) for c in chosen], float(_probe_errors(n_mat[None], g)[0])
 
 
 @dataclass(kw_only=True)
 class Network:
     """The registration network over the chosen stations."""
 
-    stations: np.ndarray  # candidate indices, cover stations first then linking ones
+    stations: np.ndarray  # candidate indices: cover stations first, then linking ones
     n_link_stations: int
-    links: list[tuple[int, int, int]]  # (station position a, b, common targets), all links
-    tree: list[tuple[int, int]]  # the links the targets are chosen for
-    targets: list[int]  # chosen target candidate indices
-    target_links: dict[int, list[tuple[int, int]]]
-    n_components: int
+    links: list[Link]  # the registrations (a tree from the datum), parent first
+    link_error_mm: dict[tuple[int, int], float]  # the link alone, at the child's points
+    link_sigma_mm: dict[tuple[int, int], float]  # RMS of one target's centre difference
+    linkable: list[tuple[int, int, int]]  # every pair with >= 3 common targets (a, b, count)
+    targets: list[int]  # target candidate indices placed
+    datum: int | None  # a station position, or None for the control network
+    error: NetworkError | None  # pose covariances
+    n_groups: int
     message: str
-    usable: np.ndarray  # (T, K) target usable from each of ``stations``
-    need_mm: np.ndarray  # (T, K) minimum target size there [mm]
+    sight: Sight  # of ``stations``
+    candidates: TargetCandidates  # where targets could go; ``targets`` index them
+    station_xyz: np.ndarray  # (K, 3) scanner centres [m]
+    centre_rms: dict[tuple[int, int], float] = field(default_factory=dict)  # (station, t)
 
+    @property
+    def tied(self) -> np.ndarray:
+        if self.error is None:
+            return np.zeros(len(self.stations), dtype=bool)
+        return self.error.tied
 
-#: Linking stations are searched on a grid this coarse (a subset of the candidates) [m].
-LINK_GRID_M = 4.0
+    def registration(self) -> Registration | None:
+        """The registration error of the network's stations (exact), for :func:`judging
+        <planner.pipeline.evaluate.assign_stations>` a plan."""
+        if self.error is None:
+            return None
+        return Registration(
+            pose_cov=self.error.pose_cov,
+            station_xyz=self.station_xyz,
+            tied=self.error.tied | (len(self.stations) == 1),
+        )
+
+    @property
+    def backbone(self) -> np.ndarray:
+        """The stations others are registered to (candidate indices): the network's frame,
+        which a new choice of stations keeps."""
+        parents = {lk.parent for lk in self.links if lk.parent != CONTROL}
+        return self.stations[sorted(parents)] if parents else self.stations[:0]
+
+    def estimate(self, cand_xy: np.ndarray, height_m: float) -> Registration | None:
+        """The registration error every candidate would have if it joined this network, for
+        choosing stations with their registration in view: a station of the network keeps
+        its own; another candidate gets the pose error of the nearest tied station, carried
+        to where it stands, plus the error of one typical link of this network (the median
+        one). An estimate — the chosen stations' network is then built and judged exactly."""
+        if self.error is None or not self.error.tied.any():
+            return None
+        tied = np.flatnonzero(self.error.tied)
+        net_xyz = self.station_xyz
+        xyz = np.column_stack([cand_xy, np.full(len(cand_xy), height_m)])
+        _, nearest = cKDTree(net_xyz[tied, :2]).query(cand_xy)
+        j = tied[nearest]
+        pose = transport_pose_cov(self.error.pose_cov[j], net_xyz[j], xyz)
+        links = list(self.error.link_cov.values())
+        if links:
+            size = [np.trace(c[:3, :3]) for c in links]
+            pose += LINK_SHARE * links[int(np.argsort(size)[len(size) // 2])]
+        own = self.stations[self.error.tied]
+        pose[own] = self.error.pose_cov[self.error.tied]
+        return Registration(pose_cov=pose, station_xyz=xyz, tied=np.ones(len(xyz), dtype=bool))
 
 
 def _coarse(cand_xy: np.ndarray, grid_m: float) -> np.ndarray:
-    """Indices of the candidates on a ``grid_m`` lattice (candidates lie on a finer one)."""
     cells = np.floor(cand_xy / grid_m + 1e-9).astype(np.int64)
     _, first = np.unique(cells, axis=0, return_index=True)
     return np.sort(first)
 
 
-def connect(ctx: Context, tc: TargetCandidates, cand_xy: np.ndarray, chosen: np.ndarray) -> Network:
-    """Link the chosen stations; add the fewest linking stations found if they are not
-    connected; choose three targets per link of a spanning tree, reusing targets."""
-    stations = list(int(c) for c in chosen)
-    usable, need = usability(ctx, tc, cand_xy[stations])
-    links = link_matrix(usable, tc.xyz)
-    n_comp, labels = connected_components(sp.csr_matrix(links > 0), directed=False)
-    added = 0
-    if n_comp > 1 and len(tc.xyz):
-        pool = _coarse(cand_xy, max(LINK_GRID_M, ctx.settings.grid_m))
-        all_usable, all_need = usability(ctx, tc, cand_xy[pool])
-        taken = set(np.flatnonzero(np.isin(pool, stations)).tolist())
-        while n_comp > 1:
-            best = _best_bridge(all_usable, usable, labels, n_comp, tc.xyz, taken)
-            if best is None:
-                break
-            for c in best:
-                stations.append(int(pool[c]))
-                taken.add(c)
-                usable = np.column_stack([usable, all_usable[:, c]])
-                need = np.column_stack([need, all_need[:, c]])
-                added += 1
-            links = link_matrix(usable, tc.xyz)
-            n_comp, labels = connected_components(sp.csr_matrix(links > 0), directed=False)
-    # spanning forest, heaviest links (most common targets) first
-    weight = np.where(links > 0, 1.0 / np.maximum(links, 1), 0.0)
-    tree = minimum_spanning_tree(sp.csr_matrix(np.triu(weight)))
-    tree_links = [(int(min(a, b)), int(max(a, b))) for a, b in zip(*tree.nonzero(), strict=True)]
-    chosen_targets: list[int] = []
-    target_links: dict[int, list[tuple[int, int]]] = {}
-    for a, b in tree_links:
-        both = np.flatnonzero(usable[:, a] & usable[:, b])
-        prefer = np.isin(both, chosen_targets)
-        tri = _triple(tc.xyz[both], prefer)
-        if tri is None:
+def _linkable(sight: Sight, tc: TargetCandidates, a: int, b: int) -> np.ndarray:
+    """Targets (not control points) both stations can use."""
+    both = sight.usable[:, a] & sight.usable[:, b] & ~tc.is_control
+    return np.flatnonzero(both)
+
+
+def _components(k: int, edges: Sequence[tuple[int, int]]) -> np.ndarray:
+    parent = list(range(k))
+
+    def find(x: int) -> int:
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+
+    for a, b in edges:
+        parent[find(a)] = find(b)
+    roots = {find(i) for i in range(k)}
+    order = {r: n for n, r in enumerate(sorted(roots))}
+    return np.array([order[find(i)] for i in range(k)])
+
+
+#: Common targets closer than this to one line do not fix a registration [m].
+MIN_SPREAD_M = 0.3
+
+
+def _spread(points: np.ndarray) -> bool:
+    """Whether three or more target positions (n, 3) are not all on one line."""
+    if len(points) < 3:
+        return False
+    sv = np.linalg.svd(points - points.mean(axis=0), compute_uv=False)
+    return bool(sv[1] > MIN_SPREAD_M)
+
+
+def _strong(sight: Sight, tc: TargetCandidates, a: int, b: int, xyz: np.ndarray) -> bool:
+    """Whether two stations share three or more targets that fix a registration."""
+    return _spread(xyz[_linkable(sight, tc, a, b)])
+
+
+def _bridges(
+    ctx: Context,
+    seen: SightCache,
+    cand_xy: np.ndarray,
+    stations: list[int],
+    sight: Sight,
+    groups: np.ndarray,
+) -> list[int]:
+    """The fewest linking candidates that chain every group of stations into one: a
+    breadth-first search over a coarse grid of candidates, from one group to the nearest
+    other, repeated until one group is left or none can be reached. Hops are pairs with
+    three common targets; a chain found is checked hop by hop (the targets must not lie on
+    one line) and a hop that fails is struck off before searching again."""
+    tc = seen.tc
+    pool = _coarse(cand_xy, max(LINK_GRID_M, ctx.settings.grid_m))
+    pool = pool[~np.isin(pool, stations)]
+    # a bridge stands near the stations it links
+    near = np.hypot(*(cand_xy[pool, None, :] - cand_xy[None, stations, :]).transpose(2, 0, 1))
+    pool = pool[near.min(axis=1) <= BRIDGE_RADIUS_M]
+    if not len(pool):
+        return []
+    ps = seen(pool)
+    u_pool = (ps.usable & ~tc.is_control[:, None]).astype(np.float32)
+    u_st = (sight.usable & ~tc.is_control[:, None]).astype(np.float32)
+    common_pp = u_pool.T @ u_pool  # (P, P) common targets, exact in float32 below 2**24
+    common_ps = u_pool.T @ u_st  # (P, K)
+    u_pool, u_st = u_pool.astype(bool), u_st.astype(bool)
+    xyz = tc.xyz
+
+    def hop_ok(i: int, j: int, to_station: bool) -> bool:
+        other = u_st[:, j] if to_station else u_pool[:, j]
+        return _spread(xyz[u_pool[:, i] & other])
+
+    added: list[int] = []
+    groups = groups.copy()
+    for _ in range(MAX_BRIDGE_SEARCHES):
+        if groups.max() == 0:
+            break
+        chain = _bfs_chain(common_pp, common_ps, groups)
+        if chain is None:
+            break
+        # check the chain's hops: group 0 → chain[-1] → … → chain[0] → another group
+        bad = False
+        for a, b in zip(chain[1:], chain[:-1], strict=True):
+            if not hop_ok(a, b, False):
+                common_pp[a, b] = common_pp[b, a] = 0
+                bad = True
+        for end, mine in ((chain[-1], groups == 0), (chain[0], groups > 0)):
+            for s in np.flatnonzero((common_ps[end] >= 3) & mine):
+                if not hop_ok(end, int(s), True):
+                    common_ps[end, s] = 0
+                    bad = True
+        if bad:
             continue
-        for t in both[tri]:
-            t = int(t)
-            if t not in target_links:
-                chosen_targets.append(t)
-                target_links[t] = []
-            target_links[t].append((a, b))
-    all_links = [
-        (int(a), int(b), int(links[a, b])) for a, b in zip(*np.nonzero(np.triu(links)), strict=True)
-    ]
-    if len(stations) <= 1:
-        msg = "one station: no registration needed"
-    elif n_comp == 1:
-        msg = f"the {len(stations)} stations form one registration network"
-        if added:
-            msg += f" after adding {added} linking station{'s' if added > 1 else ''}"
-    else:
-        msg = (
-            f"the stations fall into {n_comp} groups that no common targets can tie together "
-            f"(even with {added} linking stations added); tie them by a traverse or by targets "
-            "coordinated with a total station"
-        )
-    return Network(
-        stations=np.array(stations),
-        n_link_stations=added,
-        links=all_links,
-        tree=tree_links,
-        targets=chosen_targets,
-        target_links=target_links,
-        n_components=n_comp,
-        message=msg,
-        usable=usable,
-        need_mm=need,
-    )
+        added += [int(pool[i]) for i in chain]
+        # the reached group joins group 0
+        hit = {int(g) for i in chain for g in groups[(common_ps[i] >= 3) & (groups > 0)]}
+        groups = np.where(np.isin(groups, list(hit)), 0, groups)
+        groups = np.unique(groups, return_inverse=True)[1]
+    return added
 
 
-def _best_bridge(
-    all_usable: np.ndarray,
-    usable: np.ndarray,
-    labels: np.ndarray,
-    n_comp: int,
-    xyz: np.ndarray,
-    taken: set[int],
+#: Linking stations are searched this close to the stations they link [m].
+BRIDGE_RADIUS_M = 60.0
+#: How many chains the bridge search tries (each failing hop struck off) before giving up.
+MAX_BRIDGE_SEARCHES = 200
+
+
+def _bfs_chain(
+    common_pp: np.ndarray, common_ps: np.ndarray, groups: np.ndarray
 ) -> list[int] | None:
-    """One candidate linking the most components, else two linked candidates bridging two."""
-    u_all = sp.csc_matrix(all_usable.astype(np.int32))
-    u_st = sp.csc_matrix(usable.astype(np.int32))
-    common = (u_all.T @ u_st).toarray()  # (C, K)
-    reach = np.zeros((all_usable.shape[1], n_comp), dtype=bool)
-    for comp in range(n_comp):
-        members = np.flatnonzero(labels == comp)
-        for k in members:
-            hits = np.flatnonzero(common[:, k] >= 3)
-            for c in hits:
-                if not reach[c, comp]:
-                    both = all_usable[:, c] & usable[:, k]
-                    if _triple(xyz[both], np.zeros(both.sum(), dtype=bool)) is not None:
-                        reach[c, comp] = True
-    reach[list(taken)] = False
-    n_reached = reach.sum(axis=1)
-    if n_reached.max(initial=0) >= 2:
-        return [int(np.argmax(n_reached))]
-    # two candidates: c1 reaches component A, c2 another, and c1 and c2 are linked
-    for comp in range(n_comp):
-        ca = np.flatnonzero(reach[:, comp])
-        cb = np.flatnonzero(reach.any(axis=1) & ~reach[:, comp])
-        if not len(ca) or not len(cb):
-            continue
-        cc = (u_all[:, ca].T @ u_all[:, cb]).toarray()
-        order = np.argsort(-cc, axis=None)
-        for flat in order[:200]:
-            i, j = np.unravel_index(flat, cc.shape)
-            if cc[i, j] < 3:
-                break
-            both = all_usable[:, ca[i]] & all_usable[:, cb[j]]
-            if _triple(xyz[both], np.zeros(both.sum(), dtype=bool)) is not None:
-                return [int(ca[i]), int(cb[j])]
+    """Shortest chain of pool candidates from group 0 to any other group (pool indices,
+    the one touching the other group first), or None."""
+    start = np.flatnonzero(((common_ps >= 3) & (groups == 0)[None, :]).any(axis=1))
+    prev = {int(i): -1 for i in start}
+    queue = [int(i) for i in start]
+    while queue:
+        nxt = []
+        for i in queue:
+            if ((common_ps[i] >= 3) & (groups > 0)).any():
+                chain = []
+                while i != -1:
+                    chain.append(i)
+                    i = prev[i]
+                return chain
+            for j in np.flatnonzero(common_pp[i] >= 3):
+                if int(j) not in prev:
+                    prev[int(j)] = i
+                    nxt.append(int(j))
+        queue = nxt
     return None
 
 
-def target_table_rows(ctx: Context, tc: TargetCandidates, net: Network) -> list[dict]:
-    """Rows of the target list: position, type, the wall it goes on and which way it faces,
-    the minimum size for every station listed (Sossa's rule at the farthest) and the
-    inventory item chosen, and the stations that use it."""
-    usable, need = net.usable, net.need_mm
-    fac = ctx.facades
-    rows = []
-    for t in net.targets:
-        users = sorted({s for link in net.target_links[t] for s in link})
-        item = choose_target(float(need[t, users].max()), tc.type[t], ctx.settings.inventory)
-        size = item.size_mm if item else float("nan")
-        seen_by = np.flatnonzero(usable[t] & (need[t] <= size))
-        f = int(tc.facade[t])
-        nx, ny = tc.normal[t]
-        rows.append(
-            {
-                "t": t,
-                "x": tc.xyz[t, 0],
-                "y": tc.xyz[t, 1],
-                "z": tc.xyz[t, 2],
-                "type": tc.type[t],
-                "min_size_mm": float(need[t, seen_by].max()),
-                "size_mm": size,
-                "item": item.name if item else "",
-                "stations": seen_by,
-                "facade_id": fac.facade_id[f] if f >= 0 else "",
-                # which way a wall target faces: azimuth of its normal, clockwise from grid north
-                "facing_deg": float(np.degrees(np.arctan2(nx, ny)) % 360.0) if f >= 0 else np.nan,
-            }
+class _Layout:
+    """Stations, what they see, which pairs can be linked, and the best tree of
+    registrations over them (datum and links, the accumulated error at each station)."""
+
+    def __init__(
+        self,
+        ctx: Context,
+        seen: SightCache,
+        cand_xy: np.ndarray,
+        stations: list[int],
+        probes: dict[int, np.ndarray],
+        goal_mm: float,
+    ) -> None:
+        tc, st = seen.tc, ctx.settings
+        self.ctx, self.tc, self.goal_mm = ctx, tc, goal_mm
+        self.stations = stations
+        self.probes = probes
+        self.sight = seen(stations)
+        k = self.k = len(stations)
+        self.station_xyz = np.column_stack([cand_xy[stations], np.full(k, st.instrument_height_m)])
+        self.pairs = [
+            (a, b)
+            for a in range(k)
+            for b in range(a + 1, k)
+            if _strong(self.sight, tc, a, b, tc.xyz)
+        ]
+        self._rms: dict[tuple[int, int], float] = {}
+        self._links: dict[tuple[int, int], tuple[list[int], float]] = {}
+        # the datum: the control network if any station sees three control points, else the
+        # station from which the tree of registrations accumulates the least error
+        # (Dijkstra on the links' variances), the choice keeping the worst station best
+        roots: list[int] = []
+        if tc.is_control.any():
+            seen_ctl = any(np.isfinite(self.link(CONTROL, j)[1]) for j in range(k))
+            roots = [CONTROL] if seen_ctl else []
+        best = None
+        for root in roots or range(k):
+            tree, cost = _tree(root, k, self.pairs, self.link)
+            key = (-len(cost), max(cost.values()) if cost else np.inf)
+            if best is None or key < best[0]:
+                best = (key, root, tree, cost)
+        (_, self.worst_var), self.datum, self.tree, self.cost = (
+            best if best else ((0, np.inf), None, [], {})
         )
-    return rows
+
+    def sigma(self, j: int, t: int) -> float:
+        """Centre RMS of target t from station j with the largest item it could need."""
+        key = (j, t)
+        if key not in self._rms:
+            size = _item_size(self.ctx, self.tc, t, float(self.sight.need_mm[t, j]))
+            self._rms[key] = centre_rms(self.ctx, self.tc, self.sight, t, j, size)
+        return self._rms[key]
+
+    def probe(self, j: int) -> np.ndarray:
+        """The facade points station j serves (a linking station: its targets' spread)."""
+        pts = self.probes.get(j)
+        if pts is None or not len(pts):
+            seen = np.flatnonzero(self.sight.usable[:, j])
+            if not len(seen):
+                return self.station_xyz[j : j + 1] + np.array([[1.0, 0.0, 0.0]])
+            pts = self.tc.xyz[seen]
+        return pts
+
+    def link(self, i: int, j: int, placed: set[int] | None = None) -> tuple[list[int], float]:
+        """Targets and error of registering j to i (i may be CONTROL); cached unless
+        ``placed`` (targets already set up, preferred) is given."""
+        key = (i, j)
+        if placed is None and key in self._links:
+            return self._links[key]
+        tc = self.tc
+        if i == CONTROL:
+            common = np.flatnonzero(self.sight.usable[:, j] & tc.is_control)
+            s2 = np.array([tc.control_rms_mm[t] ** 2 + self.sigma(j, t) ** 2 for t in common])
+        else:
+            common = _linkable(self.sight, tc, i, j)
+            s2 = np.array([self.sigma(i, t) ** 2 + self.sigma(j, t) ** 2 for t in common])
+        out: tuple[list[int], float] = ([], np.inf)
+        if len(common) >= 3:
+            out = _choose_link_targets(
+                common,
+                tc.xyz,
+                s2,
+                self.station_xyz[j],
+                self.probe(j),
+                placed or set(),
+                self.ctx.scanner.is_levelled,
+                self.ctx.settings.max_targets_per_link,
+                self.goal_mm,
+            )
+        if placed is None:
+            self._links[key] = out
+        return out
+
+    def weak_groups(self, weak_mm: float) -> np.ndarray:
+        """Groups of stations joined by links whose own error is at most ``weak_mm``."""
+        ok = [
+            (a, b) for a, b in self.pairs if min(self.link(a, b)[1], self.link(b, a)[1]) <= weak_mm
+        ]
+        return _components(self.k, ok)
+
+
+def build_network(
+    ctx: Context,
+    tc: TargetCandidates,
+    cand_xy: np.ndarray,
+    chosen: np.ndarray,
+    probes: dict[int, np.ndarray],
+    *,
+    goal_mm: float,
+    weak_mm: float = np.inf,
+    cache: SightCache | None = None,
+) -> Network:
+    """Link the chosen stations into one registration network (module docstring).
+
+    ``probes`` maps a position in ``chosen`` to the facade points it serves (P, 3) [m]; a
+    linking station without points is probed at its own targets' spread. A link whose own
+    error exceeds ``weak_mm`` is strengthened, where linking stations can, by a detour
+    that makes the worst station's error smaller. ``cache`` keeps the candidates' sights
+    between calls.
+    """
+    levelled = ctx.scanner.is_levelled
+    seen = cache if cache is not None else SightCache(ctx, tc, cand_xy)
+    stations = [int(c) for c in chosen]
+    n_cover = len(stations)
+    lay = _Layout(ctx, seen, cand_xy, stations, probes, goal_mm)
+    groups = _components(lay.k, lay.pairs)
+    if groups.max() > 0:  # stations no common targets tie: linking stations
+        extra = _bridges(ctx, seen, cand_xy, stations, lay.sight, groups)
+        if extra:
+            lay = _Layout(ctx, seen, cand_xy, stations + extra, probes, goal_mm)
+    weak = lay.weak_groups(weak_mm) if np.isfinite(weak_mm) and lay.k > 1 else np.zeros(1)
+    if weak.max() > 0:  # links too weak for the requirement: a detour, if it helps
+        extra = _bridges(ctx, seen, cand_xy, lay.stations, lay.sight, weak)
+        if extra:
+            trial = _Layout(ctx, seen, cand_xy, lay.stations + extra, probes, goal_mm)
+            if len(trial.cost) >= len(lay.cost) and trial.worst_var < 0.8 * lay.worst_var:
+                lay = trial
+    stations, sight, station_xyz, datum = lay.stations, lay.sight, lay.station_xyz, lay.datum
+    k, xyz = lay.k, tc.xyz
+    # the links in tree order, each preferring the targets already set up
+    placed: set[int] = set()
+    links: list[Link] = []
+    link_error: dict[tuple[int, int], float] = {}
+    for parent, child in lay.tree:
+        targets, err = lay.link(parent, child, placed)
+        if not targets:  # cannot happen for a tree edge; keep the cached choice
+            targets, err = lay.link(parent, child)
+        links.append(Link(parent, child, tuple(targets)))
+        link_error[(parent, child)] = err
+        placed.update(targets)
+    # the final sizes: each placed target gets the smallest item that serves every station
+    # using it, and the centre RMS with that item
+    users: dict[int, set[int]] = {}
+    for lk in links:
+        for t in lk.targets:
+            users.setdefault(t, set()).add(lk.child)
+            if lk.parent != CONTROL:
+                users[t].add(lk.parent)
+    final_rms: dict[tuple[int, int], float] = {}
+    for t, who in users.items():
+        size = _item_size(ctx, tc, t, max(float(sight.need_mm[t, j]) for j in who))
+        for j in who:
+            final_rms[(j, t)] = centre_rms(ctx, tc, sight, t, j, size)
+    control_rms = {int(t): float(tc.control_rms_mm[t]) for t in np.flatnonzero(tc.is_control)}
+    link_sigma: dict[tuple[int, int], float] = {}
+    error = None
+    if links or datum is not None:
+        error = propagate(
+            station_xyz,
+            xyz,
+            final_rms,
+            links,
+            datum=None if datum == CONTROL else datum,
+            control_rms_mm=control_rms,
+            levelled=levelled,
+            tilt_rms_arcsec=ctx.scanner.initial_tilt_rms_arcsec if levelled else 0.0,
+        )
+        # each link's own error with the final sizes, at the facade points of its child; and
+        # the RMS of one target's centre difference in it (its dilution's denominator)
+        for lk in links:
+            pts = _probes(lay.probe(lk.child), station_xyz[lk.child])
+            g = _a_matrix((pts - station_xyz[lk.child]) * 1000.0, levelled=False)
+            var = np.einsum("nij,jk,nik->ni", g, error.link_cov[(lk.parent, lk.child)], g)
+            link_error[(lk.parent, lk.child)] = float(np.sqrt(var.max()))
+            s2 = [
+                (control_rms[t] if lk.parent == CONTROL else final_rms[(lk.parent, t)]) ** 2
+                + final_rms[(lk.child, t)] ** 2
+                for t in lk.targets
+            ]
+            link_sigma[(lk.parent, lk.child)] = float(np.sqrt(np.mean(s2)))
+    n_groups = int(_components(k, lay.pairs).max() + 1) if k else 0
+    untied = int((~error.tied).sum()) if error is not None else k
+    message = _message(k, k - n_cover, datum, untied, n_groups, tc, links)
+    linkable = [(a, b, len(_linkable(sight, tc, a, b))) for a, b in lay.pairs]
+    return Network(
+        stations=np.array(stations, dtype=np.int64),
+        n_link_stations=k - n_cover,
+        links=links,
+        link_error_mm=link_error,
+        link_sigma_mm=link_sigma,
+        linkable=linkable,
+        targets=sorted(placed),
+        datum=None if datum == CONTROL else datum,
+        error=error,
+        n_groups=n_groups,
+        message=message,
+        sight=sight,
+        candidates=tc,
+        station_xyz=station_xyz,
+        centre_rms=final_rms,
+    )
+
+
+def _tree(root: int, k: int, pairs: Sequence[tuple[int, int]], link) -> tuple[list, dict]:
+    """Registrations from ``root`` reaching every station it can, each joined where its
+    accumulated error variance is smallest (Dijkstra); and that variance per station."""
+    neighbours: dict[int, list[int]] = {i: [] for i in range(k)}
+    for a, b in pairs:
+        neighbours[a].append(b)
+        neighbours[b].append(a)
+    if root == CONTROL:
+        start = [(link(CONTROL, j)[1] ** 2, j, CONTROL) for j in range(k)]
+        heap = [s for s in start if np.isfinite(s[0])]
+        cost: dict[int, float] = {}
+    else:
+        heap = [(0.0, root, None)]
+        cost = {}
+    heapq.heapify(heap)
+    tree = []
+    while heap:
+        c, node, parent = heapq.heappop(heap)
+        if node in cost:
+            continue
+        cost[node] = c
+        if parent is not None:
+            tree.append((parent, node))
+        for nb in neighbours[node]:
+            if nb not in cost:
+                err = link(node, nb)[1]
+                if np.isfinite(err):
+                    heapq.heappush(heap, (c + err**2, nb, node))
+    return tree, cost
+
+
+def _message(k, n_link, datum, untied, n_groups, tc, links) -> str:
+    if k <= 1 and not tc.is_control.any():
+        return "one station: no registration needed"
+    added = f" after adding {n_link} linking station{'s' if n_link != 1 else ''}" if n_link else ""
+    if datum == CONTROL:
+        n_ctl = len({t for lk in links if lk.parent == CONTROL for t in lk.targets})
+        head = f"tied to the site network through {n_ctl} control points"
+    else:
+        head = f"the {k} stations form one registration network"
+    if untied == 0:
+        return head + added
+    return (
+        f"{untied} of the {k} stations cannot be tied to the others by common targets "
+        f"(even{added or ' without linking stations'}, in {n_groups} groups); tie them by a "
+        "traverse, by control points coordinated with a total station (--control), or add "
+        "a station by hand"
+    )
+
+
+def registration_variances(
+    net: Network,
+    station_pos: np.ndarray,
+    point_xyz: np.ndarray,
+    along_xy: np.ndarray,
+    normal_xy: np.ndarray,
+    station_xyz: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Registration variance [mm²] of points scanned from the network's stations at
+    positions ``station_pos``; NaN where the station is not tied to the datum."""
+    if net.error is None or not len(station_pos):
+        nan = np.full(len(station_pos), np.nan)
+        return nan, nan, nan
+    cov = net.error.pose_cov[station_pos]
+    out = point_registration_variances(
+        cov, station_xyz[station_pos], point_xyz, along_xy, normal_xy
+    )
+    tied = net.error.tied[station_pos]
+    return tuple(np.where(tied, v, np.nan) for v in out)

@@ -156,6 +156,9 @@ class Requirements:
         Slope-distance window [m]; by default the scanner's.
     stations_per_sample : int, default 1
         How many stations must each meet every requirement at a sample.
+    min_view_angle_deg : float, default 30
+        With two or more stations per sample, the smallest angle between their views of it
+        (in plan, seen from the sample) for them to count as separate views.
     accuracy_class : str, optional
         A contract's accuracy class (``OGL4/OGH3``, ``LOA40``; :mod:`planner.classes`),
         which sets ``max_xy_mm`` and/or ``max_z_mm``.
@@ -213,6 +216,16 @@ class Requirements:
         hi=10,
         open_lo=False,
         help="how many stations must each meet every requirement at a sample",
+    )
+    min_view_angle_deg: float = _spec(
+        30.0,
+        "deg",
+        "smallest angle between views",
+        open_lo=False,
+        hi=150.0,
+        step=5.0,
+        help="with 2 or more stations per sample: the smallest angle (in plan, seen from the "
+        "sample) between the stations counted, so that they see it from different directions",
     )
     accuracy_class: str | None = None
 
@@ -394,6 +407,15 @@ class PlanSettings:
     incidence_noise, beam_footprint : bool, default True
         The 3-D model's optional terms: ranging noise growing with the 3-D incidence, and
         the beam's footprint bounding the detail a scan resolves (in the spacing check).
+    registration_error : bool, default True
+        Judge every sample by the scanner's error plus the registration's, propagated from
+        the targets (:mod:`planner.registration_error`). A ``station_rms_mm`` given
+        replaces the computed registration error by the paper's fixed m_xc, m_yc.
+    high_target_height_m, min_points_per_quadrant, min_points_on_sphere, target_rms_mm,
+    target_floor_mm, max_targets_per_link
+        Target planning: a second row of wall targets, the practice sizing rules, the
+        centre RMS (a figure of your own, or the model with its floor), the most targets a
+        link takes.
     """
 
     grid_m: float = _spec(
@@ -422,7 +444,8 @@ class PlanSettings:
         "station RMS m_xc, m_yc",
         open_lo=False,
         step=0.5,
-        help="station / registration RMS m_xc, m_yc added to eq. 2",
+        help="a fixed station / registration RMS m_xc, m_yc (the paper's) in place of the "
+        "registration error computed from the targets; 0: computed",
     )
     step_mm_at_10m: float | None = _spec(
         None,
@@ -436,6 +459,14 @@ class PlanSettings:
     target_height_m: float = _spec(
         1.6, "m", "target height", step=0.1, help="height of targets on stands and on walls"
     )
+    high_target_height_m: float | None = _spec(
+        3.0,
+        "m",
+        "second wall target height",
+        optional=True,
+        step=0.5,
+        help="height of a second row of wall targets, so that a link's targets spread in height",
+    )
     target_spacing_m: float = _spec(
         6.0,
         "m",
@@ -444,12 +475,53 @@ class PlanSettings:
         help="spacing of candidate target positions along facades and on free ground",
     )
     max_target_incidence_deg: float = _spec(
-        60.0,
+        45.0,
         "deg",
         "largest target incidence",
         hi=89.0,
         step=5.0,
-        help="beyond this incidence a flat target is not used",
+        help="beyond this incidence a flat (checkerboard) target is not used (FARO's guidance "
+        "for targets in SCENE: 45°)",
+    )
+    min_points_per_quadrant: float = _spec(
+        4,
+        "points",
+        "points per checkerboard quadrant",
+        step=1,
+        help="each quadrant of a flat target must hold this many scan points",
+    )
+    min_points_on_sphere: float = _spec(
+        20,
+        "points",
+        "points on a sphere",
+        step=1,
+        help="a sphere's visible cap must hold this many scan points for its centre fit",
+    )
+    target_rms_mm: float | None = _spec(
+        None,
+        "mm",
+        "target centre RMS",
+        optional=True,
+        step=0.1,
+        help="your figure for a target centre's RMS per axis (default: the model)",
+    )
+    target_floor_mm: float = _spec(
+        0.5,
+        "mm",
+        "target centre floor",
+        open_lo=False,
+        step=0.1,
+        help="what a centre fit does not see (printing, turning, centring), per axis",
+    )
+    max_targets_per_link: float = _spec(
+        6,
+        "targets",
+        "most targets per link",
+        lo=3,
+        open_lo=False,
+        hi=20,
+        step=1,
+        help="the most common targets a registration of two stations takes",
     )
     time_limit_s: float = _spec(
         60.0,
@@ -478,6 +550,7 @@ class PlanSettings:
     model: str = "3d"
     incidence_noise: bool = True
     beam_footprint: bool = True
+    registration_error: bool = True
 
     def __post_init__(self) -> None:
         station_rms_pair(self.station_rms_mm)
@@ -487,7 +560,7 @@ class PlanSettings:
             raise InputError(f"method must be one of {', '.join(METHODS)}; got {self.method!r}")
         if self.model not in MODELS:
             raise InputError(f"model must be one of {', '.join(MODELS)}; got {self.model!r}")
-        for name in ("incidence_noise", "beam_footprint"):
+        for name in ("incidence_noise", "beam_footprint", "registration_error"):
             if not isinstance(getattr(self, name), bool):
                 raise InputError(f"{name} must be True or False; got {getattr(self, name)!r}")
 
@@ -509,6 +582,12 @@ class PlanSettings:
     def station_rms_pair(self) -> tuple[float, float]:
         """``(m_xc, m_yc)`` [mm]."""
         return station_rms_pair(self.station_rms_mm)
+
+    @property
+    def computes_registration(self) -> bool:
+        """Whether samples are judged with the registration error computed from targets
+        (on, and no fixed ``station_rms_mm`` given in its place)."""
+        return self.registration_error and self.station_rms_pair == (0.0, 0.0)
 
 
 def requirements_and_settings(

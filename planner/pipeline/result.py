@@ -16,7 +16,42 @@ from planner.pipeline.requirements import PlanSettings, Requirements
 from planner.scanner import Scanner
 from planner.site import Site
 
-__all__ = ["FACADE_TABLE_COLUMNS", "Plan"]
+__all__ = ["FACADE_TABLE_COLUMNS", "LINK_COLUMNS", "TARGET_COLUMNS", "Plan"]
+
+#: The target list: where (site CRS, z above the ground), which type, the smallest size its
+#: stations need and the item placed, the rule that sized it, the stations using it, the
+#: wall it is on and which way it faces (azimuth of the normal), its centre's RMS [mm].
+TARGET_COLUMNS = [
+    "target_id",
+    "x",
+    "y",
+    "z",
+    "type",
+    "min_size_mm",
+    "size_mm",
+    "item",
+    "sized_by",
+    "station_ids",
+    "facade_id",
+    "facing_deg",
+    "centre_rms_mm",
+]
+#: The registrations (station_b registered to station_a, or to the control network): common
+#: targets usable by both, targets placed, the link's own predicted error at station_b's
+#: facade points [mm], its geometry's strength — ``dilution``, that error over the RMS of
+#: one target's centre difference (like a DOP: how much the targets' layout magnifies their
+#: errors out at the facades; lower is stronger) — and the whole registration error
+#: station_b's points end with [mm].
+LINK_COLUMNS = [
+    "station_a",
+    "station_b",
+    "common_targets",
+    "targets_placed",
+    "target_ids",
+    "link_rms_mm",
+    "dilution",
+    "station_b_rms_mm",
+]
 
 #: The per-facade summary as a surveyor reads it (dashboard, report).
 FACADE_TABLE_COLUMNS = [
@@ -39,15 +74,17 @@ class Plan:
 
     DataFrames (coordinates in the site's CRS, heights above the ground):
 
-    * ``stations`` — ``station_id, x, y, instrument_height_m, purpose`` ("cover" or "link"),
-      ``samples_met``;
-    * ``targets`` — ``target_id, x, y, z, type, min_size_mm, size_mm, station_ids`` (a list),
-      ``item``;
+    * ``stations`` — ``station_id, x, y, instrument_height_m, purpose`` ("cover": chosen by
+      the optimiser; "link": tying the network together; "registration": added where the
+      registration error kept samples from the limits), ``samples_met``;
+    * ``targets`` — :data:`TARGET_COLUMNS` (``station_ids`` a list);
     * ``coverage`` — one row per facade sample, the columns of
-      :data:`planner.pipeline.export.COVERAGE_COLUMNS` plus ``spacing_mm,
-      stations_meeting, party_wall, reason``;
-    * ``facades`` — per-facade summary; ``links`` — registration links between stations;
-    * ``candidates`` — every candidate position with the number of samples it meets.
+      :data:`planner.pipeline.export.COVERAGE_COLUMNS` (m_x, m_y, m_z the totals, scanner ⊕
+      registration, and both parts) plus ``stations_meeting, party_wall``;
+    * ``facades`` — per-facade summary; ``links`` — the registrations, :data:`LINK_COLUMNS`;
+    * ``candidates`` — every candidate position with the number of samples it meets;
+    * ``network`` — the registration network behind ``links`` (pose covariances, the
+      observations and their RMS), for checks and what-if analyses.
     """
 
     site: Site
@@ -61,6 +98,7 @@ class Plan:
     links: pd.DataFrame
     candidates: pd.DataFrame
     solver: dict[str, Any]
+    network: Any = None  # the registration network (planner.pipeline.registration.Network)
     messages: list[str] = field(default_factory=list)
     timings_s: dict[str, float] = field(default_factory=dict)
 
@@ -100,8 +138,9 @@ class Plan:
         """A few lines a surveyor reads first."""
         req, sc, s = self.requirements, self.scanner, self.solver
         cov = self.scanned
-        n_cover = int((self.stations["purpose"] == "cover").sum())
-        n_link = int((self.stations["purpose"] == "link").sum())
+        purposes = self.stations["purpose"].value_counts()
+        n_cover, n_link = int(purposes.get("cover", 0)), int(purposes.get("link", 0))
+        n_reg = int(purposes.get("registration", 0))
         solver = f"({s['status']}; objective {s['objective']}"
         if s.get("gap") is not None:
             solver += f", lower bound {s['lower_bound']:g}, gap {100 * s['gap']:.1f} %"
@@ -116,10 +155,14 @@ class Plan:
             f"Scanner {sc.name}; required {req.describe()}",
             f"Stations: {len(self.stations)} ({n_cover} to cover"
             + (f", {n_link} to link" if n_link else "")
-            + f"), chosen by {s['method']} {solver} from {len(self.candidates)} candidates",
+            + (f", {n_reg} for the registration error" if n_reg else "")
+            + f"); the covering ones chosen by {s['method']} {solver} from "
+            f"{len(self.candidates)} candidates",
             f"Targets: {len(self.targets)}"
             + (" (" + ", ".join(f"{n} {t}" for t, n in types.items()) + ")" if len(types) else ""),
-            f"Samples meeting every requirement: {int(cov['meets'].sum())} of {len(cov)}",
+            "Samples meeting every requirement"
+            + (" (scanner ⊕ registration)" if self.settings.computes_registration else "")
+            + f": {int(cov['meets'].sum())} of {len(cov)}",
         ]
         return "\n".join(lines + self.messages)
 

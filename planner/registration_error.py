@@ -1,0 +1,374 @@
+r"""Registration error: from each target's centre RMS to the RMS of every scanned point.
+
+Voroshilov & Karachentsev note, after their eq. 2, that once the stations are tied into one
+coordinate system m_x and m_y grow by the errors of the station coordinates and of the
+joining (their m_xc, m_yc). This module computes those errors per station, and per point,
+from the targets that tie the scans together. It goes beyond the paper; the model is the
+planner's, checked by a Monte Carlo of the whole chain in ``tests/test_registration.py``.
+
+**Target centres.** A target's fitted centre is uncertain by (per axis)
+
+.. math::
+
+    \sigma_t = \sqrt{\sigma_\mathrm{floor}^2 + k\,\frac{\sigma_r^2 + 2\sigma_l^2}{3\,n}}
+
+with σ_r the ranging RMS and σ_l = S·m/ρ the lateral RMS of one point at the target's
+distance, n the number of scan points on it (:func:`points_on_target`) and k the number of
+parameters the fit determines (3 for the centre of a flat target, 4 for a sphere: centre
+and radius). The first term is a floor for what the fit does not see (the printing or
+turning of the target, centring): 0.5 mm unless given. A user figure replaces the model.
+
+**Pairwise registration.** Station j is registered to station i by least squares over
+their common targets: unknowns the shift δs and the rotation δω of j (6 parameters; 4 —
+δs and the rotation about the vertical δκ — for a levelled scanner, whose tilt its
+compensator fixes to σ_τ independently at every station). For target t at X_t,
+
+.. math::
+
+    A_t = [\,I_3 \;\; -[X_t - s_j]_\times\,], \qquad
+    \hat\theta_j = N^{-1}\sum_t A_t^\top W_t\,(e_{i,t} - e_{j,t} + \text{pose error of } i
+    \text{ at } X_t),
+
+with W_t = (σ_{i,t}² + σ_{j,t}²)⁻¹ I. Chaining along the network from the datum makes every
+station's pose error a linear combination of the measurement errors of every target seen
+(and of the stations' tilts): :func:`propagate` keeps those combinations, so a target used
+by two links is counted once, correctly correlated, and the covariance of every station's
+pose is exact to first order. Control targets with known coordinates (and their RMS) can
+be the datum.
+
+**Points.** A point p scanned from station j moves by ``δs_j + δω_j × (p − s_j)``; its
+registration RMS in the facade frame (:func:`point_registration_variances`) adds to the
+scanner's m_x, m_y, m_z in quadrature.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from planner.errors import InputError
+from planner.units import RHO_ARCSEC
+
+__all__ = [
+    "DEFAULT_FLOOR_MM",
+    "Link",
+    "NetworkError",
+    "pair_registration_variances",
+    "point_registration_variances",
+    "points_on_target",
+    "propagate",
+    "scaled_condition",
+    "target_centre_rms_mm",
+    "transport_pose_cov",
+]
+
+#: What a centre fit does not see (printing, turning, centring) [mm], per axis.
+DEFAULT_FLOOR_MM = 0.5
+#: Parameters of the centre fit: a flat target's centre (3), a sphere's centre and radius (4).
+FIT_PARAMETERS = {"flat": 3, "sphere": 4, "cylinder": 4}
+#: The datum: station index meaning "the control network" (targets with known coordinates).
+CONTROL = -1
+
+
+def points_on_target(
+    target_type: str, size_mm: np.ndarray, spacing_mm: np.ndarray, cos_incidence: np.ndarray
+) -> np.ndarray:
+    """Scan points on a target: a flat square of side a seen at incidence θ holds
+    a²·cos θ / d², a sphere of diameter D shows a disc of π·D²/4 (d the point spacing at its
+    distance). At least 1.
+
+    Examples
+    --------
+    >>> float(points_on_target("flat", 100.0, 10.0, 1.0))
+    100.0
+    >>> round(float(points_on_target("sphere", 200.0, 20.0, 1.0)), 2)
+    78.54
+    """
+    size = np.asarray(size_mm, dtype=float)
+    d2 = np.square(np.asarray(spacing_mm, dtype=float))
+    if target_type == "flat":
+        n = size * size * np.clip(np.asarray(cos_incidence, dtype=float), 0.0, 1.0) / d2
+    else:
+        n = np.pi * size * size / 4.0 / d2
+    return np.maximum(n, 1.0)
+
+
+def target_centre_rms_mm(
+    target_type: str,
+    size_mm: np.ndarray,
+    slope_distance_m: np.ndarray,
+    cos_incidence: np.ndarray,
+    range_rms_mm: np.ndarray,
+    angle_rms_arcsec: float,
+    spacing_mm: np.ndarray,
+    *,
+    floor_mm: float = DEFAULT_FLOOR_MM,
+) -> np.ndarray:
+    """Per-axis RMS [mm] of a target's fitted centre seen from one station (module
+    docstring): the floor, and the noise of the points on it averaged by the fit.
+
+    Examples
+    --------
+    A 200 mm sphere at 50 m, 4 mm ranging, 12.4″, 10 mm spacing:
+
+    >>> round(float(target_centre_rms_mm("sphere", 200.0, 50.0, 1.0, 4.0, 12.4, 10.0)), 3)
+    0.628
+    """
+    if target_type not in FIT_PARAMETERS:
+        raise InputError(f"target type must be one of {', '.join(FIT_PARAMETERS)}")
+    s = np.asarray(slope_distance_m, dtype=float)
+    lateral = s * 1000.0 * angle_rms_arcsec / RHO_ARCSEC
+    point_var = (np.square(range_rms_mm) + 2.0 * np.square(lateral)) / 3.0
+    n = points_on_target(target_type, size_mm, spacing_mm, cos_incidence)
+    return np.sqrt(floor_mm**2 + FIT_PARAMETERS[target_type] * point_var / n)
+
+
+@dataclass(frozen=True)
+class Link:
+    """A registration of ``child`` to ``parent`` (a station index, or :data:`CONTROL`) over
+    the common targets ``targets``."""
+
+    parent: int
+    child: int
+    targets: tuple[int, ...]
+
+
+@dataclass
+class NetworkError:
+    """The propagated errors: every station's pose covariance (6 × 6; shift in mm, rotation
+    in radians, about the station) and, per link, the child's pose covariance from that
+    link alone."""
+
+    pose_cov: np.ndarray  # (K, 6, 6)
+    link_cov: dict[tuple[int, int], np.ndarray]  # (parent, child) -> 6 x 6
+    tied: np.ndarray  # (K,) bool: reached from the datum
+
+
+def _skew(v: np.ndarray) -> np.ndarray:
+    """[v]×, the cross-product matrix, of a 3-vector or a stack of them (…, 3) → (…, 3, 3)."""
+    v = np.asarray(v, dtype=float)
+    out = np.zeros((*v.shape[:-1], 3, 3))
+    x, y, z = v[..., 0], v[..., 1], v[..., 2]
+    out[..., 0, 1], out[..., 0, 2] = -z, y
+    out[..., 1, 0], out[..., 1, 2] = z, -x
+    out[..., 2, 0], out[..., 2, 1] = -y, x
+    return out
+
+
+def propagate(
+    station_xyz: np.ndarray,
+    target_xyz: np.ndarray,
+    target_rms_mm: dict[tuple[int, int], float],
+    links: Sequence[Link],
+    *,
+    datum: int | None = 0,
+    control_rms_mm: dict[int, float] | None = None,
+    levelled: bool = False,
+    tilt_rms_arcsec: float = 0.0,
+) -> NetworkError:
+    """Pose covariance of every station after pairwise registrations along ``links``.
+
+    Parameters
+    ----------
+    station_xyz : (K, 3) scanner centres [m]; target_xyz : (T, 3) target centres [m].
+    target_rms_mm : per (station, target) observation, the per-axis RMS of the centre [mm].
+    links : the registrations, each child after its parent (a tree from the datum).
+    datum : the station whose frame is the datum (error 0), or None with control targets.
+    control_rms_mm : control targets (index → per-axis RMS of their known coordinates);
+        links with ``parent = CONTROL`` register a station to them.
+    levelled : 4-parameter registrations; every station's tilt is an independent error of
+        ``tilt_rms_arcsec`` per axis.
+    """
+    k = len(station_xyz)
+    control_rms_mm = control_rms_mm or {}
+    # the noise sources: one 3-vector per observation, per control target, per tilt
+    index: dict[tuple, int] = {}
+    sigma: list[float] = []
+
+    def source(key: tuple, rms: float, dims: int) -> int:
+        if key not in index:
+            index[key] = len(sigma)
+            sigma.extend([rms] * dims)
+        return index[key]
+
+    for (st, t), rms in target_rms_mm.items():
+        source(("obs", st, t), rms, 3)
+    for t, rms in control_rms_mm.items():
+        source(("control", t), rms, 3)
+    tau = tilt_rms_arcsec / RHO_ARCSEC
+    if levelled:
+        for st in range(k):
+            source(("tilt", st), tau, 2)
+    m = len(sigma)
+    pose = {} if datum is None else {datum: np.zeros((6, m))}
+    if levelled and datum is not None:  # the datum's own tilt still moves its points
+        pose[datum][3:5, index[("tilt", datum)] : index[("tilt", datum)] + 2] = np.eye(2)
+    link_only: dict[tuple[int, int], np.ndarray] = {}
+    params = 4 if levelled else 6
+    for link in links:
+        if link.parent != CONTROL and link.parent not in pose:
+            raise InputError(f"link {link}: station {link.parent} is not tied yet; order links")
+        j = link.child
+        sj = station_xyz[j]
+        n_mat = np.zeros((params, params))
+        rhs = np.zeros((params, m))
+        rhs_link = np.zeros((params, m))
+        for t in link.targets:
+            x = target_xyz[t]
+            lever = (x - sj) * 1000.0  # mm: a rotation [rad] × lever [mm] → mm
+            a_full = np.hstack([np.eye(3), -_skew(lever)])
+            a = a_full if not levelled else a_full[:, [0, 1, 2, 5]]
+            c = np.zeros((3, m))  # (where the parent puts the target) − (where j measures it)
+            if link.parent == CONTROL:
+                rms_i = control_rms_mm[t]
+                c[:, index[("control", t)] : index[("control", t)] + 3] += np.eye(3)
+            else:
+                i = link.parent
+                rms_i = target_rms_mm[(i, t)]
+                c[:, index[("obs", i, t)] : index[("obs", i, t)] + 3] += np.eye(3)
+                lever_i = (x - station_xyz[i]) * 1000.0
+                c += np.hstack([np.eye(3), -_skew(lever_i)]) @ pose[i]
+            rms_j = target_rms_mm[(j, t)]
+            c[:, index[("obs", j, t)] : index[("obs", j, t)] + 3] -= np.eye(3)
+            if levelled:  # j's own tilt moves what j measures: −τ_j × lever
+                cols = index[("tilt", j)]
+                c[:, cols : cols + 2] -= (-_skew(lever))[:, :2]
+            w = 1.0 / (rms_i**2 + rms_j**2)
+            n_mat += w * a.T @ a
+            rhs += w * a.T @ c
+            c_link = c.copy()
+            if link.parent != CONTROL:  # the link alone: without the parent's pose error
+                c_link -= (
+                    np.hstack([np.eye(3), -_skew((x - station_xyz[link.parent]) * 1000)])
+                    @ pose[link.parent]
+                )
+            rhs_link += w * a.T @ c_link
+        if scaled_condition(n_mat) > MAX_CONDITION:
+            raise InputError(
+                f"the targets of link {link.parent}→{link.child} do not fix the registration "
+                "(fewer than 3, or all on one line)"
+            )
+        theta = np.linalg.solve(n_mat, rhs)
+        theta_link = np.linalg.solve(n_mat, rhs_link)
+        pose[j] = _expand(theta, levelled, index, j, m)
+        link_only[(link.parent, link.child)] = _expand(theta_link, levelled, index, j, m)
+    var = np.square(np.asarray(sigma))
+    pose_cov = np.zeros((k, 6, 6))
+    tied = np.zeros(k, dtype=bool)
+    for st, lmat in pose.items():
+        pose_cov[st] = (lmat * var) @ lmat.T
+        tied[st] = True
+    link_cov = {key: (lmat * var) @ lmat.T for key, lmat in link_only.items()}
+    return NetworkError(pose_cov=pose_cov, link_cov=link_cov, tied=tied)
+
+
+#: A normal matrix this ill-conditioned (its diagonal scaled to one, so that shifts in mm and
+#: rotations in radians compare) does not fix a registration.
+MAX_CONDITION = 1e8
+
+
+def scaled_condition(n_mats: np.ndarray) -> np.ndarray:
+    """Condition number of normal matrices (…, p, p) with their diagonal scaled to one; inf
+    where a diagonal element is not positive (a parameter nothing determines).
+
+    Examples
+    --------
+    >>> n = np.diag([1.0, 1e9])  # well posed, only in different units
+    >>> float(np.linalg.cond(n)), round(float(scaled_condition(n)), 6)
+    (1000000000.0, 1.0)
+    """
+    n_mats = np.asarray(n_mats, dtype=float)
+    diag = np.diagonal(n_mats, axis1=-2, axis2=-1)
+    fine = (diag > 0).all(axis=-1) & np.isfinite(n_mats).all(axis=(-2, -1))
+    d = 1.0 / np.sqrt(np.where(fine[..., None], diag, 1.0))
+    scaled = n_mats * d[..., :, None] * d[..., None, :]
+    eye = np.eye(diag.shape[-1])
+    scaled = np.where(fine[..., None, None], scaled, eye)
+    return np.where(fine, np.linalg.cond(scaled), np.inf)
+
+
+def transport_pose_cov(
+    pose_cov: np.ndarray, from_xyz: np.ndarray, to_xyz: np.ndarray
+) -> np.ndarray:
+    """A pose covariance (…, 6, 6; shift in mm about ``from_xyz``, rotation in rad) moved to
+    a centre at ``to_xyz`` [m]: the shift there is ``δs + δω × (to − from)``.
+
+    Examples
+    --------
+    >>> c = np.zeros((6, 6)); c[5, 5] = 1e-10  # 10 µrad about the vertical
+    >>> moved = transport_pose_cov(c, np.zeros(3), np.array([100.0, 0, 0]))
+    >>> round(float(np.sqrt(moved[1, 1])), 3)  # 10 µrad × 100 m = 1 mm across
+    1.0
+    """
+    delta = (np.asarray(to_xyz, dtype=float) - np.asarray(from_xyz, dtype=float)) * 1000.0
+    delta = np.broadcast_to(delta, (*np.shape(pose_cov)[:-2], 3))
+    jac = np.zeros((*delta.shape[:-1], 6, 6))
+    jac[..., :, :] = np.eye(6)
+    jac[..., :3, 3:] = -_skew(delta)
+    return jac @ pose_cov @ np.swapaxes(jac, -1, -2)
+
+
+def _expand(theta: np.ndarray, levelled: bool, index: dict, j: int, m: int) -> np.ndarray:
+    """A station's pose error (6 rows: shift, rotation) from the fitted parameters."""
+    if not levelled:
+        return theta
+    out = np.zeros((6, m))
+    out[0:3] = theta[0:3]
+    out[5] = theta[3]
+    cols = index[("tilt", j)]
+    out[3:5, cols : cols + 2] = np.eye(2)  # the compensator's residual tilt of station j
+    return out
+
+
+def point_registration_variances(
+    pose_cov: np.ndarray,
+    station_xyz: np.ndarray,
+    point_xyz: np.ndarray,
+    along_xy: np.ndarray,
+    normal_xy: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Registration variance [mm²] of points in their facade frames.
+
+    ``pose_cov`` (P, 6, 6) is the pose covariance of the station each point was scanned
+    from (``station_xyz`` (P, 3)); ``along_xy``, ``normal_xy`` (P, 2) the facade's unit
+    vectors. The point moves by ``δs + δω × (p − s)``.
+    """
+    lever = (np.asarray(point_xyz) - np.asarray(station_xyz)) * 1000.0  # mm
+    p = len(lever)
+    jac = np.zeros((p, 3, 6))
+    jac[:, :, :3] = np.eye(3)
+    x, y, z = lever[:, 0], lever[:, 1], lever[:, 2]
+    # −[r]× : δω × r = −r × δω
+    jac[:, 0, 4], jac[:, 0, 5] = z, -y
+    jac[:, 1, 3], jac[:, 1, 5] = -z, x
+    jac[:, 2, 3], jac[:, 2, 4] = y, -x
+    cov = jac @ pose_cov @ np.transpose(jac, (0, 2, 1))  # (P, 3, 3) in the site frame
+    u = np.column_stack([along_xy, np.zeros(p)])
+    n = np.column_stack([normal_xy, np.zeros(p)])
+    var_x = np.einsum("pi,pij,pj->p", u, cov, u)
+    var_y = np.einsum("pi,pij,pj->p", n, cov, n)
+    return var_x, var_y, cov[:, 2, 2]
+
+
+def pair_registration_variances(
+    pose_cov: np.ndarray,
+    station_xyz: np.ndarray,
+    point_xyz: np.ndarray,
+    along_xy: np.ndarray,
+    normal_xy: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Registration variance [mm²] of ``n`` points of one facade (its unit vectors
+    ``along_xy``, ``normal_xy``) scanned from each of ``c`` stations: arrays (c, n).
+
+    Along a unit vector u the point moves by ``gᵀ·(δs, δω)`` with ``g = (u, r × u)``
+    (r = p − s in mm), so its variance is ``gᵀ C g``.
+    """
+    lever = (point_xyz[None, :, :] - station_xyz[:, None, :]) * 1000.0  # (c, n, 3) mm
+    out = []
+    for u2 in (along_xy, normal_xy, None):
+        u = np.array([0.0, 0.0, 1.0]) if u2 is None else np.array([u2[0], u2[1], 0.0])
+        g = np.concatenate([np.broadcast_to(u, lever.shape), np.cross(lever, u)], axis=-1)
+        out.append(((g @ pose_cov) * g).sum(axis=-1))  # gᵀ C g per pair
+    return out[0], out[1], out[2]

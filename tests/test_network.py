@@ -1,0 +1,227 @@
+"""Registration in the plan: the invariants every plan keeps (one network or a reason, three
+usable, spread targets per link, redundant views from different directions), the total
+error judged, and what the plan says when registration is what fails."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+from sites import l_site
+
+from planner.pipeline.evaluate import Context, assign_stations, evaluate_stations
+from planner.pipeline.facades import build_facades
+from planner.pipeline.planning import plan
+from planner.pipeline.requirements import PlanSettings, Requirements
+from planner.scanner import Scanner
+from planner.synthetic import town
+
+
+@pytest.fixture(scope="module")
+def default_plan():
+    return plan()
+
+
+@pytest.fixture(scope="module")
+def block_plan():
+    """A perimeter block of ten terraced buildings round a courtyard with a gateway."""
+    return plan(town(10, seed=0), settings=PlanSettings(grid_m=3.0, sample_spacing_m=3.0))
+
+
+def _check_links(p):
+    """Every link: at least three targets, each usable from both its stations (its station
+    list names both), not all on one line; a station tied to the control points sees three
+    of them."""
+    targets = p.targets.set_index("target_id")
+    assert len(p.links) == len(p.stations) - (0 if (p.links["station_a"] == "control").any() else 1)
+    for r in p.links.itertuples():
+        ids = r.target_ids.split(";")
+        assert len(ids) == r.targets_placed >= 3
+        assert r.common_targets >= r.targets_placed
+        used = targets.loc[ids]
+        for sid in used["station_ids"]:
+            assert r.station_b in sid
+            assert r.station_a == "control" or r.station_a in sid
+        xyz = used[["x", "y", "z"]].to_numpy()
+        spread = np.linalg.svd(xyz - xyz.mean(axis=0), compute_uv=False)
+        assert spread[1] > 0.3  # m: not on one line
+        assert np.isfinite(r.link_rms_mm) and r.link_rms_mm > 0
+        assert np.isfinite(r.station_b_rms_mm) and r.station_b_rms_mm > 0
+
+
+@pytest.mark.parametrize("which", ["default_plan", "block_plan"])
+def test_every_plan_is_one_network_with_sound_links(which, request):
+    p = request.getfixturevalue(which)
+    assert p.network.tied.all()
+    assert any("form one registration network" in m for m in p.messages)
+    _check_links(p)
+    # every station except the datum is some link's child, exactly once
+    assert sorted(p.links["station_b"]) == sorted(
+        s for i, s in enumerate(p.stations["station_id"]) if i != p.network.datum
+    )
+
+
+@pytest.mark.parametrize("which", ["default_plan", "block_plan"])
+def test_every_sample_is_judged_on_scanner_plus_registration(which, request):
+    p = request.getfixturevalue(which)
+    cov = p.scanned[p.scanned["station_id"] != ""]
+    req = p.requirements
+    for c, limit in (("x", req.max_x_mm), ("y", req.max_y_mm), ("z", req.max_z_mm)):
+        total = np.hypot(cov[f"scanner_m_{c}_mm"], cov[f"reg_m_{c}_mm"])
+        np.testing.assert_allclose(cov[f"m_{c}_mm"], total, atol=1e-9)  # mm
+        assert (cov.loc[cov["meets"], f"m_{c}_mm"] <= limit + 1e-9).all()
+    # registration is a real part of the error: a millimetre or more on most samples
+    assert (cov[["reg_m_x_mm", "reg_m_y_mm", "reg_m_z_mm"]].max(axis=1) > 0.5).mean() > 0.5
+
+
+def test_the_scanner_alone_overstates_what_a_plan_meets(default_plan):
+    """Plan by the scanner's error alone, then judge those stations with the registration
+    error of their own network: fewer samples meet. The plan that counts registration
+    meets them all."""
+    old = plan(settings=PlanSettings(registration_error=False))
+    assert old.meets_all
+    ctx = Context.build(
+        old.site,
+        build_facades(old.site, old.settings.sample_spacing_m, old.settings.sample_height_step_m),
+        old.scanner,
+        old.requirements,
+        old.settings,
+        100.0,
+    )
+    xy = old.stations[["x", "y"]].to_numpy()
+    judged = assign_stations(ctx, xy, old.network.registration())
+    demanded = ~ctx.facades.party_wall
+    truly = int(((judged.n_meeting >= 1) & demanded).sum())
+    assert truly < int(demanded.sum())  # the old promise breaks on some samples
+    assert default_plan.meets_all
+    assert "not counted" in " ".join(old.messages)
+
+
+def test_redundant_stations_see_each_sample_from_different_directions():
+    site = l_site(8.0)
+    req = Requirements(max_xy_mm=8, max_z_mm=8, stations_per_sample=2, min_view_angle_deg=30)
+    st = PlanSettings(grid_m=2.0, sample_spacing_m=3.0, sample_height_step_m=3.0)
+    p = plan(site, Scanner.from_name("leica-4mm-60urad"), req, st)
+    cov = p.scanned
+    assert cov["meets"].mean() > 0.9
+    ctx = Context.build(site, build_facades(site, 3.0, 3.0), p.scanner, req, st, 100.0)
+    xy = p.stations[["x", "y"]].to_numpy()
+    ok = evaluate_stations(ctx, xy)["ok"]  # the scanner's part: a superset of what meets
+    sample_xy = ctx.facades.xy
+    for i in np.flatnonzero(p.coverage["meets"].to_numpy()):
+        d = xy[ok[i]] - sample_xy[i]
+        az = np.degrees(np.arctan2(d[:, 1], d[:, 0]))
+        gaps = np.abs((az[:, None] - az[None, :] + 180) % 360 - 180)
+        assert gaps.max() >= 30.0 - 1e-9, (i, az)
+
+
+def test_poor_targets_are_named_as_the_reason():
+    """With targets of 3 mm centre RMS the registration, not the scanner, keeps samples from
+    the limit — and the reason and the messages say so, with the numbers."""
+    p = plan(settings=PlanSettings(target_rms_mm=3.0, time_limit_s=30))
+    unmet = p.unmet
+    assert len(unmet)
+    by_reg = unmet[unmet["reason"].str.contains("registration error")]
+    assert len(by_reg) > 0.5 * len(unmet)
+    row = by_reg.iloc[0]
+    req = p.requirements
+    c = row["reason"].split("m_")[1][0]
+    limit = getattr(req, f"max_{c}_mm")
+    assert row[f"scanner_m_{c}_mm"] <= limit + 1e-9 < row[f"m_{c}_mm"]
+    assert any(m.startswith("Weakest link:") for m in p.messages)
+
+
+def test_links_csv_and_geojson_carry_the_per_link_report(default_plan, tmp_path):
+    default_plan.save(tmp_path / "plan")
+    links = pd.read_csv(tmp_path / "plan" / "links.csv")
+    assert list(links.columns) == [
+        "station_a",
+        "station_b",
+        "common_targets",
+        "targets_placed",
+        "target_ids",
+        "link_rms_mm",
+        "dilution",
+        "station_b_rms_mm",
+    ]
+    assert (links["dilution"] > 0.3).all() and (links["targets_placed"] >= 3).all()
+    import json
+
+    gj = json.loads((tmp_path / "plan" / "plan.geojson").read_text())
+    feats = [f for f in gj["features"] if f["properties"]["layer"] == "link"]
+    assert len(feats) == len(links)
+    assert all(f["properties"]["link_rms_mm"] > 0 for f in feats)
+
+
+# -- the command line ---------------------------------------------------------------------
+def _cli(*argv: str) -> tuple[int, str, str]:
+    import io
+    from contextlib import redirect_stderr, redirect_stdout
+
+    from planner.app.cli import main
+
+    out, err = io.StringIO(), io.StringIO()
+    with redirect_stdout(out), redirect_stderr(err):
+        try:
+            code = main(list(argv))
+        except SystemExit as exc:
+            code = int(exc.code or 0)
+    return code, out.getvalue(), err.getvalue()
+
+
+FAST = ["--grid-m", "4", "--sample-spacing-m", "4", "--sample-height-step-m", "4", "-q"]
+
+
+def test_control_points_from_the_command_line_are_the_datum(tmp_path):
+    """Three control points round the default site, 2 mm each, given on the command line:
+    the stations that see them are tied to them, and the plan says so."""
+    (tmp_path / "control.csv").write_text(
+        "id,x,y,z,rms_mm\n"
+        "GP1,690985.0,5334985.0,1.2,2\n"
+        "GP2,691060.0,5334985.0,1.5,2\n"
+        "GP3,691030.0,5335045.0,2.0,2\n"
+        "GP4,690975.0,5335040.0,1.0,2\n"
+    )
+    code, out, err = _cli(
+        "plan", "--control", str(tmp_path / "control.csv"), *FAST, "--out", str(tmp_path / "p")
+    )
+    assert code in (0, 1), err
+    assert "tied to the site network through" in out
+    links = pd.read_csv(tmp_path / "p" / "links.csv")
+    assert (links["station_a"] == "control").any()
+    targets = pd.read_csv(tmp_path / "p" / "targets.csv")
+    assert set(targets.loc[targets["type"] == "control", "target_id"]) <= {
+        "GP1",
+        "GP2",
+        "GP3",
+        "GP4",
+    }
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("id,x,y,z\nA,1,2,3\n", "from the nearest building"),  # another CRS
+        ("id,x,y,z\nA,691005,5335005,1\n", "inside building 'main'"),
+        ("id,x,y\nA,691005,5334990\n", "missing z"),
+        ("id,x,y,z\nA,691005,5334990,abc\n", "abc"),
+        ("id,x,y,z,rms_mm\nA,691005,5334990,1,-2\n", "rms_mm must be > 0"),
+        ("id,x,y,z\nA,690990,5334990,1\nA,690995,5334990,1\n", "unique"),
+        ("", "no control points"),
+    ],
+)
+def test_bad_control_files_are_refused_with_a_message(tmp_path, text, message):
+    path = tmp_path / "control.csv"
+    path.write_text(text)
+    code, _, err = _cli("plan", "--control", str(path), *FAST, "--out", str(tmp_path / "p"))
+    assert code == 2
+    assert message in err and "Traceback" not in err
+    assert not (tmp_path / "p").exists()
+
+
+def test_without_registration_error_the_plan_says_so(tmp_path):
+    code, out, err = _cli("plan", "--no-registration-error", *FAST, "--out", str(tmp_path / "p"))
+    assert code in (0, 1), err
+    assert "Registration error: not counted" in out
+    cov = pd.read_csv(tmp_path / "p" / "coverage.csv")
+    np.testing.assert_allclose(cov["m_x_mm"], cov["scanner_m_x_mm"], atol=1e-3)  # mm

@@ -1,0 +1,317 @@
+"""Registration error (planner.registration_error): a case worked out by hand, and a Monte
+Carlo of the whole chain — noisy target measurements at every station, pairwise
+least-squares registrations, chained from the datum — against the propagated covariance,
+with negative controls that fail when the propagation is wrong."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from planner.pipeline.planning import plan
+from planner.registration_error import (
+    CONTROL,
+    Link,
+    point_registration_variances,
+    propagate,
+    target_centre_rms_mm,
+)
+from planner.units import RHO_ARCSEC
+
+
+def test_two_stations_three_targets_by_hand():
+    """Station 1 at the centroid of three targets on an equilateral triangle of radius R in
+    its horizontal plane, σ per axis at both stations: per axis var(δs) = 2σ²/3;
+    var(ω_x) = var(ω_y) = 4σ²/(3R²), var(ω_z) = 2σ²/(3R²); a point h above the station
+    moves along x by δs_x + ω_y·h."""
+    r, sigma, h = 10.0, 1.0, 5.0  # m, mm, m
+    ang = np.radians([0.0, 120.0, 240.0])
+    targets = np.column_stack([r * np.cos(ang), r * np.sin(ang), np.zeros(3)]) + np.array(
+        [50, 0, 0]
+    )
+    stations = np.array([[0.0, 0.0, 0.0], [50.0, 0.0, 0.0]])
+    rms = {(k, t): sigma for k in range(2) for t in range(3)}
+    net = propagate(stations, targets, rms, [Link(0, 1, (0, 1, 2))], datum=0)
+    cov = net.pose_cov[1]
+    r_mm = r * 1000
+    assert np.diag(cov)[:3] == pytest.approx([2 * sigma**2 / 3] * 3, rel=1e-9)
+    assert np.diag(cov)[3:] == pytest.approx(
+        [4 * sigma**2 / (3 * r_mm**2)] * 2 + [2 * sigma**2 / (3 * r_mm**2)], rel=1e-9
+    )
+    vx, _, vz = point_registration_variances(
+        cov[None],
+        stations[1:2],
+        np.array([[50.0, 0.0, h]]),
+        np.array([[1.0, 0.0]]),
+        np.array([[0.0, 1.0]]),
+    )
+    expected = 2 * sigma**2 / 3 + 4 * sigma**2 * (h * 1000) ** 2 / (3 * r_mm**2)
+    assert vx[0] == pytest.approx(expected, rel=1e-9)  # mm²
+    assert vz[0] == pytest.approx(2 * sigma**2 / 3, rel=1e-9)  # the rotation does not lift it
+    assert net.pose_cov[0] == pytest.approx(np.zeros((6, 6)))  # the datum
+
+
+def test_collinear_targets_do_not_fix_a_registration():
+    stations = np.array([[0.0, 0.0, 0.0], [20.0, 0.0, 0.0]])
+    targets = np.array([[10.0, 5.0, 1.0], [12.0, 5.0, 1.0], [14.0, 5.0, 1.0]])
+    rms = {(k, t): 1.0 for k in range(2) for t in range(3)}
+    with pytest.raises(Exception, match="do not fix the registration"):
+        propagate(stations, targets, rms, [Link(0, 1, (0, 1, 2))])
+
+
+def test_target_centre_rms_grows_with_distance_and_shrinks_with_size():
+    near = target_centre_rms_mm("sphere", 200.0, 20.0, 1.0, 2.0, 10.0, 4.0)
+    far = target_centre_rms_mm("sphere", 200.0, 80.0, 1.0, 2.0, 10.0, 16.0)
+    bigger = target_centre_rms_mm("sphere", 400.0, 80.0, 1.0, 2.0, 10.0, 16.0)
+    assert 0.5 < near < far and bigger < far
+    assert target_centre_rms_mm("flat", 100.0, 10.0, 1.0, 1.0, 5.0, 2.0, floor_mm=0.0) < 0.1
+
+
+# -- Monte Carlo of the whole chain -------------------------------------------------------
+def _rot_z(k):
+    c, s = np.cos(k), np.sin(k)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+def _rot_xy(tx, ty):
+    cx, sx, cy, sy = np.cos(tx), np.sin(tx), np.cos(ty), np.sin(ty)
+    rx = np.array([[1.0, 0, 0], [0, cx, -sx], [0, sx, cx]])
+    ry = np.array([[cy, 0, sy], [0, 1.0, 0], [-sy, 0, cy]])
+    return rx @ ry
+
+
+def _kabsch(q, p, w):
+    """R, t minimising Σ w‖R q + t − p‖² (weighted Procrustes, no scale)."""
+    w = w / w.sum()
+    qc, pc = (w[:, None] * q).sum(0), (w[:, None] * p).sum(0)
+    h = (w[:, None] * (q - qc)).T @ (p - pc)
+    u, _, vt = np.linalg.svd(h)
+    d = np.sign(np.linalg.det(vt.T @ u.T))
+    rot = vt.T @ np.diag([1.0, 1.0, d]) @ u.T
+    return rot, pc - rot @ qc
+
+
+def _planar(q, p, w):
+    """R (about z), t minimising Σ w‖R q + t − p‖²: the 4-parameter registration."""
+    w = w / w.sum()
+    qc, pc = (w[:, None] * q).sum(0), (w[:, None] * p).sum(0)
+    a, b = q[:, :2] - qc[:2], p[:, :2] - pc[:2]
+    k = np.arctan2((w * (a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0])).sum(), (w * (a * b).sum(1)).sum())
+    rot = _rot_z(k)
+    return rot, pc - rot @ qc
+
+
+# four stations in a chain S0 → S1 → S2 and S1 → S3; targets in plan and at two heights,
+# some shared by two links (their measurements correlate the links)
+STATIONS = np.array([[0.0, 0.0, 1.5], [30.0, 5.0, 1.6], [55.0, -10.0, 1.4], [35.0, 35.0, 1.5]])
+TARGETS = np.array(
+    [
+        [12.0, 8.0, 1.6],
+        [15.0, -9.0, 3.2],
+        [18.0, 14.0, 1.6],
+        [20.0, -2.0, 3.0],
+        [42.0, -6.0, 1.6],
+        [44.0, 8.0, 3.1],
+        [48.0, -18.0, 1.6],
+        [26.0, 22.0, 1.6],
+        [40.0, 22.0, 3.2],
+        [32.0, 28.0, 1.7],
+    ]
+)
+LINKS = [Link(0, 1, (0, 1, 2, 3)), Link(1, 2, (3, 4, 5, 6)), Link(1, 3, (2, 7, 8, 9))]
+SAMPLES = {  # facade points scanned from each station (site frame)
+    1: np.array([[30.0, 20.0, 12.0], [45.0, 5.0, 2.0]]),
+    2: np.array([[60.0, 5.0, 14.0], [70.0, -10.0, 1.0]]),
+    3: np.array([[35.0, 50.0, 10.0], [20.0, 40.0, 3.0]]),
+}
+TRIALS = 6000
+#: relative tolerance on an RMS from TRIALS draws: 5 standard errors
+REL_TOL = 5 / np.sqrt(2 * TRIALS)
+
+
+def _rms_table(seed: int = 3):
+    rng = np.random.default_rng(seed)
+    rms = {}
+    for link in LINKS:
+        for t in link.targets:
+            for k in (link.parent, link.child):
+                d = np.linalg.norm(TARGETS[t] - STATIONS[k])
+                rms[(k, t)] = 0.6 + 0.02 * d + 0.3 * rng.random()  # mm, per axis
+    return rms
+
+
+def _simulate_chain(
+    rms,
+    levelled,
+    tilt_arcsec,
+    rng,
+    *,
+    stations=STATIONS,
+    targets=TARGETS,
+    links=LINKS,
+    samples=SAMPLES,
+    datum=0,
+    trials=TRIALS,
+):
+    """Errors [mm] of every sample point after the chained registrations: each station
+    measures each of its targets once in its own (randomly turned) frame with the given
+    noise, each link is a weighted least-squares rigid registration to its parent's
+    estimate, and the sample points of each station are carried along (trials × …)."""
+    kappas = rng.uniform(0, 2 * np.pi, len(stations))
+    tau = tilt_arcsec / RHO_ARCSEC
+    out = {j: [] for j in samples}
+    for _ in range(trials):
+        true_rot = []
+        for k in range(len(stations)):
+            tilt = _rot_xy(*rng.normal(0, tau, 2)) if levelled else np.eye(3)
+            true_rot.append(tilt @ _rot_z(kappas[k]))
+        # each station measures each of its targets once, in its own frame
+        meas = {}
+        for (k, t), sigma in rms.items():
+            local = true_rot[k].T @ (targets[t] - stations[k])
+            meas[(k, t)] = local + rng.normal(0, sigma / 1000, 3)
+        # the datum's frame: its own (levelled: its nominal orientation, tilt unknown)
+        est = {datum: (_rot_z(kappas[datum]), stations[datum].copy())}
+        for link in links:
+            i, j = link.parent, link.child
+            ri, ti = est[i]
+            p = np.array([ri @ meas[(i, t)] + ti for t in link.targets])
+            q = np.array([meas[(j, t)] for t in link.targets])
+            w = np.array([1 / (rms[(i, t)] ** 2 + rms[(j, t)] ** 2) for t in link.targets])
+            est[j] = _planar(q, p, w) if levelled else _kabsch(q, p, w)
+        for j, pts in samples.items():
+            rj, tj = est[j]
+            local = (true_rot[j].T @ (pts - stations[j]).T).T
+            out[j].append(((rj @ local.T).T + tj - pts) * 1000)
+    return {j: np.array(v) for j, v in out.items()}
+
+
+def _predicted(net, j):
+    pts = SAMPLES[j]
+    n = len(pts)
+    along = np.tile([1.0, 0.0], (n, 1))
+    normal = np.tile([0.0, 1.0], (n, 1))
+    return point_registration_variances(
+        np.repeat(net.pose_cov[j][None], n, axis=0),
+        np.repeat(STATIONS[j][None], n, axis=0),
+        pts,
+        along,
+        normal,
+    )
+
+
+@pytest.mark.parametrize(("levelled", "tilt"), [(False, 0.0), (True, 3.0)])
+def test_chained_registration_matches_a_monte_carlo(levelled, tilt):
+    rms = _rms_table()
+    net = propagate(STATIONS, TARGETS, rms, LINKS, datum=0, levelled=levelled, tilt_rms_arcsec=tilt)
+    sim = _simulate_chain(rms, levelled, tilt, np.random.default_rng(17 + levelled))
+    worst = 0.0
+    for j in SAMPLES:
+        pred = np.sqrt(np.column_stack(_predicted(net, j)))  # (points, 3) RMS [mm]
+        emp = np.sqrt(np.mean(np.square(sim[j]), axis=0))  # (points, 3)
+        worst = max(worst, float(np.max(np.abs(emp / pred - 1))))
+        np.testing.assert_allclose(emp, pred, rtol=REL_TOL)
+    assert worst < REL_TOL
+
+
+def test_negative_control_fails():
+    """A wrong propagation — the links' shared targets taken as independent (the
+    covariances of consecutive links simply added) — is rejected by the same Monte Carlo."""
+    rms = _rms_table()
+    sim = _simulate_chain(rms, False, 0.0, np.random.default_rng(5))
+    net = propagate(STATIONS, TARGETS, rms, LINKS, datum=0)
+    # (a) independent links: every station's covariance = the sum of its links' own
+    link_only = {child: net.link_cov[(p, child)] for (p, child) in net.link_cov}
+    summed = net.pose_cov.copy()
+    summed[1] = link_only[1]
+    summed[2] = link_only[1] + link_only[2]
+    summed[3] = link_only[1] + link_only[3]
+    wrong = type(net)(pose_cov=summed, link_cov=net.link_cov, tied=net.tied)
+    misses = []
+    for j in (2, 3):
+        emp = np.sqrt(np.mean(np.square(sim[j]), axis=0))
+        bad = np.sqrt(np.column_stack(_predicted(wrong, j)))
+        misses.append(float(np.max(np.abs(emp / bad - 1))))
+    assert max(misses) > 4 * REL_TOL, misses
+
+
+def test_control_targets_are_a_datum():
+    """Registered to three control points of 1 mm, a station's shift is known to ~1 mm
+    whatever station is first; with 10 mm control points it is worse."""
+    stations = np.array([[0.0, 0.0, 1.5]])
+    targets = np.array([[10.0, 0.0, 1.5], [-5.0, 9.0, 3.0], [-5.0, -9.0, 1.5]])
+    rms = {(0, t): 0.5 for t in range(3)}
+    good = propagate(
+        stations,
+        targets,
+        rms,
+        [Link(CONTROL, 0, (0, 1, 2))],
+        datum=None,
+        control_rms_mm=dict.fromkeys(range(3), 1.0),
+    )
+    poor = propagate(
+        stations,
+        targets,
+        rms,
+        [Link(CONTROL, 0, (0, 1, 2))],
+        datum=None,
+        control_rms_mm=dict.fromkeys(range(3), 10.0),
+    )
+    shift_good = np.sqrt(np.diag(good.pose_cov[0])[:3])
+    assert np.all(shift_good < 1.2) and np.all(shift_good > 0.5)  # mm
+    assert np.all(np.sqrt(np.diag(poor.pose_cov[0])[:3]) > 5 * shift_good)
+    assert good.tied.all()
+
+
+# -- the whole chain of a real plan ---------------------------------------------------------
+def test_the_default_plans_registration_error_matches_a_monte_carlo_of_its_network():
+    """The default site's plan, its network as planned (stations, links, the targets each
+    link uses, every observation's centre RMS), simulated end to end; the empirical error
+    of every facade sample scanned from a registered station, along the facade, across it
+    and in height, against the registration RMS the coverage reports. Negative control:
+    the same network without its rotations' lever arms (shift errors only) misses."""
+    p = plan()
+    net = p.network
+    assert net is not None and net.datum is not None and len(net.links) >= 3
+    ids = list(p.stations["station_id"])
+    cov = p.scanned[p.scanned["station_id"] != ""]
+    fac = p.facades.set_index("facade_id")
+    rows = {j: cov[cov["station_id"] == sid] for j, sid in enumerate(ids) if j != net.datum}
+    rows = {j: r.iloc[:: max(1, len(r) // 12)] for j, r in rows.items() if len(r)}
+    samples = {j: r[["x", "y", "z"]].to_numpy() for j, r in rows.items()}
+    trials = 3000
+    sim = _simulate_chain(
+        net.centre_rms,
+        False,
+        0.0,
+        np.random.default_rng(11),
+        stations=net.station_xyz,
+        targets=net.candidates.xyz,
+        links=net.links,
+        samples=samples,
+        datum=net.datum,
+        trials=trials,
+    )
+    tol = 5 / np.sqrt(2 * trials)
+    worst, shift_only = 0.0, 0.0
+    for j, r in rows.items():
+        f = fac.loc[r["facade_id"]]
+        along = np.column_stack([f["x1"] - f["x0"], f["y1"] - f["y0"]])
+        along /= np.linalg.norm(along, axis=1)[:, None]
+        normal = np.column_stack([along[:, 1], -along[:, 0]])
+        e = sim[j]  # (trials, points, 3) [mm]
+        emp = np.sqrt(
+            np.column_stack(
+                [
+                    np.mean(np.einsum("tpi,pi->tp", e[..., :2], along) ** 2, axis=0),
+                    np.mean(np.einsum("tpi,pi->tp", e[..., :2], normal) ** 2, axis=0),
+                    np.mean(e[..., 2] ** 2, axis=0),
+                ]
+            )
+        )
+        pred = r[["reg_m_x_mm", "reg_m_y_mm", "reg_m_z_mm"]].to_numpy()
+        worst = max(worst, float(np.max(np.abs(emp / pred - 1))))
+        shifts = np.sqrt(np.diag(net.error.pose_cov[j])[:3])
+        shift_only = max(shift_only, float(np.max(emp[:, 2] / shifts[2] - 1)))
+    assert worst < tol, worst
+    assert shift_only > 4 * tol  # the rotations matter: ignoring them is rejected
