@@ -54,7 +54,6 @@ __all__ = ["Network", "Sight", "TargetCandidates", "build_network", "sights", "t
 LINK_GRID_M = 4.0
 #: A link stops taking targets once adding one improves its error by less than this.
 MIN_GAIN = 0.03
-LINK_SHARE = 1.0
 #: The weak prior that lets the greedy target choice start from no targets (σ: 1 m, 0.6°).
 _PRIOR = np.diag([1e-6] * 3 + [1e4] * 3)
 
@@ -417,7 +416,7 @@ class Network:
         links = list(self.error.link_cov.values())
         if links:
             size = [np.trace(c[:3, :3]) for c in links]
-            pose += LINK_SHARE * links[int(np.argsort(size)[len(size) // 2])]
+            pose += links[int(np.argsort(size)[len(size) // 2])]
         own = self.stations[self.error.tied]
         pose[own] = self.error.pose_cov[self.error.tied]
         return Registration(pose_cov=pose, station_xyz=xyz, tied=np.ones(len(xyz), dtype=bool))
