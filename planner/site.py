@@ -16,6 +16,7 @@ from shapely.geometry import MultiPolygon, Polygon
 from shapely.geometry.base import BaseGeometry
 
 from planner.errors import InputError
+from planner.zones import Zone
 
 __all__ = [
     "Area",
@@ -293,6 +294,7 @@ class Site:
     warnings: list[str] = field(default_factory=list)
     limits: SiteLimits = field(default_factory=SiteLimits)
     control: list[ControlPoint] = field(default_factory=list)
+    zones: list[Zone] = field(default_factory=list)
 
     def __post_init__(self) -> None:
         for name, kind in (
@@ -300,6 +302,7 @@ class Site:
             ("obstacles", Obstacle),
             ("no_go", Area),
             ("control", ControlPoint),
+            ("zones", Zone),
         ):
             items = getattr(self, name)
             if isinstance(items, str | bytes) or not hasattr(items, "__iter__"):
@@ -359,6 +362,25 @@ class Site:
             )
         self._check_overlaps()
         self._check_control()
+        self._check_zones()
+
+    def _check_zones(self) -> None:
+        """Zone ids unique; each on a building of the site (a facade id names its building:
+        ``<building>-f<NN>``)."""
+        self.zones = list(self.zones)
+        ids = [z.id for z in self.zones]
+        dup = sorted({i for i in ids if ids.count(i) > 1})
+        if dup:
+            raise InputError(f"zone id {dup[0]!r} appears twice; zone ids must be unique")
+        known = {b.id for b in self.buildings}
+        for z in self.zones:
+            bid = z.building_id or (z.facade_id or "").rsplit("-f", 1)[0]
+            if bid not in known:
+                where = z.building_id or z.facade_id
+                raise InputError(
+                    f"zone {z.id!r} is on {where!r}, which is not a building (or a facade "
+                    f"<building>-f<NN>) of the site; buildings: {', '.join(sorted(known)[:20])}"
+                )
 
     def _check_control(self) -> None:
         """Control points must be on the site: not inside a building, not kilometres away

@@ -5,8 +5,10 @@ All inputs are in a projected metric CRS; coordinates are kept as given.
 * **GeoJSON** — a FeatureCollection, a Feature or a bare geometry. Properties: ``role``
   (``building`` — the default —, ``obstacle``, ``no-go``, ``boundary``), ``height`` (or
   ``height_m``) in metres, ``id`` (else the Feature's ``id`` member, else its index),
-  ``plan`` (false: a building that only blocks the beam), ``kind``, ``name``. A legacy
-  ``crs`` member is kept and written back.
+  ``plan`` (false: a building that only blocks the beam), ``kind``, ``name``; on a
+  building, its own requirement (``max_xy_mm``, ``max_z_mm``, ``max_incidence_deg``,
+  ``max_spacing_mm``, ``stations_per_sample``, ``class``, ``sample_spacing_m``: a zone
+  covering it, :mod:`planner.zones`). A legacy ``crs`` member is kept and written back.
 * **WKT** — one geometry per line, optionally followed by ``; key=value`` pairs with the
   same keys (``POLYGON ((...)); height=12; role=building; id=A``).
 * **CSV** — one row per vertex, with a header: ``id, x, y`` and optionally ``ring`` (0 the
@@ -45,6 +47,7 @@ from planner.site import (
     SiteLimits,
     repair_geometry,
 )
+from planner.zones import ALIASES, ZONE_KEYS, Zone, zone_from_row
 
 __all__ = ["default_site", "read_control", "read_site", "site_from_features", "site_from_geojson"]
 
@@ -96,6 +99,7 @@ def site_from_features(
     no_go: list[Area] = []
     boundaries: list[BaseGeometry] = []
     control: list[ControlPoint] = []
+    zones: list[Zone] = []
     for f in features:
         role = str(f.props.get("role", "building")).strip().lower()
         role = _ROLE_ALIASES.get(role, role)
@@ -124,6 +128,9 @@ def site_from_features(
                 height = default_height_m
                 warnings.append(f"{role} {f.ident!r} has no height; using {default_height_m:g} m")
             if role == "building":
+                zone = _building_zone(f)
+                if zone is not None:
+                    zones.append(zone)
                 blds.append(
                     Building(
                         f.ident,
@@ -158,8 +165,21 @@ def site_from_features(
         warnings=warnings,
         limits=limits or SiteLimits(),
         control=control,
+        zones=zones,
     )
     return site.select(buildings)
+
+
+def _building_zone(f: Feature) -> Zone | None:
+    """A building's own requirement from its properties (``max_xy_mm``, ``max_z_mm``,
+    ``class``, ``sample_spacing_m``…), as a zone covering the building; None if it has none."""
+    keys = {k: v for k, v in f.props.items() if ALIASES.get(k, k) in ZONE_KEYS}
+    for k in ("sample_spacing_m", "sample_height_step_m"):
+        if k in f.props:
+            keys[k] = f.props[k]
+    if not keys:
+        return None
+    return zone_from_row({"building_id": f.ident, **keys}, f"{f.ident} (building)")
 
 
 def _control_point(f: Feature) -> ControlPoint:

@@ -387,6 +387,7 @@ def test_every_meets_row_really_meets_the_requirements(rich_plan):
         "reg_m_z_mm",
         "spacing_mm",
         "reason",
+        "zone",
     ]
     assert (csv.loc[csv["meets"], "m_x_mm"] <= 4.0 + 0.0005).all()
     # the totals are the scanner's and the registration's parts added in quadrature

@@ -229,6 +229,17 @@ def plan_inputs(args: argparse.Namespace):
         from planner.siteio import read_control
 
         site = replace(site, control=[*site.control, *read_control(args.control)])
+    if args.zones or args.zone:
+        from dataclasses import replace
+
+        from planner.zones import parse_zone, read_zones
+
+        zones = list(site.zones)
+        if args.zones:
+            zones += read_zones(args.zones)
+        for n, text in enumerate(args.zone or [], start=1):
+            zones.append(parse_zone(text, f"zone{n}"))
+        site = replace(site, zones=zones)
     options = dict(vars(args))
     if args.inventory:
         options["inventory"] = parse_inventory(_read_text(args.inventory, "inventory file"))
@@ -549,6 +560,22 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         default=None,
         help="judge samples by the scanner's error alone (the paper's eq. 2 and 4 without "
         "m_xc, m_yc); the registration network is still planned",
+    )
+    pl.add_argument(
+        "--zones",
+        metavar="ZONES.csv",
+        default=None,
+        help="requirements per building, facade or part of a facade: a table with "
+        "id, facade_id (or building_id), from_m, to_m, z_from_m, z_to_m (or elevation_wkt), "
+        "and max_xy_mm, max_z_mm, class, max_spacing_mm, stations_per_sample, sample_spacing_m…",
+    )
+    pl.add_argument(
+        "--zone",
+        action="append",
+        default=None,
+        metavar="KEY=VALUE,...",
+        help="one zone without a file (repeatable), e.g. "
+        "facade=main-f00,from=4,to=10,z=0-6,max_xy_mm=3,sample_spacing_m=0.5",
     )
     pl.add_argument(
         "--control",

@@ -105,6 +105,104 @@ def _scanner_dropdown() -> w.Dropdown:
     )
 
 
+class ZoneEditor:
+    """Add zones without editing files: pick a facade, drag (or type) the along-facade and
+    height ranges, give the requirement and the finer spacing, Add. The zones are checked
+    when the plan is made (a message, never a traceback)."""
+
+    def __init__(self) -> None:
+        rq = field_specs(Requirements)
+        self.facade = w.Dropdown(options=[], description="facade", style=_STYLE, layout=_FULL)
+        slider = dict(min=0.0, max=10.0, step=0.1, readout_format=".1f", style=_STYLE, layout=_FULL)
+        self.along = w.FloatRangeSlider(value=(0.0, 10.0), description="along [m]", **slider)
+        self.height = w.FloatRangeSlider(value=(0.0, 10.0), description="height [m]", **slider)
+        self.max_xy = _field_box(rq["max_xy_mm"], "zone: largest m_x, m_y")
+        self.max_z = _field_box(rq["max_z_mm"], "zone: largest m_z")
+        self.spacing = _number(0.0, 0.0, 100.0, 0.25, "zone: sample spacing [m] (0: as the site)")
+        self.add = w.Button(description="Add zone", icon="plus")
+        self.clear = w.Button(description="Remove zones")
+        self.listing = w.HTML("<small>No zones: one requirement everywhere.</small>")
+        self.zones: list = []
+        self._sizes: dict[str, tuple[float, float]] = {}
+        self.facade.observe(lambda _c: self._fit_ranges(), "value")
+        self.add.on_click(lambda _b: self.add_zone())
+        self.clear.on_click(lambda _b: self.remove_all())
+        self.widget = w.VBox(
+            [
+                w.HTML("<h3>Zones</h3><small>a stricter requirement on part of a facade</small>"),
+                self.facade,
+                self.along,
+                self.height,
+                self.max_xy,
+                self.max_z,
+                self.spacing,
+                w.HBox([self.add, self.clear]),
+                self.listing,
+            ]
+        )
+
+    def show_facades(self, site) -> None:
+        """Offer the facades of ``site`` (ids as facades.csv names them)."""
+        from planner.pipeline.facades import build_facades
+
+        fac = build_facades(site, 2.0, 2.0)
+        self._sizes = {
+            str(fid): (float(length), float(h))
+            for fid, length, h in zip(fac.facade_id, fac.length_m, fac.height_m, strict=True)
+        }
+        self.facade.options = list(self._sizes)
+        self.facade.value = next(iter(self._sizes), None)
+        self._fit_ranges()
+
+    def _fit_ranges(self) -> None:
+        size = self._sizes.get(self.facade.value)
+        if size is None:
+            return
+        for slider, top in ((self.along, size[0]), (self.height, size[1])):
+            slider.max = round(top, 1)
+            slider.value = (0.0, round(top, 1))
+
+    def add_zone(self) -> None:
+        from planner.zones import Zone
+
+        if not self.facade.value:
+            self.listing.value = _error_html("choose a facade first")
+            return
+        requirement = {"max_xy_mm": self.max_xy.value, "max_z_mm": self.max_z.value}
+        try:
+            zone = Zone(
+                id=f"Z{len(self.zones) + 1}",
+                facade_id=self.facade.value,
+                along_m=tuple(self.along.value),
+                height_m=tuple(self.height.value),
+                requirement=requirement,
+                sample_spacing_m=self.spacing.value or None,
+                sample_height_step_m=self.spacing.value or None,
+            )
+        except PlannerError as exc:
+            self.listing.value = _error_html(str(exc))
+            return
+        self.zones.append(zone)
+        self._list()
+
+    def remove_all(self) -> None:
+        self.zones = []
+        self._list()
+
+    def _list(self) -> None:
+        if not self.zones:
+            self.listing.value = "<small>No zones: one requirement everywhere.</small>"
+            return
+        items = "".join(
+            f"<li>{html.escape(z.id)}: {html.escape(z.describe())}; m_x, m_y ≤ "
+            f"{z.requirement['max_xy_mm']:g} mm, m_z ≤ {z.requirement['max_z_mm']:g} mm"
+            + (f"; samples every {z.sample_spacing_m:g} m" if z.sample_spacing_m else "")
+            + "</li>"
+            for z in self.zones
+        )
+        self.listing.value = f"<ul class='planner-zones' style='margin:0'>{items}</ul>"
+
+
 class StationPlanner:
     """The station-planner dashboard: site, scanner, requirements, Plan, results, downloads."""
 
@@ -132,6 +230,7 @@ class StationPlanner:
         self.max_spacing = _field_box(rq["max_spacing_mm"])
         self.per_sample = _field_box(rq["stations_per_sample"])
         self.grid = _field_box(ps["grid_m"])
+        self.zone_editor = ZoneEditor()
         self.accuracy_class = w.Combobox(
             value="",
             placeholder="none: the limits above; or e.g. OGL4/OGH3, LOA40",
@@ -205,6 +304,7 @@ class StationPlanner:
                 self.class_note,
                 self.model,
                 self.grid,
+                self.zone_editor.widget,
                 self.plan_button,
                 self.progress,
                 self.status,
@@ -221,27 +321,47 @@ class StationPlanner:
         )
         # links: thin callbacks
         self.plan_button.on_click(lambda _b: self.run())
-        self.upload.observe(lambda _c: setattr(self.site_source, "value", "Upload a file"), "value")
+        self.upload.observe(lambda _c: self._uploaded(), "value")
         self.quantity.observe(lambda _c: self._show_coverage(), "value")
         self.report_button.on_click(lambda _b: self.make_report())
+        self.site_source.observe(lambda _c: self._offer_facades(), "value")
+        self.buildings.observe(lambda _c: self._offer_facades(), "value")
+        self._offer_facades()
 
-    # -- actions -----------------------------------------------------------------------------
-    def _inputs(self):
+    def _uploaded(self) -> None:
+        self.site_source.value = "Upload a file"
+        self._offer_facades()
+
+    def _site(self):
+        """The site chosen (default or uploaded), without the editor's zones."""
         from planner.siteio import default_site, read_site
 
         ids = [s.strip() for s in self.buildings.value.split(",") if s.strip()] or None
         if self.site_source.value == "Default site":
-            site = default_site(buildings=ids)
-        else:
-            files = self.upload.value
-            if not files:
-                raise PlannerError(
-                    "choose a footprint file (.geojson, .wkt or .csv) to upload first"
-                )
-            f = files[0]
-            path = Path(self._tmp.name) / Path(f["name"]).name
-            path.write_bytes(bytes(f["content"]))
-            site = read_site(path, default_height_m=self.height.value or None, buildings=ids)
+            return default_site(buildings=ids)
+        files = self.upload.value
+        if not files:
+            raise PlannerError("choose a footprint file (.geojson, .wkt or .csv) to upload first")
+        f = files[0]
+        path = Path(self._tmp.name) / Path(f["name"]).name
+        path.write_bytes(bytes(f["content"]))
+        return read_site(path, default_height_m=self.height.value or None, buildings=ids)
+
+    def _offer_facades(self) -> None:
+        """The zone editor offers the facades of the site chosen (quietly nothing while the
+        site cannot be read: the plan says why)."""
+        try:
+            self.zone_editor.show_facades(self._site())
+        except PlannerError:
+            self.zone_editor.facade.options = []
+
+    # -- actions -----------------------------------------------------------------------------
+    def _inputs(self):
+        from dataclasses import replace
+
+        site = self._site()
+        if self.zone_editor.zones:
+            site = replace(site, zones=[*site.zones, *self.zone_editor.zones])
         cls = self.accuracy_class.value.strip() or None
         req, settings = requirements_and_settings(
             {

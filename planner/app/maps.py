@@ -219,6 +219,39 @@ def _draw_links(p: Plan, ax: Axes, origin: np.ndarray) -> None:
     ax.plot([], [], color=cmap(1.0), lw=2.5, label="registration link (its own RMS, mm)")
 
 
+def _draw_zones(p: Plan, ax: Axes, off: dict, f) -> None:
+    """The zones outlined on the facade strips (dashed), labelled with their id."""
+    from matplotlib.patches import Polygon as MplPolygon
+    from matplotlib.patches import Rectangle
+
+    for z in p.site.zones:
+        if z.facade_id is not None:
+            facades = [z.facade_id] if z.facade_id in off else []
+        else:
+            facades = [fid for fid in off if f.loc[fid, "building_id"] == z.building_id]
+        for fid in facades:
+            x0, length, height = off[fid], f.loc[fid, "length_m"], f.loc[fid, "height_m"]
+            style = dict(fill=False, ec="#1f3a93", lw=1.3, ls="--", zorder=5)
+            if z.elevation is not None:
+                xy = np.asarray(z.elevation.exterior.coords) + np.array([x0, 0.0])
+                ax.add_patch(MplPolygon(xy, closed=True, **style))
+                label_at = (xy[:, 0].min(), xy[:, 1].max())
+            else:
+                a0, a1 = z.along_m or (0.0, length)
+                h0, h1 = z.height_m or (0.0, height)
+                ax.add_patch(Rectangle((x0 + a0, h0), a1 - a0, h1 - h0, **style))
+                label_at = (x0 + a0, h1)
+            ax.annotate(
+                z.id,
+                label_at,
+                xytext=(2, 2),
+                textcoords="offset points",
+                fontsize=6,
+                color="#1f3a93",
+                zorder=6,
+            )
+
+
 def plot_coverage(p: Plan, quantity: str = "m_x_mm", ax: Axes | None = None) -> Figure:
     """The facades unrolled side by side (distance along the facades vs height), each sample
     coloured by the predicted RMS from its assigned station; unmet samples ringed red,
@@ -275,6 +308,7 @@ def plot_coverage(p: Plan, quantity: str = "m_x_mm", ax: Axes | None = None) -> 
             fontsize=6,
             color="0.4",
         )
+    _draw_zones(p, ax, off, f)
     ax.set_xlabel("distance along the facades [m] (facades side by side)")
     ax.set_ylabel("height [m]")
     if len(pw) or len(un):

@@ -173,6 +173,12 @@ class ReportContent:
     def facades(self) -> pd.DataFrame:
         return self.plan.facade_table()
 
+    def zones(self) -> pd.DataFrame | HTML:
+        z = self.plan.zones
+        if z.empty:
+            return HTML("<p>No zones: the site-wide requirement applies everywhere.</p>")
+        return z.set_index("zone_id")
+
     def unmet(self) -> pd.DataFrame | HTML:
         areas = self.plan.unmet_areas()
         if areas.empty:

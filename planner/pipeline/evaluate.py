@@ -27,6 +27,7 @@ from planner.accuracy3d import footprint_mm, incidence_ranging_rms_mm, variances
 from planner.pipeline.facades import SIGHT_OFFSET_M, FacadeSet, footprint_edges
 from planner.pipeline.requirements import CHECKS, Check, PlanSettings, Requirements
 from planner.pipeline.visibility import clear_height, edges_in_box, edges_in_front
+from planner.pipeline.zones import SampleRequirements
 from planner.polar import separated_directions
 from planner.registration_error import pair_registration_variances
 from planner.scanner import Scanner
@@ -88,6 +89,7 @@ class Context:
     samples_of: list[np.ndarray]  # per facade: its samples
     step_mm_at_10m: float
     limits: dict[str, np.ndarray]  # per check key: (N,) limit of every sample (±inf: none)
+    stations_needed: np.ndarray  # (N,) stations (separate views) each sample needs
 
     @classmethod
     def build(
@@ -98,7 +100,10 @@ class Context:
         req: Requirements,
         settings: PlanSettings,
         reach: float,
+        sample_req: SampleRequirements | None = None,
     ) -> Context:
+        """Everything the evaluation needs; ``sample_req`` the requirement of every sample
+        (:func:`planner.pipeline.zones.apply_zones`; default: ``req`` everywhere)."""
         edges, heights = footprint_edges(site)
         masks, cols_of, samples_of = [], [], []
         col_order = np.argsort(facades.col_facade, kind="stable")
@@ -118,11 +123,7 @@ class Context:
             masks.append(np.flatnonzero(edges_in_front(edges, a, facades.normal[f], bbox)))
             cols_of.append(col_order[col_bounds[f] : col_bounds[f + 1]])
             samples_of.append(smp_order[smp_bounds[f] : smp_bounds[f + 1]])
-        n = len(facades.z)
-        limits = {}
-        for c in CHECKS:
-            limit = c.limit_of(req)
-            limits[c.key] = np.full(n, c.no_limit() if limit is None else float(limit))
+        sample_req = sample_req or SampleRequirements.uniform(req, len(facades.z))
         return cls(
             site=site,
             facades=facades,
@@ -136,7 +137,8 @@ class Context:
             cols_of=cols_of,
             samples_of=samples_of,
             step_mm_at_10m=settings.step_mm_at_10m or scanner.step_mm_at_10m,
-            limits=limits,
+            limits=sample_req.limits,
+            stations_needed=sample_req.stations,
         )
 
     def front_candidates(self, f: int, cand_xy: np.ndarray) -> np.ndarray:
@@ -579,15 +581,13 @@ def assign_stations(
 
 
 def _views(ctx: Context, ok: np.ndarray, station_xy: np.ndarray, smp: np.ndarray) -> np.ndarray:
-    """Per sample, the stations meeting it that count as separate views: all of them when
-    one is required, else those at least ``min_view_angle_deg`` apart in direction (two
+    """Per sample, the stations meeting it that count as separate views: all of them where
+    one is needed, else those at least ``min_view_angle_deg`` apart in direction (two
     stations side by side are one view)."""
     n_ok = ok.sum(axis=0)
-    if ctx.req.stations_per_sample <= 1:
-        return n_ok
     out = n_ok.copy()
     xy = ctx.facades.xy[smp]
-    for i in np.flatnonzero(n_ok >= 2):
+    for i in np.flatnonzero((n_ok >= 2) & (ctx.stations_needed[smp] >= 2)):
         d = station_xy[ok[:, i]] - xy[i]
         az = np.degrees(np.arctan2(d[:, 1], d[:, 0]))
         out[i] = separated_directions(az, ctx.req.min_view_angle_deg)

@@ -15,13 +15,14 @@ import numpy as np
 import pandas as pd
 
 from planner.atomic import replace_folder_files
-from planner.pipeline.result import LINK_COLUMNS, TARGET_COLUMNS, Plan
+from planner.pipeline.result import LINK_COLUMNS, TARGET_COLUMNS, ZONE_COLUMNS, Plan
 
 __all__ = [
     "COVERAGE_COLUMNS",
     "LINK_COLUMNS",
     "STATION_COLUMNS",
     "TARGET_COLUMNS",
+    "ZONE_COLUMNS",
     "coverage_csv",
     "geojson",
     "render",
@@ -57,6 +58,7 @@ COVERAGE_COLUMNS = [
     "reg_m_z_mm",
     "spacing_mm",
     "reason",
+    "zone",
 ]
 
 
@@ -102,6 +104,10 @@ OPTIONAL_COVERAGE_COLUMNS = ["class_achieved"]
 
 def links_csv(p: Plan) -> str:
     return to_csv(p.links[LINK_COLUMNS])
+
+
+def zones_csv(p: Plan) -> str:
+    return to_csv(p.zones[ZONE_COLUMNS])
 
 
 def coverage_csv(p: Plan) -> str:
@@ -264,6 +270,7 @@ FILES = {
     "coverage.csv": coverage_csv,
     "facades.csv": facades_csv,
     "links.csv": links_csv,
+    "zones.csv": zones_csv,
     "plan.geojson": geojson_text,
     "summary.txt": summary_text,
 }

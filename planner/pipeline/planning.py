@@ -44,7 +44,8 @@ from planner.pipeline.registration import (
     target_candidates,
 )
 from planner.pipeline.requirements import CHECKS, PlanSettings, Requirements
-from planner.pipeline.result import LINK_COLUMNS, TARGET_COLUMNS, Plan
+from planner.pipeline.result import LINK_COLUMNS, TARGET_COLUMNS, ZONE_COLUMNS, Plan
+from planner.pipeline.zones import ZoneTable, apply_zones
 from planner.registration_error import CONTROL, Link
 from planner.scanner import DEFAULT_SCANNER, Scanner, load_scanner
 from planner.site import Site
@@ -128,9 +129,17 @@ def plan(
             "raise the limit (--max-samples)"
         )
     fac = build_facades(site, st.sample_spacing_m, st.sample_height_step_m)
-    reach = reach_m(sc, req, st.station_rms_pair, st.model)
+    fac, sample_req, zones = apply_zones(site, fac, req)
+    if len(fac.z) > st.max_samples:
+        raise InputError(
+            f"with the zones' finer samples the facades need {len(fac.z):,} samples, more than "
+            f"{st.max_samples:,.0f}; use coarser zone spacings or raise the limit (--max-samples)"
+        )
+    messages += zones.messages
+    # the search radius: the farthest any requirement (the site-wide one, a zone's) reaches
+    reach = max(reach_m(sc, r, st.station_rms_pair, st.model) for r in [req, *zones.requirements])
     cand = candidate_grid(site, fac, reach, st.grid_m, st.clearance_m)
-    ctx = Context.build(site, fac, sc, req, st, reach)
+    ctx = Context.build(site, fac, sc, req, st, reach, sample_req)
     pairs = ctx.pair_count(cand)
     if pairs > st.max_pairs:
         raise InputError(
@@ -158,16 +167,17 @@ def plan(
     ev, sol = _choose(ctx, cand, say, deadline, timings)
     r = _Round(cover=sol.chosen, net=_network(ctx, cand, seen, sol.chosen, timings))
     r.judged = _judge(ctx, cand, r)
-    best, rounds, resolved = r, 0, False
+    best, rounds, adds, resolved = r, 0, 0, False
     while st.computes_registration and rounds < MAX_REGISTRATION_ROUNDS:
         if time.monotonic() > deadline or r.net is None:
             break
         short = r.judged.short_by_registration
         more = np.empty(0, dtype=np.int64)
-        if short.any():
+        if short.any() and (resolved or adds < ADD_ROUNDS):
             say(0.85, f"registration: {int(short.sum())} samples short; adding stations")
             more = _stations_for(ctx, cand, r.net, short, deadline, timings)
         if len(more):
+            adds += 1
             chosen = np.concatenate([r.net.stations, more])
             r = _Round(cover=r.cover, added=np.union1d(r.added, more))
         elif not resolved and len(r.net.stations) > len(sol.chosen):
@@ -199,7 +209,8 @@ def plan(
     station_idx = net.stations if net is not None else np.asarray(sol.chosen, dtype=np.int64)
     station_xy = cand[station_idx] if len(station_idx) else np.empty((0, 2))
     ids = [f"S{i + 1:02d}" for i in range(len(station_idx))]
-    coverage = _coverage(ctx, ev, assignment, ids, cand, deadline, net)
+    family = _class_family(req, zones)
+    coverage = _coverage(ctx, ev, assignment, ids, cand, deadline, net, sample_req.zone_ids, family)
     purpose = np.where(
         np.isin(station_idx, r.cover),
         "cover",
@@ -258,6 +269,7 @@ def plan(
         targets=targets,
         coverage=coverage,
         facades=_facade_summary(fac, coverage),
+        zones=_zone_summary(zones, coverage),
         links=links,
         candidates=candidates,
         network=net,
@@ -267,9 +279,11 @@ def plan(
     )
 
 
-#: How many times stations are added for the registration error (each time the network is
-#: built and judged again).
-MAX_REGISTRATION_ROUNDS = 3
+#: How many times stations are added or chosen again for the registration error (each time
+#: the network is built and judged again) …
+MAX_REGISTRATION_ROUNDS = 4
+#: … of which rounds of adding before the fewest are chosen again.
+ADD_ROUNDS = 2
 
 
 @dataclass
@@ -322,7 +336,7 @@ def _choose(
     say(0.7, "choosing the fewest stations")
     t = time.perf_counter()
     n_ok = np.asarray(ev.ok.sum(axis=1)).ravel()
-    demand = np.where(fac.party_wall, 0, np.minimum(req.stations_per_sample, n_ok))
+    demand = np.where(fac.party_wall, 0, np.minimum(ctx.stations_needed, n_ok))
     remaining = max(MIN_SOLVER_S, deadline - time.monotonic())
     if forced is None or not len(forced):
         sol = solve_cover(ev.ok, demand, remaining, st.method)
@@ -333,7 +347,7 @@ def _choose(
         sol = solve_cover(sp.csr_matrix((ev.ok @ sp.diags(free)) > 0), left, remaining, st.method)
         sol.chosen = np.union1d(sol.chosen, forced)
         sol.objective = len(sol.chosen)
-    if req.stations_per_sample > 1:
+    if (ctx.stations_needed > 1).any():
         spread = spread_views(ev.ok, demand, sol.chosen, cand, fac.xy, req.min_view_angle_deg)
         if len(spread) > len(sol.chosen):  # the bound still holds; the gap is the spread's
             sol.status += f"; {len(spread) - len(sol.chosen)} added for separate views"
@@ -355,11 +369,11 @@ def _network(
     if not len(chosen):
         return None
     t = time.perf_counter()
-    fac, req = ctx.facades, ctx.req
+    fac = ctx.facades
     scanner_only = assign_stations(ctx, cand[chosen])
     pts = np.column_stack([fac.xy, fac.z])
     probes = {j: pts[scanner_only.station == j] for j in range(len(chosen))}
-    tightest = min(req.max_x_mm, req.max_y_mm, req.max_z_mm)
+    tightest = _tightest_mm(ctx)
     net = build_network(
         ctx,
         seen.tc,
@@ -421,7 +435,7 @@ def _judge(ctx: Context, cand: np.ndarray, r: _Round) -> _Judged:
         registration = r.net.registration()
     a = assign_stations(ctx, station_xy, registration)
     demanded = ~fac.party_wall
-    met = (a.n_meeting >= ctx.req.stations_per_sample) & demanded
+    met = (a.n_meeting >= ctx.stations_needed) & demanded
     scanner_ok = np.ones(n, dtype=bool)
     for c in "xyz":
         v = a.metrics[f"scanner_m_{c}_mm"]
@@ -442,7 +456,7 @@ def _reason(ctx: Context, sample: int, n_view: int, best: dict[str, float], n_me
     """Why no station meets ``sample``, in words: each check the best candidate fails."""
     if n_view == 0:
         return "no free station position sees this point (blocked, or out of the scanner's range)"
-    k = ctx.req.stations_per_sample
+    k = int(ctx.stations_needed[sample])
     if 0 < n_meet < k:
         return f"only {n_meet} station position(s) meet every requirement here; {k} required"
     parts = []
@@ -472,10 +486,15 @@ def _coverage(
     cand_xy: np.ndarray,
     deadline: float = math.inf,
     net: Network | None = None,
+    zone_ids: np.ndarray | None = None,
+    class_family: str | None = None,
 ) -> pd.DataFrame:
+    """One row per sample: its station, the metrics there, whether it meets its
+    requirement, and why not."""
     fac = ctx.facades
+    ctx_zone_ids = zone_ids if zone_ids is not None else np.full(len(fac.z), "", dtype=object)
     n = len(fac.z)
-    k_req = ctx.req.stations_per_sample
+    k_req = ctx.stations_needed
     n_ok_cand = np.asarray(ev.ok.sum(axis=1)).ravel()
     picked, n_meeting = assignment.metrics, assignment.n_meeting
     names = np.array([*ids, ""], dtype=object)
@@ -489,7 +508,7 @@ def _coverage(
         has = assignment.station >= 0
         untied[has] = ~net.error.tied[assignment.station[has]]
     for i in np.flatnonzero(candidates_meet):
-        reason[i] = _short_reason(ctx, i, picked, station[i], untied[i], n_meeting[i], k_req)
+        reason[i] = _short_reason(ctx, i, picked, station[i], untied[i], n_meeting[i], k_req[i])
     hopeless = np.flatnonzero(~meets & demanded & (n_ok_cand < k_req) & ev.evaluated)
     if len(hopeless):
         diag = best_achievable(ctx, cand_xy, hopeless, deadline)
@@ -504,12 +523,11 @@ def _coverage(
     )
     reason[fac.party_wall] = "party wall (against a neighbour): not scanned"
     extra = {}
-    if ctx.req.accuracy_class:  # the class each sample achieves, beside pass/fail
-        from planner.classes import achieved_class, parse_class
+    if class_family:  # the class each sample achieves, beside pass/fail
+        from planner.classes import achieved_class
 
-        family = parse_class(ctx.req.accuracy_class)[0].family
         extra["class_achieved"] = achieved_class(
-            picked["m_x_mm"], picked["m_y_mm"], picked["m_z_mm"], family
+            picked["m_x_mm"], picked["m_y_mm"], picked["m_z_mm"], class_family
         )
     shown = [k for k in METRIC_KEYS if k != "spacing_mm" and not k.startswith(("scanner", "reg"))]
     return pd.DataFrame(
@@ -529,6 +547,7 @@ def _coverage(
             "stations_meeting": n_meeting,
             "party_wall": fac.party_wall,
             "reason": reason,
+            "zone": ctx_zone_ids,
             **extra,
         }
     )
@@ -568,6 +587,43 @@ def _short_reason(
     return "the chosen stations do not cover this sample"
 
 
+def _tightest_mm(ctx: Context) -> float:
+    """The tightest accuracy limit of any sample [mm]."""
+    lims = np.concatenate([ctx.limits[k] for k in ("m_x", "m_y", "m_z")])
+    lims = lims[np.isfinite(lims)]
+    return float(lims.min()) if len(lims) else 5.0
+
+
+def _class_family(req: Requirements, zones: ZoneTable) -> str | None:
+    """The family of the accuracy class asked for (site-wide or in a zone), if any."""
+    from planner.classes import parse_class
+
+    for r in [req, *zones.requirements]:
+        if r.accuracy_class:
+            return parse_class(r.accuracy_class)[0].family
+    return None
+
+
+def _zone_summary(zones: ZoneTable, cov: pd.DataFrame) -> pd.DataFrame:
+    """Each zone: where, its requirement, its sampling, and whether it is met."""
+    rows = []
+    for z, r, mask in zip(zones.zones, zones.requirements, zones.masks, strict=True):
+        scanned = mask & ~cov["party_wall"].to_numpy()
+        met = int(cov["meets"].to_numpy()[scanned].sum())
+        rows.append(
+            {
+                "zone_id": z.id,
+                "where": z.describe(),
+                "requirement": r.describe(),
+                "sample_spacing_m": z.sample_spacing_m,
+                "samples": int(scanned.sum()),
+                "met": met,
+                "unmet": int(scanned.sum()) - met,
+            }
+        )
+    return pd.DataFrame(rows, columns=ZONE_COLUMNS)
+
+
 def _facade_summary(fac: FacadeSet, cov: pd.DataFrame) -> pd.DataFrame:
     scanned = cov[~cov["party_wall"]]
     by = scanned.groupby("facade_id", sort=False)
@@ -580,6 +636,9 @@ def _facade_summary(fac: FacadeSet, cov: pd.DataFrame) -> pd.DataFrame:
             "worst_m_z_mm": by["m_z_mm"].max(),
             "stations": by["station_id"].agg(lambda s: ";".join(sorted(v for v in set(s) if v))),
         }
+    )
+    zones_on = cov.groupby("facade_id", sort=False)["zone"].agg(
+        lambda s: ";".join(sorted({z for v in s if v for z in v.split(";")}))
     )
     allby = cov.groupby("facade_id", sort=False)
     out = pd.DataFrame(
@@ -605,6 +664,7 @@ def _facade_summary(fac: FacadeSet, cov: pd.DataFrame) -> pd.DataFrame:
     for col in ("worst_m_x_mm", "worst_m_y_mm", "worst_m_z_mm"):
         out[col] = stats[col].to_numpy(dtype=float)
     out["stations"] = stats["stations"].fillna("").to_numpy(dtype=object)
+    out["zones"] = out["facade_id"].map(zones_on).fillna("").to_numpy(dtype=object)
     return out
 
 

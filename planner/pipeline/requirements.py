@@ -274,6 +274,22 @@ class Requirements:
         xy = self.max_xy_mm
         return xy[1] if isinstance(xy, tuple) else xy
 
+    def with_overrides(self, overrides: Mapping[str, Any]) -> Requirements:
+        """This requirement with some fields replaced (a zone's, :mod:`planner.zones`). A
+        class in ``overrides`` sets what it covers, the other limits stay these; explicit
+        limits in ``overrides`` replace this requirement's class."""
+        base = {f.name: getattr(self, f.name) for f in fields(self)}
+        if overrides.get("accuracy_class"):
+            from planner.classes import class_limits
+
+            specs = field_specs(Requirements)
+            for key in class_limits(overrides["accuracy_class"]):
+                base[key] = specs[key].default
+        elif "max_xy_mm" in overrides or "max_z_mm" in overrides:
+            base["accuracy_class"] = None
+        base.update(overrides)
+        return Requirements(**base)
+
     def active_checks(self) -> list[tuple[Check, float]]:
         """The checks this requirement sets, with their limits (unset limits left out)."""
         return [(c, c.limit_of(self)) for c in CHECKS if c.limit_of(self) is not None]

@@ -16,7 +16,11 @@ from planner.pipeline.requirements import PlanSettings, Requirements
 from planner.scanner import Scanner
 from planner.site import Site
 
-__all__ = ["FACADE_TABLE_COLUMNS", "LINK_COLUMNS", "TARGET_COLUMNS", "Plan"]
+__all__ = ["FACADE_TABLE_COLUMNS", "LINK_COLUMNS", "TARGET_COLUMNS", "ZONE_COLUMNS", "Plan"]
+
+#: The zones as planned: where, the requirement inside, the sample spacing there [m], and
+#: how many of its samples (not on party walls) meet it.
+ZONE_COLUMNS = ["zone_id", "where", "requirement", "sample_spacing_m", "samples", "met", "unmet"]
 
 #: The target list: where (site CRS, z above the ground), which type, the smallest size its
 #: stations need and the item placed, the rule that sized it, the stations using it, the
@@ -83,6 +87,7 @@ class Plan:
       registration, and both parts) plus ``stations_meeting, party_wall``;
     * ``facades`` — per-facade summary; ``links`` — the registrations, :data:`LINK_COLUMNS`;
     * ``candidates`` — every candidate position with the number of samples it meets;
+    * ``zones`` — each zone of the site (:mod:`planner.zones`): :data:`ZONE_COLUMNS`;
     * ``network`` — the registration network behind ``links`` (pose covariances, the
       observations and their RMS), for checks and what-if analyses.
     """
@@ -98,6 +103,7 @@ class Plan:
     links: pd.DataFrame
     candidates: pd.DataFrame
     solver: dict[str, Any]
+    zones: pd.DataFrame = field(default_factory=lambda: pd.DataFrame(columns=ZONE_COLUMNS))
     network: Any = None  # the registration network (planner.pipeline.registration.Network)
     messages: list[str] = field(default_factory=list)
     timings_s: dict[str, float] = field(default_factory=dict)
@@ -164,6 +170,9 @@ class Plan:
             + (" (scanner ⊕ registration)" if self.settings.computes_registration else "")
             + f": {int(cov['meets'].sum())} of {len(cov)}",
         ]
+        for z in self.zones.itertuples():
+            state = "met" if z.unmet == 0 else f"{z.unmet} of {z.samples} samples unmet"
+            lines.append(f"Zone {z.zone_id} ({z.where}; {z.requirement}): {state}")
         return "\n".join(lines + self.messages)
 
     def save(self, out_dir: str | Path) -> list[Path]:

@@ -1,0 +1,275 @@
+"""Zones applied to the facades: where each zone lies, finer samples inside it, and the
+requirement of every sample (:mod:`planner.zones` defines the zones themselves).
+
+:func:`apply_zones` checks every zone against the facades (a zone outside its facade, on
+an unknown facade, with a bad requirement: an InputError saying which and how to fix it),
+replaces the samples inside a zone that asks for a finer spacing by finer ones (a finer
+zone overriding a coarser one where they overlap), and returns the per-sample limits of
+every check of :data:`~planner.pipeline.requirements.CHECKS` and the stations each sample
+needs: the zone's requirement inside a zone (the strictest where zones overlap), the
+site-wide one elsewhere.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+import shapely
+
+from planner.errors import InputError
+from planner.pipeline.facades import PARTY_WALL_GAP_M, FacadeSet, party_wall_mask
+from planner.pipeline.requirements import CHECKS, Requirements
+from planner.site import Site
+from planner.zones import Zone
+
+__all__ = ["SampleRequirements", "ZoneTable", "along_m", "apply_zones"]
+
+#: A zone may reach this far past its facade's end or top (digitising) [m].
+ZONE_TOLERANCE_M = 0.05
+
+
+@dataclass
+class SampleRequirements:
+    """Every sample's requirement: per check key the (N,) limits (±inf: none), the (N,)
+    stations it needs, and the zones it lies in (";"-joined ids, "" for none)."""
+
+    limits: dict[str, np.ndarray]
+    stations: np.ndarray
+    zone_ids: np.ndarray
+
+    @classmethod
+    def uniform(cls, req: Requirements, n: int) -> SampleRequirements:
+        """The site-wide requirement at all ``n`` samples."""
+        limits = {}
+        for c in CHECKS:
+            limit = c.limit_of(req)
+            limits[c.key] = np.full(n, c.no_limit() if limit is None else float(limit))
+        return cls(limits, np.full(n, req.stations_per_sample), np.full(n, "", dtype=object))
+
+
+@dataclass
+class ZoneTable:
+    """The zones as applied: each zone's requirement and its samples' mask."""
+
+    zones: list[Zone]
+    requirements: list[Requirements]
+    masks: list[np.ndarray]  # (N,) bool per zone
+    messages: list[str]
+
+
+def along_m(fac: FacadeSet, samples: np.ndarray | None = None) -> np.ndarray:
+    """Distance of samples from their facade's start, along it [m]."""
+    idx = np.arange(len(fac.z)) if samples is None else samples
+    f = fac.facade[idx]
+    v = fac.end[f] - fac.start[f]
+    return ((fac.xy[idx] - fac.start[f]) * v).sum(axis=1) / np.hypot(v[:, 0], v[:, 1])
+
+
+def apply_zones(
+    site: Site, fac: FacadeSet, req: Requirements
+) -> tuple[FacadeSet, SampleRequirements, ZoneTable]:
+    """The facades with finer samples where zones ask for them, every sample's requirement,
+    and the zones as applied (module docstring)."""
+    messages: list[str] = []
+    zones, facades = [], []
+    for z in site.zones:
+        f = _facades_of(z, fac, site)
+        if not len(f):
+            messages.append(
+                f"Zone {z.id!r} is on building {z.building_id!r}, which is not planned: "
+                "ignored (plan the building with --buildings to use it)"
+            )
+            continue
+        zones.append(z)
+        facades.append(f)
+    reqs = []
+    for z in zones:
+        try:
+            reqs.append(req.with_overrides(z.requirement))
+        except InputError as exc:
+            raise InputError(f"zone {z.id!r}: {exc}") from None
+    # finer samples: the coarsest zone first, so that a finer one overrides it
+    order = sorted(
+        (i for i, z in enumerate(zones) if z.sample_spacing_m is not None),
+        key=lambda i: -zones[i].sample_spacing_m,
+    )
+    for i in order:
+        fac = _refine(site, fac, zones[i], facades[i], i)
+    n = len(fac.z)
+    u = along_m(fac)
+    masks = [_inside(z, fac, f, u) for z, f in zip(zones, facades, strict=True)]
+    out = SampleRequirements.uniform(req, n)
+    covered = np.zeros(n, dtype=bool)
+    for z, zr, mask in zip(zones, reqs, masks, strict=True):
+        if not mask.any():
+            raise InputError(
+                f"zone {z.id!r} ({z.describe()}) holds no facade sample; make it larger than "
+                "the sample spacing or give it a finer sample_spacing_m"
+            )
+        messages += _looser(z, zr, req)
+        for c in CHECKS:
+            limit = c.limit_of(zr)
+            value = c.no_limit() if limit is None else float(limit)
+            own = out.limits[c.key]
+            # the zone replaces the site-wide limit; where zones overlap the strictest wins
+            first = mask & ~covered
+            own[first] = value
+            again = mask & covered
+            own[again] = (
+                np.minimum(own[again], value) if c.sense == "max" else np.maximum(own[again], value)
+            )
+        out.stations[mask & ~covered] = zr.stations_per_sample
+        out.stations[mask & covered] = np.maximum(
+            out.stations[mask & covered], zr.stations_per_sample
+        )
+        out.zone_ids[mask] = [f"{v};{z.id}" if v else z.id for v in out.zone_ids[mask]]
+        covered |= mask
+    return fac, out, ZoneTable(zones, reqs, masks, messages)
+
+
+def _facades_of(z: Zone, fac: FacadeSet, site: Site) -> np.ndarray:
+    """The facade indices a zone covers (checked against the facades)."""
+    if z.facade_id is not None:
+        hit = np.flatnonzero(fac.facade_id == z.facade_id)
+        if not len(hit):
+            bid = z.facade_id.rsplit("-f", 1)[0]
+            own = [str(f) for f in fac.facade_id if str(f).startswith(f"{bid}-f")]
+            if not own:
+                raise InputError(
+                    f"zone {z.id!r} is on facade {z.facade_id!r} of building {bid!r}, which is "
+                    "not planned; plan it (--buildings) or remove the zone"
+                )
+            raise InputError(
+                f"zone {z.id!r}: building {bid!r} has no facade {z.facade_id!r}; its facades "
+                f"are {', '.join(own)} (as facades.csv of a plan names them)"
+            )
+        f = int(hit[0])
+        length, height = float(fac.length_m[f]), float(fac.height_m[f])
+        if z.along_m is not None and z.along_m[1] > length + ZONE_TOLERANCE_M:
+            raise InputError(
+                f"zone {z.id!r} runs to {z.along_m[1]:g} m along facade {z.facade_id}, which "
+                f"is {length:.2f} m long; measure from the facade's start (x0, y0 in "
+                "facades.csv)"
+            )
+        if z.height_m is not None and z.height_m[0] >= height:
+            raise InputError(
+                f"zone {z.id!r} starts at {z.height_m[0]:g} m, above facade {z.facade_id} "
+                f"({height:g} m high)"
+            )
+        if z.height_m is not None and z.height_m[1] > height + ZONE_TOLERANCE_M:
+            raise InputError(
+                f"zone {z.id!r} reaches {z.height_m[1]:g} m, above facade {z.facade_id} "
+                f"({height:g} m high); end it at the top or below"
+            )
+        if z.elevation is not None:
+            x0, z0, x1, z1 = z.elevation.bounds
+            if (
+                x0 < -ZONE_TOLERANCE_M
+                or x1 > length + ZONE_TOLERANCE_M
+                or z0 < -ZONE_TOLERANCE_M
+                or (z1 > height + ZONE_TOLERANCE_M)
+            ):
+                raise InputError(
+                    f"zone {z.id!r}: its elevation polygon ({x0:g}–{x1:g} m along, {z0:g}–"
+                    f"{z1:g} m high) is not within facade {z.facade_id} ({length:.2f} m × "
+                    f"{height:g} m)"
+                )
+        return np.array([f])
+    planned = {b.id for b in site.planned}
+    if z.building_id not in planned:
+        return np.empty(0, dtype=np.int64)
+    return np.flatnonzero(fac.building_id == z.building_id)
+
+
+def _inside(z: Zone, fac: FacadeSet, facades: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """(N,) samples inside the zone."""
+    tol = 1e-6
+    mask = np.isin(fac.facade, facades)
+    if z.along_m is not None:
+        mask &= (u >= z.along_m[0] - tol) & (u <= z.along_m[1] + tol)
+    if z.height_m is not None:
+        mask &= (fac.z >= z.height_m[0] - tol) & (fac.z <= z.height_m[1] + tol)
+    if z.elevation is not None:
+        idx = np.flatnonzero(mask)
+        inside = shapely.contains_xy(z.elevation.buffer(tol), u[idx], fac.z[idx])
+        mask[idx[~inside]] = False
+    return mask
+
+
+def _refine(site: Site, fac: FacadeSet, z: Zone, facades: np.ndarray, number: int) -> FacadeSet:
+    """``fac`` with the samples inside zone ``z`` replaced by a grid at the zone's spacing
+    (new columns on its facades, rows over its height range)."""
+    u = along_m(fac)
+    drop = _inside(z, fac, facades, u)
+    new_cols_f, new_cols_xy, new_s = [], [], []  # samples: (facade, column, z, id)
+    n_cols = len(fac.col_facade)
+    for f in facades:
+        length, height = float(fac.length_m[f]), float(fac.height_m[f])
+        if z.elevation is not None:
+            a0, h0, a1, h1 = z.elevation.bounds
+        else:
+            a0, a1 = z.along_m or (0.0, length)
+            h0, h1 = z.height_m or (0.0, height)
+        a1, h1 = min(a1, length), min(h1, height)
+        nu = max(1, round((a1 - a0) / z.sample_spacing_m))
+        nz = max(1, round((h1 - h0) / z.sample_height_step_m))
+        us = a0 + (np.arange(nu) + 0.5) * (a1 - a0) / nu
+        zs = h0 + (np.arange(nz) + 0.5) * (h1 - h0) / nz
+        direction = (fac.end[f] - fac.start[f]) / fac.length_m[f]
+        for ci, uu in enumerate(us):
+            pts = zs
+            if z.elevation is not None:
+                pts = zs[shapely.contains_xy(z.elevation, np.full(len(zs), uu), zs)]
+            if not len(pts):
+                continue
+            col = n_cols + len(new_cols_f)
+            new_cols_f.append(f)
+            new_cols_xy.append(fac.start[f] + uu * direction)
+            for ri, zz in enumerate(pts):
+                new_s.append((f, col, zz, f"{fac.facade_id[f]}-z{number}-{ci:03d}-{ri:02d}"))
+    if not new_s:
+        return fac
+    keep = ~drop
+    s_f = np.array([s[0] for s in new_s], dtype=np.int64)
+    s_c = np.array([s[1] for s in new_s], dtype=np.int64)
+    s_z = np.array([s[2] for s in new_s], dtype=float)
+    col_xy = np.vstack([fac.col_xy, np.array(new_cols_xy)])
+    s_xy = col_xy[s_c]
+    party = party_wall_mask(
+        site, fac.building_id[s_f], s_xy + PARTY_WALL_GAP_M * fac.normal[s_f], s_z
+    )
+    return replace(
+        fac,
+        col_facade=np.concatenate([fac.col_facade, np.array(new_cols_f, dtype=np.int64)]),
+        col_xy=col_xy,
+        facade=np.concatenate([fac.facade[keep], s_f]),
+        column=np.concatenate([fac.column[keep], s_c]),
+        xy=np.vstack([fac.xy[keep], s_xy]),
+        z=np.concatenate([fac.z[keep], s_z]),
+        sample_id=np.concatenate(
+            [fac.sample_id[keep], np.array([s[3] for s in new_s], dtype=object)]
+        ),
+        party_wall=np.concatenate([fac.party_wall[keep], party]),
+    )
+
+
+def _looser(z: Zone, zr: Requirements, site_req: Requirements) -> list[str]:
+    """A message for every limit of the zone looser than the site-wide one (allowed)."""
+    out = []
+    for c in CHECKS:
+        mine, site_wide = c.limit_of(zr), c.limit_of(site_req)
+        if mine is None or site_wide is None:
+            continue
+        looser = mine > site_wide if c.sense == "max" else mine < site_wide
+        if looser:
+            out.append(
+                f"Zone {z.id!r} asks {c.text(mine)}, looser than the site-wide "
+                f"{c.text(site_wide)}: its samples are judged by the zone's limit"
+            )
+    if zr.stations_per_sample < site_req.stations_per_sample:
+        out.append(
+            f"Zone {z.id!r} asks {zr.stations_per_sample} station(s) per sample, fewer than the "
+            f"site-wide {site_req.stations_per_sample}"
+        )
+    return out
