@@ -77,7 +77,7 @@ def test_a_buildings_own_requirement_comes_from_its_properties():
     )
     (z,) = site.zones
     assert z.building_id == "A" and z.requirement == {"accuracy_class": "OGL3"}
-    fac, sreq, table = apply_zones(site, build_facades(site, 2.0, 2.0), Requirements())
+    _fac, sreq, table = apply_zones(site, build_facades(site, 2.0, 2.0), Requirements())
     # every sample of the building takes the class's limit
     (zr,) = table.requirements
     np.testing.assert_allclose(sreq.limits["m_x"], zr.max_x_mm)
@@ -171,7 +171,7 @@ def test_samples_in_a_zone_are_judged_by_its_limits_with_registration():
 
 
 def test_cli_zone_and_zone_table_give_the_zone_file(tmp_path):
-    code, out, err = _cli("plan", "--zone", ENTRANCE, "--out", str(tmp_path / "p"), "-q")
+    code, _out, err = _cli("plan", "--zone", ENTRANCE, "--out", str(tmp_path / "p"), "-q")
     assert code == 0, err
     zones = pd.read_csv(tmp_path / "p" / "zones.csv")
     assert list(zones["zone_id"]) == ["entrance"] and zones.loc[0, "met"] == 144
