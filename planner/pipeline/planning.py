@@ -176,6 +176,7 @@ def plan(
         if short.any() and (resolved or adds < ADD_ROUNDS):
             say(0.85, f"registration: {int(short.sum())} samples short; adding stations")
             more = _stations_for(ctx, cand, r.net, short, deadline, timings)
+        grown_from = r.net
         if len(more):
             adds += 1
             chosen = np.concatenate([r.net.stations, more])
@@ -191,7 +192,8 @@ def plan(
         else:
             break
         rounds += 1
-        r.net = _network(ctx, cand, seen, chosen, timings)
+        keep = grown_from.datum_station if len(more) else None
+        r.net = _network(ctx, cand, seen, chosen, timings, keep)
         r.judged = _judge(ctx, cand, r)
         if r.judged.better_than(best.judged):
             best = r
@@ -363,6 +365,7 @@ def _network(
     seen: SightCache,
     chosen: np.ndarray,
     timings: dict[str, float],
+    datum: int | None = None,
 ) -> Network | None:
     """The registration network of the stations ``chosen`` (candidate indices), each
     probed at the facade points it serves best by the scanner's error."""
@@ -383,6 +386,7 @@ def _network(
         goal_mm=REGISTRATION_GOAL * tightest,
         weak_mm=WEAK_LINK * tightest,
         cache=seen,
+        datum=datum,
     )
     timings["registration"] = timings.get("registration", 0.0) + time.perf_counter() - t
     return net

@@ -393,6 +393,11 @@ class Network:
         )
 
     @property
+    def datum_station(self) -> int | None:
+        """The datum as a candidate index (None: the control network, or no datum)."""
+        return None if self.datum is None else int(self.stations[self.datum])
+
+    @property
     def backbone(self) -> np.ndarray:
         """The stations others are registered to (candidate indices): the network's frame,
         which a new choice of stations keeps."""
@@ -572,6 +577,7 @@ class _Layout:
         stations: list[int],
         probes: dict[int, np.ndarray],
         goal_mm: float,
+        datum: int | None = None,
     ) -> None:
         tc, st = seen.tc, ctx.settings
         self.ctx, self.tc, self.goal_mm = ctx, tc, goal_mm
@@ -595,6 +601,8 @@ class _Layout:
         if tc.is_control.any():
             seen_ctl = any(np.isfinite(self.link(CONTROL, j)[1]) for j in range(k))
             roots = [CONTROL] if seen_ctl else []
+        if not roots and datum in stations:  # kept from the network this one grows from
+            roots = [stations.index(datum)]
         best = None
         for root in roots or range(k):
             tree, cost = _tree(root, k, self.pairs, self.link)
@@ -671,6 +679,7 @@ def build_network(
     goal_mm: float,
     weak_mm: float = np.inf,
     cache: SightCache | None = None,
+    datum: int | None = None,
 ) -> Network:
     """Link the chosen stations into one registration network (module docstring).
 
@@ -678,23 +687,24 @@ def build_network(
     linking station without points is probed at its own targets' spread. A link whose own
     error exceeds ``weak_mm`` is strengthened, where linking stations can, by a detour
     that makes the worst station's error smaller. ``cache`` keeps the candidates' sights
-    between calls.
+    between calls. ``datum`` (a candidate index) keeps the datum of the network this one
+    grows from, when it is among the stations.
     """
     levelled = ctx.scanner.is_levelled
     seen = cache if cache is not None else SightCache(ctx, tc, cand_xy)
     stations = [int(c) for c in chosen]
     n_cover = len(stations)
-    lay = _Layout(ctx, seen, cand_xy, stations, probes, goal_mm)
+    lay = _Layout(ctx, seen, cand_xy, stations, probes, goal_mm, datum)
     groups = _components(lay.k, lay.pairs)
     if groups.max() > 0:  # stations no common targets tie: linking stations
         extra = _bridges(ctx, seen, cand_xy, stations, lay.sight, groups)
         if extra:
-            lay = _Layout(ctx, seen, cand_xy, stations + extra, probes, goal_mm)
+            lay = _Layout(ctx, seen, cand_xy, stations + extra, probes, goal_mm, datum)
     weak = lay.weak_groups(weak_mm) if np.isfinite(weak_mm) and lay.k > 1 else np.zeros(1)
     if weak.max() > 0:  # links too weak for the requirement: a detour, if it helps
         extra = _bridges(ctx, seen, cand_xy, lay.stations, lay.sight, weak)
         if extra:
-            trial = _Layout(ctx, seen, cand_xy, lay.stations + extra, probes, goal_mm)
+            trial = _Layout(ctx, seen, cand_xy, lay.stations + extra, probes, goal_mm, datum)
             if len(trial.cost) >= len(lay.cost) and trial.worst_var < 0.8 * lay.worst_var:
                 lay = trial
     stations, sight, station_xyz, datum = lay.stations, lay.sight, lay.station_xyz, lay.datum
