@@ -16,12 +16,9 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
-import scipy.sparse as sp
 from test_cli import run
 
 import planner
-from planner.errors import PlannerError
-from planner.pipeline import optimise
 from planner.pipeline.evaluate import METRIC_KEYS, PairMetrics
 from planner.pipeline.requirements import (
     CHECKS,
@@ -294,20 +291,3 @@ def test_report_describes_the_plan_that_plan_makes(tmp_path, monkeypatch):
         assert float(row[3]) == pytest.approx(1.8)  # the instrument height given
     summary = Path("plan/summary.txt").read_text().splitlines()[2]
     assert "greedy" in summary and summary in Path("report.html").read_text()
-
-
-# -- strict milp --------------------------------------------------------------------------
-def test_milp_method_is_strict(monkeypatch):
-    """``method="milp"`` never falls back to greedy silently; ``auto`` does, and says so."""
-    rng = np.random.default_rng(3)
-    a = sp.csr_matrix(rng.random((40, 30)) < 0.15)
-    a = a[np.asarray(a.sum(axis=1)).ravel() > 0]
-    demand = np.ones(a.shape[0], dtype=int)
-    monkeypatch.setattr(
-        optimise, "_milp_with_deadline", lambda *a, **k: (1, "stopped at the limit", None, None)
-    )
-    monkeypatch.setattr(optimise, "packing_lower_bound", lambda a, d: 0)
-    with pytest.raises(PlannerError, match="found no plan within the time limit"):
-        optimise.solve_cover(a, demand, 5.0, "milp")
-    auto = optimise.solve_cover(a, demand, 5.0, "auto")
-    assert auto.method == "greedy" and "stopped at the limit" in auto.status

@@ -1,60 +1,189 @@
-"""The optimiser's engines: greedy, the packing bound, milp in-process and in a worker."""
+"""The optimiser: reductions keep the optimum, parts are solved independently, the bounds are
+real bounds, HiGHS starts from the greedy cover, and ``milp`` is strict."""
 
 from __future__ import annotations
 
-import subprocess
-import sys
-import time
+import itertools
 
 import numpy as np
 import pytest
 import scipy.sparse as sp
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from scipy.optimize import linprog
 
 import planner.pipeline.optimise as opt
+from planner.errors import PlannerError
+from planner.pipeline.reduce import reduce_cover, subset_pairs
 
 
-def random_cover(n_rows=80, n_cols=120, density=0.05, seed=3):
-    """A small random set-cover instance HiGHS proves optimal in well under a second."""
+def random_cover(n_rows=80, n_cols=120, density=0.05, seed=3, max_demand=1):
+    """A random multi-cover instance; every row can be met ``demand`` times."""
     rng = np.random.default_rng(seed)
-    a = sp.random(n_rows, n_cols, density=density, random_state=rng, format="csr").astype(bool)
-    a = a.tolil()
-    for i in range(n_rows):  # every row coverable
-        a[i, rng.integers(n_cols)] = True
-    return a.tocsr(), np.ones(n_rows, dtype=int)
+    a = (rng.random((n_rows, n_cols)) < density).astype(np.int8)
+    for i in range(n_rows):
+        a[i, rng.integers(n_cols)] = 1
+    demand = np.minimum(rng.integers(1, max_demand + 1, n_rows), a.sum(axis=1))
+    return sp.csr_matrix(a), demand
 
 
-def test_greedy_covers_and_packing_bound_is_a_bound():
-    a, d = random_cover()
+def brute_force(a: sp.csr_matrix, demand: np.ndarray) -> int:
+    """The fewest columns by trying every subset, smallest first (tiny instances only)."""
+    dense = a.toarray().astype(int)
+    for k in range(a.shape[1] + 1):
+        for cols in itertools.combinations(range(a.shape[1]), k):
+            if (dense[:, list(cols)].sum(axis=1) >= demand).all():
+                return k
+    raise AssertionError("no cover")
+
+
+def lp_value(a: sp.csr_matrix, demand: np.ndarray) -> float:
+    m = a.shape[1]
+    res = linprog(np.ones(m), A_ub=-a.toarray(), b_ub=-demand, bounds=(0, 1), method="highs")
+    assert res.status == 0
+    return float(res.fun)
+
+
+def covers(a, demand, chosen) -> bool:
+    return bool((np.asarray(a[:, chosen].sum(axis=1)).ravel() >= demand).all())
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    seed=st.integers(0, 10_000),
+    n_rows=st.integers(1, 12),
+    n_cols=st.integers(1, 11),
+    density=st.floats(0.1, 0.6),
+    max_demand=st.integers(1, 3),
+)
+def test_reductions_and_solver_keep_the_optimum(seed, n_rows, n_cols, density, max_demand):
+    """On random multi-cover instances, the reduced problem solved (forced + parts) has the
+    optimum found by trying every subset of the unreduced problem, and is a valid cover."""
+    a, d = random_cover(n_rows, n_cols, density, seed, max_demand)
+    best = brute_force(a, d)
+    sol = opt.solve_cover(a, d, time_limit_s=10)
+    assert covers(a, d, sol.chosen)
+    assert sol.objective == best and sol.status == "optimal"
+    assert sol.lower_bound == best
+    # the reduced problem alone: forced columns + its own optimum = the whole optimum
+    red = reduce_cover(a, d)
+    rest = brute_force(red.a, red.demand) if red.a.shape[0] else 0
+    assert len(red.forced) + rest == best
+
+
+def test_subset_pairs_are_exactly_the_subsets():
+    a, _ = random_cover(60, 40, 0.08, seed=11)
+    a = sp.csr_matrix(a[:, :6])  # few items: many subset pairs, identical sets too
+    dense = a.toarray().astype(bool)
+    x, y = subset_pairs(a)
+    found = set(zip(x.tolist(), y.tolist(), strict=True))
+    truth = {
+        (i, j)
+        for i in range(len(dense))
+        for j in range(len(dense))
+        if i != j and dense[i].any() and not (dense[i] & ~dense[j]).any()
+    }
+    assert found == truth and len(truth) > 100
+
+
+def test_reductions_remove_what_they_should():
+    """A row met by one candidate forces it; an identical-or-smaller column goes; a row
+    whose candidates include another row's goes."""
+    a = sp.csr_matrix(
+        np.array(
+            [
+                [1, 0, 0, 0],  # only column 0: forced
+                [0, 1, 1, 0],  # columns 1, 2
+                [0, 1, 1, 1],  # implied by the row above
+                [0, 0, 1, 1],
+            ]
+        )
+    )
+    red = reduce_cover(a, np.ones(4, dtype=int))
+    # row 2 goes (implied by row 1); columns 1 and 3 go (inside column 2); then rows 1 and
+    # 3 have column 2 alone: forced, and nothing is left to solve
+    assert red.counts["implied rows"] >= 1 and red.counts["dominated columns"] == 2
+    assert red.forced.tolist() == [0, 2] and red.a.shape[0] == 0
+    assert sorted(opt.solve_cover(a, np.ones(4, dtype=int)).chosen.tolist()) == [0, 2]
+
+
+def test_dominance_is_not_used_where_a_row_needs_two():
+    """Column 0 ⊂ column 1, but the row needs both: column 0 must stay."""
+    a = sp.csr_matrix(np.array([[1, 1], [0, 1]]))
+    sol = opt.solve_cover(a, np.array([2, 1]))
+    assert sorted(sol.chosen.tolist()) == [0, 1]
+
+
+def test_parts_solved_independently_sum_up():
+    a1, d1 = random_cover(40, 30, 0.12, seed=5)
+    a2, d2 = random_cover(50, 35, 0.10, seed=6, max_demand=2)
+    whole = sp.block_diag([a1, a2]).tocsr()
+    sol = opt.solve_cover(whole, np.concatenate([d1, d2]), time_limit_s=30)
+    s1 = opt.solve_cover(a1, d1, time_limit_s=30)
+    s2 = opt.solve_cover(a2, d2, time_limit_s=30)
+    assert sol.status == s1.status == s2.status == "optimal"
+    assert sol.objective == s1.objective + s2.objective
+    assert sol.details["parts"] >= 2
+
+
+def test_lagrangian_bound_is_below_the_lp_and_close_to_it():
+    a, d = random_cover(150, 200, 0.04, seed=9)
+    lp = lp_value(a, d)
     g = opt.greedy_cover(a, d)
-    assert (np.asarray(a[:, g].sum(axis=1)).ravel() >= 1).all()
-    exact = opt.solve_cover(a, d, time_limit_s=30)
-    assert exact.status == "optimal"
-    assert opt.packing_lower_bound(a, d) <= exact.objective <= len(g)
+    bound = opt.lagrangian_bound(a, d, len(g), deadline=np.inf, iterations=3000)
+    assert bound <= lp + 1e-6  # stations: a valid bound never exceeds the LP optimum
+    assert bound >= 0.97 * lp  # and the ascent gets close to it
+    assert bound >= opt.packing_lower_bound(a, d) - 1
 
 
-def test_worker_process_gives_the_in_process_answer(monkeypatch):
-    a, d = random_cover()
-    inside = opt.solve_cover(a, d, time_limit_s=30)
-    monkeypatch.setattr(opt, "IN_PROCESS_NNZ", 0)
-    worker = opt.solve_cover(a, d, time_limit_s=30)
-    assert worker.status == "optimal" and worker.objective == inside.objective
+def test_highs_starts_from_greedy_and_never_returns_worse():
+    """With almost no time, HiGHS still returns the greedy start (or better), never nothing;
+    the bound reported is a true bound (≤ the proven optimum found with time)."""
+    a, d = random_cover(120, 150, 0.04, seed=2)
+    g = opt.greedy_cover(a, d)
+    quick = opt.solve_cover(a, d, time_limit_s=0.01)
+    assert covers(a, d, quick.chosen) and quick.objective <= len(g)
+    full = opt.solve_cover(a, d, time_limit_s=60)
+    assert full.status == "optimal"
+    assert quick.lower_bound <= full.objective <= quick.objective
 
 
-def test_deadline_stops_a_solver_that_does_not_return(monkeypatch):
-    """HiGHS presolve can ignore its time limit; the worker is then killed at the deadline
-    (time limit + 5 s) and the greedy cover is the plan, with the packing-bound gap."""
-    a, d = random_cover()
-    monkeypatch.setattr(opt, "IN_PROCESS_NNZ", 0)
-    real_popen = subprocess.Popen
+def test_milp_method_is_strict(monkeypatch):
+    """``method="milp"`` never falls back to greedy silently; ``auto`` does, and says so."""
+    a, d = random_cover(60, 80, 0.06, seed=4)
+    monkeypatch.setattr(opt, "_highs", lambda *a, **k: (False, None, None))
+    monkeypatch.setattr(opt, "packing_lower_bound", lambda a, d: 0)
+    monkeypatch.setattr(opt, "lagrangian_bound", lambda *a, **k: 0.0)
+    monkeypatch.setattr(opt, "reduce_cover", lambda a, d: _unreduced(a, d))
+    with pytest.raises(PlannerError, match="not proven optimal"):
+        opt.solve_cover(a, d, 5.0, "milp")
+    auto = opt.solve_cover(a, d, 5.0, "auto")
+    assert auto.method == "greedy" and auto.status == "time limit"
+    assert covers(a, d, auto.chosen) and auto.lower_bound == 0
 
-    def stuck(cmd, **kw):
-        return real_popen([sys.executable, "-c", "import time; time.sleep(120)"], **kw)
 
-    monkeypatch.setattr(opt.subprocess, "Popen", stuck)
-    t0 = time.perf_counter()
-    sol = opt.solve_cover(a, d, time_limit_s=1.0)
-    elapsed = time.perf_counter() - t0
-    assert elapsed < 1.0 + 5.0 + 3.0  # s: the limit, the grace, start-up slack
-    assert sol.method == "greedy" and "stopped at the time limit" in sol.status
-    assert sol.lower_bound == opt.packing_lower_bound(*opt._reduce(a, d)[:2])
-    assert sol.gap == pytest.approx((sol.objective - sol.lower_bound) / sol.objective)
+def _unreduced(a, d):
+    from planner.pipeline.reduce import Reduced
+
+    a = sp.csr_matrix(a)
+    return Reduced(a=a, demand=d, columns=np.arange(a.shape[1]), forced=np.empty(0, dtype=int))
+
+
+def test_interrupt_cancels_the_solver(monkeypatch):
+    """Ctrl+C (or SIGTERM turned into an exception) while HiGHS runs: the solve is
+    cancelled and the exception goes on, so the plan folder's clean-up runs."""
+    import highspy
+
+    calls = []
+
+    def wait(self, timeout):
+        calls.append(timeout)
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(highspy.Highs, "wait", wait, raising=False)
+    cancelled = []
+    monkeypatch.setattr(highspy.Highs, "cancelSolve", lambda self: cancelled.append(1))
+    a, d = random_cover(60, 80, 0.06, seed=4)
+    with pytest.raises(KeyboardInterrupt):
+        opt._highs(a, d, opt.greedy_cover(a, d), 5.0)
+    assert cancelled and calls

@@ -1,33 +1,33 @@
 """The station optimiser: fewest stations such that every sample is seen by enough stations
 that meet every requirement there — a set multi-cover problem.
 
-Solved exactly as an integer program with ``scipy.optimize.milp`` (HiGHS) under a time limit,
-with greedy set cover as the fallback and as an upper bound (scipy's milp takes no initial
-solution, so the greedy count is given to HiGHS as the constraint ``Σx <= greedy``).
+1. Classical reductions to a fixed point (:mod:`planner.pipeline.reduce`): forced stations,
+   implied samples, dominated candidates.
+2. The rest splits into independent parts (no candidate meets samples of two parts: streets,
+   courtyards), each solved on its own.
+3. Per part: greedy set cover (the start and the fallback), the packing bound and a
+   Lagrangian bound (subgradient ascent on the samples' multipliers; any multipliers give a
+   valid bound, approaching the LP relaxation's value); when these meet, the greedy cover is
+   proven optimal; otherwise the integer program is solved by HiGHS (``highspy``) under the
+   time left, started from the greedy cover, its dual bound kept when it is stronger.
 
-HiGHS does not look at the clock during presolve, which on large sites (10 000 samples ×
-30 000 candidates) can run for many minutes. So large models run in a separate process that
-is stopped at the time limit; the greedy cover is then the plan, and its gap is measured
-against a packing lower bound (samples that share no candidate each need a station of their
-own).
+The lower bound reported is the sum over parts of the best bound proven for each plus the
+forced stations: a real bound on the fewest stations, whatever stopped the solver.
 """
 
 from __future__ import annotations
 
-import subprocess
-import sys
-import tempfile
 import time
-from dataclasses import dataclass
-from pathlib import Path
+from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.sparse as sp
 
 from planner.errors import PlannerError
+from planner.pipeline.reduce import reduce_cover
 from planner.polar import separated_directions
 
-__all__ = ["CoverSolution", "greedy_cover", "solve_cover"]
+__all__ = ["CoverSolution", "greedy_cover", "lagrangian_bound", "solve_cover"]
 
 
 @dataclass(kw_only=True)
@@ -42,30 +42,8 @@ class CoverSolution:
     gap: float | None  # (objective − bound) / objective
     seconds: float
     greedy_objective: int | None = None
-
-
-def _reduce(a: sp.csr_matrix, demand: np.ndarray) -> tuple[sp.csr_matrix, np.ndarray, np.ndarray]:
-    """Drop rows without demand and duplicate rows; keep only columns that cover something.
-
-    Returns the reduced matrix, its demand and the original column index of each column.
-    """
-    keep = demand > 0
-    a = a[keep]
-    demand = demand[keep]
-    # duplicate rows: same set of columns and same demand
-    a = a.tocsr()
-    a.sort_indices()
-    keys = {}
-    rows = []
-    for i in range(a.shape[0]):
-        key = (a.indices[a.indptr[i] : a.indptr[i + 1]].tobytes(), int(demand[i]))
-        if key not in keys:
-            keys[key] = i
-            rows.append(i)
-    a = a[rows]
-    demand = demand[rows]
-    used = np.flatnonzero(np.asarray(a.sum(axis=0)).ravel() > 0)
-    return a[:, used].tocsr(), demand, used
+    #: what the reductions removed, the parts and their sizes, the bounds' sources
+    details: dict = field(default_factory=dict)
 
 
 def greedy_cover(a: sp.csr_matrix, demand: np.ndarray) -> np.ndarray:
@@ -105,80 +83,141 @@ def packing_lower_bound(a: sp.csr_matrix, demand: np.ndarray) -> int:
         cols = a.indices[a.indptr[i] : a.indptr[i + 1]]
         if demand[i] > 0 and not used[cols].any():
             used[cols] = True
-            bound += 1
-    # a multi-cover row needs demand[i] distinct columns; the packing counts it once, which
-    # stays a valid (weaker) bound; strengthen with the largest single demand
+            bound += int(demand[i])
     return int(max(bound, demand.max(initial=0)))
 
 
-def _milp(a: sp.csr_matrix, dem: np.ndarray, upper: int, time_limit_s: float):
-    from scipy.optimize import Bounds, LinearConstraint, milp  # heavy: only when solving
+def lagrangian_bound(
+    a: sp.csr_matrix, demand: np.ndarray, upper: float, deadline: float, iterations: int = 1500
+) -> float:
+    """A lower bound on the fewest columns by Lagrangian relaxation of the cover rows.
 
-    n = a.shape[1]
-    constraints = [
-        LinearConstraint(a.astype(float), lb=dem, ub=np.inf),
-        LinearConstraint(np.ones((1, n)), lb=0, ub=upper),
-    ]
-    res = milp(
-        np.ones(n),
-        integrality=np.ones(n),
-        bounds=Bounds(0, 1),
-        constraints=constraints,
-        options={"time_limit": time_limit_s, "disp": False, "presolve": True},
-    )
-    return res.status, res.message, res.x, getattr(res, "mip_dual_bound", None)
-
-
-#: Models up to this many nonzeros are solved in-process (HiGHS presolve is quick there);
-#: larger ones in a separate process that is stopped at the time limit.
-IN_PROCESS_NNZ = 400_000
-
-
-def _milp_with_deadline(a, dem, upper, time_limit_s):
-    """Run the integer program, stopping it at ``time_limit_s`` (+ a grace of 1 s) for sure.
-
-    Large models run in a worker process (``python -m planner.pipeline._milp_worker``), killed
-    at the deadline; not a fork (a fork of a process with threads, such as a Jupyter kernel, can
-    deadlock) and not multiprocessing's spawn (it re-runs the caller's main module).
+    For multipliers u ≥ 0, L(u) = Σ dᵢuᵢ + Σⱼ min(0, 1 − Σ_{i∈j} uᵢ) is a valid bound on the
+    integer (and the LP) optimum; subgradient ascent (Held, Wolfe & Crowder, "Validation of
+    subgradient optimization", Mathematical Programming 6, 1974,
+    https://doi.org/10.1007/BF01580223; step rule of Beasley 1987) raises it towards the LP
+    relaxation's value. ``upper``: a known cover's size (for the step length).
     """
-    if a.nnz <= IN_PROCESS_NNZ:
-        return _milp(a, dem, upper, time_limit_s)
-    a = sp.csr_matrix(a)
-    with tempfile.TemporaryDirectory(prefix="planner-milp-") as tmp:
-        src, dst = Path(tmp) / "in.npz", Path(tmp) / "out.npz"
-        np.savez(
-            src,
-            data=a.data,
-            indices=a.indices,
-            indptr=a.indptr,
-            shape=np.array(a.shape),
-            dem=dem,
-            upper=upper,
-            time_limit=time_limit_s,
-        )
-        proc = subprocess.Popen(
-            [sys.executable, "-m", "planner.pipeline._milp_worker", str(src), str(dst)],
-            stdout=subprocess.DEVNULL,
-            stderr=subprocess.PIPE,
-        )
-        try:
-            _, err = proc.communicate(timeout=time_limit_s + 1.0)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.communicate()
-            return (
-                1,
-                "stopped at the time limit (HiGHS presolve does not check the clock)",
-                None,
-                None,
-            )
-        if proc.returncode != 0 or not dst.exists():
-            tail = err.decode(errors="replace").strip().splitlines()[-1:] or ["no message"]
-            return 4, f"the solver process failed ({tail[0]})", None, None
-        with np.load(dst) as r:
-            x = r["x"] if bool(r["has_x"]) else None
-            dual = None if np.isnan(r["dual"]) else float(r["dual"])
-            return int(r["status"]), str(r["message"]), x, dual
+    a = sp.csr_matrix(a, dtype=np.float64)
+    at = a.T.tocsr()
+    d = demand.astype(np.float64)
+    col_size = np.asarray(a.sum(axis=0)).ravel()
+    u = 1.0 / a.multiply(col_size).max(axis=1).toarray().ravel()  # feasible dual: Aᵀu ≤ 1
+    best, step, stall = -np.inf, 2.0, 0
+    for _ in range(iterations):
+        reduced = 1.0 - at @ u
+        x = reduced < 0
+        value = d @ u + reduced[x].sum()
+        if value > best + 1e-9:
+            best, stall = value, 0
+        else:
+            stall += 1
+            if stall >= 20:
+                step, stall = step / 2, 0
+        g = d - a @ x.astype(np.float64)
+        g[(u <= 0) & (g < 0)] = 0.0
+        norm = g @ g
+        if norm == 0 or step < 1e-5 or time.monotonic() > deadline:
+            break
+        u = np.maximum(0.0, u + step * max(upper - value, 1e-3) / norm * g)
+    return float(best)
+
+
+def _highs(a: sp.csr_matrix, demand: np.ndarray, start: np.ndarray, time_limit_s: float):
+    """The integer program by HiGHS, started from the cover ``start`` (column indices).
+
+    Returns (optimal?, chosen columns or None, dual bound or None). The solve runs in HiGHS's
+    own thread, so Ctrl+C, SIGTERM or SIGHUP stop it at once (cancelled, then re-raised).
+    """
+    import highspy  # heavy: only when solving
+
+    n, m = a.shape
+    h = highspy.Highs()
+    h.setOptionValue("output_flag", False)
+    h.setOptionValue("time_limit", float(time_limit_s))
+    h.setOptionValue("mip_rel_gap", 0.0)
+    h.setOptionValue("threads", 1)
+    ac = sp.csc_matrix(a, dtype=np.float64)
+    lp = highspy.HighsLp()
+    lp.num_col_, lp.num_row_ = m, n
+    lp.col_cost_ = np.ones(m)
+    lp.col_lower_ = np.zeros(m)
+    lp.col_upper_ = np.ones(m)
+    lp.row_lower_ = demand.astype(np.float64)
+    lp.row_upper_ = np.full(n, highspy.kHighsInf)
+    lp.a_matrix_.format_ = highspy.MatrixFormat.kColwise
+    lp.a_matrix_.start_ = ac.indptr
+    lp.a_matrix_.index_ = ac.indices
+    lp.a_matrix_.value_ = ac.data
+    lp.integrality_ = [highspy.HighsVarType.kInteger] * m
+    h.passModel(lp)
+    x0 = np.zeros(m)
+    x0[start] = 1.0
+    _set_start(h, highspy, x0)
+    h.startSolve()
+    try:
+        while not h.wait(0.1)[0]:
+            pass
+    except BaseException:
+        h.cancelSolve()
+        h.wait(5.0)
+        raise
+    status = h.getModelStatus()
+    info = h.getInfo()
+    has_x = info.primal_solution_status == 2  # kSolutionStatusFeasible
+    x = np.flatnonzero(np.asarray(h.getSolution().col_value) > 0.5) if has_x else None
+    dual = info.mip_dual_bound if np.isfinite(info.mip_dual_bound) else None
+    return status == highspy.HighsModelStatus.kOptimal, x, dual
+
+
+def _set_start(h, highspy, x0: np.ndarray) -> None:
+    sol = highspy.HighsSolution()
+    sol.col_value = list(x0)
+    sol.value_valid = True
+    h.setSolution(sol)
+
+
+def _components(a: sp.csr_matrix) -> np.ndarray:
+    """Label each row by its independent part (0, 1, …; rows joined through shared columns)."""
+    from scipy.sparse.csgraph import connected_components
+
+    graph = sp.bmat([[None, a], [a.T, None]]).tocsr()
+    _, label = connected_components(graph, directed=False)
+    return np.unique(label[: a.shape[0]], return_inverse=True)[1]
+
+
+@dataclass
+class _Part:
+    """One independent part's answer."""
+
+    chosen: np.ndarray
+    bound: int
+    greedy: int
+    how: str
+
+    @property
+    def proven(self) -> bool:
+        return self.bound >= len(self.chosen)
+
+
+def _solve_part(a: sp.csr_matrix, demand: np.ndarray, deadline: float, method: str) -> _Part:
+    g = greedy_cover(a, demand)
+    bound = packing_lower_bound(a, demand)
+    if bound >= len(g):
+        return _Part(g, len(g), len(g), "greedy = packing bound")
+    bound = max(bound, int(np.ceil(lagrangian_bound(a, demand, len(g), deadline) - 1e-6)))
+    if bound >= len(g) or method == "greedy":
+        return _Part(g, min(bound, len(g)), len(g), "greedy, Lagrangian bound")
+    left = deadline - time.monotonic()
+    if left <= 0.05:
+        return _Part(g, bound, len(g), "greedy (no time left for the integer program)")
+    optimal, x, dual = _highs(a, demand, g, left)
+    if dual is not None:
+        bound = max(bound, int(np.ceil(dual - 1e-6)))
+    how = "integer program"
+    if x is None or len(x) >= len(g):
+        x, how = g, "greedy, integer program's bound"
+    return _Part(x, len(x) if optimal else min(bound, len(x)), len(g), how)
 
 
 def solve_cover(
@@ -187,72 +226,66 @@ def solve_cover(
     """Fewest columns of ``ok`` (samples × candidates) covering each row ``demand`` times.
 
     ``demand`` must already be capped at what each row can get (its number of candidates).
-    ``method``: "auto" (milp, greedy as fallback), "milp" (the integer program or an error)
-    or "greedy". The greedy cover is
-    always computed; its gap is measured against the packing bound, or the integer
-    program's dual bound when that is better.
+    ``method``: "auto" (the integer program where the bounds do not already prove the greedy
+    cover optimal; greedy where time runs out), "milp" (an error unless every part is proven
+    optimal) or "greedy" (greedy cover with its bounds). The bound reported is always a
+    proven lower bound on the fewest stations.
     """
     t0 = time.perf_counter()
-    a, dem, used = _reduce(sp.csr_matrix(ok), np.asarray(demand))
-    if a.shape[0] == 0:
-        return CoverSolution(
-            chosen=np.empty(0, dtype=np.int64),
-            method="greedy",
-            status="nothing to cover",
-            objective=0,
-            lower_bound=0.0,
-            gap=0.0,
-            seconds=time.perf_counter() - t0,
-            greedy_objective=0,
+    deadline = time.monotonic() + max(0.0, time_limit_s)
+    ok = sp.csr_matrix(ok)
+    demand = np.asarray(demand, dtype=np.int64)
+    red = reduce_cover(ok, demand)
+    details: dict = {"reductions": red.describe(), "reduced": red.a.shape, "nnz": red.a.nnz}
+    chosen, parts = [red.forced], []
+    if red.a.shape[0]:
+        label = _components(red.a)
+        order = np.argsort(np.bincount(label))  # small parts first: each proven quickly
+        left_nnz = red.a.nnz
+        for p in order:
+            rows = np.flatnonzero(label == p)
+            sub = red.a[rows]
+            cols = np.flatnonzero(np.diff(sub.tocsc().indptr) > 0)
+            sub = sub[:, cols].tocsr()
+            now = time.monotonic()  # this part's share of the time left, by its size
+            share = (deadline - now) * sub.nnz / max(1, left_nnz)
+            left_nnz -= sub.nnz
+            part = _solve_part(sub, red.demand[rows], now + share, method)
+            chosen.append(red.columns[cols[part.chosen]])
+            parts.append(part)
+    chosen_all = np.unique(np.concatenate(chosen)).astype(np.int64)
+    n = len(chosen_all)
+    bound = len(red.forced) + sum(p.bound for p in parts)
+    proven = all(p.proven for p in parts)
+    used_milp = any(p.how == "integer program" for p in parts)
+    details["parts"] = len(parts)
+    details["largest part"] = max((p.greedy for p in parts), default=0)
+    details["how"] = sorted({p.how for p in parts})
+    greedy_total = len(red.forced) + sum(p.greedy for p in parts)
+    if method == "milp" and not proven:
+        raise PlannerError(
+            f"the integer program was not proven optimal within the time limit of "
+            f"{time_limit_s:g} s ({n} stations, lower bound {bound}); raise the time limit "
+            "(--time-limit-s) or accept the best plan found (--method auto)"
         )
-    g = greedy_cover(a, dem)
-    packing = packing_lower_bound(a, dem)
-    greedy = CoverSolution(
-        chosen=np.sort(used[g]),
-        method="greedy",
-        status="as requested",
-        objective=len(g),
-        lower_bound=float(packing),
-        gap=(len(g) - packing) / len(g),
-        seconds=time.perf_counter() - t0,
-        greedy_objective=len(g),
-    )
-    if packing == len(g):
-        greedy.status, greedy.gap = "optimal: meets the packing lower bound", 0.0
-        return greedy
-    if method == "greedy":
-        return greedy
-    remaining = max(1.0, time_limit_s - (time.perf_counter() - t0))
-    status, message, x_raw, dual = _milp_with_deadline(a, dem, len(g), remaining)
-    greedy.seconds = time.perf_counter() - t0
-    if x_raw is None:
-        if method == "milp":
-            raise PlannerError(
-                f"the integer program found no plan within the time limit of "
-                f"{time_limit_s:g} s ({message}); raise the time limit (--time-limit-s) or "
-                "let the planner fall back to greedy set cover (--method auto)"
-            )
-        greedy.status = f"integer program: {message}"
-        return greedy
-    x = np.flatnonzero(x_raw > 0.5)
-    bound = float(packing)
-    if status == 0:
-        bound = float(len(x))
-    elif dual is not None and np.isfinite(dual):
-        bound = max(bound, float(np.ceil(dual - 1e-6)))
-    if len(x) > len(g):  # a time-limited incumbent worse than greedy: keep greedy
-        greedy.lower_bound, greedy.gap = bound, (len(g) - bound) / len(g)
-        greedy.status = "integer program stopped at the time limit with a worse plan"
-        return greedy
+    if not red.a.shape[0] and not len(red.forced):
+        status = "nothing to cover"
+    elif proven:
+        status = "optimal"
+    elif method == "greedy":
+        status = "as requested"
+    else:
+        status = "time limit"
     return CoverSolution(
-        chosen=np.sort(used[x]),
-        method="milp",
-        status="optimal" if status == 0 else "time limit",
-        objective=len(x),
-        lower_bound=bound,
-        gap=max(0.0, (len(x) - bound) / len(x)),
-        seconds=greedy.seconds,
-        greedy_objective=len(g),
+        chosen=chosen_all,
+        method="milp" if used_milp else "greedy",
+        status=status,
+        objective=n,
+        lower_bound=float(min(bound, n)),
+        gap=0.0 if n == 0 else max(0.0, (n - bound) / n),
+        seconds=time.perf_counter() - t0,
+        greedy_objective=greedy_total,
+        details=details,
     )
 
 

@@ -198,6 +198,8 @@ def plan(
         if r.judged.better_than(best.judged):
             best = r
     r = best
+    if st.computes_registration and r.net is not None:
+        r = _prune(ctx, cand, seen, r, deadline, timings)
     net, assignment = r.net, r.judged.assignment
     if not ev.evaluated.all():
         messages.append(
@@ -253,6 +255,8 @@ def plan(
         "gap": sol.gap,
         "seconds": sol.seconds,
         "greedy_objective": sol.greedy_objective,
+        "reductions": sol.details.get("reductions", ""),
+        "parts": sol.details.get("parts", 0),
         "reach_m": reach,
         "candidates": len(cand),
         "samples": int((~fac.party_wall).sum()),
@@ -388,8 +392,65 @@ def _network(
         cache=seen,
         datum=datum,
     )
+    if net.datum is not None and seen.tc.is_control.any():
+        # control points given but no station sees three of them: a station that does,
+        # nearest the others, ties the network to the site's control (else it is said)
+        tie = _control_station(seen, cand, chosen)
+        if tie is not None and tie not in chosen:
+            return _network(ctx, cand, seen, np.append(chosen, tie), timings)
     timings["registration"] = timings.get("registration", 0.0) + time.perf_counter() - t
     return net
+
+
+#: Candidates looked at for a station that sees the control points (the nearest to them).
+CONTROL_POOL = 400
+
+
+def _control_station(seen: SightCache, cand: np.ndarray, chosen: np.ndarray) -> int | None:
+    """The candidate seeing at least three control points that stands nearest the chosen
+    stations (None if no candidate near the control points sees three)."""
+    ctl = seen.tc.xyz[seen.tc.is_control, :2]
+    near = np.min(np.linalg.norm(cand[:, None, :] - ctl[None], axis=2), axis=1)
+    pool = np.argsort(near)[:CONTROL_POOL]
+    usable = seen(pool).usable[seen.tc.is_control]
+    sees = pool[usable.sum(axis=0) >= 3]
+    if not len(sees):
+        return None
+    gap = np.min(np.linalg.norm(cand[sees, None, :] - cand[chosen][None], axis=2), axis=1)
+    return int(sees[np.argmin(gap)])
+
+
+def _prune(
+    ctx: Context,
+    cand: np.ndarray,
+    seen: SightCache,
+    r: _Round,
+    deadline: float,
+    timings: dict[str, float],
+) -> _Round:
+    """Drop stations the final judgement gives no sample and no other station is registered
+    to (chosen for an estimate the exact network did not bear out), one at a time, each kept
+    out only if no sample is lost."""
+    while time.monotonic() < deadline:
+        served = np.bincount(
+            r.judged.assignment.station[r.judged.assignment.station >= 0],
+            minlength=len(r.net.stations),
+        )
+        parents = {lk.parent for lk in r.net.links}
+        idle = [k for k in np.flatnonzero(served == 0) if k not in parents]
+        for k in idle:
+            chosen = np.delete(r.net.stations, k)
+            trial = _Round(cover=np.setdiff1d(r.cover, r.net.stations[k]), added=r.added)
+            trial.net = _network(ctx, cand, seen, chosen, timings, r.net.datum_station)
+            if trial.net is None:
+                continue
+            trial.judged = _judge(ctx, cand, trial)
+            if trial.judged.n_met >= r.judged.n_met:
+                r = trial
+                break
+        else:
+            return r
+    return r
 
 
 def _stations_for(

@@ -152,6 +152,8 @@ class Plan:
             solver += f", lower bound {s['lower_bound']:g}, gap {100 * s['gap']:.1f} %"
         if s.get("greedy_objective") is not None:
             solver += f"; greedy {s['greedy_objective']}"
+        if s.get("reductions"):
+            solver += f"; reductions: {s['reductions']}; {s.get('parts', 0)} independent part(s)"
         solver += ")"
         types = self.targets["type"].value_counts()
         lines = [

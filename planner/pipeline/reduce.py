@@ -1,0 +1,169 @@
+"""Classical reductions of the set multi-cover problem, applied before any solver.
+
+Rows are samples, each needing ``demand`` columns (stations) out of those that meet it;
+every reduction below keeps at least one optimal solution (Garfinkel & Nemhauser, *Integer
+Programming*, Wiley 1972, ch. 8; Beasley, "An algorithm for set covering problem", European
+Journal of Operational Research 31, 1987, https://doi.org/10.1016/0377-2217(87)90141-X):
+
+- **forced columns**: a row met by no more columns than it needs takes them all;
+- **implied rows**: a row whose columns include all of another row's columns, needing no more
+  than that row, is met whenever that row is;
+- **dominated columns**: a column whose rows are all rows of another column, where every one
+  of those rows needs a single station, can always be swapped for that column.
+
+Repeated to a fixed point. Subset pairs are found exactly: candidates share the subset's
+rarest item (its pivot); random members of the subset are looked up in the superset's bit set
+to discard most non-pairs cheaply, and the survivors are checked word by word.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.sparse as sp
+
+__all__ = ["Reduced", "reduce_cover", "subset_pairs"]
+
+#: Bit sets larger than this are not built: dominance is then skipped (said in the counts).
+MAX_BITSET_BYTES = 1.5e9
+#: Random members of a subset checked in its candidate superset before the exact check.
+_PROBES = 6
+
+
+def _bitsets(sets: sp.csr_matrix) -> np.ndarray:
+    """One row of packed 64-bit words per set (bit ``k`` of the set = item ``k``)."""
+    n, m = sets.shape
+    out = np.zeros((n, (m + 63) // 64), dtype=np.uint64)
+    rows = np.repeat(np.arange(n), np.diff(sets.indptr))
+    items = sets.indices.astype(np.int64)
+    bit = np.left_shift(np.uint64(1), (items & 63).astype(np.uint64))
+    np.bitwise_or.at(out, (rows, items >> 6), bit)
+    return out
+
+
+def subset_pairs(
+    sets: sp.csr_matrix, seed: int = 0, chunk: int = 20_000
+) -> tuple[np.ndarray, np.ndarray] | None:
+    """Every pair ``(x, y)``, ``x != y``, with items(x) ⊆ items(y), for the rows of ``sets``
+    (a sparse 0/1 matrix, one row per set); ``None`` when the bit sets would be too large."""
+    sets = sp.csr_matrix(sets)
+    sets.sort_indices()
+    n, m = sets.shape
+    if n * ((m + 63) // 64) * 8 > MAX_BITSET_BYTES:
+        return None
+    size = np.diff(sets.indptr)
+    members = sets.T.tocsr()
+    degree = np.diff(members.indptr)
+    # the pivot of each set: its item in the fewest sets; a superset must hold it too
+    owner = np.repeat(np.arange(n), size)
+    order = np.lexsort((degree[sets.indices], owner))
+    xs = np.flatnonzero(size > 0)
+    pivot = sets.indices[order[sets.indptr[xs]]]
+    count = degree[pivot]
+    x = np.repeat(xs, count)
+    offset = np.arange(len(x)) - np.repeat(np.cumsum(count) - count, count)
+    y = members.indices[np.repeat(members.indptr[pivot], count) + offset]
+    keep = (x != y) & (size[x] <= size[y])
+    x, y = x[keep], y[keep]
+    bits = _bitsets(sets)
+    rng = np.random.default_rng(seed)
+    for _ in range(_PROBES):  # a true superset holds every member: only non-pairs drop out
+        item = sets.indices[sets.indptr[x] + (rng.random(len(x)) * size[x]).astype(np.int64)]
+        word = bits[y, item >> 6] >> (item & 63).astype(np.uint64)
+        held = (word & np.uint64(1)).astype(bool)
+        x, y = x[held], y[held]
+    exact = np.zeros(len(x), dtype=bool)
+    for lo in range(0, len(x), chunk):
+        a, b = x[lo : lo + chunk], y[lo : lo + chunk]
+        exact[lo : lo + chunk] = ~(bits[a] & ~bits[b]).any(axis=1)
+    return x[exact], y[exact]
+
+
+@dataclass
+class Reduced:
+    """The reduced problem: ``a`` (rows × columns kept), the ``demand`` left on its rows,
+    ``columns`` (the original index of each column kept) and ``forced`` (original indices of
+    the columns every optimal plan may take); ``counts`` of what each rule removed."""
+
+    a: sp.csr_matrix
+    demand: np.ndarray
+    columns: np.ndarray
+    forced: np.ndarray
+    counts: dict[str, int] = field(default_factory=dict)
+
+    def describe(self) -> str:
+        c = self.counts
+        text = (
+            f"{c.get('forced', 0)} forced, {c.get('implied rows', 0)} implied rows, "
+            f"{c.get('dominated columns', 0)} dominated columns removed"
+        )
+        if c.get("skipped"):
+            text += " (dominance skipped: too large)"
+        return text
+
+
+def reduce_cover(a: sp.csr_matrix, demand: np.ndarray) -> Reduced:
+    """Apply the reductions (module docstring) to a fixed point.
+
+    ``a``: samples × candidates, nonzero where the candidate meets the sample; ``demand``:
+    stations each sample needs, already capped at its number of candidates.
+    """
+    a = sp.csr_matrix(a, dtype=np.int8)
+    a.eliminate_zeros()
+    a.data[:] = 1
+    demand = np.asarray(demand, dtype=np.int64)
+    columns = np.arange(a.shape[1])
+    forced: list[np.ndarray] = []
+    counts = {"forced": 0, "implied rows": 0, "dominated columns": 0, "skipped": 0}
+    while True:
+        before = a.shape
+        # rows served or without demand go; columns that meet nothing go
+        live = demand > 0
+        a, demand = a[live], demand[live]
+        used = np.flatnonzero(np.diff(a.tocsc().indptr) > 0)
+        a, columns = a[:, used].tocsr(), columns[used]
+        if a.shape[0] == 0:
+            break
+        # forced: every column of a row that needs all of them
+        tight = np.diff(a.indptr) <= demand
+        if tight.any():
+            take = np.unique(a[tight].indices)
+            forced.append(columns[take])
+            counts["forced"] += len(take)
+            demand = demand - np.asarray(a[:, take].sum(axis=1)).ravel()
+            rest = np.setdiff1d(np.arange(a.shape[1]), take)
+            a, columns = a[:, rest].tocsr(), columns[rest]
+            continue
+        # implied rows: cols(x) ⊆ cols(y) and demand(x) ≥ demand(y) → y goes
+        pairs = subset_pairs(a)
+        if pairs is None:
+            counts["skipped"] = 1
+            break
+        x, y = pairs
+        size = np.diff(a.indptr)
+        goes = (demand[x] >= demand[y]) & ((size[x] < size[y]) | (demand[x] > demand[y]) | (x < y))
+        drop = np.unique(y[goes])
+        if len(drop):
+            counts["implied rows"] += len(drop)
+            keep = np.setdiff1d(np.arange(a.shape[0]), drop)
+            a, demand = a[keep], demand[keep]
+        # dominated columns: rows(x) ⊆ rows(y), all rows of x needing one → x goes
+        cols = a.T.tocsr()
+        pairs = subset_pairs(cols)
+        if pairs is None:
+            counts["skipped"] = 1
+            break
+        x, y = pairs
+        single = np.asarray(cols @ (demand > 1).astype(np.int64)).ravel() == 0
+        size = np.diff(cols.indptr)
+        goes = single[x] & ((size[x] < size[y]) | (x > y))
+        drop = np.unique(x[goes])
+        if len(drop):
+            counts["dominated columns"] += len(drop)
+            keep = np.setdiff1d(np.arange(a.shape[1]), drop)
+            a, columns = a[:, keep].tocsr(), columns[keep]
+        if a.shape == before:
+            break
+    chosen = np.unique(np.concatenate(forced)) if forced else np.empty(0, dtype=np.int64)
+    return Reduced(a=a, demand=demand, columns=columns, forced=chosen, counts=counts)
