@@ -350,8 +350,8 @@ class Site:
         if _looks_like_degrees(everything):
             raise InputError(
                 "the coordinates look like longitude/latitude degrees (every outline is smaller "
-                "than 0.01 units); the planner works in metres: reproject the file to a projected "
-                "CRS (e.g. the local UTM zone) and try again"
+                "than 0.01 units); say so with --crs EPSG:4326 (they are then projected to their "
+                "UTM zone), or reproject the file to a projected CRS"
             )
         for geom, who in named:
             _check_shape(geom, who)

@@ -31,11 +31,13 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import shapely
 from shapely.errors import GEOSException, ShapelyError
 from shapely.geometry import MultiPolygon, Polygon, shape
 from shapely.geometry.base import BaseGeometry
 
+from planner.crs import GEOJSON_DEFAULT
 from planner.errors import InputError
 from planner.site import (
     DEFAULT_CONTROL_RMS_MM,
@@ -92,8 +94,10 @@ def site_from_features(
     name: str = "site",
     limits: SiteLimits | None = None,
 ) -> Site:
-    """Turn parsed features into a validated :class:`Site`."""
+    """Turn parsed features into a validated :class:`Site` (longitude/latitude projected to
+    its UTM zone; a projected CRS label checked against the coordinates)."""
     warnings: list[str] = []
+    crs = _to_metres(features, crs, warnings)
     blds: list[Building] = []
     obstacles: list[Obstacle] = []
     no_go: list[Area] = []
@@ -148,7 +152,6 @@ def site_from_features(
             no_go.append(Area(f.ident, geom))
         else:
             boundaries.append(geom)
-    _check_crs_label(crs, [f.geometry for f in features if f.geometry is not None])
     if len(boundaries) > 1:
         raise InputError(f"the file has {len(boundaries)} boundary features; keep one")
     if not blds:
@@ -232,6 +235,36 @@ def read_control(path: str | Path) -> list[ControlPoint]:
 _GEOGRAPHIC = ("crs84", "epsg:4326", "epsg::4326", "wgs 84", "wgs84", "4326")
 
 
+def _to_metres(features: Sequence[Feature], crs: str | None, warnings: list[str]) -> str | None:
+    """Project longitude/latitude features (in place) to their UTM zone and return the CRS
+    the site is in; check a projected CRS label against the coordinates."""
+    from planner import crs as crs_
+
+    geoms = [f.geometry for f in features if f.geometry is not None]
+    if not crs or not geoms:
+        return crs
+    xy = shapely.get_coordinates(geoms)
+    if not crs_.is_geographic(crs):
+        crs_.check_projected(crs, xy)
+        return crs
+    _check_crs_label(crs, geoms)
+    lon, lat = xy.mean(axis=0)
+    utm = crs_.utm_for(float(lon), float(lat))
+    forward = crs_.wgs84_to(utm)
+
+    def project(a: np.ndarray) -> np.ndarray:
+        return np.column_stack(forward(a[:, 0], a[:, 1]))
+
+    for f in features:
+        if f.geometry is not None:
+            f.geometry = shapely.transform(f.geometry, project)  # z (control points) kept
+    warnings.append(
+        f"longitude/latitude coordinates ({crs}) projected to {crs_.name_of(utm)}: the "
+        f"plan's coordinates are in {utm} (plan.kml in longitude/latitude)"
+    )
+    return utm
+
+
 def _check_crs_label(crs: str | None, geoms: Sequence[BaseGeometry]) -> None:
     """A CRS label that contradicts the coordinates is an error, never written back."""
     if not crs or not geoms or not any(g in crs.lower() for g in _GEOGRAPHIC):
@@ -307,7 +340,18 @@ def site_from_geojson(obj: dict | str, **kwargs: Any) -> Site:
             except json.JSONDecodeError as exc:
                 raise InputError(f"the text is not valid JSON: {exc}") from None
         features, crs = _geojson_features(obj, origin)
-        return site_from_features(features, crs=kwargs.pop("crs", None) or crs, **kwargs)
+        crs = kwargs.pop("crs", None) or crs
+        if crs is None and _in_degree_range(features):
+            crs = GEOJSON_DEFAULT  # RFC 7946: GeoJSON without a CRS is longitude/latitude
+        return site_from_features(features, crs=crs, **kwargs)
+
+
+def _in_degree_range(features: Sequence[Feature]) -> bool:
+    geoms = [f.geometry for f in features if f.geometry is not None]
+    xy = shapely.get_coordinates(geoms) if geoms else np.empty((0, 2))
+    return bool(len(xy)) and bool(
+        (np.abs(xy[:, 0]) <= 180).all() and (np.abs(xy[:, 1]) <= 90).all()
+    )
 
 
 # -- WKT ----------------------------------------------------------------------------------
@@ -464,6 +508,7 @@ def read_site(
     buildings: Sequence[str] | None = None,
     repair: bool = False,
     limits: SiteLimits | None = None,
+    crs: str | None = None,
 ) -> Site:
     """Read a site file (``.geojson``/``.json``, ``.wkt``/``.txt`` or ``.csv``).
 
@@ -475,6 +520,10 @@ def read_site(
         Ids of the buildings to plan; all others only block the beam.
     repair : bool
         Apply the explicit geometry repair (repeated vertices, ``make_valid``).
+    crs : str, optional
+        The CRS of the coordinates (e.g. ``EPSG:25832``, ``EPSG:4326``), overriding the file's
+        own label; longitude/latitude is projected to its UTM zone. GeoJSON without a label in
+        the degree range is longitude/latitude (RFC 7946).
     """
     if not isinstance(path, str | os.PathLike):
         raise InputError(f"a site file is named by a path; got {type(path).__name__} {path!r}")
@@ -512,6 +561,7 @@ def read_site(
         "repair": repair,
         "name": p.stem,
         "limits": limits,
+        "crs": crs,
     }
     with _reading(p.name, kind):
         if kind == "geojson":

@@ -55,3 +55,19 @@ __all__ = [
     "rect",
     "square_site",
 ]
+
+
+def run_cli(*argv: str) -> tuple[int, str, str]:
+    """``planner ARGV`` in this process: (exit code, standard output, standard error)."""
+    import io
+    from contextlib import redirect_stderr, redirect_stdout
+
+    from planner.app.cli import main
+
+    out, err = io.StringIO(), io.StringIO()
+    with redirect_stdout(out), redirect_stderr(err):
+        try:
+            code = main(list(argv))
+        except SystemExit as exc:
+            code = int(exc.code or 0)
+    return code, out.getvalue(), err.getvalue()

@@ -8,6 +8,7 @@ import numpy as np
 import pandas as pd
 import pytest
 from sites import l_site
+from sites import run_cli as _cli
 
 from planner.pipeline.evaluate import Context, assign_stations, evaluate_stations
 from planner.pipeline.facades import build_facades
@@ -154,20 +155,6 @@ def test_links_csv_and_geojson_carry_the_per_link_report(default_plan, tmp_path)
 
 
 # -- the command line ---------------------------------------------------------------------
-def _cli(*argv: str) -> tuple[int, str, str]:
-    import io
-    from contextlib import redirect_stderr, redirect_stdout
-
-    from planner.app.cli import main
-
-    out, err = io.StringIO(), io.StringIO()
-    with redirect_stdout(out), redirect_stderr(err):
-        try:
-            code = main(list(argv))
-        except SystemExit as exc:
-            code = int(exc.code or 0)
-    return code, out.getvalue(), err.getvalue()
-
 
 FAST = ["--grid-m", "4", "--sample-spacing-m", "4", "--sample-height-step-m", "4", "-q"]
 

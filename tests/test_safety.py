@@ -64,7 +64,12 @@ def _cli(
 
 
 def _plan_files(folder: Path) -> dict[str, bytes]:
-    return {p.name: p.read_bytes() for p in folder.iterdir() if p.name in OWNED_FILES}
+    """The plan's files by name; the DXF as its sorted lines (ezdxf orders a few objects of
+    its OBJECTS section by hash, which differs between processes: same content, other order)."""
+    out = {p.name: p.read_bytes() for p in folder.iterdir() if p.name in OWNED_FILES}
+    if "plan.dxf" in out:
+        out["plan.dxf"] = b"\n".join(sorted(out["plan.dxf"].splitlines()))
+    return out
 
 
 def _leftovers(parent: Path) -> list[str]:
@@ -318,9 +323,9 @@ SITE_ATTACKS = [
     ("a WKT line that is not WKT", "a.wkt", "POLYGON ((0 0, 1 1", [], "not WKT"),
     ("CSV without x", "a.csv", "id,east,y\nA,1,2\n", [], "missing x"),
     (
-        "a site file in degrees",
-        "a.geojson",
-        _fc(_feature([[9.1, 48.1], [9.1001, 48.1], [9.1001, 48.1001], [9.1, 48.1]], height=9)),
+        "a WKT site file in degrees without --crs",
+        "a.wkt",
+        "POLYGON ((9.1 48.1, 9.1001 48.1, 9.1001 48.1001, 9.1 48.1));height=9\n",
         [],
         "longitude/latitude",
     ),

@@ -131,10 +131,6 @@ BOWTIE = shapely.Polygon([(E0, N0), (E0 + 10, N0 + 10), (E0 + 10, N0), (E0, N0 +
         ([feat(rect(0, 0, 5, 5), id="z", height=0)], "'z' has height 0; it must be a number > 0"),
         ([feat(rect(0, 0, 5, 5), id="n", height="tall")], "give the height in metres as a number"),
         (
-            [feat(box(11.57, 48.13, 11.5702, 48.1302), id="ll", height=9)],
-            "look like longitude/latitude",
-        ),
-        (
             [
                 feat(
                     shapely.Polygon([(E0, N0), (E0 + 5, N0), (E0 + 5, N0), (E0 + 5, N0 + 5)]),
@@ -177,6 +173,28 @@ def test_bad_input_names_the_feature_and_the_fix(tmp_path, features, message):
     p = write(tmp_path, "bad.geojson", fc(*features))
     with pytest.raises(InputError, match=message):
         read_site(p)
+
+
+def test_degrees_are_longitude_latitude_in_geojson_and_said_elsewhere(tmp_path):
+    """GeoJSON without a CRS in the degree range is longitude/latitude (RFC 7946): projected
+    to its UTM zone (about 15 m × 22 m here); WKT in degrees needs --crs, and the message
+    says so."""
+    p = write(
+        tmp_path, "ll.geojson", fc(feat(box(11.57, 48.13, 11.5702, 48.1302), height=9), crs=None)
+    )
+    s = read_site(p)
+    assert s.crs == "EPSG:32632"
+    # 0.0002° × 0.0002° at 48.13° N: 14.86 m × 22.26 m (rotated by the grid convergence)
+    assert s.buildings[0].footprint.area == pytest.approx(14.86 * 22.26, rel=0.005)  # m²
+    w = write(
+        tmp_path,
+        "ll.wkt",
+        "POLYGON ((11.57 48.13, 11.5702 48.13, 11.5702 48.1302, "
+        "11.57 48.1302, 11.57 48.13));height=9\n",
+    )
+    with pytest.raises(InputError, match=r"look like longitude/latitude.*--crs EPSG:4326"):
+        read_site(w)
+    assert read_site(w, crs="EPSG:4326").crs == "EPSG:32632"
 
 
 def test_make_valid_is_an_explicit_option(tmp_path):

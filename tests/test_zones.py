@@ -3,16 +3,14 @@ planning with them, and refusing every bad definition with a message."""
 
 from __future__ import annotations
 
-import io
 import json
-from contextlib import redirect_stderr, redirect_stdout
 from dataclasses import replace
 
 import numpy as np
 import pandas as pd
 import pytest
+from sites import run_cli as _cli
 
-from planner.app.cli import main
 from planner.pipeline.facades import build_facades
 from planner.pipeline.planning import plan
 from planner.pipeline.requirements import PlanSettings, Requirements
@@ -23,16 +21,6 @@ from planner.zones import Zone, parse_zone, read_zones
 ENTRANCE = (
     "id=entrance,facade=main-f00,from=4,to=10,z=0-6,max_xy_mm=4,max_z_mm=4,sample_spacing_m=0.5"
 )
-
-
-def _cli(*argv: str) -> tuple[int, str, str]:
-    out, err = io.StringIO(), io.StringIO()
-    with redirect_stdout(out), redirect_stderr(err):
-        try:
-            code = main(list(argv))
-        except SystemExit as exc:
-            code = int(exc.code or 0)
-    return code, out.getvalue(), err.getvalue()
 
 
 # -- reading ------------------------------------------------------------------------------

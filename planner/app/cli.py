@@ -220,6 +220,7 @@ def plan_inputs(args: argparse.Namespace):
             buildings=args.buildings,
             repair=args.make_valid,
             limits=limits,
+            crs=args.crs,
         )
     else:
         site = default_site(buildings=args.buildings, limits=limits)
@@ -474,7 +475,15 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         "site",
         nargs="?",
         metavar="SITE_FILE",
-        help=".geojson, .wkt or .csv in a projected CRS; default: the built-in site",
+        help=".geojson, .wkt or .csv (longitude/latitude is projected to its UTM zone); "
+        "default: the built-in site",
+    )
+    pl.add_argument(
+        "--crs",
+        default=None,
+        metavar="CRS",
+        help="CRS of the site file's coordinates, e.g. EPSG:25832 or EPSG:4326 (CSV and WKT "
+        "carry none; GeoJSON without one is longitude/latitude)",
     )
     pl.add_argument(
         "--height",

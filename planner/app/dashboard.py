@@ -466,7 +466,13 @@ class StationPlanner:
             )
         from planner.pipeline.export import render
 
-        mime = {".csv": "text/csv", ".geojson": "application/geo+json", ".txt": "text/plain"}
+        mime = {
+            ".csv": "text/csv",
+            ".geojson": "application/geo+json",
+            ".txt": "text/plain",
+            ".dxf": "image/vnd.dxf",
+            ".kml": "application/vnd.google-earth.kml+xml",
+        }
         links = [
             _download_link(name, text.encode(), mime[Path(name).suffix])
             for name, text in render(p).items()

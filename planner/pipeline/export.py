@@ -15,6 +15,7 @@ import numpy as np
 import pandas as pd
 
 from planner.atomic import replace_folder_files
+from planner.pipeline.deliver import dxf_text, kml_text, stakeout_csv
 from planner.pipeline.result import LINK_COLUMNS, TARGET_COLUMNS, ZONE_COLUMNS, Plan
 
 __all__ = [
@@ -272,18 +273,22 @@ FILES = {
     "links.csv": links_csv,
     "zones.csv": zones_csv,
     "plan.geojson": geojson_text,
+    "plan.dxf": dxf_text,
+    "plan.kml": kml_text,  # only when the site has a CRS
+    "stakeout.csv": stakeout_csv,
     "summary.txt": summary_text,
 }
 
 
 def render(p: Plan) -> dict[str, str]:
-    """Every file of the plan as text, by file name."""
-    return {name: make(p) for name, make in FILES.items()}
+    """Every file of the plan as text, by file name (those a plan cannot have left out)."""
+    out = {name: make(p) for name, make in FILES.items()}
+    return {name: text for name, text in out.items() if text is not None}
 
 
 #: Every file name a plan folder may hold from any run (so an old plan's file is never
 #: mistaken for one of the user's own and carried into the new plan).
-OWNED_FILES = (*FILES, "plan.dxf", "plan.kml", "stakeout.csv", "booklet.pdf", "route.csv")
+OWNED_FILES = (*FILES, "booklet.pdf", "route.csv")
 
 
 def save(p: Plan, out_dir: str | Path) -> list[Path]:

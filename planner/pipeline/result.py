@@ -12,6 +12,7 @@ from typing import Any
 
 import pandas as pd
 
+from planner.crs import name_of as crs_name
 from planner.pipeline.requirements import PlanSettings, Requirements
 from planner.scanner import Scanner
 from planner.site import Site
@@ -161,6 +162,13 @@ class Plan:
             f"{len(self.facades)} facades, {len(cov)} samples "
             f"(+{int(self.coverage['party_wall'].sum())} on party walls, not demanded)",
             f"Scanner {sc.name}; required {req.describe()}",
+            "Coordinates: "
+            + (
+                crs_name(self.site.crs)
+                if self.site.crs
+                else "no CRS given "
+                "(local metres; name it with --crs to get plan.kml and a georeferenced plan)"
+            ),
             f"Stations: {len(self.stations)} ({n_cover} to cover"
             + (f", {n_link} to link" if n_link else "")
             + (f", {n_reg} for the registration error" if n_reg else "")
