@@ -231,23 +231,22 @@ def read_control(path: str | Path) -> list[ControlPoint]:
         return out
 
 
-#: CRS labels meaning longitude/latitude degrees.
-_GEOGRAPHIC = ("crs84", "epsg:4326", "epsg::4326", "wgs 84", "wgs84", "4326")
-
-
 def _to_metres(features: Sequence[Feature], crs: str | None, warnings: list[str]) -> str | None:
     """Project longitude/latitude features (in place) to their UTM zone and return the CRS
     the site is in; check a projected CRS label against the coordinates."""
     from planner import crs as crs_
 
-    geoms = [f.geometry for f in features if f.geometry is not None]
-    if not crs or not geoms:
+    xy = _coordinates(features)
+    if not crs or not len(xy):
         return crs
-    xy = shapely.get_coordinates(geoms)
     if not crs_.is_geographic(crs):
         crs_.check_projected(crs, xy)
         return crs
-    _check_crs_label(crs, geoms)
+    if not _in_degree_range(xy):  # a label that contradicts the coordinates: never written back
+        raise InputError(
+            f"the file says its coordinates are longitude/latitude ({crs}) but they are not "
+            f"(e.g. {xy[0, 0]:.3f}, {xy[0, 1]:.3f}); fix the file's CRS label or its coordinates"
+        )
     lon, lat = xy.mean(axis=0)
     utm = crs_.utm_for(float(lon), float(lat))
     forward = crs_.wgs84_to(utm)
@@ -265,16 +264,17 @@ def _to_metres(features: Sequence[Feature], crs: str | None, warnings: list[str]
     return utm
 
 
-def _check_crs_label(crs: str | None, geoms: Sequence[BaseGeometry]) -> None:
-    """A CRS label that contradicts the coordinates is an error, never written back."""
-    if not crs or not geoms or not any(g in crs.lower() for g in _GEOGRAPHIC):
-        return
-    xy = shapely.get_coordinates(list(geoms))
-    if len(xy) and ((abs(xy[:, 0]) > 180).any() or (abs(xy[:, 1]) > 90).any()):
-        raise InputError(
-            f"the file says its coordinates are longitude/latitude ({crs}) but they are not "
-            f"(e.g. {xy[0, 0]:.3f}, {xy[0, 1]:.3f}); fix the file's CRS label or its coordinates"
-        )
+def _coordinates(features: Sequence[Feature]) -> np.ndarray:
+    """Every vertex of the features' geometries, (N, 2)."""
+    geoms = [f.geometry for f in features if f.geometry is not None]
+    return shapely.get_coordinates(geoms) if geoms else np.empty((0, 2))
+
+
+def _in_degree_range(xy: np.ndarray) -> bool:
+    """Every vertex a possible longitude/latitude (and there is one)."""
+    return bool(len(xy)) and bool(
+        (np.abs(xy[:, 0]) <= 180).all() and (np.abs(xy[:, 1]) <= 90).all()
+    )
 
 
 # -- GeoJSON ------------------------------------------------------------------------------
@@ -341,17 +341,9 @@ def site_from_geojson(obj: dict | str, **kwargs: Any) -> Site:
                 raise InputError(f"the text is not valid JSON: {exc}") from None
         features, crs = _geojson_features(obj, origin)
         crs = kwargs.pop("crs", None) or crs
-        if crs is None and _in_degree_range(features):
+        if crs is None and _in_degree_range(_coordinates(features)):
             crs = GEOJSON_DEFAULT  # RFC 7946: GeoJSON without a CRS is longitude/latitude
         return site_from_features(features, crs=crs, **kwargs)
-
-
-def _in_degree_range(features: Sequence[Feature]) -> bool:
-    geoms = [f.geometry for f in features if f.geometry is not None]
-    xy = shapely.get_coordinates(geoms) if geoms else np.empty((0, 2))
-    return bool(len(xy)) and bool(
-        (np.abs(xy[:, 0]) <= 180).all() and (np.abs(xy[:, 1]) <= 90).all()
-    )
 
 
 # -- WKT ----------------------------------------------------------------------------------

@@ -7,9 +7,11 @@ coordinates: real coordinates in the site's CRS, no local shift (KML: longitude/
 
 from __future__ import annotations
 
+import contextlib
 import io
 import math
 import xml.etree.ElementTree as ET
+from collections.abc import Iterator
 from typing import Any
 
 import numpy as np
@@ -92,16 +94,8 @@ def dxf_text(p: Plan) -> str:
     import ezdxf  # heavy: only when a DXF is written
     from ezdxf.enums import TextEntityAlignment
 
-    saved = ezdxf.options.write_fixed_meta_data_for_testing
-    ezdxf.options.write_fixed_meta_data_for_testing = True  # the same plan, the same bytes
-    try:
-        return _dxf(p, ezdxf, TextEntityAlignment)
-    finally:
-        ezdxf.options.write_fixed_meta_data_for_testing = saved
-
-
-def _dxf(p: Plan, ezdxf: Any, TextEntityAlignment: Any) -> str:
-    doc = ezdxf.new("R2010", setup=True)
+    with _same_bytes(ezdxf):  # ezdxf stamps its metadata when the document is made
+        doc = ezdxf.new("R2010", setup=True)
     doc.units = ezdxf.units.M
     for name, colour in DXF_LAYERS.values():
         doc.layers.add(name, color=colour)
@@ -165,8 +159,20 @@ def _dxf(p: Plan, ezdxf: Any, TextEntityAlignment: Any) -> str:
         (x0, y0 - 3.0), align=TextEntityAlignment.LEFT
     )
     stream = io.StringIO()
-    doc.write(stream)
+    with _same_bytes(ezdxf):  # … and its header dates when it is written
+        doc.write(stream)
     return stream.getvalue()
+
+
+@contextlib.contextmanager
+def _same_bytes(ezdxf: Any) -> Iterator[None]:
+    """ezdxf's fixed creation metadata and dates: the same plan, the same DXF bytes."""
+    saved = ezdxf.options.write_fixed_meta_data_for_testing
+    ezdxf.options.write_fixed_meta_data_for_testing = True
+    try:
+        yield
+    finally:
+        ezdxf.options.write_fixed_meta_data_for_testing = saved
 
 
 def _lower_left(p: Plan) -> tuple[float, float]:

@@ -42,7 +42,7 @@ class CoverSolution:
     gap: float | None  # (objective − bound) / objective
     seconds: float
     greedy_objective: int | None = None
-    #: what the reductions removed, the parts and their sizes, the bounds' sources
+    #: what the reductions removed ("reductions") and the independent parts ("parts")
     details: dict = field(default_factory=dict)
 
 
@@ -236,7 +236,7 @@ def solve_cover(
     ok = sp.csr_matrix(ok)
     demand = np.asarray(demand, dtype=np.int64)
     red = reduce_cover(ok, demand)
-    details: dict = {"reductions": red.describe(), "reduced": red.a.shape, "nnz": red.a.nnz}
+    details: dict = {"reductions": red.describe()}
     chosen, parts = [red.forced], []
     if red.a.shape[0]:
         label = _components(red.a)
@@ -259,8 +259,6 @@ def solve_cover(
     proven = all(p.proven for p in parts)
     used_milp = any(p.how == "integer program" for p in parts)
     details["parts"] = len(parts)
-    details["largest part"] = max((p.greedy for p in parts), default=0)
-    details["how"] = sorted({p.how for p in parts})
     greedy_total = len(red.forced) + sum(p.greedy for p in parts)
     if method == "milp" and not proven:
         raise PlannerError(

@@ -392,13 +392,13 @@ def _network(
         cache=seen,
         datum=datum,
     )
+    timings["registration"] = timings.get("registration", 0.0) + time.perf_counter() - t
     if net.datum is not None and seen.tc.is_control.any():
         # control points given but no station sees three of them: a station that does,
         # nearest the others, ties the network to the site's control (else it is said)
         tie = _control_station(seen, cand, chosen)
         if tie is not None and tie not in chosen:
             return _network(ctx, cand, seen, np.append(chosen, tie), timings)
-    timings["registration"] = timings.get("registration", 0.0) + time.perf_counter() - t
     return net
 
 
