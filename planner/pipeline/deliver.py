@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 
 from planner.pipeline.result import Plan
+from planner.pipeline.route import view_sectors
 
 __all__ = ["DXF_LAYERS", "STAKEOUT_COLUMNS", "dxf_text", "kml_text", "stakeout_csv"]
 
@@ -32,6 +33,7 @@ DXF_LAYERS = {
     "link": ("LINKS", 4),
     "unmet": ("UNMET", 1),
     "sector": ("VIEW-SECTORS", 140),
+    "route": ("ROUTE", 30),
     "info": ("PLAN-INFO", 7),
 }
 
@@ -57,25 +59,6 @@ def _rings(geom: dict) -> list[list[list[float]]]:
     if kind == "MultiLineString":
         return c
     return []
-
-
-def view_sectors(p: Plan) -> dict[str, tuple[float, float, float]]:
-    """Each station's scan sector from the samples it is assigned: (start, end) azimuth in
-    degrees clockwise from grid north (the sector runs clockwise from start to end) and the
-    farthest assigned sample's horizontal distance [m]."""
-    out = {}
-    cov = p.coverage[p.coverage["station_id"].notna() & (p.coverage["station_id"] != "")]
-    st = p.stations.set_index("station_id")
-    for sid, rows in cov.groupby("station_id"):
-        if sid not in st.index:
-            continue
-        dx, dy = rows["x"].to_numpy() - st.at[sid, "x"], rows["y"].to_numpy() - st.at[sid, "y"]
-        az = np.sort(np.degrees(np.arctan2(dx, dy)) % 360.0)
-        gaps = np.diff(np.append(az, az[0] + 360.0))
-        k = int(np.argmax(gaps))  # the sector is the circle without its largest empty gap
-        start, end = az[(k + 1) % len(az)], az[k]
-        out[str(sid)] = (float(start), float(end), float(np.hypot(dx, dy).max()))
-    return out
 
 
 def _sector_points(x, y, start, end, radius, step_deg=5.0) -> list[tuple[float, float]]:
@@ -151,7 +134,7 @@ def dxf_text(p: Plan) -> str:
         for ring in _rings(_to_geojson(p.site.boundary)):
             msp.add_lwpolyline([tuple(c[:2]) for c in ring], dxfattribs={"layer": "BOUNDARY"})
     st = p.stations.set_index("station_id")
-    for sid, (start, end, radius) in view_sectors(p).items():
+    for sid, (start, end, radius) in view_sectors(p.stations, p.coverage, p.targets).items():
         pts = _sector_points(st.at[sid, "x"], st.at[sid, "y"], start, end, radius)
         msp.add_lwpolyline(pts, close=True, dxfattribs={"layer": "VIEW-SECTORS"})
     x0, y0 = _lower_left(p)
@@ -216,14 +199,16 @@ def kml_text(p: Plan) -> str | None:
     for f in _features(p):
         props, geom = f["properties"], f["geometry"]
         layer = props["layer"]
-        if layer not in ("building", "obstacle", "no-go", "station", "target", "link"):
+        if layer not in ("building", "obstacle", "no-go", "station", "target", "link", "route"):
             continue
         if layer not in folders:
             folders[layer] = ET.SubElement(doc, "Folder")
             ET.SubElement(folders[layer], "name").text = layer
         mark = ET.SubElement(folders[layer], "Placemark")
         ident = next((props[k] for k in props if k.endswith("_id") and props[k]), layer)
-        if layer == "link":
+        if layer == "route":
+            ident = f"{props['order']}: {props['station_a']} → {props['station_b']}"
+        elif layer == "link":
             ident = f"{props['station_a']} → {props['station_b']}"
         ET.SubElement(mark, "name").text = str(ident)
         data = ET.SubElement(mark, "ExtendedData")

@@ -17,6 +17,7 @@ import pandas as pd
 from planner.atomic import replace_folder_files
 from planner.pipeline.deliver import dxf_text, kml_text, stakeout_csv
 from planner.pipeline.result import LINK_COLUMNS, TARGET_COLUMNS, ZONE_COLUMNS, Plan
+from planner.pipeline.route import ROUTE_COLUMNS
 
 __all__ = [
     "COVERAGE_COLUMNS",
@@ -118,6 +119,10 @@ def coverage_csv(p: Plan) -> str:
 
 def facades_csv(p: Plan) -> str:
     return to_csv(p.facades)
+
+
+def route_csv(p: Plan) -> str | None:
+    return None if p.route is None else to_csv(p.route.table[ROUTE_COLUMNS])
 
 
 def summary_text(p: Plan, limit: int = 50) -> str:
@@ -240,6 +245,19 @@ def geojson(p: Plan) -> dict:
             facing_deg=r.facing_deg,
             centre_rms_mm=r.centre_rms_mm,
         )
+    if p.route is not None:
+        t = p.route.table
+        for n, leg in enumerate(p.route.legs[1:], start=1):
+            add(
+                {"type": "LineString", "coordinates": np.round(leg, 3).tolist()},
+                layer="route",
+                order=int(t["order"].iloc[n]),
+                station_a=t["station_id"].iloc[n - 1],
+                station_b=t["station_id"].iloc[n],
+                walk_m=float(t["walk_m"].iloc[n]),
+                session=int(t["session"].iloc[n]),
+                walk_note=t["walk_note"].iloc[n],
+            )
     for r in p.unmet.itertuples():
         add(
             {"type": "Point", "coordinates": [r.x, r.y, r.z]},
@@ -276,6 +294,7 @@ FILES = {
     "plan.dxf": dxf_text,
     "plan.kml": kml_text,  # only when the site has a CRS
     "stakeout.csv": stakeout_csv,
+    "route.csv": route_csv,
     "summary.txt": summary_text,
 }
 
@@ -288,7 +307,7 @@ def render(p: Plan) -> dict[str, str]:
 
 #: Every file name a plan folder may hold from any run (so an old plan's file is never
 #: mistaken for one of the user's own and carried into the new plan).
-OWNED_FILES = (*FILES, "booklet.pdf", "route.csv")
+OWNED_FILES = (*FILES, "booklet.pdf")
 
 
 def save(p: Plan, out_dir: str | Path) -> list[Path]:

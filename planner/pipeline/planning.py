@@ -45,6 +45,7 @@ from planner.pipeline.registration import (
 )
 from planner.pipeline.requirements import CHECKS, PlanSettings, Requirements
 from planner.pipeline.result import LINK_COLUMNS, TARGET_COLUMNS, ZONE_COLUMNS, Plan
+from planner.pipeline.route import field_route
 from planner.pipeline.zones import ZoneTable, apply_zones
 from planner.registration_error import CONTROL, Link
 from planner.scanner import DEFAULT_SCANNER, Scanner, load_scanner
@@ -232,6 +233,10 @@ def plan(
     )
     targets, links = _targets_and_links(ctx, tc, net, ids, coverage)
     timings["coverage"] = time.perf_counter() - t
+    say(0.97, "visiting order and field time")
+    t = time.perf_counter()
+    route = field_route(site, sc, st, stations, targets, coverage, links)
+    timings["route"] = time.perf_counter() - t
     if net is not None:
         messages.append(f"Registration: {net.message}.")
         if len(ids) != sol.objective and st.computes_registration:
@@ -279,6 +284,7 @@ def plan(
         links=links,
         candidates=candidates,
         network=net,
+        route=route,
         solver=solver,
         messages=messages,
         timings_s=timings,

@@ -405,6 +405,14 @@ class PlanSettings:
         Spacing of candidate target positions along facades and on free ground [m].
     max_target_incidence_deg : float, default 60
         Beyond this incidence a flat target is not used.
+    setup_min, target_setup_min : float, default 5 and 2
+        Field time to set up a station and to place a target [min].
+    walk_speed_m_s : float, default 0.8
+        Walking speed between stations, carrying the kit [m/s].
+    session_h : float, default 4
+        Longest field session [h]; the visiting order is split into sessions.
+    scan_rate_hz : float, default 500 000
+        Measurement rate [points/s] for scan times when the scanner's profile gives none.
     time_limit_s : float, default 60
         Time budget of the whole plan: evaluation, optimiser and registration share it;
         when it runs out, the best plan found so far is kept and says so.
@@ -538,6 +546,38 @@ class PlanSettings:
         hi=20,
         step=1,
         help="the most common targets a registration of two stations takes",
+    )
+    setup_min: float = _spec(
+        5.0,
+        "min",
+        "set-up per station",
+        step=1.0,
+        help="field time to set up, level and take down the scanner at a station",
+    )
+    target_setup_min: float = _spec(
+        2.0,
+        "min",
+        "set-up per target",
+        open_lo=False,
+        step=0.5,
+        help="field time to place one target (stand or wall) before the first scan that sees it",
+    )
+    walk_speed_m_s: float = _spec(
+        0.8, "m/s", "walking speed", step=0.1, help="walking speed carrying the kit"
+    )
+    session_h: float = _spec(
+        4.0,
+        "h",
+        "session length",
+        step=0.5,
+        help="longest field session (a battery set, half a day); the route is split into these",
+    )
+    scan_rate_hz: float = _spec(
+        500_000.0,
+        "points/s",
+        "measurement rate if unknown",
+        step=50_000.0,
+        help="measurement rate for the scan time when the scanner profile gives none",
     )
     time_limit_s: float = _spec(
         60.0,

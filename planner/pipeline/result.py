@@ -89,6 +89,7 @@ class Plan:
     * ``facades`` — per-facade summary; ``links`` — the registrations, :data:`LINK_COLUMNS`;
     * ``candidates`` — every candidate position with the number of samples it meets;
     * ``zones`` — each zone of the site (:mod:`planner.zones`): :data:`ZONE_COLUMNS`;
+    * ``route`` — the visiting order and field time (:mod:`planner.pipeline.route`);
     * ``network`` — the registration network behind ``links`` (pose covariances, the
       observations and their RMS), for checks and what-if analyses.
     """
@@ -106,6 +107,7 @@ class Plan:
     solver: dict[str, Any]
     zones: pd.DataFrame = field(default_factory=lambda: pd.DataFrame(columns=ZONE_COLUMNS))
     network: Any = None  # the registration network (planner.pipeline.registration.Network)
+    route: Any = None  # visiting order and field time (planner.pipeline.route.FieldRoute)
     messages: list[str] = field(default_factory=list)
     timings_s: dict[str, float] = field(default_factory=dict)
 
@@ -180,6 +182,8 @@ class Plan:
             + (" (scanner ⊕ registration)" if self.settings.computes_registration else "")
             + f": {int(cov['meets'].sum())} of {len(cov)}",
         ]
+        if self.route is not None:
+            lines.append(self.route.summary())
         for z in self.zones.itertuples():
             state = "met" if z.unmet == 0 else f"{z.unmet} of {z.samples} samples unmet"
             lines.append(f"Zone {z.zone_id} ({z.where}; {z.requirement}): {state}")

@@ -1,0 +1,397 @@
+"""Field logistics: a walkable visiting order for the stations and the field time.
+
+* **Where one can walk**: round buildings and obstacles (kept ``WALK_CLEARANCE_M`` away),
+  not through no-go areas unless nothing else reaches a station (a street crossed, say; the
+  leg says so). The walk graph is a visibility graph: the corners of the blocked areas
+  (buffered) and the stations, joined wherever the straight line between two of them is
+  free; shortest walks by Dijkstra (``scipy.sparse.csgraph``).
+* **Visiting order**: the shortest open path through the stations on those walking
+  distances — nearest neighbour from every start, then 2-opt (Croes 1958) to a local optimum.
+* **Time per station**: walk from the previous station, the targets set up before its
+  scan (a target is placed before the first station that scans it), the set-up, and the scan:
+  the station's sector (its facade samples and targets, with a margin) over the scanner's
+  vertical field at the plan's scan step (:mod:`planner.fieldwork`). The route is split into
+  sessions of at most ``session_h``.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+import shapely
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import dijkstra
+from scipy.spatial import cKDTree
+
+from planner.fieldwork import scan_points, scan_time_s
+from planner.pipeline.requirements import PlanSettings
+from planner.scanner import Scanner
+from planner.site import Site
+from planner.spacing import resolve_step_mm
+
+__all__ = ["ROUTE_COLUMNS", "FieldRoute", "field_route", "view_sectors", "walk_paths"]
+
+#: Distance kept from buildings and obstacles when walking [m] (at most half the clearance).
+WALK_CLEARANCE_M = 0.4
+#: A metre walked through a no-go area counts as this many when choosing the way.
+NO_GO_PENALTY = 20.0
+#: Margin added on both sides of a station's scan sector [deg].
+SECTOR_MARGIN_DEG = 5.0
+#: Each walk-graph node is joined to at most this many nearest nodes (beyond a small graph).
+NEIGHBOURS = 40
+#: Up to this many stations the order is chosen on the full matrix of walking distances.
+EXACT_MAX_STATIONS = 400
+
+#: route.csv: one row per station in visiting order.
+ROUTE_COLUMNS = [
+    "order",
+    "station_id",
+    "x",
+    "y",
+    "session",
+    "walk_m",
+    "walk_min",
+    "targets_to_set",
+    "targets_min",
+    "setup_min",
+    "sector_start_deg",
+    "sector_deg",
+    "step_mm_at_10m",
+    "scan_points_million",
+    "scan_min",
+    "station_min",
+    "elapsed_min",
+    "max_spacing_mm",
+    "links_to",
+    "walk_note",
+]
+
+
+@dataclass
+class FieldRoute:
+    """The visiting order and field time of a plan (:data:`ROUTE_COLUMNS`), each leg's
+    walked polyline (from the previous station; the first is empty) and the rate used."""
+
+    table: pd.DataFrame
+    legs: list[np.ndarray] = field(default_factory=list)
+    rate_hz: float = 0.0
+    rate_assumed: bool = False
+    notes: list[str] = field(default_factory=list)
+
+    @property
+    def total_min(self) -> float:
+        return float(self.table["station_min"].sum()) if len(self.table) else 0.0
+
+    @property
+    def sessions(self) -> int:
+        return int(self.table["session"].max()) if len(self.table) else 0
+
+    def summary(self) -> str:
+        """One paragraph for the summary, the report and the dashboard."""
+        t = self.table
+        if not len(t):
+            return "Field time: no stations."
+        order = " → ".join(t["station_id"])
+        rate = f"{self.rate_hz:,.0f} points/s".replace(",", " ")
+        rate += " (assumed: the scanner profile gives none)" if self.rate_assumed else ""
+        return (
+            f"Field time: {_hm(self.total_min)} in {self.sessions} session(s) — walk "
+            f"{t['walk_m'].sum() / 1000:.2f} km ({_hm(t['walk_min'].sum())}), "
+            f"{int(t['targets_to_set'].str.len().gt(0).sum())} stop(s) placing "
+            f"{_count_ids(t['targets_to_set'])} targets ({_hm(t['targets_min'].sum())}), set-up "
+            f"{_hm(t['setup_min'].sum())}, scanning {_hm(t['scan_min'].sum())} at {rate}, "
+            f"step {t['step_mm_at_10m'].iloc[0]:g} mm at 10 m. Visiting order: {order}."
+            + "".join(f" {n}" for n in self.notes)
+        )
+
+
+def _hm(minutes: float) -> str:
+    m = round(minutes)
+    return f"{m // 60} h {m % 60:02d} min" if m >= 60 else f"{m} min"
+
+
+def _count_ids(col: pd.Series) -> int:
+    return int(sum(len([s for s in v.split(" ") if s]) for v in col))
+
+
+# -- sectors ------------------------------------------------------------------------------
+def view_sectors(
+    stations: pd.DataFrame, coverage: pd.DataFrame, targets: pd.DataFrame | None = None
+) -> dict[str, tuple[float, float, float]]:
+    """Each station's scan sector: the circle without its largest empty gap between the
+    samples it is assigned (and the targets it scans). (start, end) azimuth in degrees
+    clockwise from grid north (the sector runs clockwise from start to end) and the farthest
+    assigned point's horizontal distance [m]."""
+    pts: dict[str, list[np.ndarray]] = {}
+    cov = coverage[coverage["station_id"].notna() & (coverage["station_id"] != "")]
+    for sid, rows in cov.groupby("station_id"):
+        pts.setdefault(str(sid), []).append(rows[["x", "y"]].to_numpy(float))
+    if targets is not None and len(targets):
+        for sids, x, y in zip(targets["station_ids"], targets["x"], targets["y"], strict=True):
+            for sid in sids:
+                pts.setdefault(str(sid), []).append(np.array([[x, y]], float))
+    out = {}
+    st = stations.set_index("station_id")
+    for sid, parts in pts.items():
+        if sid not in st.index:
+            continue
+        xy = np.vstack(parts)
+        dx, dy = xy[:, 0] - st.at[sid, "x"], xy[:, 1] - st.at[sid, "y"]
+        az = np.sort(np.degrees(np.arctan2(dx, dy)) % 360.0)
+        gaps = np.diff(np.append(az, az[0] + 360.0))
+        k = int(np.argmax(gaps))
+        start, end = az[(k + 1) % len(az)], az[k]
+        out[sid] = (float(start), float(end), float(np.hypot(dx, dy).max()))
+    return out
+
+
+# -- where one can walk -------------------------------------------------------------------
+@dataclass
+class _WalkGraph:
+    nodes: np.ndarray  # (V, 2), the stations first
+    n_stations: int
+    length: coo_matrix  # geometric length of each free edge
+    weight: coo_matrix  # length with the no-go penalty (what the order minimises)
+
+
+def _walk_graph(site: Site, points: np.ndarray, clearance_m: float) -> _WalkGraph:
+    c = min(WALK_CLEARANCE_M, max(0.05, clearance_m / 2.0))
+    hard = [b.footprint for b in site.buildings] + [o.geometry for o in site.obstacles]
+    soft = [a.geometry for a in site.no_go]
+    hard_b = [g.buffer(c, quad_segs=2) for g in hard]
+    soft_b = [g.buffer(c, quad_segs=2) for g in soft]
+    corners = []
+    for g in [*hard_b, *soft_b]:
+        ring = shapely.get_coordinates(
+            shapely.simplify(g.buffer(0.1, quad_segs=2, join_style="mitre"), 0.1).boundary
+        )
+        corners.append(ring)
+    corner_xy = np.vstack(corners) if corners else np.empty((0, 2))
+    hard_tree = shapely.STRtree(hard_b)
+    if len(corner_xy):
+        corner_xy = np.unique(np.round(corner_xy, 2), axis=0)
+        inside = hard_tree.query(shapely.points(corner_xy), predicate="intersects")[0]
+        corner_xy = np.delete(corner_xy, np.unique(inside), axis=0)
+    nodes = np.vstack([points, corner_xy])
+    n = len(nodes)
+    if n <= 2 * NEIGHBOURS:
+        i, j = np.triu_indices(n, 1)
+    else:
+        _, nb = cKDTree(nodes).query(nodes, k=NEIGHBOURS + 1)
+        i = np.repeat(np.arange(n), NEIGHBOURS)
+        j = nb[:, 1:].ravel()
+        keep = (j < n) & (i < j)
+        pairs = np.unique(np.column_stack([i[keep], j[keep]]), axis=0)
+        i, j = pairs[:, 0], pairs[:, 1]
+    segs = shapely.linestrings(np.stack([nodes[i], nodes[j]], axis=1))
+    blocked = np.zeros(len(segs), bool)
+    blocked[hard_tree.query(segs, predicate="intersects")[0]] = True
+    length = np.hypot(*(nodes[i] - nodes[j]).T)
+    weight = length.copy()
+    if soft_b:
+        hit = shapely.STRtree(soft_b).query(segs, predicate="intersects")
+        for s in np.unique(hit[0]):
+            inside = sum(segs[s].intersection(soft_b[k]).length for k in hit[1][hit[0] == s])
+            weight[s] += (NO_GO_PENALTY - 1.0) * inside
+    i, j, length, weight = i[~blocked], j[~blocked], length[~blocked], weight[~blocked]
+    sym = (np.concatenate([i, j]), np.concatenate([j, i]))
+    return _WalkGraph(
+        nodes=nodes,
+        n_stations=len(points),
+        length=coo_matrix((np.concatenate([length, length]), sym), shape=(n, n)),
+        weight=coo_matrix((np.concatenate([weight, weight]) + 1e-9, sym), shape=(n, n)),
+    )
+
+
+def walk_paths(site: Site, points: np.ndarray, clearance_m: float = 1.0) -> np.ndarray:
+    """Walking distances between every pair of ``points`` (N, 2) [m], round buildings,
+    obstacles and no-go areas (crossed only where nothing else reaches; inf: no way)."""
+    g = _walk_graph(site, np.asarray(points, float).reshape(-1, 2), clearance_m)
+    _, pred = _shortest(g, np.arange(g.n_stations))
+    k = g.n_stations
+    return np.array([[_leg(g, a, b, pred[a])[0] for b in range(k)] for a in range(k)])
+
+
+def _shortest(g: _WalkGraph, sources: np.ndarray, limit: float = np.inf):
+    """Weights to every node and predecessor rows of the shortest walks from ``sources``."""
+    return dijkstra(g.weight.tocsr(), indices=sources, return_predecessors=True, limit=limit)
+
+
+def _leg(g: _WalkGraph, a: int, b: int, pred: np.ndarray) -> tuple[float, np.ndarray | None]:
+    """Walked length [m] and polyline from station a to station b on a's tree."""
+    if a == b:
+        return 0.0, g.nodes[[a]]
+    if pred[b] < 0:
+        return math.inf, None
+    seq = [b]
+    while seq[-1] != a:
+        seq.append(int(pred[seq[-1]]))
+    path = g.nodes[seq[::-1]]
+    return float(np.hypot(*np.diff(path, axis=0).T).sum()), path
+
+
+# -- visiting order -----------------------------------------------------------------------
+def _open_path_order(d: np.ndarray) -> np.ndarray:
+    """A short open path through all points of the distance matrix ``d``: nearest
+    neighbour from every start, the best improved by 2-opt."""
+    n = len(d)
+    if n <= 2:
+        return np.arange(n)
+    big = np.where(np.isfinite(d), d, np.nanmax(np.where(np.isfinite(d), d, 0)) * 10 + 1e6)
+    best, best_len = None, math.inf
+    for s in range(n) if n <= 150 else np.linspace(0, n - 1, 150).astype(int):
+        seen = np.zeros(n, bool)
+        order = [s]
+        seen[s] = True
+        for _ in range(n - 1):
+            row = np.where(seen, np.inf, big[order[-1]])
+            nxt = int(np.argmin(row))
+            order.append(nxt)
+            seen[nxt] = True
+        length = big[order[:-1], order[1:]].sum()
+        if length < best_len - 1e-9:
+            best, best_len = np.array(order), length
+    return _two_opt(best, big)
+
+
+def _two_opt(order: np.ndarray, d: np.ndarray, max_passes: int = 50) -> np.ndarray:
+    """2-opt on an open path: reverse ``order[i..j]`` while that shortens it."""
+    n = len(order)
+    for _ in range(max_passes):
+        o = order
+        prev = np.concatenate([[-1], o[:-1]])  # node before position i
+        nxt = np.concatenate([o[1:], [-1]])  # node after position j
+        i, j = np.triu_indices(n, 1)
+        before = np.where(prev[i] >= 0, d[prev[i], o[i]], 0.0) + np.where(
+            nxt[j] >= 0, d[o[j], nxt[j]], 0.0
+        )
+        after = np.where(prev[i] >= 0, d[prev[i], o[j]], 0.0) + np.where(
+            nxt[j] >= 0, d[o[i], nxt[j]], 0.0
+        )
+        gain = before - after
+        k = int(np.argmax(gain))
+        if gain[k] <= 1e-9:
+            break
+        a, b = i[k], j[k]
+        order = np.concatenate([o[:a], o[a : b + 1][::-1], o[b + 1 :]])
+    return order
+
+
+# -- the route ----------------------------------------------------------------------------
+def field_route(
+    site: Site,
+    scanner: Scanner,
+    settings: PlanSettings,
+    stations: pd.DataFrame,
+    targets: pd.DataFrame,
+    coverage: pd.DataFrame,
+    links: pd.DataFrame,
+) -> FieldRoute:
+    """The visiting order of ``stations`` and the field time (see the module's text)."""
+    rate = scanner.measurement_rate_hz or settings.scan_rate_hz
+    route = FieldRoute(
+        table=pd.DataFrame(columns=ROUTE_COLUMNS),
+        rate_hz=float(rate),
+        rate_assumed=scanner.measurement_rate_hz is None,
+    )
+    if not len(stations):
+        return route
+    xy = stations[["x", "y"]].to_numpy(float)
+    ids = stations["station_id"].astype(str).tolist()
+    g = _walk_graph(site, xy, settings.clearance_m)
+    exact = len(xy) <= EXACT_MAX_STATIONS
+    if exact:
+        w, pred = _shortest(g, np.arange(len(xy)))
+        order = _open_path_order(w[:, : len(xy)])
+    else:  # a district: ordered on straight lines, each leg then walked
+        order = _open_path_order(np.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1)))
+    legs: list[np.ndarray] = [np.empty((0, 2))]
+    walk_m, notes = [0.0], [""]
+    for a, b in itertools.pairwise(order):
+        if exact:
+            row = pred[a]
+        else:  # the way round is rarely more than a few times the straight line
+            straight = float(np.hypot(*(xy[a] - xy[b])))
+            row = _shortest(g, np.array([a]), limit=NO_GO_PENALTY * (straight + 50.0))[1][0]
+        length, path = _leg(g, int(a), int(b), row)
+        if path is None:  # no walk round: straight (through a building's passage, a door)
+            path = xy[[a, b]]
+            length = float(np.hypot(*(xy[a] - xy[b])))
+            notes.append("no way round buildings found: straight line taken")
+        elif any(shapely.linestrings(path).intersects(z.geometry) for z in site.no_go):
+            notes.append("crosses a no-go area")
+        else:
+            notes.append("")
+        walk_m.append(float(length))
+        legs.append(path)
+    step = resolve_step_mm(scanner, settings.step_mm_at_10m)
+    lo, hi = scanner.vertical_fov_deg
+    sectors = view_sectors(stations, coverage, targets)
+    visit = {ids[k]: n for n, k in enumerate(order)}
+    first_visit: dict[int, list[str]] = {}
+    for tid, sids in zip(targets["target_id"], targets["station_ids"], strict=True):
+        seen_by = [visit[s] for s in sids if s in visit]
+        if seen_by:
+            first_visit.setdefault(min(seen_by), []).append(str(tid))
+    spacing = coverage.groupby("station_id")["spacing_mm"].max() if len(coverage) else {}
+    linked: dict[str, list[str]] = {}
+    for a, b in zip(links["station_a"], links["station_b"], strict=True):
+        linked.setdefault(str(a), []).append(str(b))
+        linked.setdefault(str(b), []).append(str(a))
+    rows, session, used, elapsed = [], 1, 0.0, 0.0
+    limit = settings.session_h * 60.0
+    for n, k in enumerate(order):
+        sid = ids[k]
+        start, end, _ = sectors.get(sid, (0.0, 0.0, 0.0))
+        width = min(360.0, (end - start) % 360.0 + 2 * SECTOR_MARGIN_DEG)
+        if width > 300.0:
+            start, width = 0.0, 360.0
+        else:
+            start = (start - SECTOR_MARGIN_DEG) % 360.0
+        points = float(scan_points(width, hi - lo, step))
+        scan_min = float(scan_time_s(points, rate)) / 60.0
+        to_set = first_visit.get(n, [])
+        walk_min = walk_m[n] / settings.walk_speed_m_s / 60.0
+        t_min = settings.target_setup_min * len(to_set)
+        total = walk_min + t_min + settings.setup_min + scan_min
+        if used > 0 and used + total > limit:
+            session, used = session + 1, 0.0
+        used += total
+        elapsed += total
+        sp = spacing.get(sid, np.nan) if hasattr(spacing, "get") else np.nan
+        rows.append(
+            {
+                "order": n + 1,
+                "station_id": sid,
+                "x": xy[k, 0],
+                "y": xy[k, 1],
+                "session": session,
+                "walk_m": round(walk_m[n], 1),
+                "walk_min": round(walk_min, 1),
+                "targets_to_set": " ".join(to_set),
+                "targets_min": round(t_min, 1),
+                "setup_min": settings.setup_min,
+                "sector_start_deg": round(start, 1),
+                "sector_deg": round(width, 1),
+                "step_mm_at_10m": step,
+                "scan_points_million": round(points / 1e6, 1),
+                "scan_min": round(scan_min, 1),
+                "station_min": round(total, 1),
+                "elapsed_min": round(elapsed, 1),
+                "max_spacing_mm": round(float(sp), 1) if np.isfinite(sp) else np.nan,
+                "links_to": " ".join(sorted(set(linked.get(sid, [])))),
+                "walk_note": notes[n],
+            }
+        )
+    route.table = pd.DataFrame(rows, columns=ROUTE_COLUMNS)
+    route.legs = legs
+    if any(notes):
+        crossing = [ids[k] for n, k in enumerate(order) if notes[n]]
+        route.notes.append(
+            f"Walks to {', '.join(crossing)}: {'; '.join(sorted(set(filter(None, notes))))}."
+        )
+    return route
