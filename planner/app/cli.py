@@ -261,8 +261,15 @@ def _read_text(path: str, what: str) -> str:
 def run_plan(args: argparse.Namespace) -> int:
     from planner.pipeline.planning import plan
 
-    result = plan(*plan_inputs(args), progress=_StderrProgress(args.quiet))
-    written = result.save(args.out)
+    progress = _StderrProgress(args.quiet)
+    result = plan(*plan_inputs(args), progress=progress)
+    extra = {}
+    if args.booklet:
+        from planner.app.booklet import booklet_pdf
+
+        progress(1.0, "field booklet (booklet.pdf)")
+        extra["booklet.pdf"] = booklet_pdf(result)
+    written = result.save(args.out, extra)
     print(result.summary())
     unmet = result.unmet
     if len(unmet):
@@ -668,6 +675,13 @@ def build_parser() -> argparse.ArgumentParser:
     )
     _plan_arguments(pl)
     pl.add_argument("--out", required=True, metavar="DIR", help="folder for the plan's files")
+    pl.add_argument(
+        "--no-booklet",
+        dest="booklet",
+        action="store_false",
+        help="do not write the field booklet (booklet.pdf: overview map and a page per "
+        "station; a few seconds per ten stations)",
+    )
     pl.set_defaults(func=run_plan)
 
     rp = sub.add_parser(

@@ -268,6 +268,9 @@ class StationPlanner:
         self.map_out, self.cov_out, self.fac_out, self.unmet_out, self.reg_out = (
             w.Output() for _ in range(5)
         )
+        self.field_out = w.Output()
+        self.booklet_button = w.Button(description="Make field booklet (PDF)")
+        self.booklet_status = w.HTML("")
         self.downloads = w.HTML("")
         self.report_button = w.Button(description="Make HTML report")
         self.report_status = w.HTML("")
@@ -278,10 +281,26 @@ class StationPlanner:
                 self.fac_out,
                 self.reg_out,
                 self.unmet_out,
-                w.VBox([self.downloads, w.HBox([self.report_button]), self.report_status]),
+                self.field_out,
+                w.VBox(
+                    [
+                        self.downloads,
+                        w.HBox([self.report_button, self.booklet_button]),
+                        self.report_status,
+                        self.booklet_status,
+                    ]
+                ),
             ]
         )
-        titles = ["Plan map", "Coverage", "Facades", "Registration", "Unmet", "Downloads"]
+        titles = [
+            "Plan map",
+            "Coverage",
+            "Facades",
+            "Registration",
+            "Unmet",
+            "Stations & field work",
+            "Downloads",
+        ]
         for i, title in enumerate(titles):
             self.tabs.set_title(i, title)
         controls = w.VBox(
@@ -324,6 +343,7 @@ class StationPlanner:
         self.upload.observe(lambda _c: self._uploaded(), "value")
         self.quantity.observe(lambda _c: self._show_coverage(), "value")
         self.report_button.on_click(lambda _b: self.make_report())
+        self.booklet_button.on_click(lambda _b: self.make_booklet())
         self.site_source.observe(lambda _c: self._offer_facades(), "value")
         self.buildings.observe(lambda _c: self._offer_facades(), "value")
         self._offer_facades()
@@ -464,6 +484,12 @@ class StationPlanner:
                 ),
                 g.set_index("facade_id"),
             )
+        if p.route is not None:
+            _show(
+                self.field_out,
+                w.HTML(f"<p>{html.escape(p.route.summary())}</p>"),
+                p.route.table.set_index("order").round({"x": 3, "y": 3}),
+            )
         from planner.pipeline.export import render
 
         mime = {
@@ -479,6 +505,7 @@ class StationPlanner:
         ]
         self.downloads.value = "<p>" + "".join(links) + "</p>"
         self.report_status.value = ""
+        self.booklet_status.value = ""
         self.progress.value = 1.0
         self.status.value = f"<i>planned in {p.timings_s['total']:.1f} s</i>"
 
@@ -505,6 +532,23 @@ class StationPlanner:
             self.report_status.value = _error_html(f"the report failed: {exc}")
         finally:
             self.report_button.disabled = False
+
+    def make_booklet(self) -> None:
+        """Render the field booklet of the plan on screen and offer it for download."""
+        from planner.app.booklet import booklet_pdf
+
+        if self.plan is None:
+            self.booklet_status.value = _error_html("make a plan first")
+            return
+        self.booklet_status.value = "<i>drawing the booklet (a page per station)…</i>"
+        self.booklet_button.disabled = True
+        try:
+            pdf = booklet_pdf(self.plan)
+            self.booklet_status.value = _download_link("booklet.pdf", pdf, "application/pdf")
+        except Exception as exc:
+            self.booklet_status.value = _error_html(f"the booklet failed: {exc}")
+        finally:
+            self.booklet_button.disabled = False
 
     def show(self) -> None:
         display(self.widget)

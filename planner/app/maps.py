@@ -5,6 +5,8 @@ Used by the dashboard, the report and ``planner figures``.
 
 from __future__ import annotations
 
+import math
+
 import matplotlib.pyplot as plt
 import numpy as np
 import shapely
@@ -14,10 +16,19 @@ from matplotlib.figure import Figure
 from matplotlib.patches import PathPatch, Wedge
 from matplotlib.path import Path as MplPath
 
+from planner.crs import name_of as crs_name
 from planner.pipeline.result import Plan
+from planner.pipeline.route import view_sectors
 from planner.site import Site
 
-__all__ = ["plot_coverage", "plot_plan_map", "plot_site"]
+__all__ = [
+    "legend_outside",
+    "place_labels",
+    "plot_coverage",
+    "plot_plan_map",
+    "plot_site",
+    "survey_frame",
+]
 
 QUANTITIES = {
     "m_x_mm": "m_x [mm]",
@@ -41,20 +52,61 @@ def _patch(geom, **kw) -> PathPatch:
     return PathPatch(MplPath(np.vstack(verts), codes), **kw)
 
 
-def plot_site(site: Site, ax: Axes | None = None, origin: np.ndarray | None = None) -> Axes:
-    """Buildings (planned dark, others light), obstacles, no-go areas and the boundary."""
+#: Colours of the drawn kinds (one place: map, legend, booklet).
+COLOURS = {
+    "planned": "#7f8c8d",
+    "other": "#d5d8dc",
+    "tree": "#58d68d",
+    "obstacle": "#a04000",
+    "no-go": "#f4cccc",
+    "cover": "#c0392b",
+    "link": "#1f618d",
+    "registration": "#1f618d",
+    "target": "#8e44ad",
+    "route": "#117a65",
+    "sector": "#f5b041",
+}
+_PURPOSE_LABEL = {
+    "cover": "station (covering)",
+    "link": "station (linking the network)",
+    "registration": "station (for the registration error)",
+}
+
+
+def plot_site(site: Site, ax: Axes | None = None) -> Axes:
+    """Buildings (planned dark, others light), obstacles, no-go areas and the boundary, in
+    the site's coordinates, each kind with a legend entry."""
     if ax is None:
         _, ax = plt.subplots(figsize=(8, 7), layout="constrained")
-    o = np.zeros(2) if origin is None else origin
-    shift = lambda g: shapely.transform(g, lambda c: c - o)  # noqa: E731
     if site.boundary is not None:
-        ax.add_patch(_patch(shift(site.boundary), fill=False, ls="--", ec="0.4", lw=1))
-    for a in site.no_go:
-        ax.add_patch(_patch(shift(a.geometry), fc="#f4cccc", ec="#cc6666", hatch="//", lw=0.5))
+        ax.add_patch(_patch(site.boundary, fill=False, ls="--", ec="0.4", lw=1))
+        ax.plot([], [], ls="--", color="0.4", lw=1, label="survey boundary")
+    for n, a in enumerate(site.no_go):
+        ax.add_patch(
+            _patch(
+                a.geometry,
+                fc=COLOURS["no-go"],
+                ec="#cc6666",
+                hatch="//",
+                lw=0.5,
+                label="no-go area" if n == 0 else None,
+            )
+        )
+    labelled: set[str] = set()
     for b in site.buildings:
-        fc = "#7f8c8d" if b.planned else "#d5d8dc"
-        ax.add_patch(_patch(shift(b.footprint), fc=fc, ec="k", lw=0.8))
-        c = shift(b.footprint).representative_point()
+        kind = "planned" if b.planned else "other"
+        label = "building (planned)" if b.planned else "building (blocks the beam)"
+        ax.add_patch(
+            _patch(
+                b.footprint,
+                fc=COLOURS[kind],
+                ec="k",
+                lw=0.8,
+                label=None if kind in labelled else label,
+            )
+        )
+        labelled.add(kind)
+        c = b.footprint.representative_point()
         ax.annotate(
             f"{b.id}\n{b.height_m:g} m",
             (c.x, c.y),
@@ -64,32 +116,45 @@ def plot_site(site: Site, ax: Axes | None = None, origin: np.ndarray | None = No
             color="w" if b.planned else "k",
         )
     for ob in site.obstacles:
-        fc = "#58d68d" if ob.kind == "tree" else "#a04000"
-        ax.add_patch(_patch(shift(ob.geometry), fc=fc, ec="k", lw=0.5, alpha=0.8))
+        kind = "tree" if ob.kind == "tree" else "obstacle"
+        ax.add_patch(
+            _patch(
+                ob.geometry,
+                fc=COLOURS[kind],
+                ec="k",
+                lw=0.5,
+                alpha=0.8,
+                label=None if kind in labelled else kind,
+            )
+        )
+        labelled.add(kind)
     ax.set_aspect("equal")
     ax.autoscale_view()
     return ax
 
 
 def plot_plan_map(
-    p: Plan, ax: Axes | None = None, *, candidates: bool = True, sectors: bool = True
+    p: Plan,
+    ax: Axes | None = None,
+    *,
+    candidates: bool = True,
+    sectors: bool = True,
+    route: bool = True,
+    order_labels: bool = False,
 ) -> Figure:
-    """The plan on the site: candidate heat map (samples each position meets), stations with
-    their view sectors, registration links, targets, unmet samples."""
+    """The plan as a survey drawing in the site's coordinates: candidate heat map (samples
+    each position meets), stations with their view sectors, registration links, targets
+    with their ids, the walking route, unmet samples; a coordinate grid in absolute values,
+    a scale bar, a grid-north arrow and a legend of everything drawn; labels placed so that
+    they do not overlap."""
     if ax is None:
-        _, ax = plt.subplots(figsize=(9, 7.5), layout="constrained")
+        _, ax = plt.subplots(figsize=(11, 8), layout="constrained")
     fig = ax.figure
-    origin = (
-        np.array([p.candidates["x"].min(), p.candidates["y"].min()])
-        if len(p.candidates)
-        else np.array(p.site.planned[0].footprint.bounds[:2])
-    )
-    origin = np.floor(origin / 10) * 10
     if candidates and len(p.candidates):
         c = p.candidates
         sc = ax.scatter(
-            c["x"] - origin[0],
-            c["y"] - origin[1],
+            c["x"],
+            c["y"],
             c=c["samples_met"],
             s=4,
             marker="s",
@@ -98,94 +163,239 @@ def plot_plan_map(
             lw=0,
             zorder=0,
         )
-        fig.colorbar(sc, ax=ax, shrink=0.6, label="samples a station here meets")
-    plot_site(p.site, ax, origin)
+        fig.colorbar(
+            sc,
+            ax=ax,
+            shrink=0.4,
+            aspect=15,
+            anchor=(0.0, 0.0),
+            label="samples a station here meets",
+        )
+    plot_site(p.site, ax)
     st = p.stations.set_index("station_id")
-    cov = p.coverage[p.coverage["station_id"] != ""]
-    if sectors and len(cov):
-        wedges = []
-        for sid, g in cov.groupby("station_id"):
-            sx, sy = st.loc[sid, ["x", "y"]]
-            ang = np.degrees(np.arctan2(g["y"] - sy, g["x"] - sx))
-            ang = np.sort(np.mod(ang, 360))
-            gaps = np.diff(np.append(ang, ang[0] + 360))
-            k = int(np.argmax(gaps))
-            start, end = ang[(k + 1) % len(ang)], ang[k]
-            radius = float(np.hypot(g["x"] - sx, g["y"] - sy).max())
-            wedges.append(
-                Wedge(
-                    (sx - origin[0], sy - origin[1]),
-                    radius,
-                    start,
-                    end if end > start else end + 360,
-                )
-            )
-        ax.add_collection(PatchCollection(wedges, fc="#f5b041", ec="#d68910", alpha=0.12, lw=0.6))
-    _draw_links(p, ax, origin)
+    if sectors and len(p.stations):
+        wedges = [
+            Wedge((st.at[sid, "x"], st.at[sid, "y"]), radius, 90 - end, 90 - start)
+            for sid, (start, end, radius) in view_sectors(p.stations, p.coverage, p.targets).items()
+        ]
+        ax.add_collection(
+            PatchCollection(wedges, fc=COLOURS["sector"], ec="#d68910", alpha=0.07, lw=0.6)
+        )
+        ax.fill([], [], fc=COLOURS["sector"], ec="#d68910", alpha=0.3, label="scan sector")
+    if route and p.route is not None and len(p.route.legs) > 1:
+        for leg in p.route.legs[1:]:
+            ax.plot(leg[:, 0], leg[:, 1], color=COLOURS["route"], lw=1.1, ls=(0, (4, 2)), zorder=2)
+        ax.plot(
+            [],
+            [],
+            color=COLOURS["route"],
+            lw=1.1,
+            ls=(0, (4, 2)),
+            label=f"walking route ({p.route.table['walk_m'].sum():.0f} m)",
+        )
+    labels: list[tuple[float, float, str, dict]] = []
+    _draw_links(p, ax, labels)
     for kind, marker in (("flat", "s"), ("sphere", "o")):
         t = p.targets[p.targets["type"] == kind]
         if len(t):
             ax.scatter(
-                t["x"] - origin[0],
-                t["y"] - origin[1],
+                t["x"],
+                t["y"],
                 marker=marker,
                 s=28,
                 fc="w",
-                ec="#8e44ad",
+                ec=COLOURS["target"],
                 lw=1.5,
                 zorder=4,
                 label=f"{kind} target",
             )
+    for r in p.targets[p.targets["type"] != "control"].itertuples():
+        labels.append((r.x, r.y, r.target_id, {"fontsize": 6, "color": COLOURS["target"]}))
+    order = {}
+    if order_labels and p.route is not None:
+        order = dict(zip(p.route.table["station_id"], p.route.table["order"], strict=True))
+    for purpose in ("cover", "link", "registration"):
+        s = p.stations[p.stations["purpose"] == purpose]
+        if len(s):
+            ax.plot(
+                s["x"],
+                s["y"],
+                "^",
+                color=COLOURS[purpose],
+                ms=9,
+                mec="k",
+                ls="none",
+                zorder=5,
+                label=_PURPOSE_LABEL[purpose]
+                if purpose != "registration" or not (p.stations["purpose"] == "link").any()
+                else None,
+            )
     for r in p.stations.itertuples():
-        colour = "#c0392b" if r.purpose == "cover" else "#1f618d"
-        ax.plot(r.x - origin[0], r.y - origin[1], "^", color=colour, ms=9, mec="k", zorder=5)
-        ax.annotate(
-            r.station_id,
-            (r.x - origin[0], r.y - origin[1]),
-            xytext=(4, 4),
-            textcoords="offset points",
-            fontsize=8,
-            weight="bold",
-            zorder=6,
-        )
+        text = f"{r.station_id} ({order[r.station_id]})" if r.station_id in order else r.station_id
+        labels.append((r.x, r.y, text, {"fontsize": 8, "weight": "bold"}))
     un = p.unmet
     if len(un):
         ax.scatter(
-            un["x"] - origin[0],
-            un["y"] - origin[1],
+            un["x"],
+            un["y"],
             marker="x",
             c="red",
             s=30,
             zorder=6,
             label=f"unmet samples ({len(un)})",
         )
-    ax.plot([], [], "^", color="#c0392b", mec="k", label="station")
-    ax.legend(loc="upper left", fontsize=7, framealpha=0.9)
-    crs = f" ({p.site.crs})" if p.site.crs else ""
-    ax.set_xlabel(f"E − {origin[0]:.0f} [m]{crs}")
-    ax.set_ylabel(f"N − {origin[1]:.0f} [m]")
     ax.set_title(f"{len(p.stations)} stations, {len(p.targets)} targets — {p.site.name}")
-    ax.autoscale_view()
+    _frame_extent(ax, p)
+    survey_frame(ax, p.site.crs)
+    place_labels(ax, labels)
+    legend_outside(ax)
     return fig
 
 
-def _draw_links(p: Plan, ax: Axes, origin: np.ndarray) -> None:
-    """The registrations as lines between stations (to each control point used, for a
-    station tied to the control network), coloured and labelled by the link's own
+def legend_outside(ax: Axes) -> None:
+    """The legend beside the drawing (the figure's, when its layout makes room for it)."""
+    fig = ax.figure
+    handles, names = ax.get_legend_handles_labels()
+    if fig.get_layout_engine() is not None:
+        fig.legend(handles, names, loc="outside right upper", fontsize=7, framealpha=0.9)
+    else:
+        ax.legend(handles, names, loc="upper left", fontsize=6.5, framealpha=0.9)
+
+
+def _frame_extent(ax: Axes, p: Plan) -> None:
+    """The drawing's extent: the site, its stations and targets, with a margin (a scan
+    sector may run off the sheet)."""
+    geoms = [b.footprint for b in p.site.buildings]
+    if p.site.boundary is not None:
+        geoms.append(p.site.boundary)
+    x0, y0, x1, y1 = shapely.total_bounds(geoms)
+    for df in (p.stations, p.targets):
+        if len(df):
+            x0, x1 = min(x0, df["x"].min()), max(x1, df["x"].max())
+            y0, y1 = min(y0, df["y"].min()), max(y1, df["y"].max())
+    pad = 0.06 * max(x1 - x0, y1 - y0, 10.0)
+    ax.set_xlim(x0 - pad, x1 + pad)
+    ax.set_ylim(y0 - pad, y1 + pad)
+
+
+def _nice_length(span: float) -> float:
+    """A round scale-bar length, about a fifth of ``span`` (1, 2 or 5 × 10^k m)."""
+    raw = max(span / 5.0, 1e-3)
+    k = math.floor(math.log10(raw))
+    return min((m * 10.0**k for m in (1, 2, 5, 10)), key=lambda v: abs(v - raw))
+
+
+def survey_frame(ax: Axes, crs: str | None) -> None:
+    """What makes a plot a survey drawing: absolute coordinates on both axes (no offset),
+    a light coordinate grid, a scale bar and a grid-north arrow."""
+    from matplotlib.ticker import FuncFormatter, MaxNLocator
+    from mpl_toolkits.axes_grid1.anchored_artists import AnchoredSizeBar
+
+    fmt = FuncFormatter(lambda v, _: f"{v:,.0f}".replace(",", " "))
+    for axis in (ax.xaxis, ax.yaxis):
+        axis.set_major_formatter(fmt)
+        axis.set_major_locator(MaxNLocator(6, steps=[1, 2, 2.5, 5, 10]))
+    ax.grid(True, color="0.75", lw=0.4, ls="-", zorder=-1)
+    where = f" — {crs_name(crs)}" if crs else " (local metres, no CRS)"
+    ax.set_xlabel(f"Easting [m]{where}", fontsize=8)
+    ax.set_ylabel("Northing [m]", fontsize=8)
+    x0, x1 = ax.get_xlim()
+    length = _nice_length(x1 - x0)
+    label = f"{length:g} m"
+    ax.add_artist(
+        AnchoredSizeBar(
+            ax.transData,
+            length,
+            label,
+            "lower right",
+            pad=0.5,
+            sep=3,
+            frameon=True,
+            size_vertical=(x1 - x0) / 250,
+            fontproperties={"size": 7},
+        )
+    )
+    ax.annotate(
+        "",
+        xy=(0.96, 0.97),
+        xytext=(0.96, 0.87),
+        xycoords="axes fraction",
+        arrowprops=dict(arrowstyle="-|>", color="k", lw=1.5),
+        zorder=8,
+    )
+    ax.annotate(
+        "N",
+        xy=(0.96, 0.985),
+        xycoords="axes fraction",
+        ha="center",
+        va="bottom",
+        fontsize=9,
+        weight="bold",
+        zorder=8,
+    )
+
+
+def place_labels(ax: Axes, items: list[tuple[float, float, str, dict]]) -> None:
+    """Annotate each (x, y, text, style) next to its point, trying eight positions round it
+    and taking the first whose box overlaps no label already placed (else the least
+    overlapping): readable with many stations and targets close together."""
+    fig = ax.figure
+    engine = fig.get_layout_engine()
+    if engine is not None:
+        engine.execute(fig)  # fixes the layout, so data → pixel is final
+    ax.apply_aspect()
+    to_px = ax.transData.transform
+    placed: list[tuple[float, float, float, float]] = []
+    offsets = [(4, 4), (4, -11), (-6, 4), (-6, -11), (8, -3), (-8, -3), (0, 9), (0, -15)]
+    dpi_scale = fig.dpi / 72.0
+    for x, y, text, style in items:
+        px, py = to_px((x, y))
+        w = 0.62 * style.get("fontsize", 8) * len(text) * dpi_scale
+        h = 1.1 * style.get("fontsize", 8) * dpi_scale
+        best, best_hit = None, math.inf
+        for dx, dy in offsets:
+            left = px + dx * dpi_scale - (w if dx < 0 else (w / 2 if dx == 0 else 0))
+            box = (left, py + dy * dpi_scale, left + w, py + dy * dpi_scale + h)
+            hit = sum(_overlap(box, b) for b in placed)
+            if hit < best_hit:
+                best, best_hit = ((dx, dy), box), hit
+            if hit == 0:
+                break
+        (dx, dy), box = best
+        placed.append(box)
+        ax.annotate(
+            text,
+            (x, y),
+            xytext=(dx, dy),
+            textcoords="offset points",
+            ha="right" if dx < 0 else ("center" if dx == 0 else "left"),
+            va="bottom",
+            zorder=7,
+            bbox=dict(boxstyle="square,pad=0.05", fc="w", ec="none", alpha=0.6),
+            **style,
+        )
+
+
+def _overlap(a: tuple[float, float, float, float], b: tuple[float, float, float, float]) -> float:
+    w = min(a[2], b[2]) - max(a[0], b[0])
+    h = min(a[3], b[3]) - max(a[1], b[1])
+    return max(w, 0.0) * max(h, 0.0)
+
+
+def _draw_links(p: Plan, ax: Axes, labels: list) -> None:
+    """The registrations as curved dotted arcs between stations (to each control point
+    used, for a station tied to the control network) — a relation, not a way: curved so it
+    does not read as a line through a building — coloured and labelled by the link's own
     predicted error; the control points as black triangles."""
+    from matplotlib.patches import FancyArrowPatch
+
     st = p.stations.set_index("station_id")
     tg = p.targets.set_index("target_id")
     ctl = p.targets[p.targets["type"] == "control"]
     if len(ctl):
-        ax.scatter(
-            ctl["x"] - origin[0],
-            ctl["y"] - origin[1],
-            marker="v",
-            s=40,
-            c="k",
-            zorder=4,
-            label="control point",
-        )
+        ax.scatter(ctl["x"], ctl["y"], marker="v", s=40, c="k", zorder=4, label="control point")
+        for r in ctl.itertuples():
+            labels.append((r.x, r.y, r.target_id, {"fontsize": 6}))
     if not len(p.links):
         return
     worst = float(np.nanmax(p.links["link_rms_mm"])) or 1.0
@@ -198,25 +408,35 @@ def _draw_links(p: Plan, ax: Axes, origin: np.ndarray) -> None:
         else:
             ends = [st.loc[r.station_a]]
             share = r.link_rms_mm / worst if np.isfinite(r.link_rms_mm) else 1.0
-            style = dict(color=cmap(share), lw=1.0 + 1.5 * share)
+            style = dict(color=cmap(share), lw=1.0 + 1.5 * share, ls=":")
         for a in ends:
-            ax.plot(
-                [a.x - origin[0], b.x - origin[0]],
-                [a.y - origin[1], b.y - origin[1]],
-                **style,
-                zorder=3,
+            ax.add_patch(
+                FancyArrowPatch(
+                    (a.x, a.y),
+                    (b.x, b.y),
+                    connectionstyle="arc3,rad=0.25",
+                    arrowstyle="-",
+                    zorder=3,
+                    alpha=0.9,
+                    **style,
+                )
             )
         if r.station_a != "control" and np.isfinite(r.link_rms_mm):
             a = ends[0]
-            ax.annotate(
-                f"{r.link_rms_mm:.1f}",
-                ((a.x + b.x) / 2 - origin[0], (a.y + b.y) / 2 - origin[1]),
-                fontsize=6,
-                color="#1b4f72",
-                ha="center",
-                zorder=6,
+            # the arc's middle: off the chord by a quarter of its length, to its left
+            mx, my = (a.x + b.x) / 2, (a.y + b.y) / 2
+            nx, ny = -(b.y - a.y) * 0.125, (b.x - a.x) * 0.125
+            labels.append(
+                (mx + nx, my + ny, f"{r.link_rms_mm:.1f}", {"fontsize": 6, "color": "#1b4f72"})
             )
-    ax.plot([], [], color=cmap(1.0), lw=2.5, label="registration link (its own RMS, mm)")
+    ax.plot(
+        [],
+        [],
+        color=cmap(1.0),
+        lw=2.5,
+        ls=":",
+        label="registration link (its RMS, mm)",
+    )
 
 
 def _draw_zones(p: Plan, ax: Axes, off: dict, f) -> None:

@@ -137,6 +137,15 @@ class ReportContent:
     def stations(self) -> pd.DataFrame:
         return self.plan.stations.set_index("station_id").round(3)
 
+    def field_route(self) -> pd.DataFrame | HTML:
+        """The visiting order and field time, station by station, after its summary."""
+        r = self.plan.route
+        if r is None or r.table.empty:
+            return HTML("<p>No stations, no field work.</p>")
+        display_html = HTML(f"<p>{html.escape(r.summary())}</p>")
+        cols = [c for c in r.table.columns if c not in ("x", "y")]
+        return HTML(display_html.data + r.table[cols].set_index("order").to_html(na_rep=""))
+
     def targets(self) -> pd.DataFrame:
         t = self.plan.targets.copy()
         t["station_ids"] = t["station_ids"].map(", ".join)

@@ -310,9 +310,11 @@ def render(p: Plan) -> dict[str, str]:
 OWNED_FILES = (*FILES, "booklet.pdf")
 
 
-def save(p: Plan, out_dir: str | Path) -> list[Path]:
+def save(p: Plan, out_dir: str | Path, extra: dict[str, bytes] | None = None) -> list[Path]:
     """Write the plan's files into ``out_dir`` as one set: the folder holds the old plan or
     the new one, never a mix, whatever happens part-way (an error, a signal, a full disk);
-    the user's own files in it are kept (:func:`planner.atomic.replace_folder_files`)."""
+    the user's own files in it are kept (:func:`planner.atomic.replace_folder_files`).
+    ``extra``: more files of the plan made by the application (the booklet), by name."""
     data = {name: text.encode("utf-8") for name, text in render(p).items()}
+    data.update(extra or {})
     return replace_folder_files(out_dir, data, owned=OWNED_FILES)

@@ -189,8 +189,8 @@ class Plan:
             lines.append(f"Zone {z.zone_id} ({z.where}; {z.requirement}): {state}")
         return "\n".join(lines + self.messages)
 
-    def save(self, out_dir: str | Path) -> list[Path]:
+    def save(self, out_dir: str | Path, extra: dict[str, bytes] | None = None) -> list[Path]:
         """Write the plan's files into ``out_dir`` (see :func:`planner.pipeline.export.save`)."""
         from planner.pipeline.export import save
 
-        return save(self, out_dir)
+        return save(self, out_dir, extra)

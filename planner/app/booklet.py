@@ -1,0 +1,250 @@
+"""The printable field booklet (PDF): an overview map, then one page per station in visiting
+order. No science here: everything comes from the plan and its route.
+
+Matplotlib writes the multi-page PDF (``PdfPages``); no other dependency. The same plan gives
+the same bytes (no creation date is written).
+"""
+
+from __future__ import annotations
+
+import io
+
+import matplotlib.pyplot as plt
+import numpy as np
+import pandas as pd
+from matplotlib.backends.backend_pdf import PdfPages
+from matplotlib.figure import Figure
+from matplotlib.patches import Wedge
+
+from planner.app.maps import COLOURS, place_labels, plot_plan_map, plot_site, survey_frame
+from planner.crs import name_of as crs_name
+from planner.pipeline.result import Plan
+from planner.pipeline.route import view_sectors
+
+__all__ = ["booklet_pdf", "compass"]
+
+A4_LANDSCAPE = (11.69, 8.27)
+A4_PORTRAIT = (8.27, 11.69)
+_POINTS = ("N", "NE", "E", "SE", "S", "SW", "W", "NW")
+
+
+def compass(azimuth_deg: float) -> str:
+    """An azimuth as a compass point and degrees, e.g. ``SW (225°)``."""
+    if azimuth_deg is None or not np.isfinite(azimuth_deg):
+        return ""
+    return f"{_POINTS[int(((azimuth_deg % 360) + 22.5) // 45) % 8]} ({azimuth_deg:.0f}°)"
+
+
+def booklet_pdf(p: Plan) -> bytes:
+    """The field booklet of a plan as PDF bytes: the overview map with the plan's summary,
+    then a page per station (coordinates, instrument height, targets to set up before it,
+    scan sector, resolution and time, links)."""
+    buf = io.BytesIO()
+    meta = {"Title": f"tls-planner field booklet: {p.site.name}", "CreationDate": None}
+    with plt.rc_context({"pdf.fonttype": 42}), PdfPages(buf, metadata=meta) as pdf:
+        pdf.savefig(_overview(p))
+        for n in range(len(_route(p))):  # figures outside pyplot: nothing to close
+            pdf.savefig(_station_page(p, n))
+    return buf.getvalue()
+
+
+def _route(p: Plan) -> pd.DataFrame:
+    return p.route.table if p.route is not None else pd.DataFrame()
+
+
+def _overview(p: Plan) -> Figure:
+    fig = Figure(figsize=A4_LANDSCAPE, layout="constrained")
+    grid = fig.add_gridspec(2, 1, height_ratios=[5.2, 1])
+    ax = fig.add_subplot(grid[0])
+    plot_plan_map(p, ax, candidates=False, order_labels=True)
+    ax.set_title(f"Field booklet — {p.site.name}: overview (station (visiting order))")
+    text = fig.add_subplot(grid[1])
+    text.axis("off")
+    lines = [
+        f"Scanner {p.scanner.label or p.scanner.name}; required {p.requirements.describe()}; "
+        f"model: {p.settings.model_description()}",
+        f"Coordinates: {crs_name(p.site.crs) if p.site.crs else 'local metres (no CRS)'}; "
+        f"{len(p.stations)} stations, {len(p.targets)} targets; samples meeting every "
+        f"requirement: {int(p.scanned['meets'].sum())} of {len(p.scanned)}",
+    ]
+    if p.route is not None:
+        lines.append(p.route.summary())
+    text.text(
+        0.0,
+        1.0,
+        "\n".join(_wrap(line, 170) for line in lines),
+        va="top",
+        fontsize=7.5,
+        family="DejaVu Sans",
+    )
+    return fig
+
+
+def _wrap(text: str, width: int) -> str:
+    import textwrap
+
+    return "\n".join(textwrap.wrap(text, width)) or text
+
+
+def _station_page(p: Plan, n: int) -> Figure:
+    r = _route(p).iloc[n]
+    sid = r["station_id"]
+    st = p.stations.set_index("station_id").loc[sid]
+    fig = Figure(figsize=A4_PORTRAIT, layout="constrained")
+    grid = fig.add_gridspec(3, 1, height_ratios=[1.25, 2.2, 1.6])
+    head = fig.add_subplot(grid[0])
+    head.axis("off")
+    total = len(_route(p))
+    head.set_title(
+        f"{sid} — station {int(r['order'])} of {total}, session {int(r['session'])}",
+        loc="left",
+        fontsize=14,
+        weight="bold",
+    )
+    end = (r["sector_start_deg"] + r["sector_deg"]) % 360
+    sector = (
+        "full turn (360°)"
+        if r["sector_deg"] >= 360
+        else f"from {r['sector_start_deg']:.0f}° clockwise to {end:.0f}° "
+        f"({r['sector_deg']:.0f}°, grid bearings)"
+    )
+    walk = "start here" if n == 0 else f"{r['walk_m']:.0f} m, {r['walk_min']:.0f} min"
+    if r["walk_note"]:
+        walk += f" ({r['walk_note']})"
+    facts = [
+        ("Easting / Northing", f"{st['x']:.3f} / {st['y']:.3f} m"),
+        ("Instrument height", f"{st['instrument_height_m']:.2f} m above the ground"),
+        ("Purpose", str(st["purpose"])),
+        ("Walk from the previous station", walk),
+        ("Scan sector", sector),
+        (
+            "Resolution",
+            f"step {r['step_mm_at_10m']:g} mm at 10 m; point spacing on its facades at most "
+            f"{r['max_spacing_mm']:g} mm",
+        ),
+        (
+            "Expected scan time",
+            f"{r['scan_min']:.1f} min ({r['scan_points_million']:g} M points); set-up "
+            f"{r['setup_min']:g} min; at this station {r['station_min']:.0f} min in all, "
+            f"{r['elapsed_min']:.0f} min since the start",
+        ),
+        ("Registered with", r["links_to"] or "—"),
+        ("Facade samples it serves", f"{int(st.get('samples_met', 0))}"),
+    ]
+    for k, (label, value) in enumerate(facts):
+        y = 0.92 - k * 0.105
+        head.text(0.0, y, label, fontsize=8.5, weight="bold", va="top")
+        head.text(0.33, y, _wrap(value, 80), fontsize=8.5, va="top")
+    ax = fig.add_subplot(grid[1])
+    _station_map(p, sid, ax)
+    table_ax = fig.add_subplot(grid[2])
+    table_ax.axis("off")
+    _targets_table(p, sid, r, table_ax)
+    return fig
+
+
+def _station_map(p: Plan, sid: str, ax) -> None:
+    """The surroundings of one station: its sector, its targets with ids, the way in."""
+    st = p.stations.set_index("station_id")
+    x, y = st.at[sid, "x"], st.at[sid, "y"]
+    sectors = view_sectors(p.stations, p.coverage, p.targets)
+    start, end, radius = sectors.get(sid, (0.0, 0.0, 20.0))
+    half = max(15.0, min(radius, 60.0)) * 1.1
+    plot_site(p.site, ax)
+    ax.add_patch(
+        Wedge(
+            (x, y),
+            radius,
+            90 - end,
+            90 - start,
+            fc=COLOURS["sector"],
+            ec="#d68910",
+            alpha=0.25,
+            label="scan sector",
+        )
+    )
+    mine = p.targets[p.targets["station_ids"].map(lambda s: sid in s)]
+    labels = []
+    for kind, marker in (("flat", "s"), ("sphere", "o"), ("control", "v")):
+        t = mine[mine["type"] == kind]
+        if len(t):
+            ax.scatter(
+                t["x"],
+                t["y"],
+                marker=marker,
+                s=40,
+                fc="w" if kind != "control" else "k",
+                ec=COLOURS["target"],
+                lw=1.5,
+                zorder=4,
+                label=f"{kind} target scanned from {sid}",
+            )
+            labels += [(tr.x, tr.y, tr.target_id, {"fontsize": 7}) for tr in t.itertuples()]
+    if p.route is not None:
+        order = list(p.route.table["station_id"])
+        k = order.index(sid)
+        if k > 0:
+            leg = p.route.legs[k]
+            ax.plot(leg[:, 0], leg[:, 1], color=COLOURS["route"], ls=(0, (4, 2)), lw=1.2)
+            ax.plot(
+                [], [], color=COLOURS["route"], ls=(0, (4, 2)), label=f"walk from {order[k - 1]}"
+            )
+    others = p.stations[p.stations["station_id"] != sid]
+    ax.plot(others["x"], others["y"], "^", color="0.55", ms=7, mec="k", ls="none", zorder=5)
+    labels += [
+        (o.x, o.y, o.station_id, {"fontsize": 7, "color": "0.3"}) for o in others.itertuples()
+    ]
+    ax.plot(x, y, "^", color=COLOURS["cover"], ms=11, mec="k", zorder=6, label=sid)
+    labels.insert(0, (x, y, sid, {"fontsize": 10, "weight": "bold"}))
+    ax.set_xlim(x - half, x + half)
+    ax.set_ylim(y - half, y + half)
+    survey_frame(ax, p.site.crs)
+    place_labels(ax, labels)
+    ax.legend(loc="lower left", fontsize=6.5, framealpha=0.9)
+
+
+def _targets_table(p: Plan, sid: str, r: pd.Series, ax) -> None:
+    ids = [t for t in str(r["targets_to_set"]).split(" ") if t]
+    ax.set_title(
+        f"Targets to set up before scanning {sid} ({len(ids)})"
+        + ("" if ids else ": none new — all were placed for an earlier station"),
+        loc="left",
+        fontsize=10,
+        weight="bold",
+    )
+    if not ids:
+        return
+    tg = p.targets.set_index("target_id").loc[ids]
+    rows = []
+    for tid, t in tg.iterrows():
+        if t["type"] == "flat" and isinstance(t.get("facade_id"), str) and t["facade_id"]:
+            where = f"on wall {t['facade_id']}, facing {compass(t['facing_deg'])}"
+        elif t["type"] == "control":
+            where = "control point (already marked)"
+        else:
+            where = "on a stand"
+        size = "" if t["size_mm"] is None or not np.isfinite(t["size_mm"]) else f"{t['size_mm']:g}"
+        rows.append(
+            [
+                tid,
+                str(t["type"]),
+                size,
+                where,
+                f"{t['z']:.1f}",
+                f"{t['x']:.3f}",
+                f"{t['y']:.3f}",
+            ]
+        )
+    shown = rows[:18]
+    table = ax.table(
+        cellText=shown,
+        colLabels=["id", "type", "size [mm]", "where", "height [m]", "easting", "northing"],
+        loc="upper left",
+        cellLoc="left",
+        colWidths=[0.07, 0.08, 0.09, 0.39, 0.09, 0.14, 0.14],
+    )
+    table.auto_set_font_size(False)
+    table.set_fontsize(7.5)
+    table.scale(1.0, 1.25)
+    if len(rows) > len(shown):
+        ax.text(0, -0.02, f"… and {len(rows) - len(shown)} more: see targets.csv", fontsize=7.5)

@@ -1,0 +1,169 @@
+"""Field logistics and the field booklet: scan time, the walking route (never through a
+building), the schedule's sums and sessions, the booklet's pages."""
+
+from __future__ import annotations
+
+import itertools
+import re
+
+import numpy as np
+import pandas as pd
+import pytest
+import shapely
+from sites import E0, N0, rect, square_site
+
+from planner.app.booklet import booklet_pdf, compass
+from planner.fieldwork import scan_points, scan_time_s
+from planner.pipeline.planning import plan
+from planner.pipeline.requirements import PlanSettings
+from planner.pipeline.route import _open_path_order, field_route, walk_paths
+from planner.scanner import load_scanner
+from planner.site import Area, Building, Site
+from planner.siteio import default_site
+
+
+@pytest.fixture(scope="module")
+def default_plan():
+    return plan(default_site())
+
+
+def test_scan_points_and_time_of_a_full_panorama():
+    # δ = 2 mm / 10 m = 0.2 mrad: 2π/δ = 31 416 columns, (135° in rad)/δ = 11 781 rows
+    assert scan_points(360.0, 135.0, 2.0) == 31_416 * 11_781
+    assert scan_time_s(370_111_896, 1e6) == pytest.approx(370.1, abs=0.1)  # s
+    # half the sector, half the points; twice the step, a quarter
+    assert scan_points(180.0, 135.0, 2.0) == pytest.approx(scan_points(360, 135, 2) / 2, rel=1e-4)
+    assert scan_points(360.0, 135.0, 4.0) == pytest.approx(scan_points(360, 135, 2) / 4, rel=1e-3)
+
+
+def test_the_walk_goes_round_a_building():
+    site = square_site(10.0)  # 10 × 10 m from (E0, N0)
+    a, b = (E0 - 10, N0 + 5), (E0 + 20, N0 + 5)
+    d = walk_paths(site, np.array([a, b]), clearance_m=1.0)
+    # over the two north corners, kept about half a metre off: √(9.5² + 5.5²) to the first,
+    # 11 m along the wall, the same down to b
+    round_corner = 2 * np.hypot(9.5, 5.5) + 11.0
+    assert d[0, 1] == pytest.approx(round_corner, abs=0.3)  # m
+    assert d[0, 1] == pytest.approx(d[1, 0], abs=1e-9)  # m
+    free = walk_paths(square_site(10.0), np.array([a, (E0 - 10, N0 + 25)]))
+    assert free[0, 1] == pytest.approx(20.0, abs=1e-6)  # m: a free straight line
+
+
+def test_no_go_area_is_crossed_only_when_nothing_else_reaches():
+    street = Area("street", rect(-100, 20, 100, 26))
+    site = Site([Building("b", rect(0, 0, 10, 10), 8.0)], no_go=[street])
+    pts = np.array([(E0 + 5, N0 + 15), (E0 + 5, N0 + 35)])
+    d = walk_paths(site, pts)
+    assert np.isfinite(d[0, 1]) and d[0, 1] == pytest.approx(20.0, abs=0.01)  # m: crosses it
+    gap = Site(
+        [Building("b", rect(0, 0, 10, 10), 8.0)],
+        no_go=[Area("w", rect(-100, 20, 0, 26)), Area("e", rect(12, 20, 100, 26))],
+    )
+    pts = np.array([(E0 + 20, N0 + 15), (E0 + 20, N0 + 35)])
+    d = walk_paths(gap, pts)
+    # round through the gap (x 0-12 m) rather than across the eastern half: to its corner
+    # (11.5, 19.5), 7 m through, then on to the point
+    detour = np.hypot(8.5, 4.5) + 7.0 + np.hypot(8.5, 8.5)
+    assert d[0, 1] == pytest.approx(detour, abs=0.4)  # m
+
+
+def test_open_path_order_is_optimal_on_small_instances():
+    rng = np.random.default_rng(4)
+    for _ in range(20):
+        xy = rng.uniform(0, 100, (7, 2))
+        d = np.hypot(*(xy[:, None] - xy[None]).transpose(2, 0, 1))
+        order = _open_path_order(d)
+        assert sorted(order) == list(range(7))
+        length = d[order[:-1], order[1:]].sum()
+        best = min(d[list(p[:-1]), list(p[1:])].sum() for p in itertools.permutations(range(7)))
+        assert length <= best * 1.05 + 1e-9  # m: 2-opt from the best start, within 5 %
+
+
+def test_route_of_the_default_plan(default_plan):
+    p = default_plan
+    t = p.route.table
+    assert sorted(t["station_id"]) == sorted(p.stations["station_id"])
+    assert list(t["order"]) == list(range(1, len(t) + 1))
+    # never through a building (or an obstacle)
+    walls = shapely.union_all([b.footprint for b in p.site.buildings])
+    for leg in p.route.legs[1:]:
+        assert len(leg) >= 2
+        assert not shapely.linestrings(leg).intersects(walls)
+    # a leg's length is its polyline's, at least the straight distance between its stations
+    xy = t[["x", "y"]].to_numpy()
+    for n, leg in enumerate(p.route.legs[1:], start=1):
+        length = np.hypot(*np.diff(leg, axis=0).T).sum()
+        assert t["walk_m"].iloc[n] == pytest.approx(length, abs=0.05)  # m
+        assert length >= np.hypot(*(xy[n] - xy[n - 1])) - 1e-6
+    # every target set up once, before the first station that scans it
+    placed = " ".join(t["targets_to_set"]).split()
+    assert sorted(placed) == sorted(p.targets["target_id"])
+    visit = dict(zip(t["station_id"], t["order"], strict=True))
+    first = {
+        tid: min(visit[s] for s in sids)
+        for tid, sids in zip(p.targets["target_id"], p.targets["station_ids"], strict=True)
+    }
+    for r in t.itertuples():
+        for tid in r.targets_to_set.split():
+            assert first[tid] == r.order
+    # the time adds up
+    parts = t["walk_min"] + t["targets_min"] + t["setup_min"] + t["scan_min"]
+    assert np.allclose(t["station_min"], parts, atol=0.15)  # min (rounding)
+    assert t["elapsed_min"].iloc[-1] == pytest.approx(p.route.total_min, abs=0.2)  # min
+    st = p.settings
+    assert (t["setup_min"] == st.setup_min).all()
+    assert t["targets_min"].sum() == pytest.approx(st.target_setup_min * len(p.targets))  # min
+    # the default scanner gives no measurement rate: the setting's, said so
+    assert p.route.rate_assumed and p.route.rate_hz == st.scan_rate_hz
+    assert "Field time:" in p.summary() and "assumed" in p.summary()
+
+
+def test_sessions_split_the_day():
+    site = default_site()
+    p = plan(site, settings=PlanSettings(session_h=0.5))
+    t = p.route.table
+    assert p.route.sessions > 1
+    for _, rows in t.groupby("session"):
+        assert rows["station_min"].sum() <= 30.0 + 1e-6 or len(rows) == 1  # min
+    assert list(t["session"]) == sorted(t["session"])
+
+
+def test_booklet_has_the_overview_and_a_page_per_station(default_plan):
+    pdf = booklet_pdf(default_plan)
+    assert pdf.startswith(b"%PDF")
+    pages = re.findall(rb"/Type\s*/Page\b(?!s)", pdf)
+    assert len(pages) == 1 + len(default_plan.stations)
+    assert booklet_pdf(default_plan) == pdf  # the same plan, the same bytes
+    assert b"CreationDate" not in pdf
+
+
+def test_compass_points():
+    assert [compass(a) for a in (0, 44, 46, 180, 225, 359)] == [
+        "N (0°)",
+        "NE (44°)",
+        "NE (46°)",
+        "S (180°)",
+        "SW (225°)",
+        "N (359°)",
+    ]
+
+
+def test_a_station_in_a_closed_courtyard_is_still_routed():
+    court = shapely.Polygon(
+        rect(0, 0, 40, 40).exterior.coords, [rect(10, 10, 30, 30).exterior.coords]
+    )
+    site = Site([Building("c", court, 10.0)])
+    pts = np.array([(E0 + 20, N0 + 20), (E0 - 10, N0 + 20)])
+    assert np.isinf(walk_paths(site, pts)[0, 1])  # no way round
+    stations = pd.DataFrame({"station_id": ["S01", "S02"], "x": pts[:, 0], "y": pts[:, 1]})
+    empty = pd.DataFrame(
+        columns=["target_id", "x", "y", "station_ids", "station_a", "station_b", "spacing_mm"]
+    )
+    coverage = pd.DataFrame(
+        {"station_id": ["S01", "S02"], "x": pts[:, 0] + 5, "y": pts[:, 1], "spacing_mm": 4.0}
+    )
+    p50 = load_scanner("leica-p50")
+    r = field_route(site, p50, PlanSettings(), stations, empty, coverage, empty)
+    assert list(r.table["walk_note"]) == ["", "no way round buildings found: straight line taken"]
+    assert r.table["walk_m"].iloc[1] == pytest.approx(30.0, abs=1e-6)  # m, straight
+    assert not r.rate_assumed and r.rate_hz == p50.measurement_rate_hz
