@@ -1,6 +1,8 @@
 """Reading a site from GeoJSON, WKT or a CSV of vertices; the built-in default site.
 
-All inputs are in a projected metric CRS; coordinates are kept as given.
+Coordinates in a projected metric CRS are kept as given; longitude/latitude (a GeoJSON
+without a CRS member, KML, a file labelled EPSG:4326, ``--crs EPSG:4326``) is projected to
+its UTM zone.
 
 * **GeoJSON** — a FeatureCollection, a Feature or a bare geometry. Properties: ``role``
   (``building`` — the default —, ``obstacle``, ``no-go``, ``boundary``), ``height`` (or
@@ -11,6 +13,15 @@ All inputs are in a projected metric CRS; coordinates are kept as given.
   covering it, :mod:`planner.zones`). A legacy ``crs`` member is kept and written back.
 * **WKT** — one geometry per line, optionally followed by ``; key=value`` pairs with the
   same keys (``POLYGON ((...)); height=12; role=building; id=A``).
+* **GeoPackage, Shapefile, KML/KMZ** — read through GDAL with ``pyogrio`` (its raw reader:
+  WKB geometries and attribute arrays straight into the same features; geopandas would add
+  a data-frame layer only to be unpacked again). Every layer is read; the role is the
+  ``role`` attribute, else the layer's name (``buildings``, ``trees``, ``no-go``,
+  ``boundary``, ``control``… :data:`LAYER_ROLES`), else building. Height: ``height``,
+  ``height_m`` or OpenStreetMap's ``building:height`` ("12 m" is read as 12), else
+  ``building:levels`` × the storey height, else a KML polygon extruded from the ground
+  (its altitude). Id: ``id``, else the KML ``Name``, else ``name``. The CRS comes with the
+  file (a shapefile's ``.prj``; KML is always longitude/latitude).
 * **CSV** — one row per vertex, with a header: ``id, x, y`` and optionally ``ring`` (0 the
   outline, 1, 2, … holes), ``part`` (for MultiPolygons), ``height``, ``role``, ``plan``;
   vertices in ring order.
@@ -55,7 +66,39 @@ __all__ = ["default_site", "read_control", "read_site", "site_from_features", "s
 
 ROLES = ("building", "obstacle", "no-go", "boundary", "control")
 _ROLE_ALIASES = {"nogo": "no-go", "no_go": "no-go", "nogo-area": "no-go", "obstruction": "obstacle"}
-SUFFIXES = {".geojson": "geojson", ".json": "geojson", ".wkt": "wkt", ".txt": "wkt", ".csv": "csv"}
+SUFFIXES = {
+    ".geojson": "geojson",
+    ".json": "geojson",
+    ".wkt": "wkt",
+    ".txt": "wkt",
+    ".csv": "csv",
+    ".gpkg": "GeoPackage",
+    ".shp": "Shapefile",
+    ".kml": "KML",
+    ".kmz": "KMZ",
+}
+#: Formats read through GDAL (``pyogrio``): binary or XML, one or more layers each.
+GIS_KINDS = ("GeoPackage", "Shapefile", "KML", "KMZ")
+#: A layer named like this (lower case, "_" and " " as "-", a plural "s" dropped) gives its
+#: features this role unless they carry their own ``role``.
+LAYER_ROLES = {
+    "building": "building",
+    "house": "building",
+    "obstacle": "obstacle",
+    "tree": "obstacle",
+    "wall": "obstacle",
+    "no-go": "no-go",
+    "nogo": "no-go",
+    "road": "no-go",
+    "street": "no-go",
+    "boundary": "boundary",
+    "site-boundary": "boundary",
+    "control": "control",
+    "control-point": "control",
+}
+#: Storey height for a building known only by its number of storeys (``building:levels``,
+#: as OpenStreetMap gives it) [m].
+DEFAULT_STOREY_HEIGHT_M = 3.0
 
 
 @dataclass
@@ -501,8 +544,10 @@ def read_site(
     repair: bool = False,
     limits: SiteLimits | None = None,
     crs: str | None = None,
+    storey_height_m: float = DEFAULT_STOREY_HEIGHT_M,
 ) -> Site:
-    """Read a site file (``.geojson``/``.json``, ``.wkt``/``.txt`` or ``.csv``).
+    """Read a site file (``.geojson``/``.json``, ``.wkt``/``.txt``, ``.csv``, ``.gpkg``,
+    ``.shp``, ``.kml`` or ``.kmz``).
 
     Parameters
     ----------
@@ -516,6 +561,8 @@ def read_site(
         The CRS of the coordinates (e.g. ``EPSG:25832``, ``EPSG:4326``), overriding the file's
         own label; longitude/latitude is projected to its UTM zone. GeoJSON without a label in
         the degree range is longitude/latitude (RFC 7946).
+    storey_height_m : float, default 3
+        Height of a storey, for buildings known by ``building:levels`` only (GIS formats).
     """
     if not isinstance(path, str | os.PathLike):
         raise InputError(f"a site file is named by a path; got {type(path).__name__} {path!r}")
@@ -527,13 +574,27 @@ def read_site(
     kind = SUFFIXES.get(p.suffix.lower())
     if kind is None:
         raise InputError(
-            f"{p.name}: unknown file type {p.suffix!r}; use .geojson/.json, .wkt/.txt or .csv"
+            f"{p.name}: unknown file type {p.suffix!r}; use .geojson/.json, .wkt/.txt, .csv, "
+            ".gpkg, .shp, .kml or .kmz"
         )
     if p.stat().st_size > MAX_FILE_BYTES:
         raise InputError(
             f"{p.name} is {p.stat().st_size / 1e6:.0f} MB; a site file of more than "
             f"{MAX_FILE_BYTES / 1e6:.0f} MB is not a site — split it, or plan parts of it"
         )
+    kw: dict[str, Any] = {
+        "default_height_m": default_height_m,
+        "buildings": buildings,
+        "repair": repair,
+        "name": p.stem,
+        "limits": limits,
+        "crs": crs,
+    }
+    if kind in GIS_KINDS:
+        with _reading(p.name, kind):
+            features, file_crs = _gis_features(p, kind, storey_height_m)
+            kw["crs"] = crs or file_crs
+            return site_from_features(features, **kw)
     raw = p.read_bytes()
     if b"\x00" in raw[:4096]:
         raise InputError(f"{p.name} is a binary file, not {kind.upper()} text")
@@ -547,14 +608,6 @@ def read_site(
             f"{p.name} has the extension {p.suffix} but its content looks like {found.upper()}; "
             f"rename it to a {found} file or export it again as {kind.upper()}"
         )
-    kw: dict[str, Any] = {
-        "default_height_m": default_height_m,
-        "buildings": buildings,
-        "repair": repair,
-        "name": p.stem,
-        "limits": limits,
-        "crs": crs,
-    }
     with _reading(p.name, kind):
         if kind == "geojson":
             try:
@@ -568,6 +621,139 @@ def read_site(
             _wkt_features if kind == "wkt" else _csv_features
         )
         return site_from_features(parse(text, p.name), **kw)
+
+
+# -- GeoPackage, Shapefile, KML/KMZ (GDAL through pyogrio) -----------------------------------
+def _gis_features(p: Path, kind: str, storey_height_m: float) -> tuple[list[Feature], str | None]:
+    """Every layer's features, with roles, heights and ids mapped (see the module's text),
+    and the file's CRS."""
+    import pyogrio  # heavy (GDAL): only when such a file is read
+    from pyogrio.errors import DataLayerError, DataSourceError
+
+    if not (isinstance(storey_height_m, int | float) and 0 < storey_height_m <= 20):
+        raise InputError(f"the storey height must be > 0 and <= 20 m; got {storey_height_m!r}")
+    try:
+        layers = pyogrio.list_layers(p)
+    except (DataSourceError, DataLayerError) as exc:
+        hint = (
+            "; a shapefile is several files side by side (.shp, .shx, .dbf and .prj for its "
+            "CRS): copy them all"
+            if kind == "Shapefile"
+            else f"; export it again as {kind}"
+        )
+        raise InputError(f"{p.name}: cannot open it as {kind} ({_first_line(exc)}){hint}") from None
+    features: list[Feature] = []
+    crs_seen: dict[str, str] = {}
+    for layer, _ in layers:
+        try:
+            meta, _, wkb, values = pyogrio.raw.read(p, layer=layer)
+        except (DataSourceError, DataLayerError) as exc:
+            raise InputError(
+                f"{p.name}: cannot read layer {layer!r} ({_first_line(exc)})"
+            ) from None
+        if len(wkb) == 0:
+            continue
+        if meta.get("crs"):
+            crs_seen[str(layer)] = str(meta["crs"])
+        layer_role = _layer_role(str(layer))
+        names = [str(n) for n in meta["fields"]]
+        for i, blob in enumerate(wkb):
+            props = {n: _plain(v[i]) for n, v in zip(names, values, strict=True)}
+            props = {k: v for k, v in props.items() if v is not None}
+            geom = shapely.from_wkb(blob) if blob is not None else None
+            _map_gis_props(props, geom, kind, layer_role, storey_height_m)
+            features.append(Feature(len(features), geom, props))
+    if not features:
+        raise InputError(f"{p.name} holds no features; export the buildings into it")
+    if len(set(crs_seen.values())) > 1:
+        listed = ", ".join(f"{k}: {v}" for k, v in crs_seen.items())
+        raise InputError(
+            f"{p.name}: its layers are in different coordinate systems ({listed}); export "
+            "them in one"
+        )
+    return features, next(iter(crs_seen.values()), None)
+
+
+def _first_line(exc: BaseException) -> str:
+    return (str(exc).splitlines() or [type(exc).__name__])[0][:200]
+
+
+def _layer_role(name: str) -> str | None:
+    key = name.strip().lower().replace("_", "-").replace(" ", "-")
+    for k in (key, key[:-1] if key.endswith("s") else key):
+        if k in LAYER_ROLES:
+            return LAYER_ROLES[k]
+    return None
+
+
+def _plain(v: Any) -> Any:
+    """An attribute value as plain Python (None for GDAL's nulls, NaN, NaT)."""
+    if v is None:
+        return None
+    if isinstance(v, np.generic):
+        v = v.item()
+    if isinstance(v, float) and not math.isfinite(v):
+        return None
+    if isinstance(v, str) and v in ("", "NaT"):
+        return None
+    if not isinstance(v, str | int | float | bool):
+        return None if str(v) == "NaT" else str(v)
+    return v
+
+
+def _number_in(text: Any) -> float | None:
+    """The number in an attribute such as ``12``, ``"12.5"`` or ``"12 m"`` (OpenStreetMap)."""
+    if isinstance(text, bool):
+        return None
+    if isinstance(text, int | float):
+        return float(text)
+    head = str(text).strip().lower().removesuffix("m").strip().replace(",", ".")
+    try:
+        return float(head)
+    except ValueError:
+        return None
+
+
+def _map_gis_props(
+    props: dict[str, Any],
+    geom: BaseGeometry | None,
+    kind: str,
+    layer_role: str | None,
+    storey_height_m: float,
+) -> None:
+    """Roles, heights and ids of a GIS feature in the keys the site reader knows."""
+    low = {k.lower(): k for k in props}
+    if "role" not in props and "role" in low:
+        props["role"] = props[low["role"]]
+    if "role" not in props and layer_role:
+        props["role"] = layer_role
+    if "height" not in props and "height_m" not in props:
+        for key in ("height", "height_m", "building:height", "est_height"):
+            if key in low and _number_in(props[low[key]]) is not None:
+                props["height"] = _number_in(props[low[key]])
+                break
+        else:
+            levels = next(
+                (_number_in(props[low[k]]) for k in ("building:levels", "levels") if k in low),
+                None,
+            )
+            if levels is not None:
+                props["height"] = levels * storey_height_m
+            elif (
+                geom is not None
+                and shapely.has_z(geom)
+                and str(props.get("extrude", "0")) in ("1", "True", "true")
+            ):
+                z = shapely.get_coordinates(geom, include_z=True)[:, 2]
+                if np.isfinite(z).all() and z.max() > 0:
+                    props["height"] = float(z.max())
+    if kind in ("KML", "KMZ") and props.get("Name"):
+        props["id"] = props["Name"]  # LIBKML's own "id" is the layer and a counter
+    elif "id" not in props:
+        for key in ("name", "osm_id", "fid"):
+            if key in low:
+                props["id"] = props[low[key]]
+                break
 
 
 #: A site file larger than this is refused before it is read [bytes].

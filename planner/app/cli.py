@@ -221,6 +221,7 @@ def plan_inputs(args: argparse.Namespace):
             repair=args.make_valid,
             limits=limits,
             crs=args.crs,
+            **({"storey_height_m": args.storey_height_m} if args.storey_height_m else {}),
         )
     else:
         site = default_site(buildings=args.buildings, limits=limits)
@@ -482,8 +483,8 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         "site",
         nargs="?",
         metavar="SITE_FILE",
-        help=".geojson, .wkt or .csv (longitude/latitude is projected to its UTM zone); "
-        "default: the built-in site",
+        help=".geojson, .wkt, .csv, .gpkg, .shp, .kml or .kmz (longitude/latitude is "
+        "projected to its UTM zone); default: the built-in site",
     )
     pl.add_argument(
         "--crs",
@@ -498,6 +499,14 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         default=None,
         metavar="H",
         help="height [m] for buildings and obstacles that have none",
+    )
+    pl.add_argument(
+        "--storey-height-m",
+        type=float,
+        default=None,
+        metavar="M",
+        help="storey height for buildings known only by their number of storeys "
+        "('building:levels', as OpenStreetMap gives it) (default 3 m)",
     )
     pl.add_argument(
         "--buildings",

@@ -212,7 +212,9 @@ class StationPlanner:
             options=["Default site", "Upload a file"], value="Default site"
         )
         self.upload = w.FileUpload(
-            accept=".geojson,.json,.wkt,.txt,.csv", multiple=False, description="Footprint file"
+            accept=".geojson,.json,.wkt,.txt,.csv,.gpkg,.kml,.kmz",
+            multiple=False,
+            description="Footprint file",
         )
         self.height = _number(0.0, 0.0, 1000.0, 0.5, "Height where missing [m] (0: none)")
         self.buildings = w.Text(
@@ -361,7 +363,10 @@ class StationPlanner:
             return default_site(buildings=ids)
         files = self.upload.value
         if not files:
-            raise PlannerError("choose a footprint file (.geojson, .wkt or .csv) to upload first")
+            raise PlannerError(
+                "choose a footprint file (.geojson, .wkt, .csv, .gpkg, .kml or .kmz) to upload "
+                "first"
+            )
         f = files[0]
         path = Path(self._tmp.name) / Path(f["name"]).name
         path.write_bytes(bytes(f["content"]))
