@@ -259,11 +259,38 @@ def _read_text(path: str, what: str) -> str:
         raise InputError(f"{what} {path!r} is not UTF-8 text") from None
 
 
+def _district(args: argparse.Namespace, site) -> bool:
+    """Whether to plan block by block on Dask: asked for, or (auto) the planned buildings
+    span more than one block."""
+    from planner.pipeline.district import partition
+
+    if args.district == "off":
+        if args.scheduler:
+            raise InputError("--scheduler needs the district mode; leave out --district off")
+        return False
+    return args.district == "on" or bool(args.scheduler) or len(partition(site, args.block_m)) > 1
+
+
 def run_plan(args: argparse.Namespace) -> int:
     from planner.pipeline.planning import plan
 
     progress = _StderrProgress(args.quiet)
-    result = plan(*plan_inputs(args), progress=progress)
+    site, scanner, req, settings = plan_inputs(args)
+    if _district(args, site):
+        from planner.pipeline.district import plan_district
+
+        result = plan_district(
+            site,
+            scanner,
+            req,
+            settings,
+            block_m=args.block_m,
+            scheduler=args.scheduler,
+            workers=args.workers,
+            progress=progress,
+        )
+    else:
+        result = plan(site, scanner, req, settings, progress=progress)
     extra = {}
     if args.booklet:
         from planner.app.booklet import booklet_pdf
@@ -684,6 +711,36 @@ def build_parser() -> argparse.ArgumentParser:
     )
     _plan_arguments(pl)
     pl.add_argument("--out", required=True, metavar="DIR", help="folder for the plan's files")
+    from planner.pipeline.requirements import DEFAULT_BLOCK_M
+
+    pl.add_argument(
+        "--district",
+        choices=["auto", "on", "off"],
+        default="auto",
+        help="plan block by block on Dask (auto: when the planned buildings span more than "
+        "one block)",
+    )
+    pl.add_argument(
+        "--block-m",
+        type=float,
+        default=DEFAULT_BLOCK_M,
+        metavar="M",
+        help=f"side of a district block [m] (default {DEFAULT_BLOCK_M:g})",
+    )
+    pl.add_argument(
+        "--workers",
+        type=int,
+        default=2,
+        metavar="N",
+        help="worker processes of the local Dask cluster (default 2; 2 GB each)",
+    )
+    pl.add_argument(
+        "--scheduler",
+        default=None,
+        metavar="ADDRESS",
+        help="an existing Dask cluster's scheduler, e.g. tcp://10.0.0.5:8786 (its workers "
+        "need tls-planner installed); default: a local cluster",
+    )
     pl.add_argument(
         "--no-booklet",
         dest="booklet",

@@ -380,6 +380,11 @@ METHODS = ("auto", "milp", "greedy")
 MODELS = ("3d", "paper")
 
 
+#: Side of a district block [m] (:mod:`planner.pipeline.district`): a few city blocks, a
+#: task of seconds to a minute.
+DEFAULT_BLOCK_M = 250.0
+
+
 @dataclass(frozen=True, kw_only=True)
 class PlanSettings:
     """How the planner samples the site and solves (sensible defaults for a building).

@@ -1,0 +1,302 @@
+"""District mode: a large site planned block by block on Dask, stitched into one plan.
+
+The planned buildings are partitioned into square blocks (by footprint centroid). Each block
+is planned as its own site: its buildings planned, and every building, obstacle, no-go area
+and control point within a **halo** of the block's reach around it kept — so that stations
+near a block edge, and occluders across it, are seen exactly as in the whole site (the
+candidate grid is anchored to the CRS, so a block's candidates are the whole site's). The
+blocks run as tasks on ``dask.distributed``: a ``LocalCluster`` by default, or an existing
+cluster's scheduler. Their plans are stitched: ids prefixed with the block's key, each
+block's registration network said per block, one route through all stations.
+
+**The bound stays honest.** A block's lower bound holds for the stations meeting *its*
+samples. Two blocks farther apart than twice the reach share no station, so the sum of the
+bounds of blocks pairwise that far apart is a lower bound of the whole; the plan reports the
+largest such sum found (greedy), never the plain sum of all blocks (a station on a block
+edge may serve two blocks).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+
+import numpy as np
+import pandas as pd
+import shapely
+from shapely.geometry import box
+
+from planner.errors import InputError
+from planner.pipeline.requirements import DEFAULT_BLOCK_M, PlanSettings, Requirements
+from planner.pipeline.result import Plan
+from planner.pipeline.route import field_route
+from planner.scanner import Scanner
+from planner.site import Site
+
+__all__ = ["DEFAULT_BLOCK_M", "Block", "block_site", "partition", "plan_district"]
+
+Progress = Callable[[float, str], None]
+
+
+@dataclass(frozen=True)
+class Block:
+    """One block of a district: its key (``K03``) and the planned buildings in it."""
+
+    key: str
+    buildings: tuple[str, ...]
+    footprint: shapely.Geometry  # the union of its planned footprints
+
+
+def partition(site: Site, block_m: float = DEFAULT_BLOCK_M) -> list[Block]:
+    """The planned buildings in square blocks of ``block_m`` (by footprint centroid), in
+    row order from the south-west."""
+    if not (isinstance(block_m, int | float) and math.isfinite(block_m) and block_m >= 20):
+        raise InputError(f"the block size must be at least 20 m; got {block_m!r}")
+    planned = site.planned
+    cells: dict[tuple[int, int], list] = {}
+    for b in planned:
+        c = b.footprint.centroid
+        cells.setdefault((math.floor(c.y / block_m), math.floor(c.x / block_m)), []).append(b)
+    out = []
+    for n, key in enumerate(sorted(cells), start=1):
+        bs = cells[key]
+        out.append(
+            Block(
+                f"K{n:0{max(2, len(str(len(cells))))}d}",
+                tuple(b.id for b in bs),
+                shapely.union_all([b.footprint for b in bs]),
+            )
+        )
+    return out
+
+
+def block_site(site: Site, block: Block, halo_m: float) -> Site:
+    """The site of one block: its buildings planned; everything within ``halo_m`` of them
+    kept (other buildings only block the beam)."""
+    region = box(*block.footprint.bounds).buffer(halo_m)
+    mine = set(block.buildings)
+    buildings = [
+        replace(b, planned=b.id in mine)
+        for b in site.buildings
+        if b.id in mine or b.footprint.intersects(region)
+    ]
+    return Site(
+        buildings,
+        obstacles=[o for o in site.obstacles if o.geometry.intersects(region)],
+        no_go=[a for a in site.no_go if a.geometry.intersects(region)],
+        boundary=site.boundary,
+        crs=site.crs,
+        name=f"{site.name} {block.key}",
+        limits=site.limits,
+        control=[c for c in site.control if region.contains(shapely.Point(c.x, c.y))],
+        zones=[
+            z
+            for z in site.zones
+            if (z.building_id in mine)
+            or (z.facade_id is not None and z.facade_id.rsplit("-f", 1)[0] in mine)
+        ],
+    )
+
+
+def _plan_block(site: Site, scanner: Scanner, req: Requirements, settings: PlanSettings) -> Plan:
+    """One block's plan (a Dask task); its network stays on the worker. Its timings say the
+    worker process's peak memory so far [MB] (``worker_peak_mb``)."""
+    import resource
+
+    from planner.pipeline.planning import plan
+
+    p = plan(site, scanner, req, settings)
+    p.network = None
+    p.timings_s["worker_peak_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    return p
+
+
+def plan_district(
+    site: Site,
+    scanner: Scanner,
+    requirements: Requirements | None = None,
+    settings: PlanSettings | None = None,
+    *,
+    block_m: float = DEFAULT_BLOCK_M,
+    scheduler: str | None = None,
+    workers: int = 2,
+    memory_limit: str = "2GB",
+    progress: Progress | None = None,
+) -> Plan:
+    """Plan a district block by block on Dask (see the module's text) and stitch one plan.
+
+    Parameters
+    ----------
+    block_m : float
+        Side of a block [m].
+    scheduler : str, optional
+        Address of an existing Dask scheduler (``tcp://host:8786``); default: a
+        ``LocalCluster`` of ``workers`` processes with ``memory_limit`` each, closed after.
+    """
+    from planner.pipeline.planning import reach_m
+
+    req = requirements or Requirements()
+    st = settings or PlanSettings()
+    say = progress or (lambda _f, _m: None)
+    t0 = time.perf_counter()
+    blocks = partition(site, block_m)
+    halo = reach_m(scanner, req, st.station_rms_pair, st.model)
+    sites = [block_site(site, b, halo) for b in blocks]
+    say(0.0, f"{len(blocks)} block(s) of {block_m:g} m, halo {halo:.0f} m")
+    from dask.distributed import Client, LocalCluster, as_completed
+
+    cluster = None
+    if scheduler:
+        try:
+            client = Client(scheduler, timeout="5s")
+        except (OSError, TimeoutError) as exc:
+            raise InputError(
+                f"cannot reach the Dask scheduler at {scheduler!r} ({exc}); start one "
+                "(dask scheduler) or leave --scheduler out for a local cluster"
+            ) from None
+    else:
+        cluster = LocalCluster(
+            n_workers=workers,
+            threads_per_worker=1,
+            processes=True,
+            memory_limit=memory_limit,
+            dashboard_address=None,
+        )
+        client = Client(cluster)
+    try:
+        futures = {
+            client.submit(_plan_block, s, scanner, req, st, pure=False): k
+            for k, s in enumerate(sites)
+        }
+        plans: list[Plan | None] = [None] * len(blocks)
+        for done, fut in enumerate(as_completed(futures), start=1):
+            k = futures[fut]
+            plans[k] = fut.result()
+            say(0.95 * done / len(blocks), f"block {done} of {len(blocks)} planned")
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+    say(0.96, "stitching the blocks")
+    out = stitch(site, scanner, req, st, blocks, plans, halo)
+    out.timings_s["total"] = time.perf_counter() - t0
+    say(1.0, "plan ready")
+    return out
+
+
+def _honest_bound(blocks: list[Block], plans: list[Plan], reach: float) -> float:
+    """The largest sum of block bounds over blocks pairwise farther apart than twice the
+    reach (greedy, by bound), never below the largest single block's."""
+    bounds = [float(p.solver.get("lower_bound") or 0.0) for p in plans]
+    chosen: list[int] = []
+    for k in np.argsort(bounds)[::-1]:
+        if all(blocks[k].footprint.distance(blocks[j].footprint) > 2 * reach for j in chosen):
+            chosen.append(int(k))
+    return max(sum(bounds[k] for k in chosen), max(bounds, default=0.0))
+
+
+def stitch(
+    site: Site,
+    scanner: Scanner,
+    req: Requirements,
+    st: PlanSettings,
+    blocks: list[Block],
+    plans: list[Plan],
+    reach: float,
+) -> Plan:
+    """One plan from the blocks' plans: ids prefixed with the block key (control points keep
+    theirs), an honest bound, a message per block, one route."""
+    stations, targets, coverage, facades, links, zones, cands = [], [], [], [], [], [], []
+    messages = [f"District: {len(blocks)} blocks planned on Dask, halo {reach:.0f} m."]
+    control = {c.id for c in site.control}
+    for b, p in zip(blocks, plans, strict=True):
+        sid = {s: f"{b.key}-{s}" for s in p.stations["station_id"]}
+        tid = {t: (t if t in control else f"{b.key}-{t}") for t in p.targets["target_id"]}
+        stations.append(p.stations.assign(station_id=p.stations["station_id"].map(sid)))
+        t = p.targets.copy()
+        t["target_id"] = t["target_id"].map(tid)
+        t["station_ids"] = t["station_ids"].map(lambda ids, m=sid: [m[s] for s in ids])
+        targets.append(t)
+        c = p.coverage.copy()
+        c["station_id"] = c["station_id"].map(lambda s, m=sid: m.get(s, s))
+        coverage.append(c)
+        facades.append(p.facades)
+        lk = p.links.copy()
+        lk["station_a"] = lk["station_a"].map(lambda s, m=sid: m.get(s, s))
+        lk["station_b"] = lk["station_b"].map(lambda s, m=sid: m.get(s, s))
+        lk["target_ids"] = lk["target_ids"].map(
+            lambda ids, m=tid: ";".join(m.get(x, x) for x in str(ids).split(";") if x)
+        )
+        links.append(lk)
+        zones.append(p.zones)
+        cands.append(p.candidates)
+        reg = next((m for m in p.messages if m.startswith("Registration:")), "")
+        messages.append(
+            f"Block {b.key} ({len(b.buildings)} buildings): {len(p.stations)} stations, "
+            f"{p.solver['status']}, bound {p.solver.get('lower_bound')}"
+            + (f"; {reg}" if reg else "")
+        )
+    targets_df = _merge_control(pd.concat(targets, ignore_index=True))
+    stations_df = pd.concat(stations, ignore_index=True)
+    coverage_df = pd.concat(coverage, ignore_index=True)
+    links_df = pd.concat(links, ignore_index=True)
+    objective = int(sum(p.solver["objective"] for p in plans))
+    bound = _honest_bound(blocks, plans, reach)
+    statuses = {p.solver["status"] for p in plans}
+    solver = {
+        "method": f"district ({len(blocks)} blocks)",
+        "status": statuses.pop() if len(statuses) == 1 else "mixed: " + ", ".join(sorted(statuses)),
+        "objective": objective,
+        "lower_bound": bound,
+        "gap": 0.0 if objective == 0 else max(0.0, (objective - bound) / objective),
+        "seconds": max(float(p.solver["seconds"]) for p in plans),
+        "greedy_objective": sum(int(p.solver.get("greedy_objective") or 0) for p in plans),
+        "reductions": "",
+        "parts": sum(int(p.solver.get("parts") or 0) for p in plans),
+        "reach_m": reach,
+        "candidates": sum(int(p.solver["candidates"]) for p in plans),
+        "samples": sum(int(p.solver["samples"]) for p in plans),
+        "pairs": sum(int(p.solver["pairs"]) for p in plans),
+        "registration_rounds": max(int(p.solver["registration_rounds"]) for p in plans),
+        "blocks": len(blocks),
+        "block_bound_sum": float(sum(p.solver.get("lower_bound") or 0 for p in plans)),
+    }
+    route = field_route(site, scanner, st, stations_df, targets_df, coverage_df, links_df)
+    first = plans[0]
+    messages.insert(0, f"Accuracy model: {st.model_description()}.")
+    return Plan(
+        site=site,
+        scanner=scanner,
+        requirements=req,
+        settings=st,
+        stations=stations_df,
+        targets=targets_df,
+        coverage=coverage_df,
+        facades=pd.concat(facades, ignore_index=True),
+        zones=pd.concat(zones, ignore_index=True) if zones else first.zones,
+        links=links_df,
+        candidates=pd.concat(cands, ignore_index=True),
+        network=None,
+        route=route,
+        solver=solver,
+        messages=messages,
+        timings_s={
+            "blocks_s": float(sum(p.timings_s.get("total", 0.0) for p in plans)),
+            "worker_peak_mb": max(p.timings_s.get("worker_peak_mb", 0.0) for p in plans),
+        },
+    )
+
+
+def _merge_control(t: pd.DataFrame) -> pd.DataFrame:
+    """A control point seen from stations of several blocks: one row, every station."""
+    ctl = t[t["type"] == "control"]
+    if ctl.empty or not ctl["target_id"].duplicated().any():
+        return t
+    merged = ctl.groupby("target_id", sort=False).agg(
+        {c: "first" for c in t.columns if c not in ("target_id", "station_ids")}
+        | {"station_ids": lambda s: sorted({x for ids in s for x in ids})}
+    )
+    merged = merged.reset_index()[t.columns]
+    return pd.concat([t[t["type"] != "control"], merged], ignore_index=True)
