@@ -129,3 +129,29 @@ def test_plan_then_bad_upload_in_a_real_browser(dashboard_url, tmp_path):
         page.screenshot(path=str(ARTIFACTS / "dashboard-bad-upload.png"), full_page=True)
         browser.close()
     assert external == [], f"the page fetched from outside the machine: {external}"
+
+
+def test_field_work_tab_shows_the_visiting_order(dashboard_url):
+    sync = _need_browser()
+    ARTIFACTS.mkdir(exist_ok=True)
+    with sync.sync_playwright() as pw:
+        browser = pw.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        page = browser.new_page(viewport={"width": 1500, "height": 1100})
+        page.goto(dashboard_url, timeout=120_000)
+        count = page.locator(".station-count")
+        count.wait_for(timeout=120_000)
+        n = int(count.inner_text().split()[0])
+        page.get_by_text("Stations & field work", exact=True).click()
+        summary = page.locator("p:has-text('Field time:')")
+        summary.wait_for(timeout=30_000)
+        assert "Visiting order:" in summary.inner_text()
+        rows = page.locator(".widget-output table").last.locator("tbody tr")
+        assert rows.count() == n
+        page.screenshot(path=str(ARTIFACTS / "dashboard-field-work.png"), full_page=True)
+        page.get_by_text("Downloads", exact=True).click()
+        assert page.locator("a.planner-download[download='route.csv']").count() == 1
+        page.get_by_role("button", name="Make field booklet (PDF)").click()
+        booklet = page.locator("a.planner-download[download='booklet.pdf']")
+        booklet.wait_for(timeout=120_000)
+        page.screenshot(path=str(ARTIFACTS / "dashboard-booklet.png"), full_page=True)
+        browser.close()
