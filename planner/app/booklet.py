@@ -16,7 +16,14 @@ from matplotlib.backends.backend_pdf import PdfPages
 from matplotlib.figure import Figure
 from matplotlib.patches import Wedge
 
-from planner.app.maps import COLOURS, place_labels, plot_plan_map, plot_site, survey_frame
+from planner.app.maps import (
+    COLOURS,
+    draw_targets,
+    place_labels,
+    plot_plan_map,
+    plot_site,
+    survey_frame,
+)
 from planner.crs import name_of as crs_name
 from planner.pipeline.result import Plan
 from planner.pipeline.route import view_sectors
@@ -122,17 +129,17 @@ def _station_page(p: Plan, n: int) -> Figure:
             f"step {r['step_mm_at_10m']:g} mm at 10 m; point spacing on its facades at most "
             f"{r['max_spacing_mm']:g} mm",
         ),
+        ("Expected scan time", f"{r['scan_min']:.1f} min ({r['scan_points_million']:g} M points)"),
         (
-            "Expected scan time",
-            f"{r['scan_min']:.1f} min ({r['scan_points_million']:g} M points); set-up "
-            f"{r['setup_min']:g} min; at this station {r['station_min']:.0f} min in all, "
+            "Time at this station",
+            f"{r['station_min']:.0f} min with set-up ({r['setup_min']:g} min) and targets; "
             f"{r['elapsed_min']:.0f} min since the start",
         ),
         ("Registered with", r["links_to"] or "—"),
         ("Facade samples it serves", f"{int(st.get('samples_met', 0))}"),
     ]
     for k, (label, value) in enumerate(facts):
-        y = 0.92 - k * 0.105
+        y = 0.92 - k * 0.095
         head.text(0.0, y, label, fontsize=8.5, weight="bold", va="top")
         head.text(0.33, y, _wrap(value, 80), fontsize=8.5, va="top")
     ax = fig.add_subplot(grid[1])
@@ -164,22 +171,16 @@ def _station_map(p: Plan, sid: str, ax) -> None:
         )
     )
     mine = p.targets[p.targets["station_ids"].map(lambda s: sid in s)]
-    labels = []
-    for kind, marker in (("flat", "s"), ("sphere", "o"), ("control", "v")):
-        t = mine[mine["type"] == kind]
-        if len(t):
-            ax.scatter(
-                t["x"],
-                t["y"],
-                marker=marker,
-                s=40,
-                fc="w" if kind != "control" else "k",
-                ec=COLOURS["target"],
-                lw=1.5,
-                zorder=4,
-                label=f"{kind} target scanned from {sid}",
-            )
-            labels += [(tr.x, tr.y, tr.target_id, {"fontsize": 7}) for tr in t.itertuples()]
+    labels: list = []
+    draw_targets(
+        ax,
+        mine,
+        labels,
+        kinds=("flat", "sphere", "control"),
+        size=40,
+        legend_suffix=f" scanned from {sid}",
+        fontsize=7,
+    )
     if p.route is not None:
         order = list(p.route.table["station_id"])
         k = order.index(sid)

@@ -9,6 +9,7 @@ import math
 
 import matplotlib.pyplot as plt
 import numpy as np
+import pandas as pd
 import shapely
 from matplotlib.axes import Axes
 from matplotlib.collections import PatchCollection
@@ -195,22 +196,7 @@ def plot_plan_map(
         )
     labels: list[tuple[float, float, str, dict]] = []
     _draw_links(p, ax, labels)
-    for kind, marker in (("flat", "s"), ("sphere", "o")):
-        t = p.targets[p.targets["type"] == kind]
-        if len(t):
-            ax.scatter(
-                t["x"],
-                t["y"],
-                marker=marker,
-                s=28,
-                fc="w",
-                ec=COLOURS["target"],
-                lw=1.5,
-                zorder=4,
-                label=f"{kind} target",
-            )
-    for r in p.targets[p.targets["type"] != "control"].itertuples():
-        labels.append((r.x, r.y, r.target_id, {"fontsize": 6, "color": COLOURS["target"]}))
+    draw_targets(ax, p.targets, labels)
     order = {}
     if order_labels and p.route is not None:
         order = dict(zip(p.route.table["station_id"], p.route.table["order"], strict=True))
@@ -250,6 +236,40 @@ def plot_plan_map(
     place_labels(ax, labels)
     legend_outside(ax)
     return fig
+
+
+_TARGET_MARKERS = {"flat": "s", "sphere": "o", "control": "v"}
+
+
+def draw_targets(
+    ax: Axes,
+    targets: pd.DataFrame,
+    labels: list,
+    *,
+    kinds: tuple[str, ...] = ("flat", "sphere"),
+    size: float = 28,
+    legend_suffix: str = "",
+    fontsize: float = 6,
+) -> None:
+    """Targets of ``kinds`` as white markers (control points black), each kind once in the
+    legend; their ids go to ``labels`` (for :func:`place_labels`)."""
+    for kind in kinds:
+        t = targets[targets["type"] == kind]
+        if not len(t):
+            continue
+        ax.scatter(
+            t["x"],
+            t["y"],
+            marker=_TARGET_MARKERS[kind],
+            s=size,
+            fc="k" if kind == "control" else "w",
+            ec=COLOURS["target"],
+            lw=1.5,
+            zorder=4,
+            label=f"{kind} target{legend_suffix}",
+        )
+        style = {"fontsize": fontsize, "color": COLOURS["target"]}
+        labels.extend((r.x, r.y, r.target_id, style) for r in t.itertuples())
 
 
 def legend_outside(ax: Axes) -> None:
