@@ -50,8 +50,9 @@ def booklet_pdf(p: Plan) -> bytes:
     meta = {"Title": f"tls-planner field booklet: {p.site.name}", "CreationDate": None}
     with plt.rc_context({"pdf.fonttype": 42}), PdfPages(buf, metadata=meta) as pdf:
         pdf.savefig(_overview(p))
+        sectors = view_sectors(p.stations, p.coverage, p.targets)  # once, not per page
         for n in range(len(_route(p))):  # figures outside pyplot: nothing to close
-            pdf.savefig(_station_page(p, n))
+            pdf.savefig(_station_page(p, n, sectors))
     return buf.getvalue()
 
 
@@ -93,7 +94,7 @@ def _wrap(text: str, width: int) -> str:
     return "\n".join(textwrap.wrap(text, width)) or text
 
 
-def _station_page(p: Plan, n: int) -> Figure:
+def _station_page(p: Plan, n: int, sectors: dict[str, tuple[float, float, float]]) -> Figure:
     r = _route(p).iloc[n]
     sid = r["station_id"]
     st = p.stations.set_index("station_id").loc[sid]
@@ -143,19 +144,18 @@ def _station_page(p: Plan, n: int) -> Figure:
         head.text(0.0, y, label, fontsize=8.5, weight="bold", va="top")
         head.text(0.33, y, _wrap(value, 80), fontsize=8.5, va="top")
     ax = fig.add_subplot(grid[1])
-    _station_map(p, sid, ax)
+    _station_map(p, sid, ax, sectors.get(sid, (0.0, 0.0, 20.0)))
     table_ax = fig.add_subplot(grid[2])
     table_ax.axis("off")
     _targets_table(p, sid, r, table_ax)
     return fig
 
 
-def _station_map(p: Plan, sid: str, ax) -> None:
+def _station_map(p: Plan, sid: str, ax, sector: tuple[float, float, float]) -> None:
     """The surroundings of one station: its sector, its targets with ids, the way in."""
     st = p.stations.set_index("station_id")
     x, y = st.at[sid, "x"], st.at[sid, "y"]
-    sectors = view_sectors(p.stations, p.coverage, p.targets)
-    start, end, radius = sectors.get(sid, (0.0, 0.0, 20.0))
+    start, end, radius = sector
     half = max(15.0, min(radius, 60.0)) * 1.1
     plot_site(p.site, ax)
     ax.add_patch(

@@ -264,7 +264,6 @@ def stitch(
         "block_bound_sum": float(sum(p.solver.get("lower_bound") or 0 for p in plans)),
     }
     route = field_route(site, scanner, st, stations_df, targets_df, coverage_df, links_df)
-    first = plans[0]
     messages.insert(0, f"Accuracy model: {st.model_description()}.")
     return Plan(
         site=site,
@@ -275,7 +274,7 @@ def stitch(
         targets=targets_df,
         coverage=coverage_df,
         facades=pd.concat(facades, ignore_index=True),
-        zones=pd.concat(zones, ignore_index=True) if zones else first.zones,
+        zones=pd.concat(zones, ignore_index=True),
         links=links_df,
         candidates=pd.concat(cands, ignore_index=True),
         network=None,

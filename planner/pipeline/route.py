@@ -337,7 +337,7 @@ def field_route(
         seen_by = [visit[s] for s in sids if s in visit]
         if seen_by:
             first_visit.setdefault(min(seen_by), []).append(str(tid))
-    spacing = coverage.groupby("station_id")["spacing_mm"].max() if len(coverage) else {}
+    spacing = coverage.groupby("station_id")["spacing_mm"].max()
     linked: dict[str, list[str]] = {}
     for a, b in zip(links["station_a"], links["station_b"], strict=True):
         linked.setdefault(str(a), []).append(str(b))
@@ -362,7 +362,7 @@ def field_route(
             session, used = session + 1, 0.0
         used += total
         elapsed += total
-        sp = spacing.get(sid, np.nan) if hasattr(spacing, "get") else np.nan
+        sp = float(spacing.get(sid, np.nan))
         rows.append(
             {
                 "order": n + 1,
@@ -382,7 +382,7 @@ def field_route(
                 "scan_min": round(scan_min, 1),
                 "station_min": round(total, 1),
                 "elapsed_min": round(elapsed, 1),
-                "max_spacing_mm": round(float(sp), 1) if np.isfinite(sp) else np.nan,
+                "max_spacing_mm": round(sp, 1) if np.isfinite(sp) else np.nan,
                 "links_to": " ".join(sorted(set(linked.get(sid, [])))),
                 "walk_note": notes[n],
             }
