@@ -61,6 +61,7 @@ COLOURS = {
     "obstacle": "#a04000",
     "no-go": "#f4cccc",
     "cover": "#c0392b",
+    "hand": "#e67e22",
     "link": "#1f618d",
     "registration": "#1f618d",
     "target": "#8e44ad",
@@ -69,6 +70,7 @@ COLOURS = {
 }
 _PURPOSE_LABEL = {
     "cover": "station (covering)",
+    "hand": "station (placed by hand)",
     "link": "station (linking the network)",
     "registration": "station (for the registration error)",
 }
@@ -200,7 +202,7 @@ def plot_plan_map(
     order = {}
     if order_labels and p.route is not None:
         order = dict(zip(p.route.table["station_id"], p.route.table["order"], strict=True))
-    for purpose in ("cover", "link", "registration"):
+    for purpose in ("hand", "cover", "link", "registration"):
         s = p.stations[p.stations["purpose"] == purpose]
         if len(s):
             ax.plot(

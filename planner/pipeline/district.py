@@ -101,14 +101,14 @@ def block_site(site: Site, block: Block, halo_m: float) -> Site:
 
 
 def _plan_block(site: Site, scanner: Scanner, req: Requirements, settings: PlanSettings) -> Plan:
-    """One block's plan (a Dask task); its network stays on the worker. Its timings say the
-    worker process's peak memory so far [MB] (``worker_peak_mb``)."""
+    """One block's plan (a Dask task); its network and workbench stay on the worker. Its
+    timings say the worker process's peak memory so far [MB] (``worker_peak_mb``)."""
     import resource
 
     from planner.pipeline.planning import plan
 
     p = plan(site, scanner, req, settings)
-    p.network = None
+    p.network = p.workbench = None
     p.timings_s["worker_peak_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
     return p
 

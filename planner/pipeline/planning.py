@@ -15,15 +15,17 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pandas as pd
 import scipy.sparse as sp
+import shapely
 
 from planner.accuracy import reach_bound_m
 from planner.accuracy3d import reach_bound_3d_m
 from planner.errors import InputError
-from planner.pipeline.candidates import candidate_grid
+from planner.pipeline.candidates import blocked_ground, candidate_grid
 from planner.pipeline.evaluate import (
     METRIC_KEYS,
     Assignment,
@@ -52,7 +54,7 @@ from planner.scanner import DEFAULT_SCANNER, Scanner, load_scanner
 from planner.site import Site
 from planner.targets import choose_target
 
-__all__ = ["plan"]
+__all__ = ["Workbench", "assemble", "choose_stations", "plan"]
 
 Progress = Callable[[float, str], None]
 
@@ -92,17 +94,20 @@ def plan(
     settings: PlanSettings | None = None,
     *,
     progress: Progress | None = None,
+    locked: np.ndarray | None = None,
 ) -> Plan:
     """Plan the fewest stations meeting ``requirements`` around the planned buildings.
 
     Defaults: the built-in default site, the scanner of Voroshilov & Karachentsev's example
     (:data:`~planner.scanner.DEFAULT_SCANNER`), ``Requirements()`` and ``PlanSettings()``.
-    Infeasible requirements do not raise: the samples no candidate can satisfy come back
-    with ``meets`` False and the reason (see :attr:`Plan.unmet`).
+    ``locked`` — ``(k, 2)`` station positions [m] the surveyor fixed: they are kept, and the
+    fewest others chosen around them. Infeasible requirements do not raise: the samples no
+    candidate can satisfy come back with ``meets`` False and the reason (see
+    :attr:`Plan.unmet`). The plan keeps what it was made from (:attr:`Plan.workbench`) for
+    what-if edits (:mod:`planner.pipeline.whatif`).
     """
     from planner.siteio import default_site
 
-    timings: dict[str, float] = {}
     t0 = time.perf_counter()
     _expect(site, Site, "site", "read one with planner.read_site(path) or planner.default_site()")
     _expect(requirements, Requirements, "requirements", "e.g. Requirements(max_xy_mm=4)")
@@ -112,14 +117,70 @@ def plan(
             f"scanner must be a Scanner, a catalogue name or a profile file; got "
             f"{type(scanner).__name__}"
         )
-    site = site or default_site()
-    sc = load_scanner(scanner or DEFAULT_SCANNER)
-    req = requirements or Requirements()
     st = settings or PlanSettings()
-    say = progress or (lambda _f, _m: None)
-    messages = list(site.warnings)
-
     deadline = time.monotonic() + st.time_limit_s
+    wb = _prepare(
+        site or default_site(),
+        load_scanner(scanner or DEFAULT_SCANNER),
+        requirements or Requirements(),
+        st,
+        progress or (lambda _f, _m: None),
+    )
+    return choose_stations(wb, progress, locked=locked, deadline=deadline, t0=t0)
+
+
+@dataclass
+class Workbench:
+    """What a plan is made from, kept for what-if edits: the facade samples and their
+    requirements, the candidate grid, the target candidates and what each position sees of
+    them (computed once per position). ``pool`` is the candidate grid followed by every
+    position a surveyor put a station at (appended, never removed, so that the sight cache's
+    indices stay valid). Not saved with the plan and not sent between processes."""
+
+    site: Site
+    scanner: Scanner
+    req: Requirements
+    settings: PlanSettings
+    facades: FacadeSet
+    zones: ZoneTable
+    zone_ids: np.ndarray  # (N,) the zones each sample is in ('' none)
+    ctx: Context
+    tc: TargetCandidates
+    seen: SightCache
+    reach: float
+    n_grid: int
+    pairs: float
+    messages: list[str]
+    setup_s: float
+    evaluation: CandidateEvaluation | None = None  # the last full evaluation of the grid
+
+    @property
+    def pool(self) -> np.ndarray:
+        return self.seen.cand_xy
+
+    def add_positions(self, xy: np.ndarray) -> np.ndarray:
+        """Pool indices of the positions ``xy`` [m] (appended when new, to the millimetre)."""
+        xy = np.asarray(xy, dtype=float).reshape(-1, 2)
+        pool = self.seen.cand_xy
+        idx = np.empty(len(xy), dtype=np.int64)
+        for k, p in enumerate(xy):
+            same = np.flatnonzero(np.all(np.abs(pool - p) < 1e-3, axis=1))
+            if len(same):
+                idx[k] = same[0]
+            else:
+                pool = np.vstack([pool, p])
+                idx[k] = len(pool) - 1
+        self.seen.cand_xy = pool
+        return idx
+
+
+def _prepare(
+    site: Site, sc: Scanner, req: Requirements, st: PlanSettings, say: Progress
+) -> Workbench:
+    """Samples, zones, search radius, candidate grid, target candidates (refusing work beyond
+    the settings' limits with what to change)."""
+    t0 = time.perf_counter()
+    messages = list(site.warnings)
     say(0.0, "sampling facades")
     n_est = estimate_samples(site, st.sample_spacing_m, st.sample_height_step_m)
     if n_est > st.max_samples:
@@ -149,23 +210,60 @@ def plan(
             "grid (--grid-m) or coarser samples, plan fewer buildings, or raise the limit "
             "(--max-pairs)"
         )
-    timings["setup"] = time.perf_counter() - t0
     if len(cand) == 0:
         messages.append(
             "no free ground for a station within reach of the facades "
             f"({reach:.0f} m, clearance {st.clearance_m:g} m)"
         )
-
     stand_xy = candidate_grid(site, fac, min(reach, 40.0), st.target_spacing_m, st.clearance_m)
     tc = target_candidates(ctx, stand_xy)
-    seen = SightCache(ctx, tc, cand)
+    return Workbench(
+        site=site,
+        scanner=sc,
+        req=req,
+        settings=st,
+        facades=fac,
+        zones=zones,
+        zone_ids=sample_req.zone_ids,
+        ctx=ctx,
+        tc=tc,
+        seen=SightCache(ctx, tc, cand),
+        reach=reach,
+        n_grid=len(cand),
+        pairs=pairs,
+        messages=messages,
+        setup_s=time.perf_counter() - t0,
+    )
+
+
+def choose_stations(
+    wb: Workbench,
+    progress: Progress | None = None,
+    *,
+    locked: np.ndarray | None = None,
+    deadline: float | None = None,
+    t0: float | None = None,
+) -> Plan:
+    """The fewest stations (with ``locked`` positions kept) and their registration network,
+    for what ``wb`` holds; the plan's time budget runs from ``deadline``."""
+    t0 = time.perf_counter() if t0 is None else t0
+    ctx, st = wb.ctx, wb.settings
+    fac = wb.facades
+    say = progress or (lambda _f, _m: None)
+    deadline = time.monotonic() + st.time_limit_s if deadline is None else deadline
+    timings: dict[str, float] = {"setup": wb.setup_s}
+    forced = np.empty(0, dtype=np.int64)
+    if locked is not None and len(np.asarray(locked).reshape(-1, 2)):
+        forced = wb.add_positions(_free_positions(wb, locked, "locked station"))
+    cand, seen = wb.pool, wb.seen
     # stations and registration chosen together (docs/science.md): the fewest stations by
     # the scanner's error, their network, every sample judged on the total; while the
     # registration keeps samples short, stations are added that meet them with the
     # registration error they would have (estimated from the network) and the network is
     # built and judged again; once none is short, the fewest stations are chosen again with
     # every candidate's estimated registration error, the network's backbone kept
-    ev, sol = _choose(ctx, cand, say, deadline, timings)
+    ev, sol = _choose(ctx, cand, say, deadline, timings, forced=forced)
+    wb.evaluation = ev
     r = _Round(cover=sol.chosen, net=_network(ctx, cand, seen, sol.chosen, timings))
     r.judged = _judge(ctx, cand, r)
     best, rounds, adds, resolved = r, 0, 0, False
@@ -185,7 +283,7 @@ def plan(
         elif not resolved and len(r.net.stations) > len(sol.chosen):
             say(0.9, "registration: choosing the fewest stations again")
             resolved = True
-            backbone = r.net.backbone
+            backbone = np.union1d(r.net.backbone, forced)
             estimate = r.net.estimate(cand, st.instrument_height_m)
             _, again = _choose(ctx, cand, say, deadline, timings, estimate, forced=backbone)
             chosen = again.chosen
@@ -200,26 +298,88 @@ def plan(
             best = r
     r = best
     if st.computes_registration and r.net is not None:
-        r = _prune(ctx, cand, seen, r, deadline, timings)
-    net, assignment = r.net, r.judged.assignment
+        r = _prune(ctx, cand, seen, r, deadline, timings, keep=forced)
+    messages = list(wb.messages)
     if not ev.evaluated.all():
         messages.append(
             f"The time limit of {st.time_limit_s:g} s ran out during the evaluation: "
             f"{int(ev.evaluated.sum())} of {len(fac.z)} samples were evaluated; the plan covers "
             "those. Raise --time-limit-s for the whole site."
         )
+    if len(forced):
+        messages.append(f"{len(forced)} station(s) locked by hand; the others chosen around them.")
+    solver = {
+        "method": sol.method,
+        "status": sol.status,
+        "objective": sol.objective,
+        "lower_bound": sol.lower_bound,
+        "gap": sol.gap,
+        "seconds": sol.seconds,
+        "greedy_objective": sol.greedy_objective,
+        "reductions": sol.details.get("reductions", ""),
+        "parts": sol.details.get("parts", 0),
+        "registration_rounds": rounds,
+    }
+    if r.net is not None and len(r.net.stations) != sol.objective and st.computes_registration:
+        messages.append(
+            f"Stations: {sol.objective} meet the requirement by the scanner's error alone; "
+            f"{len(r.net.stations)} with the registration error counted ({rounds} round(s) of "
+            "adding stations and choosing again)."
+        )
+    return assemble(wb, r, solver, messages, timings, t0, deadline, progress=say, hand=forced)
 
+
+def _free_positions(wb: Workbench, xy: np.ndarray, what: str) -> np.ndarray:
+    """``xy`` [m] as a ``(k, 2)`` array, refused (InputError) where a station cannot stand:
+    inside a building, obstacle or no-go area, or within the clearance of one."""
+    xy = np.asarray(xy, dtype=float).reshape(-1, 2)
+    if not np.isfinite(xy).all():
+        raise InputError(f"a {what} has no coordinates (x, y must be numbers)")
+    blocked = blocked_ground(wb.site, wb.settings.clearance_m)
+    bad = shapely.contains_xy(blocked, xy[:, 0], xy[:, 1])
+    for k in np.flatnonzero(bad):
+        raise InputError(
+            f"the {what} at E {xy[k, 0]:.2f}, N {xy[k, 1]:.2f} stands inside a building, "
+            f"obstacle or no-go area (or within {wb.settings.clearance_m:g} m of one); move it "
+            "onto free ground"
+        )
+    return xy
+
+
+def assemble(
+    wb: Workbench,
+    r: _Round,
+    solver: dict[str, Any],
+    messages: list[str],
+    timings: dict[str, float],
+    t0: float,
+    deadline: float = math.inf,
+    *,
+    progress: Progress | None = None,
+    hand: np.ndarray | None = None,
+) -> Plan:
+    """The plan of the stations of round ``r`` (pool indices; those in ``hand`` placed by
+    hand): coverage, targets, links, route, messages."""
+    say = progress or (lambda _f, _m: None)
+    ctx, st, ev, cand = wb.ctx, wb.settings, wb.evaluation, wb.pool
+    net, assignment = r.net, r.judged.assignment
     say(0.93, "coverage of the chosen stations")
     t = time.perf_counter()
-    station_idx = net.stations if net is not None else np.asarray(sol.chosen, dtype=np.int64)
+    station_idx = net.stations if net is not None else np.asarray(r.cover, dtype=np.int64)
     station_xy = cand[station_idx] if len(station_idx) else np.empty((0, 2))
     ids = [f"S{i + 1:02d}" for i in range(len(station_idx))]
-    family = _class_family(req, zones)
-    coverage = _coverage(ctx, ev, assignment, ids, cand, deadline, net, sample_req.zone_ids, family)
-    purpose = np.where(
-        np.isin(station_idx, r.cover),
-        "cover",
-        np.where(np.isin(station_idx, r.added), "registration", "link"),
+    family = _class_family(wb.req, wb.zones)
+    grid = cand[: wb.n_grid]
+    zone_ids = wb.zone_ids
+    coverage = _coverage(ctx, ev, assignment, ids, grid, deadline, net, zone_ids, family)
+    purpose = np.select(
+        [
+            np.isin(station_idx, hand if hand is not None else []),
+            np.isin(station_idx, r.cover),
+            np.isin(station_idx, r.added),
+        ],
+        ["hand", "cover", "registration"],
+        "link",
     )
     stations = pd.DataFrame(
         {
@@ -231,56 +391,45 @@ def plan(
             "samples_met": assignment.met_by_station,
         }
     )
-    targets, links = _targets_and_links(ctx, tc, net, ids, coverage)
+    targets, links = _targets_and_links(ctx, wb.tc, net, ids, coverage)
     timings["coverage"] = time.perf_counter() - t
     say(0.97, "visiting order and field time")
     t = time.perf_counter()
-    route = field_route(site, sc, st, stations, targets, coverage, links)
+    route = field_route(wb.site, wb.scanner, st, stations, targets, coverage, links)
     timings["route"] = time.perf_counter() - t
     if net is not None:
         messages.append(f"Registration: {net.message}.")
-        if len(ids) != sol.objective and st.computes_registration:
-            messages.append(
-                f"Stations: {sol.objective} meet the requirement by the scanner's error alone; "
-                f"{len(ids)} with the registration error counted ({rounds} round(s) of "
-                "adding stations and choosing again)."
-            )
         messages.extend(_registration_messages(coverage, links, st))
     unmet = coverage[~coverage["meets"] & ~coverage["party_wall"]]
     if len(unmet):
         messages.extend(_unmet_messages(unmet))
     candidates = pd.DataFrame(
-        {"x": cand[:, 0], "y": cand[:, 1], "samples_met": np.asarray(ev.ok.sum(axis=0)).ravel()}
+        {
+            "x": grid[:, 0],
+            "y": grid[:, 1],
+            "samples_met": np.asarray(ev.ok[:, : wb.n_grid].sum(axis=0)).ravel(),
+        }
     )
     solver = {
-        "method": sol.method,
-        "status": sol.status,
-        "objective": sol.objective,
-        "lower_bound": sol.lower_bound,
-        "gap": sol.gap,
-        "seconds": sol.seconds,
-        "greedy_objective": sol.greedy_objective,
-        "reductions": sol.details.get("reductions", ""),
-        "parts": sol.details.get("parts", 0),
-        "reach_m": reach,
-        "candidates": len(cand),
-        "samples": int((~fac.party_wall).sum()),
-        "pairs": pairs,
-        "registration_rounds": rounds,
+        **solver,
+        "reach_m": wb.reach,
+        "candidates": wb.n_grid,
+        "samples": int((~wb.facades.party_wall).sum()),
+        "pairs": wb.pairs,
     }
     messages.insert(0, f"Accuracy model: {st.model_description()}.")
     timings["total"] = time.perf_counter() - t0
     say(1.0, "plan ready")
     return Plan(
-        site=site,
-        scanner=sc,
-        requirements=req,
+        site=wb.site,
+        scanner=wb.scanner,
+        requirements=wb.req,
         settings=st,
         stations=stations,
         targets=targets,
         coverage=coverage,
-        facades=_facade_summary(fac, coverage),
-        zones=_zone_summary(zones, coverage),
+        facades=_facade_summary(wb.facades, coverage),
+        zones=_zone_summary(wb.zones, coverage),
         links=links,
         candidates=candidates,
         network=net,
@@ -288,6 +437,7 @@ def plan(
         solver=solver,
         messages=messages,
         timings_s=timings,
+        workbench=wb,
     )
 
 
@@ -433,17 +583,23 @@ def _prune(
     r: _Round,
     deadline: float,
     timings: dict[str, float],
+    keep: np.ndarray | None = None,
 ) -> _Round:
     """Drop stations the final judgement gives no sample and no other station is registered
     to (chosen for an estimate the exact network did not bear out), one at a time, each kept
-    out only if no sample is lost."""
+    out only if no sample is lost; the ``keep`` candidates (locked by hand) are never dropped."""
+    keep = np.empty(0, dtype=np.int64) if keep is None else keep
     while time.monotonic() < deadline:
         served = np.bincount(
             r.judged.assignment.station[r.judged.assignment.station >= 0],
             minlength=len(r.net.stations),
         )
         parents = {lk.parent for lk in r.net.links}
-        idle = [k for k in np.flatnonzero(served == 0) if k not in parents]
+        idle = [
+            k
+            for k in np.flatnonzero(served == 0)
+            if k not in parents and r.net.stations[k] not in keep
+        ]
         for k in idle:
             chosen = np.delete(r.net.stations, k)
             trial = _Round(cover=np.setdiff1d(r.cover, r.net.stations[k]), added=r.added)

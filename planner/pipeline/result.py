@@ -81,7 +81,8 @@ class Plan:
 
     * ``stations`` — ``station_id, x, y, instrument_height_m, purpose`` ("cover": chosen by
       the optimiser; "link": tying the network together; "registration": added where the
-      registration error kept samples from the limits), ``samples_met``;
+      registration error kept samples from the limits; "hand": placed or locked by the
+      surveyor, :mod:`planner.pipeline.whatif`), ``samples_met``;
     * ``targets`` — :data:`TARGET_COLUMNS` (``station_ids`` a list);
     * ``coverage`` — one row per facade sample, the columns of
       :data:`planner.pipeline.export.COVERAGE_COLUMNS` (m_x, m_y, m_z the totals, scanner ⊕
@@ -110,6 +111,9 @@ class Plan:
     route: Any = None  # visiting order and field time (planner.pipeline.route.FieldRoute)
     messages: list[str] = field(default_factory=list)
     timings_s: dict[str, float] = field(default_factory=dict)
+    #: What the plan was made from, for what-if edits (planner.pipeline.whatif); not saved,
+    #: and dropped when a plan is sent between processes.
+    workbench: Any = field(default=None, repr=False, compare=False)
 
     @property
     def unmet(self) -> pd.DataFrame:
@@ -150,6 +154,7 @@ class Plan:
         purposes = self.stations["purpose"].value_counts()
         n_cover, n_link = int(purposes.get("cover", 0)), int(purposes.get("link", 0))
         n_reg = int(purposes.get("registration", 0))
+        n_hand = int(purposes.get("hand", 0))
         solver = f"({s['status']}; objective {s['objective']}"
         if s.get("gap") is not None:
             solver += f", lower bound {s['lower_bound']:g}, gap {100 * s['gap']:.1f} %"
@@ -171,11 +176,26 @@ class Plan:
                 else "no CRS given "
                 "(local metres; name it with --crs to get plan.kml and a georeferenced plan)"
             ),
-            f"Stations: {len(self.stations)} ({n_cover} to cover"
-            + (f", {n_link} to link" if n_link else "")
-            + (f", {n_reg} for the registration error" if n_reg else "")
-            + f"); the covering ones chosen by {s['method']} {solver} from "
-            f"{len(self.candidates)} candidates",
+            f"Stations: {len(self.stations)} ("
+            + ", ".join(
+                text
+                for n, text in (
+                    (n_hand, f"{n_hand} placed by hand"),
+                    (n_cover, f"{n_cover} to cover"),
+                    (n_link, f"{n_link} to link"),
+                    (n_reg, f"{n_reg} for the registration error"),
+                )
+                if n
+            )
+            + ("none" if self.stations.empty else "")
+            + (
+                f"); the covering ones chosen by {s['method']} {solver} from "
+                f"{len(self.candidates)} candidates"
+                if s["method"] != "hand placement"
+                else f"; the optimiser's lower bound {s['lower_bound']:g})"
+                if s.get("lower_bound") is not None
+                else ")"
+            ),
             f"Targets: {len(self.targets)}"
             + (" (" + ", ".join(f"{n} {t}" for t, n in types.items()) + ")" if len(types) else ""),
             "Samples meeting every requirement"
