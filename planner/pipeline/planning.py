@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -264,6 +264,11 @@ def choose_stations(
     # every candidate's estimated registration error, the network's backbone kept
     ev, sol = _choose(ctx, cand, say, deadline, timings, forced=forced)
     wb.evaluation = ev
+    best_effort, relaxed_by = _best_effort(ctx, cand, sol.chosen, ev, deadline, timings)
+    if len(best_effort):
+        sol.chosen = np.union1d(sol.chosen, best_effort)
+        forced = np.union1d(forced, best_effort)
+        say(0.8, f"best effort: {len(best_effort)} station(s) for what no position meets")
     r = _Round(cover=sol.chosen, net=_network(ctx, cand, seen, sol.chosen, timings))
     r.judged = _judge(ctx, cand, r)
     best, rounds, adds, resolved = r, 0, 0, False
@@ -306,8 +311,15 @@ def choose_stations(
             f"{int(ev.evaluated.sum())} of {len(fac.z)} samples were evaluated; the plan covers "
             "those. Raise --time-limit-s for the whole site."
         )
-    if len(forced):
-        messages.append(f"{len(forced)} station(s) locked by hand; the others chosen around them.")
+    n_locked = len(forced) - len(best_effort)
+    if n_locked:
+        messages.append(f"{n_locked} station(s) locked by hand; the others chosen around them.")
+    if len(best_effort):
+        messages.append(
+            f"Best effort: {len(best_effort)} station(s) added for the samples no position "
+            f"meets, meeting them within {relaxed_by:.2f} × the "
+            "limits (they stay unmet; see the best achievable values and what would meet them)."
+        )
     solver = {
         "method": sol.method,
         "status": sol.status,
@@ -326,7 +338,60 @@ def choose_stations(
             f"{len(r.net.stations)} with the registration error counted ({rounds} round(s) of "
             "adding stations and choosing again)."
         )
-    return assemble(wb, r, solver, messages, timings, t0, deadline, progress=say, hand=forced)
+    hand = np.setdiff1d(forced, best_effort)
+    return assemble(wb, r, solver, messages, timings, t0, deadline, progress=say, hand=hand)
+
+
+#: The samples no position meets are served, best effort, within this share of the smallest
+#: uniform relaxation of the limits under which every one of them could be met.
+BEST_EFFORT_SLACK = 1.02
+
+
+def _best_effort(
+    ctx: Context,
+    cand: np.ndarray,
+    chosen: np.ndarray,
+    ev: CandidateEvaluation,
+    deadline: float,
+    timings: dict[str, float],
+) -> tuple[np.ndarray, float]:
+    """Candidates (not among ``chosen``) for the samples no candidate meets, and the factor
+    they meet them within: the smallest uniform relaxation of the limits under which every
+    such sample seen could be met (the largest of their best achievable scores, value /
+    limit, times :data:`BEST_EFFORT_SLACK`), the fewest candidates (greedy) meeting them
+    under it — so that a requirement a little too strict gives the plan that comes closest,
+    not zero stations. The samples stay unmet."""
+    fac = ctx.facades
+    none = np.empty(0, dtype=np.int64), 1.0
+    n_ok = np.asarray(ev.ok.sum(axis=1)).ravel()
+    hopeless = np.flatnonzero(
+        ~fac.party_wall & (n_ok < ctx.stations_needed) & ev.evaluated & (ev.n_view > 0)
+    )
+    if not len(hopeless) or time.monotonic() > deadline:
+        return none
+    t = time.perf_counter()
+    diag = best_achievable(ctx, cand, hopeless, deadline)
+    good = diag["done"] & np.isfinite(diag["score"])
+    if not good.any():
+        return none
+    factor = float(diag["score"][good].max()) * BEST_EFFORT_SLACK
+    limits = {
+        c.key: ctx.limits[c.key] * factor if c.sense == "max" else ctx.limits[c.key] / factor
+        for c in CHECKS
+    }
+    relaxed = replace(ctx, limits=limits, stations_needed=np.ones_like(ctx.stations_needed))
+    only = np.zeros(len(fac.z), dtype=bool)
+    only[hopeless[good]] = True
+    ok = evaluate_candidates(relaxed, cand, deadline=deadline, only=only).ok
+    ok = sp.csr_matrix(ok[np.flatnonzero(only)])
+    served = np.asarray(ok[:, chosen].sum(axis=1)).ravel() > 0 if len(chosen) else False
+    demand = ((np.asarray(ok.sum(axis=1)).ravel() > 0) & ~served).astype(np.int64)
+    timings["best_effort"] = time.perf_counter() - t
+    if not demand.any():
+        return none
+    remaining = max(MIN_SOLVER_S, deadline - time.monotonic())
+    sol = solve_cover(ok, demand, remaining, ctx.settings.method)
+    return np.asarray(sol.chosen, dtype=np.int64), factor
 
 
 def _free_positions(wb: Workbench, xy: np.ndarray, what: str) -> np.ndarray:
@@ -699,9 +764,15 @@ def _reason(ctx: Context, sample: int, n_view: int, best: dict[str, float], n_me
             f"scanner's error alone ({best['score']:.2f} × the limits), none with the "
             "registration error of the network added"
         )
+    each = [
+        f"{c.label} {best[c.key]:.1f} {c.unit} (limit {float(ctx.limits[c.key][sample]):g})"
+        for c in CHECKS[:3]
+        if np.isfinite(ctx.limits[c.key][sample])
+    ]
     return (
-        f"no single station meets every requirement at once (closest: {best['score']:.2f} × "
-        "the limits)"
+        "no single station meets every requirement at once: each alone is achievable (best "
+        + ", ".join(each)
+        + f"), together at best {best['score']:.2f} × the limits"
     )
 
 
