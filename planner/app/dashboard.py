@@ -10,9 +10,13 @@ from __future__ import annotations
 
 import base64
 import html
+import io
 import os
 import tempfile
+import threading
+import time
 import traceback
+import zipfile
 from pathlib import Path
 
 import ipywidgets as w
@@ -22,6 +26,7 @@ import pandas as pd
 from IPython.display import display
 
 from planner.app.serve import UPLOAD_ROOT_ENV
+from planner.app.whatif_view import WhatIfMap
 from planner.errors import PlannerError
 from planner.pipeline.requirements import (
     FieldSpec,
@@ -52,16 +57,44 @@ def _download_link(name: str, data: bytes, mime: str) -> str:
     )
 
 
+def _output(obj) -> dict:
+    """One output of an Output widget: a figure as PNG, anything else as IPython shows it."""
+    if isinstance(obj, plt.Figure):
+        buf = io.BytesIO()
+        obj.savefig(buf, format="png", dpi=96)
+        plt.close(obj)
+        data = {"image/png": base64.b64encode(buf.getvalue()).decode("ascii"), "text/plain": ""}
+        return {"output_type": "display_data", "data": data, "metadata": {}}
+    from IPython.core.interactiveshell import InteractiveShell
+
+    data, metadata = InteractiveShell.instance().display_formatter.format(obj)
+    return {"output_type": "display_data", "data": data, "metadata": metadata}
+
+
 def _show(out: w.Output, *objs) -> None:
-    with out:
-        out.clear_output(wait=True)
-        for o in objs:
-            display(o)
-            if isinstance(o, plt.Figure):
-                plt.close(o)
+    """Replace what ``out`` shows (at once, from any thread: the plan runs in one)."""
+    out.outputs = tuple(_output(o) for o in objs)
 
 
-_STYLE = {"description_width": "14em"}
+_MIME = {
+    ".csv": "text/csv",
+    ".geojson": "application/geo+json",
+    ".txt": "text/plain",
+    ".dxf": "image/vnd.dxf",
+    ".kml": "application/vnd.google-earth.kml+xml",
+}
+
+
+def _zip(files: dict[str, bytes]) -> bytes:
+    """Every file of the plan in one zip (fixed dates: the same plan, the same bytes)."""
+    buf = io.BytesIO()
+    with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as z:
+        for name, data in files.items():
+            z.writestr(zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0)), data)
+    return buf.getvalue()
+
+
+_STYLE = {"description_width": "initial"}
 _FULL = w.Layout(width="98%")
 
 
@@ -203,8 +236,36 @@ class ZoneEditor:
         self.listing.value = f"<ul class='planner-zones' style='margin:0'>{items}</ul>"
 
 
+class _Cancelled(Exception):
+    """Raised from the progress callback when the user pressed Cancel."""
+
+
+#: Settings shown in "More settings", generated from the data classes' specs (one source of
+#: truth with the command line: label, unit, default, bounds). Those on the main panel and
+#: the limits of work are left out.
+_MAIN_FIELDS = {
+    "max_xy_mm",
+    "max_z_mm",
+    "max_gamma_deg",
+    "max_spacing_mm",
+    "stations_per_sample",
+    "grid_m",
+    "max_samples",
+    "max_pairs",
+}
+
+_CSS = """<style>
+.planner-stale { opacity: 0.45; }
+.planner-stale-banner { background:#fff3cd; border:1px solid #e0c36a; padding:4px 10px;
+  border-radius:4px; margin-bottom:6px }
+.widget-label, .widget-label-basic { overflow: visible !important; }
+</style>"""
+
+
 class StationPlanner:
-    """The station-planner dashboard: site, scanner, requirements, Plan, results, downloads."""
+    """The station-planner dashboard: site, scanner, requirements, Plan, results, what-if
+    edits, downloads. The plan on screen always matches the inputs shown: changing an input
+    marks it out of date, an error replaces it."""
 
     def __init__(self) -> None:
         rq, ps = field_specs(Requirements), field_specs(PlanSettings)
@@ -216,7 +277,20 @@ class StationPlanner:
             multiple=False,
             description="Footprint file",
         )
+        self.upload_name = w.HTML("<small>no file chosen</small>")
+        self.upload_name.add_class("planner-upload-name")
         self.height = _number(0.0, 0.0, 1000.0, 0.5, "Height where missing [m] (0: none)")
+        self.storey = _number(3.0, 0.5, 20.0, 0.1, "Storey height for levels [m]")
+        self.crs = w.Text(
+            value="",
+            placeholder="as in the file, e.g. EPSG:25832",
+            description="CRS of the coordinates",
+            style=_STYLE,
+            layout=_FULL,
+        )
+        self.make_valid = w.Checkbox(
+            value=False, description="repair invalid outlines (make valid)", indent=False
+        )
         self.buildings = w.Text(
             value="",
             placeholder="all (as in the file)",
@@ -232,6 +306,36 @@ class StationPlanner:
         self.max_spacing = _field_box(rq["max_spacing_mm"])
         self.per_sample = _field_box(rq["stations_per_sample"])
         self.grid = _field_box(ps["grid_m"])
+        self.more = {
+            name: _field_box(spec)
+            for specs in (rq, ps)
+            for name, spec in specs.items()
+            if name not in _MAIN_FIELDS
+        }
+        self.registration_error = w.Checkbox(
+            value=PlanSettings().registration_error,
+            description="count the registration error (scanner ⊕ registration)",
+            indent=False,
+        )
+        self.inventory = w.Textarea(
+            value="\n".join(f"{i.name}, {i.type}, {i.size_mm:g}" for i in DEFAULT_INVENTORY),
+            description="targets you own (name, type, size mm)",
+            style=_STYLE,
+            layout=w.Layout(width="98%", height="8em"),
+        )
+        more = w.Accordion(
+            children=[
+                w.VBox(
+                    [
+                        self.registration_error,
+                        *self.more.values(),
+                        self.inventory,
+                    ]
+                )
+            ]
+        )
+        more.set_title(0, "More settings (as on the command line)")
+        more.selected_index = None
         self.zone_editor = ZoneEditor()
         self.accuracy_class = w.Combobox(
             value="",
@@ -251,9 +355,12 @@ class StationPlanner:
         )
         self.accuracy_class.observe(lambda _c: self._show_class(), "value")
         self.plan_button = w.Button(description="Plan", button_style="primary")
+        self.cancel_button = w.Button(description="Cancel", icon="stop", disabled=True)
         self.progress = w.FloatProgress(value=0.0, min=0.0, max=1.0, description="", layout=_FULL)
         self.status = w.HTML("")
+        self.status.add_class("planner-status")
         self.error = w.HTML("")
+        self.stale = w.HTML("")
         self.summary = w.HTML("")
         self.quantity = w.ToggleButtons(
             options=[
@@ -271,6 +378,7 @@ class StationPlanner:
             w.Output() for _ in range(5)
         )
         self.field_out = w.Output()
+        self.whatif = WhatIfMap(self.evaluate_by_hand, self.reoptimise)
         self.booklet_button = w.Button(description="Make field booklet (PDF)")
         self.booklet_status = w.HTML("")
         self.downloads = w.HTML("")
@@ -279,6 +387,7 @@ class StationPlanner:
         self.tabs = w.Tab(
             children=[
                 self.map_out,
+                self.whatif.widget,
                 w.VBox([self.quantity, self.cov_out]),
                 self.fac_out,
                 self.reg_out,
@@ -296,6 +405,7 @@ class StationPlanner:
         )
         titles = [
             "Plan map",
+            "Edit stations",
             "Coverage",
             "Facades",
             "Registration",
@@ -305,12 +415,37 @@ class StationPlanner:
         ]
         for i, title in enumerate(titles):
             self.tabs.set_title(i, title)
+        self.inputs = [
+            self.site_source,
+            self.upload,
+            self.height,
+            self.storey,
+            self.crs,
+            self.make_valid,
+            self.buildings,
+            self.scanner,
+            self.max_x,
+            self.max_y,
+            self.max_z,
+            self.max_gamma,
+            self.max_spacing,
+            self.per_sample,
+            self.accuracy_class,
+            self.model,
+            self.grid,
+            self.registration_error,
+            self.inventory,
+            *self.more.values(),
+        ]
         controls = w.VBox(
             [
-                w.HTML("<h3>Site</h3>"),
+                w.HTML(_CSS + "<h3>Site</h3>"),
                 self.site_source,
-                self.upload,
+                w.HBox([self.upload, self.upload_name]),
                 self.height,
+                self.storey,
+                self.crs,
+                self.make_valid,
                 self.buildings,
                 w.HTML("<h3>Scanner</h3>"),
                 self.scanner,
@@ -325,32 +460,71 @@ class StationPlanner:
                 self.class_note,
                 self.model,
                 self.grid,
+                more,
                 self.zone_editor.widget,
-                self.plan_button,
+                w.HBox([self.plan_button, self.cancel_button]),
                 self.progress,
                 self.status,
                 self.error,
             ],
-            layout=w.Layout(width="32%", min_width="300px"),
+            layout=w.Layout(width="34%", min_width="340px"),
         )
-        results = w.VBox([self.summary, self.tabs], layout=w.Layout(width="66%"))
-        self.widget = w.HBox([controls, results])
+        self.results = w.VBox([self.summary, self.tabs], layout=w.Layout(width="64%"))
+        self.widget = w.HBox([controls, w.VBox([self.stale, self.results])])
         self.plan = None
+        self._cancel = threading.Event()
+        self._worker: threading.Thread | None = None
+        self.last_edit_s: float | None = None
         root = os.environ.get(UPLOAD_ROOT_ENV)  # the server's folder, removed when it stops
         self._tmp = tempfile.TemporaryDirectory(
             prefix="planner-upload-", dir=root if root and os.path.isdir(root) else None
         )
         # links: thin callbacks
-        self.plan_button.on_click(lambda _b: self.run())
+        self.plan_button.on_click(lambda _b: self.start())
+        self.cancel_button.on_click(lambda _b: self.cancel())
         self.upload.observe(lambda _c: self._uploaded(), "value")
         self.quantity.observe(lambda _c: self._show_coverage(), "value")
         self.report_button.on_click(lambda _b: self.make_report())
         self.booklet_button.on_click(lambda _b: self.make_booklet())
         self.site_source.observe(lambda _c: self._offer_facades(), "value")
         self.buildings.observe(lambda _c: self._offer_facades(), "value")
+        for widget in self.inputs:
+            widget.observe(lambda _c: self._mark_stale(), "value")
         self._offer_facades()
 
+    # -- honest state ----------------------------------------------------------------------------
+    def _mark_stale(self) -> None:
+        """The inputs changed since the plan on screen: say so and dim it (Plan makes it
+        current again)."""
+        if self.plan is None or self._worker is not None:
+            return
+        self.stale.value = (
+            "<div class='planner-stale-banner'><b>Out of date:</b> the inputs changed since "
+            "this plan was made. Press <b>Plan</b> to plan with them; the plan below is for "
+            "the previous inputs.</div>"
+        )
+        self.results.add_class("planner-stale")
+
+    def _clear_results(self) -> None:
+        """No plan on screen (after an error: the error replaces the old plan)."""
+        self.plan = None
+        self.stale.value = ""
+        self.results.remove_class("planner-stale")
+        self.summary.value = ""
+        for out in (self.map_out, self.cov_out, self.fac_out, self.unmet_out, self.reg_out):
+            _show(out)
+        _show(self.field_out)
+        self.downloads.value = "<p>No plan: nothing to download.</p>"
+        self.report_status.value = self.booklet_status.value = ""
+
     def _uploaded(self) -> None:
+        files = self.upload.value
+        if files:
+            f = files[0]
+            self.upload_name.value = (
+                f"<small class='planner-file'>{html.escape(f['name'])} "
+                f"({len(bytes(f['content'])) / 1024:.1f} kB)</small>"
+            )
         self.site_source.value = "Upload a file"
         self._offer_facades()
 
@@ -370,7 +544,14 @@ class StationPlanner:
         f = files[0]
         path = Path(self._tmp.name) / Path(f["name"]).name
         path.write_bytes(bytes(f["content"]))
-        return read_site(path, default_height_m=self.height.value or None, buildings=ids)
+        return read_site(
+            path,
+            default_height_m=self.height.value or None,
+            buildings=ids,
+            repair=self.make_valid.value,
+            crs=self.crs.value.strip() or None,
+            storey_height_m=self.storey.value,
+        )
 
     def _offer_facades(self) -> None:
         """The zone editor offers the facades of the site chosen (quietly nothing while the
@@ -384,12 +565,19 @@ class StationPlanner:
     def _inputs(self):
         from dataclasses import replace
 
+        from planner.targets import parse_inventory
+
         site = self._site()
         if self.zone_editor.zones:
             site = replace(site, zones=[*site.zones, *self.zone_editor.zones])
         cls = self.accuracy_class.value.strip() or None
+        more = {}
+        for name, box in self.more.items():
+            spec = {**field_specs(Requirements), **field_specs(PlanSettings)}[name]
+            more[name] = None if spec.optional and not box.value else box.value
         req, settings = requirements_and_settings(
             {
+                **more,
                 "accuracy_class": cls,
                 "max_xy_mm": None if cls else (self.max_x.value, self.max_y.value),
                 "max_z_mm": None if cls else self.max_z.value,
@@ -398,6 +586,8 @@ class StationPlanner:
                 "max_spacing_mm": self.max_spacing.value or None,
                 "stations_per_sample": int(self.per_sample.value),
                 "grid_m": self.grid.value,
+                "registration_error": self.registration_error.value,
+                "inventory": parse_inventory(self.inventory.value),
             }
         )
         return site, Scanner.from_name(self.scanner.value), req, settings
@@ -426,49 +616,174 @@ class StationPlanner:
         )
 
     def _progress(self, fraction: float, message: str) -> None:
+        """The pipeline's progress: the bar, the step and the time so far; Cancel takes
+        effect here (the next step the pipeline reports)."""
+        if self._cancel.is_set():
+            raise _Cancelled
         self.progress.value = fraction
-        self.status.value = f"<i>{html.escape(message)}</i>"
+        self._step = message
 
-    def run(self) -> None:
-        """Plan with the current inputs and show the result (errors as a readable message)."""
-        from planner.pipeline.planning import plan
+    def _tick(self, label: str, t0: float) -> None:
+        """Elapsed time and the current step, twice a second while the work runs."""
+        while self._worker is not None and self._worker.is_alive():
+            self.status.value = (
+                f"<i>{html.escape(label)}… {time.perf_counter() - t0:.0f} s — "
+                f"{html.escape(self._step)}</i>"
+            )
+            time.sleep(0.5)
 
+    def _begin(self) -> float:
+        self._cancel.clear()
+        self._step = "starting"
         self.error.value = ""
+        self.progress.value = 0.0
         self.plan_button.disabled = True
+        self.whatif.reopt.disabled = True
+        self.cancel_button.disabled = False
+        return time.perf_counter()
+
+    def _work(self, make, label: str, fresh: bool = True) -> None:
+        """Run ``make(progress) -> Plan`` and show the result, an error (which replaces the
+        plan on screen) or the cancellation (which leaves the previous plan as it was)."""
+        t0 = time.perf_counter()
         try:
-            site, sc, req, st = self._inputs()
-            self.plan = plan(site, sc, req, st, progress=self._progress)
-        except PlannerError as exc:
+            p = make(self._progress)
+        except _Cancelled:
+            self.status.value = (
+                f"<i>cancelled after {time.perf_counter() - t0:.1f} s; the plan on screen "
+                "is the previous one</i>"
+            )
+            return
+        except (PlannerError, ValueError) as exc:
+            self._clear_results()
             self.error.value = _error_html(str(exc))
             self.status.value = ""
             return
         except Exception as exc:  # never a dead widget: say what happened
+            self._clear_results()
             self.error.value = _error_html(f"unexpected {type(exc).__name__}: {exc}")
             self.status.value = ""
             traceback.print_exc()
             return
         finally:
             self.plan_button.disabled = False
-        self._show_results()
+            self.whatif.reopt.disabled = False
+            self.cancel_button.disabled = True
+        self.plan = p
+        self._show_results(fresh=fresh)
+        self.status.value = f"<i>{html.escape(label)}: done in {time.perf_counter() - t0:.1f} s</i>"
 
-    def _show_results(self) -> None:
+    def _planner(self):
+        """The work of Plan for the inputs on screen (read now, so that edits made while it
+        runs mark the result out of date)."""
+        from planner.pipeline.planning import plan
+
+        try:
+            site, sc, req, st = self._inputs()
+        except (PlannerError, ValueError) as exc:
+            error = exc
+
+            def fail(_progress):
+                raise error
+
+            return fail
+        return lambda progress: plan(site, sc, req, st, progress=progress)
+
+    def run(self) -> None:
+        """Plan with the current inputs and show the result, waiting for it (the notebook's
+        first plan; the Plan button works in the background: :meth:`start`)."""
+        self._begin()
+        self._work(self._planner(), "planned")
+
+    def start(self, make=None, label: str = "planning", fresh: bool = True) -> threading.Thread:
+        """Plan in the background (the kernel stays free for Cancel), the elapsed time and
+        the current step shown twice a second."""
+        if self._worker is not None and self._worker.is_alive():
+            return self._worker
+        make = make or self._planner()
+        t0 = self._begin()
+
+        def work():
+            try:
+                self._work(make, label, fresh)
+            finally:
+                self._worker = None
+
+        self._worker = threading.Thread(target=work, daemon=True, name="planner")
+        self._worker.start()
+        threading.Thread(target=self._tick, args=(label, t0), daemon=True).start()
+        return self._worker
+
+    def cancel(self) -> None:
+        """Stop the work at the next step it reports."""
+        self._cancel.set()
+        self.status.value = "<i>cancelling…</i>"
+
+    def evaluate_by_hand(self, xy) -> None:
+        """The plan with the stations at ``xy`` (the what-if map's edit), judged at once."""
+        from planner.pipeline.whatif import evaluate_stations
+
+        if self.plan is None:
+            raise PlannerError("make a plan first")
+        t0 = time.perf_counter()
+        p = evaluate_stations(self.plan, xy)
+        self.last_edit_s = time.perf_counter() - t0
+        self.plan = p
+        met, n = int(p.scanned["meets"].sum()), len(p.scanned)
+        self.whatif.show_plan(
+            p,
+            f"<b>{len(p.stations)} stations</b>: {met} of {n} samples meet the requirement "
+            f"(registration included) — judged again in "
+            f"<span class='planner-edit-s'>{self.last_edit_s:.2f}</span> s",
+        )
+        self._show_results(whatif=False, fresh=False)
+
+    def reoptimise(self, locked_xy) -> None:
+        """Keep the locked stations, choose the fewest others around them (background)."""
+        from planner.pipeline.whatif import reoptimise
+
+        base = self.plan
+        if base is None:
+            self.whatif.status.value = _error_html("make a plan first")
+            return
+        self.start(
+            lambda progress: reoptimise(base, locked_xy, progress), "re-optimising", fresh=False
+        )
+
+    def _show_results(self, whatif: bool = True, fresh: bool = True) -> None:
+        """Show the plan in every tab; ``fresh`` — made from the inputs on screen (clears
+        the out-of-date mark; an edit by hand or a re-optimisation keeps the plan's inputs)."""
         from planner.app.maps import plot_plan_map
+        from planner.pipeline.explain import explain_unmet, suggestions
+        from planner.pipeline.export import render
 
         p = self.plan
-        n_met = int(p.coverage.loc[~p.coverage["party_wall"], "meets"].sum())
-        n_all = int((~p.coverage["party_wall"]).sum())
+        if fresh:
+            self.stale.value = ""
+            self.results.remove_class("planner-stale")
+        n_met = int(p.scanned["meets"].sum())
+        n_all = len(p.scanned)
+        best_effort = any(m.startswith("Best effort") for m in p.messages)
         verdict = (
             "<span style='color:#1e8449'>every requirement met</span>"
             if p.meets_all
             else f"<span style='color:#922'>{len(p.unmet)} samples unmet</span>"
+            + (" — <b>best effort</b>: no position meets some samples" if best_effort else "")
         )
+        hints = ""
+        if not p.meets_all:
+            items = "".join(f"<li>{html.escape(s)}</li>" for s in suggestions(p))
+            hints = f"<p><b>What would meet it:</b></p><ul class='planner-hints'>{items}</ul>"
         self.summary.value = (
             f"<h3><span class='station-count'>{len(p.stations)} stations</span>, "
-            f"{len(p.targets)} targets — {verdict}</h3>"
-            f"<pre style='white-space:pre-wrap;font-size:85%'>{html.escape(p.summary())}</pre>"
+            f"{len(p.targets)} targets — {verdict}</h3>{hints}"
             f"<p>{n_met} of {n_all} samples meet every requirement.</p>"
+            f"<details><summary>Summary</summary><pre style='white-space:pre-wrap;"
+            f"font-size:85%'>{html.escape(p.summary())}</pre></details>"
         )
         _show(self.map_out, plot_plan_map(p))
+        if whatif:
+            self.whatif.show_plan(p, "")
         self._show_coverage()
         _show(self.fac_out, p.facade_table())
         network = [m for m in p.messages if m.startswith(("Registration", "Weakest link"))]
@@ -480,14 +795,17 @@ class StationPlanner:
         if p.unmet.empty:
             _show(self.unmet_out, w.HTML("<p>Every sample meets the requirements.</p>"))
         else:
-            g = p.unmet_areas()
             _show(
                 self.unmet_out,
+                w.HTML("<p><b>Which quantity fails, where, and the worst value there:</b></p>"),
+                explain_unmet(p).set_index("quantity"),
                 w.HTML(
-                    "<p>Samples that no station meets, with the reason and the best "
-                    "achievable value:</p>"
+                    "<p><b>What would meet it:</b></p><ul>"
+                    + "".join(f"<li>{html.escape(s)}</li>" for s in suggestions(p))
+                    + "</ul><p>Unmet samples by facade and reason (with the best achievable "
+                    "value):</p>"
                 ),
-                g.set_index("facade_id"),
+                p.unmet_areas().set_index("facade_id"),
             )
         if p.route is not None:
             _show(
@@ -495,24 +813,13 @@ class StationPlanner:
                 w.HTML(f"<p>{html.escape(p.route.summary())}</p>"),
                 p.route.table.set_index("order").round({"x": 3, "y": 3}),
             )
-        from planner.pipeline.export import render
-
-        mime = {
-            ".csv": "text/csv",
-            ".geojson": "application/geo+json",
-            ".txt": "text/plain",
-            ".dxf": "image/vnd.dxf",
-            ".kml": "application/vnd.google-earth.kml+xml",
-        }
-        links = [
-            _download_link(name, text.encode(), mime[Path(name).suffix])
-            for name, text in render(p).items()
-        ]
+        files = {name: text.encode() for name, text in render(p).items()}
+        links = [_download_link(n, data, _MIME[Path(n).suffix]) for n, data in files.items()]
+        links.append(_download_link("plan.zip", _zip(files), "application/zip"))
         self.downloads.value = "<p>" + "".join(links) + "</p>"
         self.report_status.value = ""
         self.booklet_status.value = ""
         self.progress.value = 1.0
-        self.status.value = f"<i>planned in {p.timings_s['total']:.1f} s</i>"
 
     def _show_coverage(self) -> None:
         if self.plan is not None:

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 
+import matplotlib.colors as mcolors
 import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
@@ -494,6 +495,25 @@ def _draw_zones(p: Plan, ax: Axes, off: dict, f) -> None:
             )
 
 
+#: Colours of an accuracy against its limit: greens at or below it (darker: better), reds
+#: above it (darker: worse) — pass or fail at a glance, the same for every quantity.
+PASS_FAIL = mcolors.ListedColormap(
+    np.vstack(
+        [
+            plt.get_cmap("Greens_r")(np.linspace(0.05, 0.75, 128)),
+            plt.get_cmap("Reds")(np.linspace(0.45, 1.0, 128)),
+        ]
+    ),
+    name="pass_fail",
+)
+
+
+def pass_fail_norm(limit_mm: float) -> mcolors.TwoSlopeNorm:
+    """0 → the limit on the green half, the limit → twice it on the red half (one range per
+    quantity: twice its limit)."""
+    return mcolors.TwoSlopeNorm(vmin=0.0, vcenter=limit_mm, vmax=2.0 * limit_mm)
+
+
 def plot_coverage(p: Plan, quantity: str = "m_x_mm", ax: Axes | None = None) -> Figure:
     """The facades unrolled side by side (distance along the facades vs height), each sample
     coloured by the predicted RMS from its assigned station; unmet samples ringed red,
@@ -518,13 +538,14 @@ def plot_coverage(p: Plan, quantity: str = "m_x_mm", ax: Axes | None = None) -> 
         ok["u"],
         ok["z"],
         c=ok[quantity],
-        cmap="RdYlGn_r",
-        vmin=0,
-        vmax=limit * 1.25,
+        cmap=PASS_FAIL,
+        norm=pass_fail_norm(limit),
         s=18,
         marker="s",
     )
-    fig.colorbar(sc, ax=ax, label=f"{QUANTITIES[quantity]} (limit {limit:g})", pad=0.01)
+    bar = fig.colorbar(sc, ax=ax, pad=0.01, extend="max")
+    bar.set_label(f"{QUANTITIES[quantity]}: green ≤ {limit:g} mm (the limit) < red", fontsize=8)
+    bar.set_ticks([0, limit / 2, limit, 1.5 * limit, 2 * limit])
     pw = cov[cov["party_wall"]]
     if len(pw):
         ax.scatter(pw["u"], pw["z"], c="0.75", s=18, marker="s", label="party wall")
@@ -539,17 +560,26 @@ def plot_coverage(p: Plan, quantity: str = "m_x_mm", ax: Axes | None = None) -> 
             lw=1.2,
             label=f"unmet ({len(un)})",
         )
+    span = float(offset[-1] + f["length_m"].iloc[-1]) if len(f) else 1.0
     for fid, x0 in off.items():
         ax.axvline(x0 - 1.0, color="0.85", lw=0.8)
+        # about 150 characters of 7 pt fit across the strips: a label longer than its strip
+        # is turned up
+        narrow = f.loc[fid, "length_m"] < len(fid) * span / 150
         ax.annotate(
-            fid.split("-")[-1],
-            (x0 + f.loc[fid, "length_m"] / 2, 0),
-            xytext=(0, -12),
+            fid,
+            (x0 + f.loc[fid, "length_m"] / 2, f.loc[fid, "height_m"]),
+            xytext=(0, 3),
             textcoords="offset points",
-            ha="center",
-            fontsize=6,
-            color="0.4",
+            ha="left" if narrow else "center",
+            va="bottom",
+            rotation=60 if narrow else 0,
+            rotation_mode="anchor",
+            fontsize=7,
+            color="0.25",
+            annotation_clip=False,
         )
+    ax.set_ylim(0, float(f["height_m"].max()) * 1.15 + 1.0)
     _draw_zones(p, ax, off, f)
     ax.set_xlabel("distance along the facades [m] (facades side by side)")
     ax.set_ylabel("height [m]")

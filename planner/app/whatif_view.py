@@ -1,0 +1,233 @@
+"""The what-if map of the dashboard: stations dragged, added, deleted and locked by hand on
+an interactive map, the plan judged again at once (:mod:`planner.pipeline.whatif`).
+
+The map is a ``bqplot`` figure: it is an ipywidget (served by Voilà like any other, no
+server-side rendering per drag), its scatter marks can be dragged in the browser with the
+new positions sent back as data coordinates, and a click on the background can add a point —
+the three things a by-hand edit needs. Matplotlib (``ipympl``) would redraw a PNG per
+change; ``ipyleaflet`` wants web-map tiles and lon/lat where a survey works in its own
+projected grid.
+"""
+
+from __future__ import annotations
+
+import html
+import time
+from collections.abc import Callable
+
+import bqplot as bq
+import ipywidgets as w
+import numpy as np
+import shapely
+
+from planner.app.maps import COLOURS
+from planner.errors import PlannerError
+from planner.pipeline.result import Plan
+
+__all__ = ["WhatIfMap"]
+
+#: What a click on the map does.
+MODES = [("Move (drag)", "move"), ("Add", "add"), ("Delete", "delete"), ("Lock / unlock", "lock")]
+
+
+def _rings(geoms) -> tuple[np.ndarray, np.ndarray]:
+    """Outer rings of the polygons as ``(n, m)`` x and y arrays (bqplot draws one line per
+    row), shorter rings padded with their closing vertex; one dummy point when none."""
+    rings = [
+        np.asarray(poly.exterior.coords)
+        for g in geoms
+        for poly in getattr(g, "geoms", [g])
+        if isinstance(poly, shapely.Polygon) and not poly.is_empty
+    ]
+    if not rings:
+        return np.full((1, 2), np.nan), np.full((1, 2), np.nan)
+    m = max(len(r) for r in rings)
+    padded = np.stack([np.vstack([r, np.repeat(r[-1:], m - len(r), axis=0)]) for r in rings])
+    return padded[:, :, 0], padded[:, :, 1]
+
+
+class WhatIfMap:
+    """Stations on the site, editable; facade samples green (met) or red (unmet).
+
+    ``evaluate(xy)`` and ``reoptimise(locked_xy)`` are given by the dashboard (they run the
+    pipeline); this class only holds the map, the edit modes and the lock marks."""
+
+    def __init__(
+        self,
+        evaluate: Callable[[np.ndarray], None],
+        reoptimise: Callable[[np.ndarray], None],
+    ) -> None:
+        self._evaluate, self._reoptimise = evaluate, reoptimise
+        self.sx, self.sy = bq.LinearScale(), bq.LinearScale()
+        scales = {"x": self.sx, "y": self.sy}
+        self.buildings = bq.Lines(
+            x=np.zeros((1, 2)),
+            y=np.zeros((1, 2)),
+            fill="inside",
+            colors=["#555"],
+            scales=scales,
+            stroke_width=1,
+        )
+        self.others = bq.Lines(
+            x=np.zeros((1, 2)), y=np.zeros((1, 2)), fill="inside", colors=["#bbb"], scales=scales
+        )
+        self.samples = bq.Scatter(
+            x=[],
+            y=[],
+            color=[],
+            scales={**scales, "color": bq.ColorScale(min=0, max=1, colors=["#1e8449", "#c0392b"])},
+            default_size=12,
+            stroke=None,
+        )
+        self.targets = bq.Scatter(
+            x=[], y=[], scales=scales, marker="diamond", colors=[COLOURS["target"]], default_size=30
+        )
+        self.stations = bq.Scatter(
+            x=[],
+            y=[],
+            names=[],
+            display_names=True,
+            scales=scales,
+            marker="triangle-up",
+            colors=[COLOURS["hand"]],
+            stroke="black",
+            default_size=140,
+            enable_move=True,
+        )
+        ax = [
+            bq.Axis(scale=self.sx, label="E [m]", tick_format=".0f", num_ticks=5),
+            bq.Axis(
+                scale=self.sy, label="N [m]", orientation="vertical", tick_format=".0f", num_ticks=5
+            ),
+        ]
+        self.figure = bq.Figure(
+            marks=[self.others, self.buildings, self.samples, self.targets, self.stations],
+            axes=ax,
+            padding_x=0,
+            padding_y=0,
+            fig_margin={"top": 10, "bottom": 45, "left": 80, "right": 10},
+            layout=w.Layout(width="100%", height="560px"),
+        )
+        self.figure.add_class("planner-whatif-map")
+        self.mode = w.ToggleButtons(options=MODES, value="move", description="Click to")
+        self.reopt = w.Button(
+            description="Re-optimise the rest around the locked stations", icon="refresh"
+        )
+        self.reopt.layout.width = "auto"
+        self.status = w.HTML("")
+        self.status.add_class("planner-whatif-status")
+        self.locked: list[bool] = []
+        self._xy = np.empty((0, 2))
+        self._quiet = False
+        self.mode.observe(lambda _c: self._set_mode(), "value")
+        self.stations.on_drag_end(lambda _m, e: self._dragged(e))
+        self.stations.on_element_click(lambda _m, e: self._clicked(e))
+        self.stations.observe(lambda _c: self._maybe_added(), names=["x"])
+        self.reopt.on_click(lambda _b: self._reoptimise(self._xy[np.asarray(self.locked, bool)]))
+        self.widget = w.VBox(
+            [
+                w.HTML(
+                    "<small>Drag a station to move it; <b>Add</b> puts one where you click, "
+                    "<b>Delete</b> removes the one clicked, <b>Lock</b> keeps it when the rest "
+                    "is optimised again. The plan (coverage, accuracy with the registration "
+                    "error, targets) is judged again after every edit. Green samples meet the "
+                    "requirement, red ones do not.</small>"
+                ),
+                w.HBox([self.mode, self.reopt]),
+                self.status,
+                self.figure,
+            ]
+        )
+
+    # -- showing a plan ------------------------------------------------------------------------
+    def show_plan(self, p: Plan, message: str = "") -> None:
+        """Draw ``p``: site, samples (met / unmet), targets, stations (locks kept by position)."""
+        old = {tuple(np.round(xy, 3)): lk for xy, lk in zip(self._xy, self.locked, strict=True)}
+        site = p.site
+        xs, ys = _rings(b.footprint for b in site.planned)
+        self.buildings.x, self.buildings.y = xs, ys
+        others = [b.footprint for b in site.buildings if not b.planned]
+        others += [o.geometry for o in site.obstacles]
+        xs, ys = _rings(others)
+        self.others.x, self.others.y = xs, ys
+        cov = p.scanned
+        self.samples.x, self.samples.y = cov["x"].to_numpy(), cov["y"].to_numpy()
+        self.samples.color = (~cov["meets"].to_numpy()).astype(float)
+        self.targets.x, self.targets.y = p.targets["x"].to_numpy(), p.targets["y"].to_numpy()
+        xy = p.stations[["x", "y"]].to_numpy(dtype=float)
+        self._xy = xy
+        self.locked = [old.get(tuple(np.round(q, 3)), False) for q in xy]
+        self._quiet = True
+        with self.stations.hold_sync():
+            self.stations.x, self.stations.y = xy[:, 0], xy[:, 1]
+            self.stations.names = self._names(p.stations["station_id"])
+        self._quiet = False
+        self._fit_extent(p)
+        if message:
+            self.status.value = message
+
+    def _names(self, ids) -> list[str]:
+        return [f"{s} 🔒" if lk else str(s) for s, lk in zip(ids, self.locked, strict=True)]
+
+    def _fit_extent(self, p: Plan) -> None:
+        pts = [p.scanned[["x", "y"]].to_numpy(), self._xy]
+        allxy = np.vstack([q for q in pts if len(q)])
+        lo, hi = allxy.min(axis=0), allxy.max(axis=0)
+        centre, half = (lo + hi) / 2, max(float((hi - lo).max()) / 2 + 10.0, 20.0)
+        # a square extent on a figure kept square: one metre is as long across as up
+        self.sx.min, self.sx.max = float(centre[0] - half), float(centre[0] + half)
+        self.sy.min, self.sy.max = float(centre[1] - half), float(centre[1] + half)
+        self.figure.min_aspect_ratio = self.figure.max_aspect_ratio = 1.0
+
+    # -- edits -----------------------------------------------------------------------------------
+    def _set_mode(self) -> None:
+        mode = self.mode.value
+        self.stations.enable_move = mode == "move"
+        self.stations.interactions = {"click": "add"} if mode == "add" else {}
+
+    def _current(self) -> np.ndarray:
+        return np.column_stack([np.asarray(self.stations.x), np.asarray(self.stations.y)])
+
+    def _dragged(self, _event) -> None:
+        self._edit(self._current(), "moved")
+
+    def _maybe_added(self) -> None:
+        if self._quiet or self.mode.value != "add":
+            return
+        xy = self._current()
+        if len(xy) > len(self._xy):
+            self.locked += [False] * (len(xy) - len(self._xy))
+            self._edit(xy, "added")
+
+    def _clicked(self, event) -> None:
+        k = int(event.get("data", {}).get("index", -1))
+        if not 0 <= k < len(self._xy):
+            return
+        if self.mode.value == "delete":
+            keep = np.arange(len(self._xy)) != k
+            self.locked = [lk for lk, kp in zip(self.locked, keep, strict=True) if kp]
+            self._edit(self._xy[keep], "deleted")
+        elif self.mode.value == "lock":
+            self.locked[k] = not self.locked[k]
+            ids = [n.removesuffix(" 🔒") for n in self.stations.names]
+            self.stations.names = self._names(ids)
+            n = sum(self.locked)
+            self.status.value = f"{n} station(s) locked: re-optimise to keep them and plan the rest"
+
+    def _edit(self, xy: np.ndarray, what: str) -> None:
+        before, locks = self._xy, list(self.locked)
+        self._xy = xy  # the locks are aligned with the edited positions
+        t = time.perf_counter()
+        try:
+            self._evaluate(xy)
+        except PlannerError as exc:
+            self._xy, self.locked = before, locks[: len(before)]
+            self.status.value = (
+                f"<span class='planner-error' style='color:#922'>Not {what}: "
+                f"{html.escape(str(exc))}</span>"
+            )
+            self._quiet = True
+            self.stations.x, self.stations.y = self._xy[:, 0], self._xy[:, 1]
+            self._quiet = False
+            return
+        self.last_edit_s = time.perf_counter() - t
