@@ -185,7 +185,9 @@ def test_infeasible_tolerance_does_not_crash_and_says_what_is_achievable():
     )
     assert not p.meets_all
     assert len(p.unmet) == len(p.coverage)
-    assert len(p.stations) == 0
+    # best effort, not zero stations: the plan that comes closest, said as such
+    assert len(p.stations) > 0
+    assert any(m.startswith("Best effort:") for m in p.messages)
     # best achievable m_y with m_S = 4 mm: 4·cos 75° = 1.04 mm at the grazing limit
     assert p.unmet["reason"].str.contains(r"best achievable m_y 1\.0 mm > 0\.5 mm").all()
     assert p.solver["status"] == "nothing to cover"

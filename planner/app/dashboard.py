@@ -130,9 +130,10 @@ def _field_box(spec: FieldSpec, label: str | None = None) -> w.Widget:
 def _scanner_dropdown() -> w.Dropdown:
     names = list(catalogue())
     return w.Dropdown(
-        options=[(catalogue()[n].label + f" ({n})", n) for n in names],
+        options=[(catalogue()[n].label, n) for n in names],
         value=DEFAULT_SCANNER,
-        description="Scanner",
+        description="",
+        tooltip="the scanner profile (its catalogue name is the --scanner of the command line)",
         layout=w.Layout(width="98%"),
         style={"description_width": "initial"},
     )
@@ -259,6 +260,8 @@ _CSS = """<style>
 .planner-stale-banner { background:#fff3cd; border:1px solid #e0c36a; padding:4px 10px;
   border-radius:4px; margin-bottom:6px }
 .widget-label, .widget-label-basic { overflow: visible !important; }
+.lm-TabBar-content { flex-wrap: wrap; }
+.lm-TabBar-tab { min-width: fit-content !important; flex: 0 0 auto !important; }
 </style>"""
 
 
@@ -473,6 +476,7 @@ class StationPlanner:
         self.widget = w.HBox([controls, w.VBox([self.stale, self.results])])
         self.plan = None
         self._cancel = threading.Event()
+        self._changed = False
         self._worker: threading.Thread | None = None
         self.last_edit_s: float | None = None
         root = os.environ.get(UPLOAD_ROOT_ENV)  # the server's folder, removed when it stops
@@ -496,8 +500,14 @@ class StationPlanner:
     def _mark_stale(self) -> None:
         """The inputs changed since the plan on screen: say so and dim it (Plan makes it
         current again)."""
-        if self.plan is None or self._worker is not None:
+        if self._worker is not None:  # the plan being made read the inputs before this change
+            self._changed = True
             return
+        if self.plan is None:
+            return
+        self._show_stale()
+
+    def _show_stale(self) -> None:
         self.stale.value = (
             "<div class='planner-stale-banner'><b>Out of date:</b> the inputs changed since "
             "this plan was made. Press <b>Plan</b> to plan with them; the plan below is for "
@@ -634,6 +644,7 @@ class StationPlanner:
 
     def _begin(self) -> float:
         self._cancel.clear()
+        self._changed = False
         self._step = "starting"
         self.error.value = ""
         self.progress.value = 0.0
@@ -665,12 +676,10 @@ class StationPlanner:
             self.status.value = ""
             traceback.print_exc()
             return
-        finally:
-            self.plan_button.disabled = False
-            self.whatif.reopt.disabled = False
-            self.cancel_button.disabled = True
         self.plan = p
         self._show_results(fresh=fresh)
+        if self._changed:
+            self._show_stale()
         self.status.value = f"<i>{html.escape(label)}: done in {time.perf_counter() - t0:.1f} s</i>"
 
     def _planner(self):
@@ -693,7 +702,15 @@ class StationPlanner:
         """Plan with the current inputs and show the result, waiting for it (the notebook's
         first plan; the Plan button works in the background: :meth:`start`)."""
         self._begin()
-        self._work(self._planner(), "planned")
+        try:
+            self._work(self._planner(), "planned")
+        finally:
+            self._end()
+
+    def _end(self) -> None:
+        self.plan_button.disabled = False
+        self.whatif.reopt.disabled = False
+        self.cancel_button.disabled = True
 
     def start(self, make=None, label: str = "planning", fresh: bool = True) -> threading.Thread:
         """Plan in the background (the kernel stays free for Cancel), the elapsed time and
@@ -708,6 +725,7 @@ class StationPlanner:
                 self._work(make, label, fresh)
             finally:
                 self._worker = None
+                self._end()
 
         self._worker = threading.Thread(target=work, daemon=True, name="planner")
         self._worker.start()

@@ -78,9 +78,16 @@ class WhatIfMap:
             scales={**scales, "color": bq.ColorScale(min=0, max=1, colors=["#1e8449", "#c0392b"])},
             default_size=12,
             stroke=None,
+            display_names=False,
         )
         self.targets = bq.Scatter(
-            x=[], y=[], scales=scales, marker="diamond", colors=[COLOURS["target"]], default_size=30
+            x=[],
+            y=[],
+            scales=scales,
+            marker="diamond",
+            colors=[COLOURS["target"]],
+            default_size=30,
+            display_names=False,
         )
         self.stations = bq.Scatter(
             x=[],
@@ -110,9 +117,7 @@ class WhatIfMap:
         )
         self.figure.add_class("planner-whatif-map")
         self.mode = w.ToggleButtons(options=MODES, value="move", description="Click to")
-        self.reopt = w.Button(
-            description="Re-optimise the rest around the locked stations", icon="refresh"
-        )
+        self.reopt = w.Button(description="Re-optimise around the locked", icon="refresh")
         self.reopt.layout.width = "auto"
         self.status = w.HTML("")
         self.status.add_class("planner-whatif-status")
