@@ -317,7 +317,7 @@ class StationPlanner:
         }
         self.registration_error = w.Checkbox(
             value=PlanSettings().registration_error,
-            description="count the registration error (scanner ⊕ registration)",
+            description="count the registration error",
             indent=False,
         )
         self.inventory = w.Textarea(
@@ -472,8 +472,10 @@ class StationPlanner:
             ],
             layout=w.Layout(width="34%", min_width="340px"),
         )
-        self.results = w.VBox([self.summary, self.tabs], layout=w.Layout(width="64%"))
-        self.widget = w.HBox([controls, w.VBox([self.stale, self.results])])
+        self.results = w.VBox([self.summary, self.tabs], layout=w.Layout(width="100%"))
+        self.widget = w.HBox(
+            [controls, w.VBox([self.stale, self.results], layout=w.Layout(width="64%"))]
+        )
         self.plan = None
         self._cancel = threading.Event()
         self._changed = False

@@ -104,7 +104,12 @@ class WhatIfMap:
         ax = [
             bq.Axis(scale=self.sx, label="E [m]", tick_format=".0f", num_ticks=5),
             bq.Axis(
-                scale=self.sy, label="N [m]", orientation="vertical", tick_format=".0f", num_ticks=5
+                scale=self.sy,
+                label="N [m]",
+                orientation="vertical",
+                tick_format=".0f",
+                num_ticks=5,
+                label_offset="65px",
             ),
         ]
         self.figure = bq.Figure(
