@@ -10,7 +10,6 @@ summary and unmet samples with the reason. The result type is
 
 from __future__ import annotations
 
-import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
@@ -153,6 +152,7 @@ class Workbench:
     messages: list[str]
     setup_s: float
     evaluation: CandidateEvaluation | None = None  # the last full evaluation of the grid
+    diagnosis: Diagnosis | None = None  # what no candidate of that evaluation meets, and why
 
     @property
     def pool(self) -> np.ndarray:
@@ -264,7 +264,8 @@ def choose_stations(
     # every candidate's estimated registration error, the network's backbone kept
     ev, sol = _choose(ctx, cand, say, deadline, timings, forced=forced)
     wb.evaluation = ev
-    best_effort, relaxed_by = _best_effort(ctx, cand, sol.chosen, ev, deadline, timings)
+    wb.diagnosis = _diagnose(ctx, cand, ev, deadline, timings)
+    best_effort, relaxed_by = _best_effort(ctx, cand, sol.chosen, wb.diagnosis, deadline)
     if len(best_effort):
         sol.chosen = np.union1d(sol.chosen, best_effort)
         forced = np.union1d(forced, best_effort)
@@ -339,7 +340,7 @@ def choose_stations(
             "adding stations and choosing again)."
         )
     hand = np.setdiff1d(forced, best_effort)
-    return assemble(wb, r, solver, messages, timings, t0, deadline, progress=say, hand=hand)
+    return assemble(wb, r, solver, messages, timings, t0, progress=say, hand=hand)
 
 
 #: The samples no position meets are served, best effort, within this share of the smallest
@@ -347,13 +348,46 @@ def choose_stations(
 BEST_EFFORT_SLACK = 1.02
 
 
+@dataclass
+class Diagnosis:
+    """The best achievable value of every check at the samples no candidate meets
+    (:func:`~planner.pipeline.evaluate.best_achievable`), computed once per evaluation: the
+    best-effort stations and the reasons of the plan and of every edit by hand read it."""
+
+    samples: np.ndarray  # (M,) sorted sample indices
+    best: dict[str, np.ndarray]  # per check key, "score" and "done": (M,) each
+    n_view: np.ndarray  # (M,) candidates that see each
+
+    def at(self, sample: int) -> tuple[int, dict[str, float]] | None:
+        """(candidates seeing it, best values) of ``sample``; None where not diagnosed."""
+        j = int(np.searchsorted(self.samples, sample))
+        if j == len(self.samples) or self.samples[j] != sample or not self.best["done"][j]:
+            return None
+        return int(self.n_view[j]), {key: float(v[j]) for key, v in self.best.items()}
+
+
+def _diagnose(
+    ctx: Context,
+    cand: np.ndarray,
+    ev: CandidateEvaluation,
+    deadline: float,
+    timings: dict[str, float],
+) -> Diagnosis:
+    """Diagnose the demanded, evaluated samples fewer candidates meet than they need."""
+    t = time.perf_counter()
+    n_ok = np.asarray(ev.ok.sum(axis=1)).ravel()
+    hopeless = np.flatnonzero(~ctx.facades.party_wall & (n_ok < ctx.stations_needed) & ev.evaluated)
+    best = best_achievable(ctx, cand, hopeless, deadline) if len(hopeless) else {"done": []}
+    timings["diagnosis"] = time.perf_counter() - t
+    return Diagnosis(hopeless, best, ev.n_view[hopeless])
+
+
 def _best_effort(
     ctx: Context,
     cand: np.ndarray,
     chosen: np.ndarray,
-    ev: CandidateEvaluation,
+    diagnosis: Diagnosis,
     deadline: float,
-    timings: dict[str, float],
 ) -> tuple[np.ndarray, float]:
     """Candidates (not among ``chosen``) for the samples no candidate meets, and the factor
     they meet them within: the smallest uniform relaxation of the limits under which every
@@ -361,32 +395,25 @@ def _best_effort(
     limit, times :data:`BEST_EFFORT_SLACK`), the fewest candidates (greedy) meeting them
     under it — so that a requirement a little too strict gives the plan that comes closest,
     not zero stations. The samples stay unmet."""
-    fac = ctx.facades
     none = np.empty(0, dtype=np.int64), 1.0
-    n_ok = np.asarray(ev.ok.sum(axis=1)).ravel()
-    hopeless = np.flatnonzero(
-        ~fac.party_wall & (n_ok < ctx.stations_needed) & ev.evaluated & (ev.n_view > 0)
-    )
-    if not len(hopeless) or time.monotonic() > deadline:
+    if not len(diagnosis.samples) or time.monotonic() > deadline:
         return none
-    t = time.perf_counter()
-    diag = best_achievable(ctx, cand, hopeless, deadline)
-    good = diag["done"] & np.isfinite(diag["score"])
+    best = diagnosis.best
+    good = best["done"] & np.isfinite(best["score"]) & (diagnosis.n_view > 0)
     if not good.any():
         return none
-    factor = float(diag["score"][good].max()) * BEST_EFFORT_SLACK
+    factor = float(best["score"][good].max()) * BEST_EFFORT_SLACK
     limits = {
         c.key: ctx.limits[c.key] * factor if c.sense == "max" else ctx.limits[c.key] / factor
         for c in CHECKS
     }
     relaxed = replace(ctx, limits=limits, stations_needed=np.ones_like(ctx.stations_needed))
-    only = np.zeros(len(fac.z), dtype=bool)
-    only[hopeless[good]] = True
+    only = np.zeros(len(ctx.facades.z), dtype=bool)
+    only[diagnosis.samples[good]] = True
     ok = evaluate_candidates(relaxed, cand, deadline=deadline, only=only).ok
     ok = sp.csr_matrix(ok[np.flatnonzero(only)])
     served = np.asarray(ok[:, chosen].sum(axis=1)).ravel() > 0 if len(chosen) else False
     demand = ((np.asarray(ok.sum(axis=1)).ravel() > 0) & ~served).astype(np.int64)
-    timings["best_effort"] = time.perf_counter() - t
     if not demand.any():
         return none
     remaining = max(MIN_SOLVER_S, deadline - time.monotonic())
@@ -401,8 +428,9 @@ def _free_positions(wb: Workbench, xy: np.ndarray, what: str) -> np.ndarray:
     if not np.isfinite(xy).all():
         raise InputError(f"a {what} has no coordinates (x, y must be numbers)")
     blocked = blocked_ground(wb.site, wb.settings.clearance_m)
-    bad = shapely.contains_xy(blocked, xy[:, 0], xy[:, 1])
-    for k in np.flatnonzero(bad):
+    bad = np.flatnonzero(shapely.contains_xy(blocked, xy[:, 0], xy[:, 1]))
+    if len(bad):
+        k = bad[0]
         raise InputError(
             f"the {what} at E {xy[k, 0]:.2f}, N {xy[k, 1]:.2f} stands inside a building, "
             f"obstacle or no-go area (or within {wb.settings.clearance_m:g} m of one); move it "
@@ -418,7 +446,6 @@ def assemble(
     messages: list[str],
     timings: dict[str, float],
     t0: float,
-    deadline: float = math.inf,
     *,
     progress: Progress | None = None,
     hand: np.ndarray | None = None,
@@ -435,8 +462,7 @@ def assemble(
     ids = [f"S{i + 1:02d}" for i in range(len(station_idx))]
     family = _class_family(wb.req, wb.zones)
     grid = cand[: wb.n_grid]
-    zone_ids = wb.zone_ids
-    coverage = _coverage(ctx, ev, assignment, ids, grid, deadline, net, zone_ids, family)
+    coverage = _coverage(ctx, ev, wb.diagnosis, assignment, ids, net, wb.zone_ids, family)
     purpose = np.select(
         [
             np.isin(station_idx, hand if hand is not None else []),
@@ -779,10 +805,9 @@ def _reason(ctx: Context, sample: int, n_view: int, best: dict[str, float], n_me
 def _coverage(
     ctx: Context,
     ev: CandidateEvaluation,
+    diagnosis: Diagnosis,
     assignment: Assignment,
     ids: list[str],
-    cand_xy: np.ndarray,
-    deadline: float = math.inf,
     net: Network | None = None,
     zone_ids: np.ndarray | None = None,
     class_family: str | None = None,
@@ -807,15 +832,13 @@ def _coverage(
         untied[has] = ~net.error.tied[assignment.station[has]]
     for i in np.flatnonzero(candidates_meet):
         reason[i] = _short_reason(ctx, i, picked, station[i], untied[i], n_meeting[i], k_req[i])
-    hopeless = np.flatnonzero(~meets & demanded & (n_ok_cand < k_req) & ev.evaluated)
-    if len(hopeless):
-        diag = best_achievable(ctx, cand_xy, hopeless, deadline)
-        for j, i in enumerate(hopeless):
-            if not diag["done"][j]:
-                reason[i] = "no station meets it (not diagnosed further: the time limit ran out)"
-                continue
-            best = {key: float(v[j]) for key, v in diag.items()}
-            reason[i] = _reason(ctx, int(i), int(ev.n_view[i]), best, int(n_ok_cand[i]))
+    for i in np.flatnonzero(~meets & demanded & (n_ok_cand < k_req) & ev.evaluated):
+        found = diagnosis.at(int(i))
+        if found is None:
+            reason[i] = "no station meets it (not diagnosed further: the time limit ran out)"
+            continue
+        n_view, best = found
+        reason[i] = _reason(ctx, int(i), n_view, best, int(n_ok_cand[i]))
     reason[~meets & demanded & ~ev.evaluated] = (
         f"not evaluated: the time limit of {ctx.settings.time_limit_s:g} s ran out"
     )

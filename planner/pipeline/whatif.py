@@ -51,8 +51,6 @@ def evaluate_stations(p: Plan, xy: np.ndarray) -> Plan:
     t0 = time.perf_counter()
     wb = _workbench(p)
     xy = _free_positions(wb, xy, "station")
-    if wb.evaluation is None:  # pragma: no cover - a workbench is kept only after a plan
-        raise InputError("plan the site first")
     idx = wb.add_positions(xy)
     timings: dict[str, float] = {"setup": 0.0}
     r = _Round(cover=idx)
