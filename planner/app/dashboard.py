@@ -36,6 +36,7 @@ from planner.pipeline.requirements import (
     requirements_and_settings,
 )
 from planner.scanner import DEFAULT_SCANNER, Scanner, catalogue
+from planner.siteio import DEFAULT_STOREY_HEIGHT_M
 from planner.tables import SOSSA_DISTANCES_M, height_table, planimetric_table
 from planner.targets import DEFAULT_INVENTORY, SOSSA_STEP_MM_AT_10M
 
@@ -125,6 +126,22 @@ def _field_box(spec: FieldSpec, label: str | None = None) -> w.Widget:
             value=value, min=int(lo), max=int(hi), description=text, style=_STYLE, layout=_FULL
         )
     return _number(float(value), lo, hi, spec.step, text)
+
+
+def _inventory_box(description: str, style: dict, layout: w.Layout) -> w.Textarea:
+    """The target inventory as text, one item a line (name, type, size mm), starting from
+    the default inventory (read by :func:`planner.targets.parse_inventory`)."""
+    return w.Textarea(
+        value="\n".join(f"{i.name}, {i.type}, {i.size_mm:g}" for i in DEFAULT_INVENTORY),
+        description=description,
+        style=style,
+        layout=layout,
+    )
+
+
+def _field_value(spec: FieldSpec, box: w.Widget):
+    """A box's value for the data class: an optional field's 0 means "not given" (None)."""
+    return None if spec.optional and not box.value else box.value
 
 
 def _scanner_dropdown() -> w.Dropdown:
@@ -283,7 +300,9 @@ class StationPlanner:
         self.upload_name = w.HTML("<small>no file chosen</small>")
         self.upload_name.add_class("planner-upload-name")
         self.height = _number(0.0, 0.0, 1000.0, 0.5, "Height where missing [m] (0: none)")
-        self.storey = _number(3.0, 0.5, 20.0, 0.1, "Storey height for levels [m]")
+        self.storey = _number(
+            DEFAULT_STOREY_HEIGHT_M, 0.5, 20.0, 0.1, "Storey height for levels [m]"
+        )
         self.crs = w.Text(
             value="",
             placeholder="as in the file, e.g. EPSG:25832",
@@ -309,22 +328,17 @@ class StationPlanner:
         self.max_spacing = _field_box(rq["max_spacing_mm"])
         self.per_sample = _field_box(rq["stations_per_sample"])
         self.grid = _field_box(ps["grid_m"])
+        self._specs = {**rq, **ps}
         self.more = {
-            name: _field_box(spec)
-            for specs in (rq, ps)
-            for name, spec in specs.items()
-            if name not in _MAIN_FIELDS
+            name: _field_box(spec) for name, spec in self._specs.items() if name not in _MAIN_FIELDS
         }
         self.registration_error = w.Checkbox(
             value=PlanSettings().registration_error,
             description="count the registration error",
             indent=False,
         )
-        self.inventory = w.Textarea(
-            value="\n".join(f"{i.name}, {i.type}, {i.size_mm:g}" for i in DEFAULT_INVENTORY),
-            description="targets you own (name, type, size mm)",
-            style=_STYLE,
-            layout=w.Layout(width="98%", height="8em"),
+        self.inventory = _inventory_box(
+            "targets you own (name, type, size mm)", _STYLE, w.Layout(width="98%", height="8em")
         )
         more = w.Accordion(
             children=[
@@ -583,10 +597,7 @@ class StationPlanner:
         if self.zone_editor.zones:
             site = replace(site, zones=[*site.zones, *self.zone_editor.zones])
         cls = self.accuracy_class.value.strip() or None
-        more = {}
-        for name, box in self.more.items():
-            spec = {**field_specs(Requirements), **field_specs(PlanSettings)}[name]
-            more[name] = None if spec.optional and not box.value else box.value
+        more = {name: _field_value(self._specs[name], box) for name, box in self.more.items()}
         req, settings = requirements_and_settings(
             {
                 **more,
@@ -595,7 +606,7 @@ class StationPlanner:
                 "max_z_mm": None if cls else self.max_z.value,
                 "model": self.model.value,
                 "max_gamma_deg": self.max_gamma.value,
-                "max_spacing_mm": self.max_spacing.value or None,
+                "max_spacing_mm": _field_value(self._specs["max_spacing_mm"], self.max_spacing),
                 "stations_per_sample": int(self.per_sample.value),
                 "grid_m": self.grid.value,
                 "registration_error": self.registration_error.value,
@@ -794,6 +805,7 @@ class StationPlanner:
         if not p.meets_all:
             items = "".join(f"<li>{html.escape(s)}</li>" for s in suggestions(p))
             hints = f"<p><b>What would meet it:</b></p><ul class='planner-hints'>{items}</ul>"
+
         self.summary.value = (
             f"<h3><span class='station-count'>{len(p.stations)} stations</span>, "
             f"{len(p.targets)} targets — {verdict}</h3>{hints}"
@@ -820,9 +832,7 @@ class StationPlanner:
                 w.HTML("<p><b>Which quantity fails, where, and the worst value there:</b></p>"),
                 explain_unmet(p).set_index("quantity"),
                 w.HTML(
-                    "<p><b>What would meet it:</b></p><ul>"
-                    + "".join(f"<li>{html.escape(s)}</li>" for s in suggestions(p))
-                    + "</ul><p>Unmet samples by facade and reason (with the best achievable "
+                    hints + "<p>Unmet samples by facade and reason (with the best achievable "
                     "value):</p>"
                 ),
                 p.unmet_areas().set_index("facade_id"),
@@ -1091,11 +1101,8 @@ class TargetExplorer:
             description="up to [m]",
             style=style,
         )
-        self.inventory = w.Textarea(
-            value="\n".join(f"{i.name}, {i.type}, {i.size_mm:g}" for i in DEFAULT_INVENTORY),
-            description="inventory (name, type, size mm)",
-            style=style,
-            layout=w.Layout(width="60%", height="7em"),
+        self.inventory = _inventory_box(
+            "inventory (name, type, size mm)", style, w.Layout(width="60%", height="7em")
         )
         self.error = w.HTML()
         self.out = w.Output()

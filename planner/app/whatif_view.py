@@ -12,7 +12,6 @@ projected grid.
 from __future__ import annotations
 
 import html
-import time
 from collections.abc import Callable
 
 import bqplot as bq
@@ -227,7 +226,6 @@ class WhatIfMap:
     def _edit(self, xy: np.ndarray, what: str) -> None:
         before, locks = self._xy, list(self.locked)
         self._xy = xy  # the locks are aligned with the edited positions
-        t = time.perf_counter()
         try:
             self._evaluate(xy)
         except PlannerError as exc:
@@ -240,4 +238,3 @@ class WhatIfMap:
             self.stations.x, self.stations.y = self._xy[:, 0], self._xy[:, 1]
             self._quiet = False
             return
-        self.last_edit_s = time.perf_counter() - t

@@ -10,6 +10,7 @@ import numpy as np
 import pandas as pd
 
 from planner.pipeline.planning import reach_m
+from planner.pipeline.requirements import CHECKS
 from planner.pipeline.result import Plan
 from planner.scanner import Scanner, catalogue
 
@@ -19,29 +20,22 @@ __all__ = ["EXPLAIN_COLUMNS", "explain_unmet", "relaxation_text", "suggestions"]
 #: the height range, and the worst value the plan's stations give there (what the plan meets).
 EXPLAIN_COLUMNS = ["quantity", "limit", "unit", "samples", "facades", "z_from", "z_to", "worst"]
 
-#: The quantities explained (coverage column, label, requirement attribute, unit).
-_QUANTITIES = (
-    ("m_x_mm", "m_x", "max_x_mm", "mm"),
-    ("m_y_mm", "m_y", "max_y_mm", "mm"),
-    ("m_z_mm", "m_z", "max_z_mm", "mm"),
-    ("gamma_deg", "γ", "max_gamma_deg", "°"),
-    ("spacing_mm", "point spacing", "max_spacing_mm", "mm"),
-)
-
 
 def explain_unmet(p: Plan) -> pd.DataFrame:
-    """Per quantity over its site-wide limit at some unmet sample (:data:`EXPLAIN_COLUMNS`),
-    the most failing first. Samples no station sees are one row, quantity "not seen"."""
+    """Per check (:data:`~planner.pipeline.requirements.CHECKS`) failing its site-wide limit
+    at some unmet sample (:data:`EXPLAIN_COLUMNS`), the most failing first. Samples no
+    station sees are one row, quantity "not seen"."""
     u = p.unmet
     rows = []
     seen = u["station_id"] != ""
-    for col, label, attr, unit in _QUANTITIES:
-        limit = getattr(p.requirements, attr, None)
-        if limit is None or col not in u:
+    for c in CHECKS:
+        limit = c.limit_of(p.requirements)
+        if limit is None or c.metric not in u:
             continue
-        over = u[seen & (u[col] > float(limit) * (1 + 1e-9))]
+        over = u[seen & ~c.passes(u[c.metric], float(limit))]
         if len(over):
-            rows.append(_row(label, float(limit), unit, over, float(over[col].max())))
+            worst = float(over[c.metric].max() if c.sense == "max" else over[c.metric].min())
+            rows.append(_row(c.label, float(limit), c.unit, over, worst))
     if (~seen).any():
         rows.append(_row("not seen", np.nan, "", u[~seen], np.nan))
     out = pd.DataFrame(rows, columns=EXPLAIN_COLUMNS)
@@ -61,31 +55,38 @@ def _row(label: str, limit: float, unit: str, g: pd.DataFrame, worst: float) -> 
     }
 
 
+def _limits_met(p: Plan) -> str | None:
+    """``m_x ≤ … mm (asked …), m_y ≤ …, m_z ≤ …`` that the plan's stations meet at every
+    sample they see (rounded up to 0.1 mm); None when no station sees any."""
+    cov = p.scanned[p.scanned["station_id"] != ""]
+    if cov.empty:
+        return None
+    parts = []
+    for c in CHECKS[:3]:  # m_x, m_y, m_z
+        asked = c.limit_of(p.requirements)
+        worst = float(cov[c.metric].max())
+        parts.append(
+            f"{c.label} ≤ {np.ceil(worst * 10) / 10:.1f} {c.unit}"
+            + (f" (asked {asked:g})" if not c.passes(worst, asked) else "")
+        )
+    return ", ".join(parts) + " at every sample it sees"
+
+
 def relaxation_text(p: Plan) -> str:
     """The limits the plan's stations meet at every sample they see: the smallest relaxation
     that makes this plan pass (registration included)."""
-    cov = p.scanned[p.scanned["station_id"] != ""]
-    if cov.empty:
-        return "no station sees any sample"
-    parts = []
-    for col, label, attr, unit in _QUANTITIES[:3]:
-        asked = getattr(p.requirements, attr)
-        worst = float(cov[col].max())
-        parts.append(
-            f"{label} ≤ {np.ceil(worst * 10) / 10:.1f} {unit}"
-            + (f" (asked {asked:g})" if worst > asked * (1 + 1e-9) else "")
-        )
-    return "this plan meets " + ", ".join(parts) + " at every sample it sees"
+    met = _limits_met(p)
+    return "no station sees any sample" if met is None else "this plan meets " + met
 
 
 def suggestions(p: Plan) -> list[str]:
     """What else could meet the requirement: catalogue scanners that reach farther for the
-    same limits (:func:`planner.pipeline.planning.reach_m`), and a higher station where m_z
-    fails high up at steep elevation angles."""
+    same limits (:func:`planner.pipeline.planning.reach_m`), a higher station where m_z
+    fails high up at steep elevation angles, and the limits the plan meets."""
+    u = p.unmet
+    if u.empty:
+        return []
     out = []
-    table = explain_unmet(p)
-    if table.empty:
-        return out
     st = p.settings
     now = reach_m(p.scanner, p.requirements, st.station_rms_pair, st.model)
     better = []
@@ -102,19 +103,15 @@ def suggestions(p: Plan) -> list[str]:
             f"a scanner that keeps these limits farther out: {names}, against {now:.0f} m for "
             f"{p.scanner.name}"
         )
-    mz = table[table["quantity"] == "m_z"]
-    if len(mz):
-        u = p.unmet
-        steep = u[(u["m_z_mm"] > p.requirements.max_z_mm) & (u["nu_deg"].abs() > 30)]
-        if len(steep):
-            out.append(
-                f"m_z fails at {len(steep)} sample(s) seen at elevation angles over 30° "
-                f"(up to z {steep['z'].max():.1f} m): a station higher up — on a roof, a lift "
-                f"or a tripod extension (--instrument-height-m, now {st.instrument_height_m:g} "
-                "m) — sees them flatter"
-            )
-    out.append(
-        "the smallest relaxation with these stations: "
-        + relaxation_text(p).removeprefix("this plan meets ")
-    )
+    steep = u[(u["m_z_mm"] > p.requirements.max_z_mm) & (u["nu_deg"].abs() > 30)]
+    if len(steep):
+        out.append(
+            f"m_z fails at {len(steep)} sample(s) seen at elevation angles over 30° "
+            f"(up to z {steep['z'].max():.1f} m): a station higher up — on a roof, a lift "
+            f"or a tripod extension (--instrument-height-m, now {st.instrument_height_m:g} "
+            "m) — sees them flatter"
+        )
+    met = _limits_met(p)
+    if met is not None:
+        out.append("the smallest relaxation with these stations: " + met)
     return out
