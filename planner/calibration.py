@@ -31,7 +31,7 @@ import numpy as np
 import pandas as pd
 
 from planner.errors import InputError
-from planner.scanner import DEFAULT_SCANNER, Scanner
+from planner.scanner import DEFAULT_SCANNER, Scanner, check_profile_name
 from planner.units import RHO_ARCSEC
 
 __all__ = [
@@ -168,6 +168,24 @@ class HelmertResult:
     def apply(self, xyz: np.ndarray) -> np.ndarray:
         return np.asarray(xyz) @ self.rotation.T + self.translation_m
 
+    def lines(self) -> list[str]:
+        """The transformation in words (the command line and the dashboard print these)."""
+        se = self.std_errors
+        return [
+            f"6-parameter Helmert transformation of {len(self.residuals)} targets (scanner → lab):",
+            "  translation [m]: "
+            + " ".join(f"{v:.4f}" for v in self.translation_m)
+            + " (± "
+            + ", ".join(f"{se[k]:.2f}" for k in ("tx_mm", "ty_mm", "tz_mm"))
+            + " mm)",
+            "  rotation ω, φ, κ [deg]: "
+            + " ".join(f"{v:.5f}" for v in self.angles_deg)
+            + f" (± {se['omega_arcsec']:.1f}, {se['phi_arcsec']:.1f}, "
+            f"{se['kappa_arcsec']:.1f}″)",
+            f"  residual RMS of a coordinate σ₀ = {self.sigma0_mm:.2f} mm "
+            f"(redundancy {self.redundancy})",
+        ]
+
 
 def _check_geometry(xyz: np.ndarray, what: str) -> None:
     if len(xyz) < 3:
@@ -251,6 +269,15 @@ class LabTest:
             ["significant_distance", "significant_horizontal", "significant_vertical"]
         ]
         return self.pairs[flags.any(axis=1)]
+
+    def lines(self) -> list[str]:
+        """The transformation, and the heading of :meth:`summary` (command line, dashboard)."""
+        return [
+            *self.helmert.lines(),
+            "",
+            f"Uncertainty from {len(self.pairs)} target pairs (Belgrade laboratory procedure, "
+            "eq. 1–9):",
+        ]
 
     def summary(self) -> pd.DataFrame:
         rows = [
@@ -409,6 +436,15 @@ class BaselineResult:
     n: int
     warnings: list[str] = field(default_factory=list)
 
+    def lines(self) -> list[str]:
+        """The result in words (the command line and the dashboard print these)."""
+        return [
+            f"Baseline comparison of {self.n} distances: D_ref = D + k + R·D",
+            f"  k = {self.k_mm:+.2f} mm ± {self.k_se_mm:.2f} mm;  "
+            f"R = {self.scale_ppm:+.1f} ppm ± {self.scale_se_ppm:.1f} ppm",
+            f"  residual RMS after correction: {self.residual_rms_mm:.2f} mm",
+        ]
+
 
 def baseline_calibration(data: pd.DataFrame | str | Path) -> BaselineResult:
     """Baseline comparison (Liu & Zhang): ``D_ref − D = k + R·D`` by least squares.
@@ -474,6 +510,14 @@ class SixSegmentResult:
     segments_m: pd.Series  # adjusted distances from the first point
     residuals: pd.DataFrame
     sigma0_mm: float
+
+    def lines(self) -> list[str]:
+        """The result in words (the command line and the dashboard print these)."""
+        return [
+            "Six-segment (all-combinations) method: additive constant of the instrument",
+            f"  k = {self.k_mm:+.2f} mm ± {self.k_se_mm:.2f} mm;  "
+            f"σ₀ of a distance {self.sigma0_mm:.2f} mm",
+        ]
 
 
 def six_segment_constant(data: pd.DataFrame | str | Path) -> SixSegmentResult:
@@ -544,6 +588,24 @@ class AxisResult:
     residual_rms_arcsec: float
     residuals: pd.DataFrame
 
+    def lines(self) -> list[str]:
+        """The result in words (the command line and the dashboard print these)."""
+        out = [
+            f"Axis errors from {len(self.residuals)} directions (c / cos α + i·tan α):",
+            f"  collimation c = {self.c_deg:.4f}° ± {self.c_se_deg:.4f}°  "
+            f"({self.c_deg * 3600:.1f}″)",
+            f"  trunnion-axis tilt i = {self.i_deg:.4f}° ± {self.i_se_deg:.4f}°  "
+            f"({self.i_deg * 3600:.1f}″)",
+        ]
+        if self.orientation_deg is not None:
+            out.append(
+                f"  orientation of the scanner's zero direction: {self.orientation_deg:.4f}°"
+            )
+        out.append(
+            f"  residual RMS of a direction after correction: {self.residual_rms_arcsec:.1f}″"
+        )
+        return out
+
 
 def axis_errors(data: pd.DataFrame | str | Path, *, orientation: bool = True) -> AxisResult:
     """Collimation and trunnion-axis errors from directions at several vertical angles.
@@ -610,8 +672,10 @@ def profile_from_calibration(
     c and i, horizontal only). Figures not chosen come from ``base`` (default:
     :data:`~planner.scanner.DEFAULT_SCANNER`, the Leica class of Voroshilov & Karachentsev).
     ``include_scale`` adds |R| as the ppm part, for data that will not be corrected for
-    scale. The calibration is recorded in the profile's ``calibration`` table.
+    scale. The calibration is recorded in the profile's ``calibration`` table. ``name`` must
+    be able to name a profile file (:func:`~planner.scanner.check_profile_name`).
     """
+    name = check_profile_name(name)
     base = base or Scanner.from_name(DEFAULT_SCANNER)
     fig: dict[str, Any] = {
         "range_rms_mm": base.range_rms_mm,

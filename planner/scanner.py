@@ -30,6 +30,7 @@ __all__ = [
     "Scanner",
     "catalogue",
     "check_profile_name",
+    "installed_profile_path",
     "load_scanner",
     "read_scanner_file",
     "user_profile_dir",
@@ -271,11 +272,15 @@ class Scanner:
             lines.append(f"{key} = {_toml_value(value)}")
         return "\n".join(lines) + "\n"
 
+    def profile_file_text(self) -> str:
+        """The text of this profile's own file (a header saying the units, then the table)."""
+        return _TOML_HEADER + "\n" + self.to_toml()
+
     def save(self, path: str | Path) -> Path:
         """Write this profile as a TOML file (atomically: a good file is never half-replaced)."""
         from planner.atomic import write_text_atomic
 
-        return write_text_atomic(path, _TOML_HEADER + "\n" + self.to_toml())
+        return write_text_atomic(path, self.profile_file_text())
 
 
 _TOML_HEADER = "# tls-planner scanner profile (units: mm, ppm, arc-seconds, m, deg)\n"
@@ -357,6 +362,19 @@ def user_profile_dir() -> Path:
     ``~/.tls-planner/scanners``. Every ``*.toml`` there is found by name."""
     env = os.environ.get("TLS_PLANNER_PROFILES")
     return Path(env).expanduser() if env else Path.home() / ".tls-planner" / "scanners"
+
+
+def installed_profile_path(name: str) -> Path:
+    """Where the profile ``name`` is installed (:func:`user_profile_dir`), after checking the
+    name can be installed: a valid profile name, and not a catalogue scanner's (those names
+    are reserved, so a catalogue name always means the shipped figures)."""
+    key = check_profile_name(name)
+    if key in catalogue():
+        raise InputError(
+            f"{key!r} is a catalogue scanner's name, and catalogue names are reserved; "
+            "install your profile under another name (e.g. my-" + key + ")"
+        )
+    return user_profile_dir() / f"{key}.toml"
 
 
 def user_profiles() -> tuple[dict[str, Scanner], list[str]]:

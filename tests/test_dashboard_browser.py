@@ -49,11 +49,12 @@ def _need_browser():
     return pytest.importorskip("playwright.sync_api")
 
 
-@pytest.fixture(scope="module")
-def dashboard_url():
+def _serve(notebook: str, **env_extra: str):
+    """Serve one shipped dashboard as ``planner serve --notebook`` does; yield its URL."""
     _need_browser()
     port = free_port()
-    cmd, env = voila_command(notebook_path("station_planner.ipynb"), port)
+    cmd, env = voila_command(notebook_path(notebook), port)
+    env.update(env_extra)
     proc = subprocess.Popen(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
     url = f"http://127.0.0.1:{port}/"
     deadline = time.time() + 90
@@ -74,6 +75,11 @@ def dashboard_url():
         proc.wait(10)
     except subprocess.TimeoutExpired:
         proc.kill()
+
+
+@pytest.fixture(scope="module")
+def dashboard_url():
+    yield from _serve("station_planner.ipynb")
 
 
 def _set_number(page, label: str, value: str) -> None:
@@ -282,25 +288,102 @@ def test_no_label_is_cut_off(dashboard_url, width):
         browser, page, _ = _open(pw, width)
         page.get_by_text("More settings (as on the command line)").click()
         page.wait_for_timeout(500)
-        cut = page.evaluate(
-            """() => {
-            const out = [];
-            for (const e of document.querySelectorAll(
-                    '.widget-label, .widget-label-basic, .widget-button, .widget-toggle-button,'
-                    + ' .lm-TabBar-tabLabel, .widget-checkbox label')) {
-                if (e.offsetParent === null) continue;  // not shown
-                if (e.scrollWidth > e.clientWidth + 1) out.push(e.innerText);
-            }
-            const ctx = document.createElement('canvas').getContext('2d');
-            for (const s of document.querySelectorAll('select')) {
-                const st = getComputedStyle(s);
-                ctx.font = st.font;
-                const text = s.options[s.selectedIndex].text;
-                if (ctx.measureText(text).width + 30 > s.clientWidth) out.push(text);
-            }
-            return out;
-        }"""
-        )
+        cut = _cut_off(page)
         page.screenshot(path=str(ARTIFACTS / f"dashboard-{width}px.png"), full_page=True)
         browser.close()
     assert cut == [], f"cut off at {width} px: {cut}"
+
+
+def _cut_off(page) -> list[str]:
+    """The texts of labels, buttons, tabs and selects that do not fit: wider than their own
+    box (measured overflow), clipped by an ancestor that hides overflow, or — a select —
+    whose chosen text, measured in its font, is wider than the box."""
+    return page.evaluate(
+        """() => {
+        const out = [];
+        const clipped = (e) => {
+            const r = e.getBoundingClientRect();
+            for (let a = e.parentElement; a; a = a.parentElement) {
+                const st = getComputedStyle(a);
+                // inside a scroller (a pane, the page) the user scrolls to it: not a cut
+                if (/auto|scroll/.test(st.overflowX + st.overflowY)) return false;
+                const b = a.getBoundingClientRect();
+                if (/hidden|clip/.test(st.overflowX) &&
+                    (r.right > b.right + 1 || r.left < b.left - 1)) return true;
+                if (/hidden|clip/.test(st.overflowY) &&
+                    (r.bottom > b.bottom + 1 || r.top < b.top - 1)) return true;
+            }
+            return false;
+        };
+        for (const e of document.querySelectorAll(
+                '.widget-label, .widget-label-basic, .widget-button, .widget-toggle-button,'
+                + ' .lm-TabBar-tabLabel, .widget-checkbox label, .widget-upload')) {
+            if (e.offsetParent === null || !e.innerText.trim()) continue;  // not shown
+            if (e.scrollWidth > e.clientWidth + 1 || clipped(e)) out.push(e.innerText);
+        }
+        const ctx = document.createElement('canvas').getContext('2d');
+        for (const s of document.querySelectorAll('select')) {
+            if (s.offsetParent === null) continue;
+            const st = getComputedStyle(s);
+            ctx.font = st.font;
+            const text = s.options[s.selectedIndex].text;
+            if (ctx.measureText(text).width + 30 > s.clientWidth) out.push(text);
+        }
+        return out;
+    }"""
+    )
+
+
+@pytest.fixture(scope="module")
+def calibration(tmp_path_factory):
+    profiles = tmp_path_factory.mktemp("profiles")
+    for url in _serve("calibration.ipynb", TLS_PLANNER_PROFILES=str(profiles)):
+        yield url, profiles
+
+
+def test_calibration_dashboard_uploads_plots_once_and_installs(calibration, tmp_path):
+    """`planner serve --notebook calibration.ipynb`: the example's residual plots, each shown
+    once; an uploaded baseline file replaces the example's result; the profile downloads as
+    TOML and installs where the planner finds it by name; nothing cut off at 1280 px."""
+    url, profiles = calibration
+    sync = _need_browser()
+    ARTIFACTS.mkdir(exist_ok=True)
+    from planner.app.calibration_plots import example_path
+
+    rows = example_path("baseline.csv").read_text().splitlines()
+    mine = tmp_path / "my_baseline.csv"
+    mine.write_text("\n".join(rows[:-2]) + "\n")  # two distances fewer than the example
+    with sync.sync_playwright() as pw:
+        browser = pw.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        page = browser.new_page(viewport={"width": 1280, "height": 2400}, accept_downloads=True)
+        page.goto(url, timeout=120_000)
+        page.locator("a[download='my-scanner.toml']").wait_for(timeout=120_000)
+        for tab in ("Lab test", "Distances", "Axis errors"):
+            page.get_by_text(tab, exact=True).click()
+            page.wait_for_timeout(300)
+            shown = page.locator(".widget-tab-contents img:visible, .lm-TabPanel img:visible")
+            assert shown.count() == 1, f"{tab}: {shown.count()} plots shown"
+            if tab == "Lab test":
+                page.screenshot(path=str(ARTIFACTS / "calibration-lab.png"), full_page=True)
+        assert page.locator(".calibration-file").nth(2).inner_text() == "example: baseline.csv"
+        with page.expect_file_chooser() as chooser:
+            page.locator(".widget-upload").nth(2).click()
+        chooser.value.set_files(str(mine))
+        page.get_by_text("Distances", exact=True).click()
+        page.wait_for_function(
+            "(n) => document.body.innerText.includes(`Baseline comparison of ${n} distances`)",
+            arg=len(rows) - 3,
+            timeout=30_000,
+        )
+        assert "my_baseline.csv" in page.locator(".calibration-file").nth(2).inner_text()
+        with page.expect_download() as download:
+            page.locator("a[download='my-scanner.toml']").click()
+        toml = Path(download.value.path()).read_text()
+        assert 'name = "my-scanner"' in toml and "[[scanner]]" in toml
+        page.get_by_role("button", name="Install").click()
+        page.locator(".calibration-installed").wait_for(timeout=30_000)
+        assert (profiles / "my-scanner.toml").read_text() == toml
+        cut = _cut_off(page)
+        page.screenshot(path=str(ARTIFACTS / "calibration-1280px.png"), full_page=True)
+        browser.close()
+    assert cut == [], f"cut off at 1280 px: {cut}"

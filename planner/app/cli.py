@@ -341,34 +341,29 @@ def _print_table(df: pd.DataFrame, decimals: int = 3) -> None:
 
 def _profile_name(args: argparse.Namespace) -> str | None:
     """The name of the profile to write, checked before any work (None: none is written)."""
-    from planner.scanner import check_profile_name
+    from planner.scanner import check_profile_name, installed_profile_path
 
     if not args.profile_out and not args.install:
         return None
     name = args.name or (Path(args.profile_out).stem if args.profile_out else None)
     if not name:
         raise InputError("--install needs a profile name: give --name NAME")
-    name = check_profile_name(name)
-    if args.install and name in catalogue():
-        raise InputError(
-            f"{name!r} is a catalogue scanner's name, and catalogue names are reserved; "
-            "install your profile under another name (--name my-...)"
-        )
-    return name
+    if args.install:
+        installed_profile_path(name)  # a reserved name stops here
+    return check_profile_name(name)
 
 
 def _write_profile(args: argparse.Namespace, **results) -> None:
     from planner.calibration import profile_from_calibration
-    from planner.scanner import user_profile_dir
+    from planner.scanner import installed_profile_path, user_profile_dir
 
     name = _profile_name(args)
     if name is None:
         return
     scanner, notes = profile_from_calibration(name, base=load_scanner(args.base_scanner), **results)
-    out = args.profile_out or user_profile_dir() / f"{name}.toml"
-    path = scanner.save(out)
+    path = scanner.save(args.profile_out or installed_profile_path(name))
     if args.install and args.profile_out:
-        scanner.save(user_profile_dir() / f"{name}.toml")
+        scanner.save(installed_profile_path(name))
     if args.install:
         print(f"installed as {name!r} in {user_profile_dir()} (use --scanner {name})")
     print(
@@ -392,25 +387,7 @@ def cmd_calibrate_lab(args: argparse.Namespace) -> int:
         reference_precision_mm=args.reference_precision_mm,
         declared_target_precision_mm=args.declared_precision_mm,
     )
-    h = t.helmert
-    print(f"6-parameter Helmert transformation of {len(h.residuals)} targets (scanner → lab):")
-    print(
-        "  translation [m]: "
-        + " ".join(f"{v:.4f}" for v in h.translation_m)
-        + " (± "
-        + ", ".join(f"{h.std_errors[k]:.2f}" for k in ("tx_mm", "ty_mm", "tz_mm"))
-        + " mm)"
-    )
-    print(
-        "  rotation ω, φ, κ [deg]: "
-        + " ".join(f"{v:.5f}" for v in h.angles_deg)
-        + f" (± {h.std_errors['omega_arcsec']:.1f}, {h.std_errors['phi_arcsec']:.1f}, "
-        f"{h.std_errors['kappa_arcsec']:.1f}″)"
-    )
-    print(f"  residual RMS of a coordinate σ₀ = {h.sigma0_mm:.2f} mm (redundancy {h.redundancy})")
-    print(
-        f"\nUncertainty from {len(t.pairs)} target pairs (Belgrade laboratory procedure, eq. 1–9):"
-    )
+    print(*t.lines(), sep="\n")
     _print_table(t.summary())
     sig = t.significant
     print(f"\nPairs with a significant difference (|Δ| > M_r): {len(sig)}")
@@ -440,10 +417,7 @@ def cmd_calibrate_baseline(args: argparse.Namespace) -> int:
 
     if {"from", "to", "distance_m"} <= table_columns(args.file):
         r = six_segment_constant(args.file)
-        print("Six-segment (all-combinations) method: additive constant of the instrument")
-        print(
-            f"  k = {r.k_mm:+.2f} mm ± {r.k_se_mm:.2f} mm;  σ₀ of a distance {r.sigma0_mm:.2f} mm"
-        )
+        print(*r.lines(), sep="\n")
         print("  adjusted distances from the first point [m]:")
         _print_table(r.segments_m.to_frame(), 4)
         if args.profile_out:
@@ -453,12 +427,7 @@ def cmd_calibrate_baseline(args: argparse.Namespace) -> int:
             )
         return EXIT_OK
     r = baseline_calibration(args.file)
-    print(f"Baseline comparison of {r.n} distances: D_ref = D + k + R·D")
-    print(
-        f"  k = {r.k_mm:+.2f} mm ± {r.k_se_mm:.2f} mm;  "
-        f"R = {r.scale_ppm:+.1f} ppm ± {r.scale_se_ppm:.1f} ppm"
-    )
-    print(f"  residual RMS after correction: {r.residual_rms_mm:.2f} mm")
+    print(*r.lines(), sep="\n")
     _print_table(r.residuals.set_index("measured_m"), 4)
     for warning in r.warnings:
         print(f"warning: {warning}")
@@ -471,12 +440,7 @@ def cmd_calibrate_axes(args: argparse.Namespace) -> int:
     from planner.calibration import axis_errors
 
     r = axis_errors(args.file, orientation=not args.no_orientation)
-    print(f"Axis errors from {len(r.residuals)} directions (c / cos α + i·tan α):")
-    print(f"  collimation c = {r.c_deg:.4f}° ± {r.c_se_deg:.4f}°  ({r.c_deg * 3600:.1f}″)")
-    print(f"  trunnion-axis tilt i = {r.i_deg:.4f}° ± {r.i_se_deg:.4f}°  ({r.i_deg * 3600:.1f}″)")
-    if r.orientation_deg is not None:
-        print(f"  orientation of the scanner's zero direction: {r.orientation_deg:.4f}°")
-    print(f"  residual RMS of a direction after correction: {r.residual_rms_arcsec:.1f}″")
+    print(*r.lines(), sep="\n")
     _write_profile(args, axes=r, angles_from="axes")
     return EXIT_OK
 

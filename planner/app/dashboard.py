@@ -35,7 +35,7 @@ from planner.pipeline.requirements import (
     field_specs,
     requirements_and_settings,
 )
-from planner.scanner import DEFAULT_SCANNER, Scanner, catalogue
+from planner.scanner import DEFAULT_SCANNER, Scanner, catalogue, user_profiles
 from planner.siteio import DEFAULT_STOREY_HEIGHT_M
 from planner.tables import SOSSA_DISTANCES_M, height_table, planimetric_table
 from planner.targets import DEFAULT_INVENTORY, SOSSA_STEP_MM_AT_10M
@@ -43,10 +43,11 @@ from planner.targets import DEFAULT_INVENTORY, SOSSA_STEP_MM_AT_10M
 __all__ = ["AccuracyExplorer", "StationPlanner", "TargetExplorer"]
 
 
-def _error_html(message: str) -> str:
+def _error_html(message: str, head: str = "Cannot plan") -> str:
     return (
         f'<div class="planner-error" style="color:#922;background:#fdecea;border:1px solid #e6b0aa;'
-        f'padding:6px 10px;border-radius:4px"><b>Cannot plan:</b> {html.escape(message)}</div>'
+        f'padding:6px 10px;border-radius:4px"><b>{html.escape(head)}:</b> '
+        f"{html.escape(message)}</div>"
     )
 
 
@@ -93,6 +94,15 @@ def _zip(files: dict[str, bytes]) -> bytes:
         for name, data in files.items():
             z.writestr(zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0)), data)
     return buf.getvalue()
+
+
+def upload_folder() -> tempfile.TemporaryDirectory:
+    """Where a dashboard writes uploaded files: inside the server's folder when served (removed
+    when the server stops), else a temporary folder of its own."""
+    root = os.environ.get(UPLOAD_ROOT_ENV)
+    return tempfile.TemporaryDirectory(
+        prefix="planner-upload-", dir=root if root and os.path.isdir(root) else None
+    )
 
 
 _STYLE = {"description_width": "initial"}
@@ -145,9 +155,10 @@ def _field_value(spec: FieldSpec, box: w.Widget):
 
 
 def _scanner_dropdown() -> w.Dropdown:
-    names = list(catalogue())
+    """The catalogue's scanners, then the profiles the user installed (by name)."""
+    scanners = [*catalogue().values(), *user_profiles()[0].values()]
     return w.Dropdown(
-        options=[(catalogue()[n].label, n) for n in names],
+        options=[(s.label or s.name, s.name) for s in scanners],
         value=DEFAULT_SCANNER,
         description="",
         tooltip="the scanner profile (its catalogue name is the --scanner of the command line)",
@@ -495,10 +506,7 @@ class StationPlanner:
         self._changed = False
         self._worker: threading.Thread | None = None
         self.last_edit_s: float | None = None
-        root = os.environ.get(UPLOAD_ROOT_ENV)  # the server's folder, removed when it stops
-        self._tmp = tempfile.TemporaryDirectory(
-            prefix="planner-upload-", dir=root if root and os.path.isdir(root) else None
-        )
+        self._tmp = upload_folder()
         # links: thin callbacks
         self.plan_button.on_click(lambda _b: self.start())
         self.cancel_button.on_click(lambda _b: self.cancel())
