@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import pytest
+
 from planner.app.cli import main
 from planner.app.figures import make_figures
 
@@ -24,3 +26,43 @@ def test_make_figures_writes_pngs(tmp_path):
 def test_cli_figures(tmp_path, capsys):
     assert main(["figures", "--out", str(tmp_path / "figs")]) == 0
     assert "table2_height_rms.png" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize(("gamma", "nu"), [(30.0, 30.0), (45.0, 90.0), (0.0, 0.0)])
+def test_accuracy_explorer_plots_are_legible(monkeypatch, gamma, nu):
+    """One legend entry per angle, a colour of its own per angle, and no title overlapping
+    another or leaving the figure (the issue: '30°' twice, 0° and 90° alike, titles collided)."""
+    import matplotlib.pyplot as plt
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from planner.app import dashboard
+
+    figures = []
+    real = dashboard._output
+    monkeypatch.setattr(
+        dashboard,
+        "_output",
+        lambda obj: (
+            (figures.append(obj), real(obj))[1] if isinstance(obj, plt.Figure) else real(obj)
+        ),
+    )
+    ui = dashboard.AccuracyExplorer()
+    ui.gamma.value, ui.nu.value = gamma, nu
+    ui.update()
+    fig = figures[-2]  # the last update's first figure: the paper's tables
+    FigureCanvasAgg(fig).draw()
+    renderer = fig.canvas.get_renderer()
+    box = fig.bbox
+    titles = [ax.title for ax in fig.axes if ax.get_title()] + [fig._suptitle]
+    extents = [t.get_window_extent(renderer) for t in titles]
+    for t, e in zip(titles, extents, strict=True):
+        assert e.x0 >= box.x0 - 1 and e.x1 <= box.x1 + 1, f"{t.get_text()!r} leaves the figure"
+    for i, a in enumerate(extents):
+        for b in extents[i + 1 :]:
+            assert not a.overlaps(b), "two titles overlap"
+    for ax in fig.axes:
+        lines = [ln for ln in ax.get_lines() if ln.get_label().startswith(("γ", "ν"))]
+        labels = [ln.get_label() for ln in lines]
+        assert len(labels) == len(set(labels)), f"a legend entry twice: {labels}"
+        colours = [ln.get_color() for ln in lines]
+        assert len(colours) == len(set(colours)), f"two angles share a colour: {labels}"

@@ -1042,7 +1042,10 @@ class AccuracyExplorer:
             ax.axhline(limit, color="crimson", lw=0.8, ls="--")
             ax.set_xlim(lo, hi)
             ax.set_title(ax.get_title(), fontsize=10)
-        fig.suptitle("The paper's tables: eq. 2 (m_x, m_y vs D) and eq. 4 (m_z vs S)", fontsize=11)
+        fig.suptitle(
+            f"The paper's tables for {sc.label}: eq. 2 (m_x, m_y vs D), eq. 4 (m_z vs S)",
+            fontsize=11,
+        )
         models = plot_models(sc, g, nu, hi, limit_mm=limit)
         for ax in models.axes:
             ax.set_xlim(lo, hi)

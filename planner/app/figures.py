@@ -58,7 +58,9 @@ def plot_planimetric(
     paper: bool = False,
     axes: Sequence[Axes] | None = None,
 ) -> Figure:
-    """m_x and m_y vs D, one curve per γ (eq. 2); ``paper=True`` overlays Table 1."""
+    """m_x and m_y vs D, one curve per γ (eq. 2); ``paper=True`` overlays Table 1. On
+    ``axes`` of the caller's figure the figure's title is the caller's."""
+    own = axes is None
     if axes is None:
         fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True, layout="constrained")
     fig = axes[0].figure
@@ -85,7 +87,8 @@ def plot_planimetric(
         axes[1].plot([], [], "o", mfc="none", color="grey", label="Table 1 as printed")
         axes[1].plot([], [], "x", color="crimson", label="misprint (formula wins)")
         axes[1].legend()
-    fig.suptitle(f"Planimetric RMS, eq. 2 of Voroshilov & Karachentsev — {scanner.label}")
+    if own:
+        fig.suptitle(f"Planimetric RMS, eq. 2 of Voroshilov & Karachentsev — {scanner.label}")
     return fig
 
 
@@ -97,7 +100,9 @@ def plot_height(
     paper: bool = False,
     ax: Axes | None = None,
 ) -> Figure:
-    """m_z vs S, one curve per ν (eq. 4, S_0 = S); ``paper=True`` overlays Table 2."""
+    """m_z vs S, one curve per ν (eq. 4, S_0 = S); ``paper=True`` overlays Table 2. On the
+    caller's ``ax`` the panel's title is short (the caller's figure names the scanner)."""
+    own = ax is None
     if ax is None:
         fig, ax = plt.subplots(figsize=(6, 4), layout="constrained")
     fig = ax.figure
@@ -118,7 +123,7 @@ def plot_height(
     ax.set_ylabel("m_z [mm]")
     ax.grid(alpha=0.3)
     ax.legend()
-    ax.set_title(f"Height RMS, eq. 4 — {scanner.label}")
+    ax.set_title(f"Height RMS, eq. 4 — {scanner.label}" if own else "m_z (height)")
     return fig
 
 
