@@ -20,6 +20,7 @@ def test_too_strict_gives_stations_not_zero(strict):
     assert len(strict.stations) > 0
     assert len(strict.unmet) > 0
     assert any(m.startswith("Best effort:") for m in strict.messages)
+    assert (strict.stations["purpose"] == "best-effort").any()
     # every unmet sample is seen by a station and carries its predicted values
     assert (strict.unmet["station_id"] != "").all()
 

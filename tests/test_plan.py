@@ -188,9 +188,24 @@ def test_infeasible_tolerance_does_not_crash_and_says_what_is_achievable():
     # best effort, not zero stations: the plan that comes closest, said as such
     assert len(p.stations) > 0
     assert any(m.startswith("Best effort:") for m in p.messages)
+    n_best = int(
+        p.messages[[m.startswith("Best effort:") for m in p.messages].index(True)].split()[2]
+    )
+    assert (p.stations["purpose"] == "best-effort").sum() == n_best  # marked as such
+    assert "best effort, for samples no position meets" in p.summary()
     # best achievable m_y with m_S = 4 mm: 4·cos 75° = 1.04 mm at the grazing limit
     assert p.unmet["reason"].str.contains(r"best achievable m_y 1\.0 mm > 0\.5 mm").all()
     assert p.solver["status"] == "nothing to cover"
+    # the map says so: grey positions, no colour bar scaled on nothing (it ran -0.1..0.1)
+    from planner.app.maps import plot_plan_map
+
+    fig = plot_plan_map(p)
+    assert len(fig.axes) == 1
+    names = fig.legends[0].get_texts() if fig.legends else fig.axes[0].get_legend().get_texts()
+    names = [t.get_text() for t in names]
+    assert "candidate position (none meets a sample as asked)" in names
+    assert "station (best effort, for samples no position meets)" in names
+    assert not any("covering" in n or "to cover" in n for n in names)
 
 
 def test_party_wall_is_reported_not_demanded():

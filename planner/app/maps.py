@@ -19,7 +19,7 @@ from matplotlib.patches import PathPatch, Wedge
 from matplotlib.path import Path as MplPath
 
 from planner.crs import name_of as crs_name
-from planner.pipeline.result import Plan
+from planner.pipeline.result import STATION_PURPOSES, Plan
 from planner.pipeline.route import view_sectors
 from planner.site import Site
 
@@ -63,17 +63,12 @@ COLOURS = {
     "no-go": "#f4cccc",
     "cover": "#c0392b",
     "hand": "#e67e22",
+    "best-effort": "#7d3c98",
     "link": "#1f618d",
     "registration": "#1f618d",
     "target": "#8e44ad",
     "route": "#117a65",
     "sector": "#f5b041",
-}
-_PURPOSE_LABEL = {
-    "cover": "station (covering)",
-    "hand": "station (placed by hand)",
-    "link": "station (linking the network)",
-    "registration": "station (for the registration error)",
 }
 
 
@@ -154,7 +149,19 @@ def plot_plan_map(
     if ax is None:
         _, ax = plt.subplots(figsize=(11, 8), layout="constrained")
     fig = ax.figure
-    if candidates and len(p.candidates):
+    if candidates and len(p.candidates) and not p.candidates["samples_met"].any():
+        # nothing to scale a colour bar by (it would run from -0.1 to 0.1): grey positions
+        ax.scatter(
+            p.candidates["x"],
+            p.candidates["y"],
+            s=4,
+            marker="s",
+            color="0.6",
+            lw=0,
+            zorder=0,
+            label="candidate position (none meets a sample as asked)",
+        )
+    elif candidates and len(p.candidates):
         c = p.candidates
         sc = ax.scatter(
             c["x"],
@@ -203,7 +210,7 @@ def plot_plan_map(
     order = {}
     if order_labels and p.route is not None:
         order = dict(zip(p.route.table["station_id"], p.route.table["order"], strict=True))
-    for purpose in ("hand", "cover", "link", "registration"):
+    for purpose in STATION_PURPOSES:
         s = p.stations[p.stations["purpose"] == purpose]
         if len(s):
             ax.plot(
@@ -215,7 +222,7 @@ def plot_plan_map(
                 mec="k",
                 ls="none",
                 zorder=5,
-                label=_PURPOSE_LABEL[purpose]
+                label=f"station ({STATION_PURPOSES[purpose]})"
                 if purpose != "registration" or not (p.stations["purpose"] == "link").any()
                 else None,
             )

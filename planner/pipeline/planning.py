@@ -340,7 +340,9 @@ def choose_stations(
             "adding stations and choosing again)."
         )
     hand = np.setdiff1d(forced, best_effort)
-    return assemble(wb, r, solver, messages, timings, t0, progress=say, hand=hand)
+    return assemble(
+        wb, r, solver, messages, timings, t0, progress=say, hand=hand, best_effort=best_effort
+    )
 
 
 #: The samples no position meets are served, best effort, within this share of the smallest
@@ -449,9 +451,11 @@ def assemble(
     *,
     progress: Progress | None = None,
     hand: np.ndarray | None = None,
+    best_effort: np.ndarray | None = None,
 ) -> Plan:
     """The plan of the stations of round ``r`` (pool indices; those in ``hand`` placed by
-    hand): coverage, targets, links, route, messages."""
+    hand, those in ``best_effort`` for samples no position meets): coverage, targets, links,
+    route, messages."""
     say = progress or (lambda _f, _m: None)
     ctx, st, ev, cand = wb.ctx, wb.settings, wb.evaluation, wb.pool
     net, assignment = r.net, r.judged.assignment
@@ -466,10 +470,11 @@ def assemble(
     purpose = np.select(
         [
             np.isin(station_idx, hand if hand is not None else []),
+            np.isin(station_idx, best_effort if best_effort is not None else []),
             np.isin(station_idx, r.cover),
             np.isin(station_idx, r.added),
         ],
-        ["hand", "cover", "registration"],
+        ["hand", "best-effort", "cover", "registration"],
         "link",
     )
     stations = pd.DataFrame(

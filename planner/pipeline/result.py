@@ -19,6 +19,16 @@ from planner.site import Site
 
 __all__ = ["FACADE_TABLE_COLUMNS", "LINK_COLUMNS", "TARGET_COLUMNS", "ZONE_COLUMNS", "Plan"]
 
+#: Why a station is in the plan (the ``purpose`` column of the stations), in the words of the
+#: summary and of the map's legend, in the order they are listed.
+STATION_PURPOSES = {
+    "hand": "placed by hand",
+    "best-effort": "best effort, for samples no position meets",
+    "cover": "to cover",
+    "link": "to link the network",
+    "registration": "for the registration error",
+}
+
 #: The zones as planned: where, the requirement inside, the sample spacing there [m], and
 #: how many of its samples (not on party walls) meet it.
 ZONE_COLUMNS = ["zone_id", "where", "requirement", "sample_spacing_m", "samples", "met", "unmet"]
@@ -82,7 +92,8 @@ class Plan:
     * ``stations`` — ``station_id, x, y, instrument_height_m, purpose`` ("cover": chosen by
       the optimiser; "link": tying the network together; "registration": added where the
       registration error kept samples from the limits; "hand": placed or locked by the
-      surveyor, :mod:`planner.pipeline.whatif`), ``samples_met``;
+      surveyor, :mod:`planner.pipeline.whatif`; "best-effort": for samples no position meets,
+      :data:`STATION_PURPOSES`), ``samples_met``;
     * ``targets`` — :data:`TARGET_COLUMNS` (``station_ids`` a list);
     * ``coverage`` — one row per facade sample, the columns of
       :data:`planner.pipeline.export.COVERAGE_COLUMNS` (m_x, m_y, m_z the totals, scanner ⊕
@@ -152,9 +163,6 @@ class Plan:
         req, sc, s = self.requirements, self.scanner, self.solver
         cov = self.scanned
         purposes = self.stations["purpose"].value_counts()
-        n_cover, n_link = int(purposes.get("cover", 0)), int(purposes.get("link", 0))
-        n_reg = int(purposes.get("registration", 0))
-        n_hand = int(purposes.get("hand", 0))
         solver = f"({s['status']}; objective {s['objective']}"
         if s.get("gap") is not None:
             solver += f", lower bound {s['lower_bound']:g}, gap {100 * s['gap']:.1f} %"
@@ -178,14 +186,9 @@ class Plan:
             ),
             f"Stations: {len(self.stations)} ("
             + ", ".join(
-                text
-                for n, text in (
-                    (n_hand, f"{n_hand} placed by hand"),
-                    (n_cover, f"{n_cover} to cover"),
-                    (n_link, f"{n_link} to link"),
-                    (n_reg, f"{n_reg} for the registration error"),
-                )
-                if n
+                f"{purposes[key]} {words}"
+                for key, words in STATION_PURPOSES.items()
+                if purposes.get(key, 0)
             )
             + ("none" if self.stations.empty else "")
             + (
