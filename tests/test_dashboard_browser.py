@@ -11,6 +11,7 @@ import socket
 import subprocess
 import time
 import urllib.request
+import zipfile
 from pathlib import Path
 
 import pytest
@@ -146,7 +147,7 @@ def test_field_work_tab_shows_the_visiting_order(dashboard_url):
     ARTIFACTS.mkdir(exist_ok=True)
     with sync.sync_playwright() as pw:
         browser = pw.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
-        page = browser.new_page(viewport={"width": 1500, "height": 1100})
+        page = browser.new_page(viewport={"width": 1500, "height": 1100}, accept_downloads=True)
         page.goto(dashboard_url, timeout=120_000)
         count = page.locator(".station-count")
         count.wait_for(timeout=120_000)
@@ -162,8 +163,14 @@ def test_field_work_tab_shows_the_visiting_order(dashboard_url):
         assert page.locator("a.planner-download[download='route.csv']").count() == 1
         page.get_by_role("button", name="Make field booklet (PDF)").click()
         booklet = page.locator("a.planner-download[download='booklet.pdf']")
-        booklet.wait_for(timeout=120_000)
+        booklet.first.wait_for(timeout=120_000)
         page.screenshot(path=str(ARTIFACTS / "dashboard-booklet.png"), full_page=True)
+        # plan.zip now holds the booklet with every file of the plan
+        with page.expect_download() as download:
+            page.locator("a.planner-download[download='plan.zip']").click()
+        with zipfile.ZipFile(download.value.path()) as z:
+            names = set(z.namelist())
+        assert {"booklet.pdf", "route.csv", "stations.csv", "summary.txt"} <= names, names
         browser.close()
 
 

@@ -84,6 +84,8 @@ _MIME = {
     ".txt": "text/plain",
     ".dxf": "image/vnd.dxf",
     ".kml": "application/vnd.google-earth.kml+xml",
+    ".html": "text/html",
+    ".pdf": "application/pdf",
 }
 
 
@@ -502,6 +504,7 @@ class StationPlanner:
             [controls, w.VBox([self.stale, self.results], layout=w.Layout(width="64%"))]
         )
         self.plan = None
+        self._files: dict[str, bytes] = {}  # the downloads of the plan on screen
         self._cancel = threading.Event()
         self._changed = False
         self._worker: threading.Thread | None = None
@@ -542,6 +545,7 @@ class StationPlanner:
     def _clear_results(self) -> None:
         """No plan on screen (after an error: the error replaces the old plan)."""
         self.plan = None
+        self._files = {}
         self.stale.value = ""
         self.results.remove_class("planner-stale")
         self.summary.value = ""
@@ -851,13 +855,26 @@ class StationPlanner:
                 w.HTML(f"<p>{html.escape(p.route.summary())}</p>"),
                 p.route.table.set_index("order").round({"x": 3, "y": 3}),
             )
-        files = {name: text.encode() for name, text in render(p).items()}
-        links = [_download_link(n, data, _MIME[Path(n).suffix]) for n, data in files.items()]
-        links.append(_download_link("plan.zip", _zip(files), "application/zip"))
-        self.downloads.value = "<p>" + "".join(links) + "</p>"
+        self._files = {name: text.encode() for name, text in render(p).items()}
+        self._offer_downloads()
         self.report_status.value = ""
         self.booklet_status.value = ""
         self.progress.value = 1.0
+
+    def _offer_downloads(self) -> None:
+        """A link per file of the plan on screen, and plan.zip of them all (with the report
+        and the booklet once they are made)."""
+        files = self._files
+        links = [_download_link(n, data, _MIME[Path(n).suffix]) for n, data in files.items()]
+        links.append(_download_link("plan.zip", _zip(files), "application/zip"))
+        self.downloads.value = "<p>" + "".join(links) + "</p>"
+
+    def _add_download(self, name: str, data: bytes, status: w.HTML) -> None:
+        self._files[name] = data
+        self._offer_downloads()
+        status.value = _download_link(name, data, _MIME[Path(name).suffix]) + (
+            "<small>(also in plan.zip)</small>"
+        )
 
     def _show_coverage(self) -> None:
         if self.plan is not None:
@@ -877,7 +894,7 @@ class StationPlanner:
         try:
             out = Path(self._tmp.name) / "report.html"
             make_report(self.plan, out)
-            self.report_status.value = _download_link("report.html", out.read_bytes(), "text/html")
+            self._add_download("report.html", out.read_bytes(), self.report_status)
         except Exception as exc:
             self.report_status.value = _error_html(f"the report failed: {exc}")
         finally:
@@ -893,8 +910,7 @@ class StationPlanner:
         self.booklet_status.value = "<i>drawing the booklet (a page per station)…</i>"
         self.booklet_button.disabled = True
         try:
-            pdf = booklet_pdf(self.plan)
-            self.booklet_status.value = _download_link("booklet.pdf", pdf, "application/pdf")
+            self._add_download("booklet.pdf", booklet_pdf(self.plan), self.booklet_status)
         except Exception as exc:
             self.booklet_status.value = _error_html(f"the booklet failed: {exc}")
         finally:
