@@ -6,7 +6,7 @@ import pytest
 
 from planner.errors import InputError
 from planner.pipeline.planning import plan
-from planner.pipeline.whatif import evaluate_stations, reoptimise
+from planner.pipeline.whatif import edit_targets, evaluate_stations, reoptimise
 
 
 @pytest.fixture(scope="module")
@@ -78,3 +78,68 @@ def test_a_plan_without_its_workbench_says_so(default_plan):
 
     with pytest.raises(InputError, match="plan the site again"):
         evaluate_stations(replace(default_plan, workbench=None), _xy(default_plan))
+
+
+# -- targets by hand (they change the plan's workbench: a plan of their own) ----------------
+@pytest.fixture
+def own_plan():
+    return plan()
+
+
+def _has(targets, xyz) -> bool:
+    return bool((np.abs(targets[["x", "y", "z"]].to_numpy(dtype=float) - xyz) < 1e-6).all(1).any())
+
+
+def test_a_target_ruled_out_is_never_used_again(own_plan):
+    p = own_plan
+    gone = p.targets.set_index("target_id").loc[["T01", "T02"], ["x", "y", "z"]].to_numpy()
+    q = edit_targets(p, remove=["T01", "T02"])
+    assert not any(_has(q.targets, xyz) for xyz in gone)
+    assert len(q.stations) == len(p.stations)
+    np.testing.assert_allclose(_xy(q), _xy(p), atol=1e-6)  # m: the stations stay
+    assert q.meets_all  # the network found other targets
+    assert "Targets edited by hand: 2 ruled out." in q.messages
+    # … and it stays out when the rest is optimised again
+    r = reoptimise(q, np.empty((0, 2)))
+    assert not any(_has(r.targets, xyz) for xyz in gone)
+
+
+def test_a_moved_flat_target_slides_along_its_wall_and_is_used(own_plan):
+    p = own_plan
+    flat = p.targets[p.targets["type"] == "flat"].iloc[0]
+    q = edit_targets(p, move={flat["target_id"]: (flat["x"] + 1.5, flat["y"] + 3.0)})
+    assert not _has(q.targets, flat[["x", "y", "z"]].to_numpy(dtype=float))
+    # the default site's first target is on a wall along E: it moves 1.5 m along it,
+    # not the 3 m off it
+    wall = p.workbench.ctx.facades
+    f = int(p.workbench.tc.facade[p.workbench.seen.by_hand][0])
+    a, b = wall.start[f], wall.end[f]
+    new = q.targets[q.targets["facade_id"] == flat["facade_id"]][["x", "y", "z"]].to_numpy(float)
+    moved = new[np.argmin(np.abs(new[:, 0] - (flat["x"] + 1.5)) + np.abs(new[:, 1] - flat["y"]))]
+    d, v = b - a, moved[:2] - a
+    cross = (d[0] * v[1] - d[1] * v[0]) / np.linalg.norm(d)
+    assert abs(cross) < 1e-6  # m: on the wall's line
+    assert moved[2] == pytest.approx(flat["z"], abs=1e-9)  # m: at its height
+    assert "Targets placed by hand: 1 of 1 used by the registration." in q.messages
+
+
+def test_a_sphere_added_by_hand_is_preferred_where_it_can_serve(own_plan):
+    p = own_plan
+    s = p.stations.iloc[0]
+    q = edit_targets(p, add_xy=np.array([[s["x"] + 2.0, s["y"] + 2.0]]))
+    z = p.workbench.settings.target_height_m
+    assert _has(q.targets, np.array([s["x"] + 2.0, s["y"] + 2.0, z]))
+    assert "Targets placed by hand: 1 of 1 used by the registration." in q.messages
+    # negative control: a stand far outside every station's view serves nothing
+    far = edit_targets(q, add_xy=np.array([[s["x"] + 2000.0, s["y"]]]))
+    assert not _has(far.targets, np.array([s["x"] + 2000.0, s["y"], z]))
+    assert "Targets placed by hand: 1 of 2 used by the registration" in " ".join(far.messages)
+
+
+def test_bad_target_edits_say_what_is_wrong(own_plan):
+    p = own_plan
+    with pytest.raises(InputError, match="no target 'T99'"):
+        edit_targets(p, remove=["T99"])
+    b = p.site.planned[0].footprint.representative_point()
+    with pytest.raises(InputError, match="stands inside a building"):
+        edit_targets(p, add_xy=np.array([[b.x, b.y]]))

@@ -144,7 +144,6 @@ class Workbench:
     zones: ZoneTable
     zone_ids: np.ndarray  # (N,) the zones each sample is in ('' none)
     ctx: Context
-    tc: TargetCandidates
     seen: SightCache
     reach: float
     n_grid: int
@@ -157,6 +156,11 @@ class Workbench:
     @property
     def pool(self) -> np.ndarray:
         return self.seen.cand_xy
+
+    @property
+    def tc(self) -> TargetCandidates:
+        """The target candidates (with those placed by hand)."""
+        return self.seen.tc
 
     def add_positions(self, xy: np.ndarray) -> np.ndarray:
         """Pool indices of the positions ``xy`` [m] (appended when new, to the millimetre)."""
@@ -226,7 +230,6 @@ def _prepare(
         zones=zones,
         zone_ids=sample_req.zone_ids,
         ctx=ctx,
-        tc=tc,
         seen=SightCache(ctx, tc, cand),
         reach=reach,
         n_grid=len(cand),

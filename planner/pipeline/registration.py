@@ -149,9 +149,19 @@ class Sight:
         return Sight(*(getattr(self, f)[:, cols] for f in Sight.__dataclass_fields__))
 
     def join(self, other: Sight) -> Sight:
+        """Other stations' sights of the same targets, as columns after these."""
         return Sight(
             *(
                 np.column_stack([getattr(self, f), getattr(other, f)])
+                for f in Sight.__dataclass_fields__
+            )
+        )
+
+    def stack(self, other: Sight) -> Sight:
+        """The same stations' sights of other targets, as rows after these."""
+        return Sight(
+            *(
+                np.concatenate([getattr(self, f), getattr(other, f)])
                 for f in Sight.__dataclass_fields__
             )
         )
@@ -224,6 +234,27 @@ class SightCache:
         self.ctx, self.tc, self.cand_xy = ctx, tc, cand_xy
         self.column: dict[int, int] = {}
         self.sight: Sight | None = None
+        #: targets the surveyor ruled out (no station may use them) and placed by hand
+        #: (preferred by every link that can use them)
+        self.barred = np.zeros(len(tc.xyz), dtype=bool)
+        self.by_hand = np.zeros(len(tc.xyz), dtype=bool)
+
+    def add_targets(self, more: TargetCandidates) -> np.ndarray:
+        """Append target candidates (placed by hand); the sights of every station seen so
+        far are extended to them. Their indices."""
+        first = len(self.tc.xyz)
+        self.tc = TargetCandidates(
+            **{
+                f: np.concatenate([getattr(self.tc, f), getattr(more, f)])
+                for f in TargetCandidates.__dataclass_fields__
+            }
+        )
+        if self.sight is not None:
+            cols = sorted(self.column, key=self.column.__getitem__)
+            self.sight = self.sight.stack(sights(self.ctx, more, self.cand_xy[cols]))
+        self.barred = np.concatenate([self.barred, np.zeros(len(more.xyz), dtype=bool)])
+        self.by_hand = np.concatenate([self.by_hand, np.ones(len(more.xyz), dtype=bool)])
+        return np.arange(first, len(self.tc.xyz))
 
     def __call__(self, idx: Sequence[int] | np.ndarray) -> Sight:
         """The sights of candidates ``idx``, in that order."""
@@ -236,7 +267,9 @@ class SightCache:
             self.column.update({i: base + n for n, i in enumerate(new)})
         if self.sight is None:
             return sights(self.ctx, self.tc, self.cand_xy[:0])
-        return self.sight.take([self.column[i] for i in idx])
+        out = self.sight.take([self.column[i] for i in idx])  # a copy
+        out.usable[self.barred] = False
+        return out
 
 
 def centre_rms(
@@ -320,20 +353,23 @@ def _choose_link_targets(
     levelled: bool,
     max_targets: int,
     goal_mm: float,
+    must: np.ndarray | None = None,
 ) -> tuple[list[int], float]:
     """Greedy choice among ``common`` targets (σ_i² + σ_j² per target in ``sigma2``):
     each step adds the target that lowers the child's predicted error at ``probes`` most
     (a target already placed wins within :data:`MIN_GAIN`), until three are chosen and the
-    goal is met, adding no longer helps, or ``max_targets`` are chosen. Returns the targets
+    goal is met, adding no longer helps, or ``max_targets`` are chosen. Targets flagged in
+    ``must`` (placed by the surveyor) come first, whatever they add. Returns the targets
     and the link's error [mm] (inf if they cannot fix the registration)."""
     prior = _PRIOR if not levelled else _PRIOR[np.ix_([0, 1, 2, 5], [0, 1, 2, 5])]
     a = _a_matrix((xyz[common] - child_xyz) * 1000.0, levelled)  # (C, 3, p)
     contrib = np.einsum("cip,ciq->cpq", a, a) / sigma2[:, None, None]
     g = _a_matrix((_probes(probes, child_xyz) - child_xyz) * 1000.0, levelled)
     reused = np.array([int(t) in placed for t in common])
-    chosen: list[int] = []
-    n_mat = np.zeros(prior.shape)
-    error = np.inf
+    chosen = [] if must is None else [int(c) for c in np.flatnonzero(must[common])]
+    chosen = chosen[: int(max_targets)]
+    n_mat = contrib[chosen].sum(axis=0) if chosen else np.zeros(prior.shape)
+    error = float(_probe_errors((n_mat + prior)[None], g)[0]) if chosen else np.inf
     while len(chosen) < max_targets:
         left = np.array([c for c in range(len(common)) if c not in chosen], dtype=np.int64)
         if not len(left):
@@ -581,6 +617,7 @@ class _Layout:
     ) -> None:
         tc, st = seen.tc, ctx.settings
         self.ctx, self.tc, self.goal_mm = ctx, tc, goal_mm
+        self.by_hand = seen.by_hand if seen.by_hand.any() else None
         self.stations = stations
         self.probes = probes
         self.sight = seen(stations)
@@ -656,6 +693,7 @@ class _Layout:
                 self.ctx.scanner.is_levelled,
                 self.ctx.settings.max_targets_per_link,
                 self.goal_mm,
+                self.by_hand,
             )
         if placed is None:
             self._links[key] = out
@@ -709,8 +747,9 @@ def build_network(
                 lay = trial
     stations, sight, station_xyz, datum = lay.stations, lay.sight, lay.station_xyz, lay.datum
     k, xyz = lay.k, tc.xyz
-    # the links in tree order, each preferring the targets already set up
-    placed: set[int] = set()
+    # the links in tree order, each preferring the targets already set up (first those the
+    # surveyor placed by hand)
+    placed: set[int] = {int(t) for t in np.flatnonzero(seen.by_hand)}
     links: list[Link] = []
     link_error: dict[tuple[int, int], float] = {}
     for parent, child in lay.tree:
@@ -771,7 +810,7 @@ def build_network(
         link_error_mm=link_error,
         link_sigma_mm=link_sigma,
         linkable=linkable,
-        targets=sorted(placed),
+        targets=sorted({t for lk in links for t in lk.targets}),
         datum=None if datum == CONTROL else datum,
         error=error,
         n_groups=n_groups,

@@ -7,7 +7,11 @@ made from: samples, candidate grid, target candidates and what each position see
 so that a re-evaluation only computes what changed):
 
 * :func:`evaluate_stations` — exactly these stations (no optimiser), judged as a plan is;
+* :func:`edit_targets` — the same stations, targets ruled out, moved or added by hand;
 * :func:`reoptimise` — keep the locked stations and choose the fewest others around them.
+
+Target edits stay with the plan's workbench: a target ruled out stays out, and one placed by
+hand stays offered, for every later edit and re-optimisation of that plan.
 """
 
 from __future__ import annotations
@@ -27,9 +31,10 @@ from planner.pipeline.planning import (
     assemble,
     choose_stations,
 )
+from planner.pipeline.registration import TargetCandidates
 from planner.pipeline.result import Plan
 
-__all__ = ["evaluate_stations", "reoptimise"]
+__all__ = ["edit_targets", "evaluate_stations", "reoptimise"]
 
 
 def _workbench(p: Plan) -> Workbench:
@@ -50,8 +55,15 @@ def evaluate_stations(p: Plan, xy: np.ndarray) -> Plan:
     purpose is "link")."""
     t0 = time.perf_counter()
     wb = _workbench(p)
-    xy = _free_positions(wb, xy, "station")
-    idx = wb.add_positions(xy)
+    idx = wb.add_positions(_free_positions(wb, xy, "station"))
+    return _judged(p, wb, idx, idx, f"Stations placed by hand: {len(idx)}.", t0)
+
+
+def _judged(
+    p: Plan, wb: Workbench, idx: np.ndarray, hand: np.ndarray, message: str, t0: float
+) -> Plan:
+    """The plan of the stations ``idx`` (pool indices; ``hand`` placed by hand), their
+    network built and every sample judged."""
     timings: dict[str, float] = {"setup": 0.0}
     r = _Round(cover=idx)
     r.net = _network(wb.ctx, wb.pool, wb.seen, idx, timings) if len(idx) else None
@@ -70,8 +82,98 @@ def evaluate_stations(p: Plan, xy: np.ndarray) -> Plan:
         "parts": 0,
         "registration_rounds": 0,
     }
-    messages = [*wb.messages, f"Stations placed by hand: {len(idx)}."]
-    return assemble(wb, r, solver, messages, timings, t0, hand=idx)
+    messages = [*wb.messages, message]
+    return assemble(wb, r, solver, messages, timings, t0, hand=hand)
+
+
+def _target_index(wb: Workbench, p: Plan, target_id: str) -> int:
+    """The target candidate of the plan's target ``target_id`` (found by its position)."""
+    row = p.targets[p.targets["target_id"] == target_id]
+    if row.empty:
+        known = ", ".join(p.targets["target_id"]) or "none"
+        raise InputError(f"the plan has no target {target_id!r} (its targets: {known})")
+    xyz = row[["x", "y", "z"]].to_numpy(dtype=float)[0]
+    same = np.flatnonzero(np.all(np.abs(wb.tc.xyz - xyz) < 1e-6, axis=1))
+    return int(same[0])
+
+
+def edit_targets(
+    p: Plan,
+    *,
+    remove: tuple[str, ...] | list[str] = (),
+    move: dict[str, tuple[float, float]] | None = None,
+    add_xy: np.ndarray | None = None,
+) -> Plan:
+    """The plan's stations kept and its targets edited by hand, the network built again and
+    every sample judged on scanner ⊕ registration.
+
+    ``remove`` (target ids) are ruled out: no link may use them (a wall that takes no
+    target, a stand that cannot go there). ``move`` (target id → E, N [m]) rules the old
+    place out and offers the new one: a flat target slides along its own wall at its
+    height, a sphere stands where it is put. ``add_xy`` (``(k, 2)`` [m]) offers spheres on
+    stands there. Targets placed by hand are preferred by every link that can use them
+    (the network still chooses: a target no pair of stations sees is not used, and the
+    plan says how many of them are). A control point cannot move (it is a surveyed mark);
+    it can be ruled out.
+    """
+    t0 = time.perf_counter()
+    wb = _workbench(p)
+    tc, st, fac = wb.tc, wb.settings, wb.ctx.facades
+    out = [_target_index(wb, p, t) for t in remove]
+    rows: list[tuple[list[float], str, list[float], int]] = []  # xyz, type, normal, facade
+    for target_id, (e, n) in (move or {}).items():
+        t = _target_index(wb, p, target_id)
+        if tc.type[t] == "control":
+            raise InputError(
+                f"{target_id} is a control point, a surveyed mark: it cannot move (rule it "
+                "out instead, and add a sphere where you want one)"
+            )
+        out.append(t)
+        if tc.type[t] == "flat":  # along its own wall, at its height
+            f = int(tc.facade[t])
+            a, b = fac.start[f], fac.end[f]
+            u = float(np.clip(np.dot([e, n] - a, b - a) / np.dot(b - a, b - a), 0.02, 0.98))
+            rows.append(([*(a + u * (b - a)), tc.xyz[t, 2]], "flat", list(tc.normal[t]), f))
+        else:
+            (xy,) = _free_positions(wb, [e, n], f"target stand of {target_id}")
+            rows.append(([*xy, st.target_height_m], str(tc.type[t]), [0.0, 0.0], -1))
+    if add_xy is not None and len(np.asarray(add_xy).reshape(-1, 2)):
+        if not any(i.type == "sphere" for i in st.inventory):
+            raise InputError(
+                "a target placed by hand stands on a tripod as a sphere, and your inventory "
+                "holds no sphere; add one to the inventory (e.g. 'S145, sphere, 145')"
+            )
+        for xy in _free_positions(wb, add_xy, "target stand"):
+            rows.append(([*xy, st.target_height_m], "sphere", [0.0, 0.0], -1))
+    wb.seen.barred[out] = True
+    if rows:
+        wb.seen.add_targets(
+            TargetCandidates(
+                xyz=np.array([r[0] for r in rows], dtype=float),
+                type=np.array([r[1] for r in rows], dtype=object),
+                normal=np.array([r[2] for r in rows], dtype=float),
+                facade=np.array([r[3] for r in rows], dtype=np.int64),
+                control_id=np.array([""] * len(rows), dtype=object),
+                control_rms_mm=np.full(len(rows), np.nan),
+            )
+        )
+    idx = wb.add_positions(p.stations[["x", "y"]].to_numpy(dtype=float))
+    hand = idx[(p.stations["purpose"] == "hand").to_numpy()]
+    done = [f"{len(remove)} ruled out"] if remove else []
+    done += [f"{len(move)} moved"] if move else []
+    done += [f"{len(rows) - len(move or {})} added"] if len(rows) > len(move or {}) else []
+    q = _judged(p, wb, idx, hand, f"Targets edited by hand: {', '.join(done)}.", t0)
+    q.solver = dict(p.solver) | {"objective": q.solver["objective"]}
+    mine = wb.tc.xyz[wb.seen.by_hand]
+    if len(mine):
+        used = q.targets[["x", "y", "z"]].to_numpy(dtype=float)
+        n_used = sum(bool(np.any(np.all(np.abs(used - m) < 1e-6, axis=1))) for m in mine)
+        q.messages.append(
+            f"Targets placed by hand: {n_used} of {len(mine)} used by the registration"
+            + ("" if n_used == len(mine) else " (the others no pair of stations needs or sees)")
+            + "."
+        )
+    return q
 
 
 def reoptimise(p: Plan, locked_xy: np.ndarray, progress: Progress | None = None) -> Plan:
