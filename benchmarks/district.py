@@ -2,6 +2,10 @@
 
     .venv/bin/python benchmarks/district.py                      # 1, 10, 50, 200 × 1, 2 workers
     .venv/bin/python benchmarks/district.py --sizes 1 10 --workers 2
+    .venv/bin/python benchmarks/district.py --sizes 1000 --workers 2   # adds its rows
+
+Each run's rows are kept in benchmarks/district_runs.json (a later run of the same size and
+workers replaces its row), so the table can be filled in several sittings.
 
 Synthetic towns (:func:`planner.synthetic.town`: perimeter blocks of terraced buildings,
 shared walls, courtyards, mixed heights, vertex noise) planned by ``plan_district`` on a
@@ -15,7 +19,9 @@ time about linear in the buildings.
 from __future__ import annotations
 
 import argparse
+import json
 import time
+from pathlib import Path
 
 from _results import machine, write_section
 
@@ -52,12 +58,16 @@ def main() -> None:
     ap.add_argument("--sizes", type=int, nargs="+", default=[1, 10, 50, 200])
     ap.add_argument("--workers", type=int, nargs="+", default=[1, 2])
     args = ap.parse_args()
-    rows = []
+    store = Path(__file__).resolve().parent / "district_runs.json"
+    kept = json.loads(store.read_text()) if store.exists() else []
     for n in args.sizes:
         for w in args.workers:
             r = run(n, w)
             print(r, flush=True)
-            rows.append(r)
+            kept = [k for k in kept if (k["buildings"], k["workers"]) != (n, w)] + [r]
+            kept.sort(key=lambda k: (k["buildings"], k["workers"]))
+            store.write_text(json.dumps(kept, indent=1) + "\n")
+    rows = kept
     lines = [
         "## District mode on Dask (benchmarks/district.py)",
         "",

@@ -394,3 +394,108 @@ def test_calibration_dashboard_uploads_plots_once_and_installs(calibration, tmp_
         page.screenshot(path=str(ARTIFACTS / "calibration-1280px.png"), full_page=True)
         browser.close()
     assert cut == [], f"cut off at 1280 px: {cut}"
+
+
+def _marks(page, lo: float, hi: float) -> list[dict]:
+    """Screen centres of the what-if map's marks between ``lo`` and ``hi`` px wide
+    (stations are the large triangles, targets the middle-sized diamonds, samples small)."""
+    return page.evaluate(
+        """([lo, hi]) => {
+        const fig = document.querySelector('.planner-whatif-map');
+        return [...fig.querySelectorAll('g.object_grp path.dot')]
+            .map(d => d.getBoundingClientRect())
+            .filter(r => r.width > lo && r.width <= hi)
+            .map(r => ({x: r.x + r.width / 2, y: r.y + r.height / 2}));
+    }""",
+        [lo, hi],
+    )
+
+
+def _status_after(page, action) -> str:
+    """Run ``action`` and return the what-if status once it has changed."""
+    old = page.locator(".planner-whatif-status").inner_text()
+    action()
+    page.wait_for_function(
+        "(old) => document.querySelector('.planner-whatif-status').innerText !== old",
+        arg=old,
+        timeout=30_000,
+    )
+    page.wait_for_timeout(1000)  # the marks are drawn after the status
+    return page.locator(".planner-whatif-status").inner_text()
+
+
+def _stations_in(status: str) -> int:
+    return int(status.split(" stations")[0].split()[-1])
+
+
+def test_adding_deleting_and_locking_by_hand(opened):
+    """Add a station where clicked, delete one, rule a target out, lock a station and
+    re-optimise around it: each judged again, the locked station kept where it stood."""
+    page = opened
+    n = int(page.locator(".station-count").inner_text().split()[0])
+    page.get_by_text("Edit stations", exact=True).click()
+    page.locator(".planner-whatif-map").wait_for(timeout=30_000)
+    page.wait_for_timeout(1000)
+    boxes = _marks(page, 10, 1e9)
+    assert len(boxes) == n
+    # add: a click on free ground next to a station (stations stand on free ground)
+    page.get_by_role("button", name="Add station", exact=True).click()
+    marks = _marks(page, 0, 1e9)
+    b = boxes[0]
+    spots = [(b["x"] + dx, b["y"] + dy) for dx in (-24, 24, 0) for dy in (-24, 24, 0)]
+    x, y = next(
+        s for s in spots if all(abs(q["x"] - s[0]) + abs(q["y"] - s[1]) > 14 for q in marks)
+    )
+    text = _status_after(page, lambda: page.mouse.click(x, y))
+    assert "judged again" in text, text
+    assert _stations_in(text) >= n + 1
+    assert len(_marks(page, 10, 1e9)) == _stations_in(text)
+    # delete: the station clicked goes
+    before = _stations_in(text)
+    page.get_by_role("button", name="Delete", exact=True).click()
+    b = _marks(page, 10, 1e9)[0]
+    text = _status_after(page, lambda: page.mouse.click(b["x"], b["y"]))
+    assert _stations_in(text) == before - 1, text
+    # a target clicked in Delete mode is ruled out: no target is drawn there any more
+    targets_before = _marks(page, 5, 10)
+    box = page.locator(".planner-whatif-map").bounding_box()
+    mid = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+    t = min(targets_before, key=lambda q: abs(q["x"] - mid[0]) + abs(q["y"] - mid[1]))
+    text = _status_after(page, lambda: page.mouse.click(t["x"], t["y"]))
+    assert "judged again" in text, text
+    page.wait_for_timeout(500)
+    left = _marks(page, 5, 10)
+    assert all(abs(q["x"] - t["x"]) + abs(q["y"] - t["y"]) > 2 for q in left)  # px
+    # lock one station (the first drawn is S01), re-optimise the rest around it
+    s01 = _station_rows(page)["S01"]
+    page.get_by_text("Edit stations", exact=True).click()
+    page.wait_for_timeout(500)
+    page.get_by_role("button", name="Lock / unlock", exact=True).click()
+    b = _marks(page, 10, 1e9)[0]
+    text = _status_after(page, lambda: page.mouse.click(b["x"], b["y"]))
+    assert "1 station(s) locked" in text
+    page.get_by_role("button", name="Re-optimise around the locked").click()
+    page.wait_for_function(
+        "() => document.querySelector('.planner-status').innerText.includes('re-optimising: done')",
+        timeout=120_000,
+    )
+    page.get_by_text("Summary", exact=True).click()
+    assert "1 placed by hand" in page.locator("details pre").first.inner_text()
+    page.screenshot(path=str(ARTIFACTS / "dashboard-edit-by-hand.png"), full_page=True)
+    # the locked station stands where it stood (E, N to the millimetre in the station table)
+    after = _station_rows(page).values()
+    assert any(abs(e - s01[0]) < 0.001 and abs(n - s01[1]) < 0.001 for e, n in after)  # m
+
+
+def _station_rows(page) -> dict[str, tuple[float, float]]:
+    """E and N of every station as the Stations & field work table prints them."""
+    page.get_by_text("Stations & field work", exact=True).click()
+    table = page.locator("table:has(th:text-is('station_id'))").last
+    table.wait_for(timeout=30_000)
+    heads = [h.strip() for h in table.locator("thead tr").first.locator("th").all_inner_texts()]
+    out = {}
+    for row in table.locator("tbody tr").all():
+        cells = [c.strip() for c in row.locator("th, td").all_inner_texts()]
+        named = dict(zip(heads, cells, strict=False))
+        out[named["station_id"]] = (float(named["x"]), float(named["y"]))
+    return out

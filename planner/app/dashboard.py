@@ -408,7 +408,7 @@ class StationPlanner:
             w.Output() for _ in range(5)
         )
         self.field_out = w.Output()
-        self.whatif = WhatIfMap(self.evaluate_by_hand, self.reoptimise)
+        self.whatif = WhatIfMap(self.evaluate_by_hand, self.reoptimise, self.edit_targets_by_hand)
         self.booklet_button = w.Button(description="Make field booklet (PDF)")
         self.booklet_status = w.HTML("")
         self.downloads = w.HTML("")
@@ -766,18 +766,30 @@ class StationPlanner:
         """The plan with the stations at ``xy`` (the what-if map's edit), judged at once."""
         from planner.pipeline.whatif import evaluate_stations
 
+        self._by_hand(lambda p: evaluate_stations(p, xy))
+
+    def edit_targets_by_hand(self, **edits) -> None:
+        """The plan with its targets ruled out, moved or added (the what-if map's edit),
+        judged at once (:func:`planner.pipeline.whatif.edit_targets`)."""
+        from planner.pipeline.whatif import edit_targets
+
+        self._by_hand(lambda p: edit_targets(p, **edits))
+
+    def _by_hand(self, edit) -> None:
         if self.plan is None:
             raise PlannerError("make a plan first")
         t0 = time.perf_counter()
-        p = evaluate_stations(self.plan, xy)
+        p = edit(self.plan)
         self.last_edit_s = time.perf_counter() - t0
         self.plan = p
         met, n = int(p.scanned["meets"].sum()), len(p.scanned)
+        mine = [m for m in p.messages if m.startswith("Targets placed by hand")]
         self.whatif.show_plan(
             p,
-            f"<b>{len(p.stations)} stations</b>: {met} of {n} samples meet the requirement "
-            f"(registration included) — judged again in "
-            f"<span class='planner-edit-s'>{self.last_edit_s:.2f}</span> s",
+            f"<b>{len(p.stations)} stations, {len(p.targets)} targets</b>: {met} of {n} "
+            "samples meet the requirement (registration included) — judged again in "
+            f"<span class='planner-edit-s'>{self.last_edit_s:.2f}</span> s"
+            + "".join(f"<br>{html.escape(m)}" for m in mine),
         )
         self._show_results(whatif=False, fresh=False)
 

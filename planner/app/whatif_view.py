@@ -1,5 +1,6 @@
 """The what-if map of the dashboard: stations dragged, added, deleted and locked by hand on
-an interactive map, the plan judged again at once (:mod:`planner.pipeline.whatif`).
+an interactive map, targets moved, added and ruled out, the plan judged again at once
+(:mod:`planner.pipeline.whatif`).
 
 The map is a ``bqplot`` figure: it is an ipywidget (served by Voilà like any other, no
 server-side rendering per drag), its scatter marks can be dragged in the browser with the
@@ -26,7 +27,13 @@ from planner.pipeline.result import Plan
 __all__ = ["WhatIfMap"]
 
 #: What a click on the map does.
-MODES = [("Move (drag)", "move"), ("Add", "add"), ("Delete", "delete"), ("Lock / unlock", "lock")]
+MODES = [
+    ("Move (drag)", "move"),
+    ("Add station", "add"),
+    ("Add target", "add-target"),
+    ("Delete", "delete"),
+    ("Lock / unlock", "lock"),
+]
 
 
 def _rings(geoms) -> tuple[np.ndarray, np.ndarray]:
@@ -48,15 +55,17 @@ def _rings(geoms) -> tuple[np.ndarray, np.ndarray]:
 class WhatIfMap:
     """Stations on the site, editable; facade samples green (met) or red (unmet).
 
-    ``evaluate(xy)`` and ``reoptimise(locked_xy)`` are given by the dashboard (they run the
-    pipeline); this class only holds the map, the edit modes and the lock marks."""
+    ``evaluate(xy)``, ``edit_targets(remove=, move=, add_xy=)`` and ``reoptimise(locked_xy)``
+    are given by the dashboard (they run the pipeline); this class only holds the map, the
+    edit modes and the lock marks."""
 
     def __init__(
         self,
         evaluate: Callable[[np.ndarray], None],
         reoptimise: Callable[[np.ndarray], None],
+        edit_targets: Callable[..., None],
     ) -> None:
-        self._evaluate, self._reoptimise = evaluate, reoptimise
+        self._evaluate, self._reoptimise, self._edit_targets = evaluate, reoptimise, edit_targets
         self.sx, self.sy = bq.LinearScale(), bq.LinearScale()
         scales = {"x": self.sx, "y": self.sy}
         self.buildings = bq.Lines(
@@ -85,7 +94,8 @@ class WhatIfMap:
             scales=scales,
             marker="diamond",
             colors=[COLOURS["target"]],
-            default_size=30,
+            stroke="white",
+            default_size=60,
             display_names=False,
         )
         self.stations = bq.Scatter(
@@ -127,20 +137,28 @@ class WhatIfMap:
         self.status.add_class("planner-whatif-status")
         self.locked: list[bool] = []
         self._xy = np.empty((0, 2))
+        self._target_ids: list[str] = []
+        self._target_xy = np.empty((0, 2))
         self._quiet = False
         self.mode.observe(lambda _c: self._set_mode(), "value")
         self.stations.on_drag_end(lambda _m, e: self._dragged(e))
         self.stations.on_element_click(lambda _m, e: self._clicked(e))
         self.stations.observe(lambda _c: self._maybe_added(), names=["x"])
+        self.targets.on_drag_end(lambda _m, e: self._target_dragged(e))
+        self.targets.on_element_click(lambda _m, e: self._target_clicked(e))
+        self.targets.observe(lambda _c: self._maybe_target_added(), names=["x"])
         self.reopt.on_click(lambda _b: self._reoptimise(self._xy[np.asarray(self.locked, bool)]))
         self.widget = w.VBox(
             [
                 w.HTML(
-                    "<small>Drag a station to move it; <b>Add</b> puts one where you click, "
-                    "<b>Delete</b> removes the one clicked, <b>Lock</b> keeps it when the rest "
-                    "is optimised again. The plan (coverage, accuracy with the registration "
-                    "error, targets) is judged again after every edit. Green samples meet the "
-                    "requirement, red ones do not.</small>"
+                    "<small>Drag a station (▲) or a target (◆) to move it — a wall target "
+                    "slides along its wall; <b>Add station</b> / <b>Add target</b> (a sphere "
+                    "on a stand) puts one where you click; <b>Delete</b> removes the station "
+                    "clicked, or rules the target clicked out (no link uses it again); "
+                    "<b>Lock</b> keeps a station when the rest is optimised again. The plan "
+                    "(coverage, accuracy with the registration error, targets) is judged again "
+                    "after every edit. Green samples meet the requirement, red ones do not."
+                    "</small>"
                 ),
                 w.HBox([self.mode, self.reopt]),
                 self.status,
@@ -162,7 +180,8 @@ class WhatIfMap:
         cov = p.scanned
         self.samples.x, self.samples.y = cov["x"].to_numpy(), cov["y"].to_numpy()
         self.samples.color = (~cov["meets"].to_numpy()).astype(float)
-        self.targets.x, self.targets.y = p.targets["x"].to_numpy(), p.targets["y"].to_numpy()
+        self._target_ids = [str(t) for t in p.targets["target_id"]]
+        self._target_xy = p.targets[["x", "y"]].to_numpy(dtype=float).reshape(-1, 2)
         xy = p.stations[["x", "y"]].to_numpy(dtype=float)
         self._xy = xy
         self.locked = [old.get(tuple(np.round(q, 3)), False) for q in xy]
@@ -170,6 +189,7 @@ class WhatIfMap:
         with self.stations.hold_sync():
             self.stations.x, self.stations.y = xy[:, 0], xy[:, 1]
             self.stations.names = self._names(p.stations["station_id"])
+        self._draw_targets()
         self._quiet = False
         self._fit_extent(p)
         if message:
@@ -179,7 +199,7 @@ class WhatIfMap:
         return [f"{s} 🔒" if lk else str(s) for s, lk in zip(ids, self.locked, strict=True)]
 
     def _fit_extent(self, p: Plan) -> None:
-        pts = [p.scanned[["x", "y"]].to_numpy(), self._xy]
+        pts = [p.scanned[["x", "y"]].to_numpy(), self._xy, self._target_xy]
         allxy = np.vstack([q for q in pts if len(q)])
         lo, hi = allxy.min(axis=0), allxy.max(axis=0)
         centre, half = (lo + hi) / 2, max(float((hi - lo).max()) / 2 + 10.0, 20.0)
@@ -189,10 +209,18 @@ class WhatIfMap:
         self.figure.min_aspect_ratio = self.figure.max_aspect_ratio = 1.0
 
     # -- edits -----------------------------------------------------------------------------------
+    def _draw_targets(self) -> None:
+        quiet, self._quiet = self._quiet, True
+        with self.targets.hold_sync():
+            self.targets.x, self.targets.y = self._target_xy[:, 0], self._target_xy[:, 1]
+            self.targets.names = self._target_ids
+        self._quiet = quiet
+
     def _set_mode(self) -> None:
         mode = self.mode.value
-        self.stations.enable_move = mode == "move"
+        self.stations.enable_move = self.targets.enable_move = mode == "move"
         self.stations.interactions = {"click": "add"} if mode == "add" else {}
+        self.targets.interactions = {"click": "add"} if mode == "add-target" else {}
 
     def _current(self) -> np.ndarray:
         return np.column_stack([np.asarray(self.stations.x), np.asarray(self.stations.y)])
@@ -222,6 +250,34 @@ class WhatIfMap:
             self.stations.names = self._names(ids)
             n = sum(self.locked)
             self.status.value = f"{n} station(s) locked: re-optimise to keep them and plan the rest"
+
+    def _target_dragged(self, event) -> None:
+        k = int(event.get("index", -1))
+        if 0 <= k < len(self._target_ids):
+            x, y = float(self.targets.x[k]), float(self.targets.y[k])
+            self._targets_edit("moved", move={self._target_ids[k]: (x, y)})
+
+    def _target_clicked(self, event) -> None:
+        k = int(event.get("data", {}).get("index", -1))
+        if self.mode.value == "delete" and 0 <= k < len(self._target_ids):
+            self._targets_edit("ruled out", remove=[self._target_ids[k]])
+
+    def _maybe_target_added(self) -> None:
+        if self._quiet or self.mode.value != "add-target":
+            return
+        if len(self.targets.x) > len(self._target_ids):
+            xy = np.array([[float(self.targets.x[-1]), float(self.targets.y[-1])]])
+            self._targets_edit("added", add_xy=xy)
+
+    def _targets_edit(self, what: str, **edits) -> None:
+        try:
+            self._edit_targets(**edits)
+        except PlannerError as exc:
+            self.status.value = (
+                f"<span class='planner-error' style='color:#922'>Target not {what}: "
+                f"{html.escape(str(exc))}</span>"
+            )
+            self._draw_targets()  # back where they were
 
     def _edit(self, xy: np.ndarray, what: str) -> None:
         before, locks = self._xy, list(self.locked)
