@@ -87,3 +87,22 @@ def test_unreachable_scheduler_is_exit_2(tmp_path):
 def test_block_size_is_checked(district):
     with pytest.raises(InputError, match="at least 20 m"):
         partition(district[0], 5.0)
+
+
+def test_a_crowded_block_is_split_until_it_fits():
+    site = town(60, seed=1)
+    blocks = partition(site, 250.0, max_buildings=8)
+    assert max(len(b.buildings) for b in blocks) <= 8
+    ids = [b for blk in blocks for b in blk.buildings]
+    assert sorted(ids) == sorted(b.id for b in site.planned)  # each exactly once
+    assert len(partition(site, 250.0, max_buildings=1000)) < len(blocks)
+
+
+def test_a_block_that_outgrows_its_worker_is_a_clear_error(district):
+    """A worker killed for memory on every try: an InputError naming the block and the way
+    out, not Dask's KilledWorker traceback."""
+    site, _ = district
+    with pytest.raises(InputError, match=r"needed more memory than a worker has \(60MB\)"):
+        plan_district(
+            site, SCANNER, settings=SETTINGS, block_m=80.0, workers=1, memory_limit="60MB"
+        )

@@ -29,7 +29,12 @@ import shapely
 from shapely.geometry import box
 
 from planner.errors import InputError
-from planner.pipeline.requirements import DEFAULT_BLOCK_M, PlanSettings, Requirements
+from planner.pipeline.requirements import (
+    DEFAULT_BLOCK_M,
+    MAX_BLOCK_BUILDINGS,
+    PlanSettings,
+    Requirements,
+)
 from planner.pipeline.result import Plan
 from planner.pipeline.route import field_route
 from planner.scanner import Scanner
@@ -49,16 +54,34 @@ class Block:
     footprint: shapely.Geometry  # the union of its planned footprints
 
 
-def partition(site: Site, block_m: float = DEFAULT_BLOCK_M) -> list[Block]:
+def partition(
+    site: Site, block_m: float = DEFAULT_BLOCK_M, max_buildings: int = MAX_BLOCK_BUILDINGS
+) -> list[Block]:
     """The planned buildings in square blocks of ``block_m`` (by footprint centroid), in
-    row order from the south-west."""
+    row order from the south-west; a block with more than ``max_buildings`` is split into
+    quadrants, again while needed (down to 20 m), so that every block fits a worker."""
     if not (isinstance(block_m, int | float) and math.isfinite(block_m) and block_m >= 20):
         raise InputError(f"the block size must be at least 20 m; got {block_m!r}")
-    planned = site.planned
-    cells: dict[tuple[int, int], list] = {}
-    for b in planned:
+    cells: dict[tuple[float, float, float], list] = {}  # (south, west, side) → buildings
+
+    def place(buildings: list, south: float, west: float, side: float) -> None:
+        if len(buildings) <= max_buildings or side / 2 < 20.0:
+            cells[(south, west, side)] = buildings
+            return
+        half = side / 2
+        parts: dict[tuple[int, int], list] = {}
+        for b in buildings:
+            c = b.footprint.centroid
+            parts.setdefault((int(c.y >= south + half), int(c.x >= west + half)), []).append(b)
+        for (i, j), bs in parts.items():
+            place(bs, south + i * half, west + j * half, half)
+
+    grid: dict[tuple[int, int], list] = {}
+    for b in site.planned:
         c = b.footprint.centroid
-        cells.setdefault((math.floor(c.y / block_m), math.floor(c.x / block_m)), []).append(b)
+        grid.setdefault((math.floor(c.y / block_m), math.floor(c.x / block_m)), []).append(b)
+    for (row, col), bs in grid.items():
+        place(bs, row * block_m, col * block_m, block_m)
     out = []
     for n, key in enumerate(sorted(cells), start=1):
         bs = cells[key]
@@ -146,6 +169,7 @@ def plan_district(
     sites = [block_site(site, b, halo) for b in blocks]
     say(0.0, f"{len(blocks)} block(s) of {block_m:g} m, halo {halo:.0f} m")
     from dask.distributed import Client, LocalCluster, as_completed
+    from distributed.scheduler import KilledWorker
 
     cluster = None
     if scheduler:
@@ -173,7 +197,14 @@ def plan_district(
         plans: list[Plan | None] = [None] * len(blocks)
         for done, fut in enumerate(as_completed(futures), start=1):
             k = futures[fut]
-            plans[k] = fut.result()
+            try:
+                plans[k] = fut.result()
+            except KilledWorker:
+                raise InputError(
+                    f"block {blocks[k].key} ({len(blocks[k].buildings)} buildings) needed more "
+                    f"memory than a worker has ({memory_limit}); plan with smaller blocks "
+                    f"(--block-m {block_m / 2:g}) or workers with more memory"
+                ) from None
             say(0.95 * done / len(blocks), f"block {done} of {len(blocks)} planned")
     finally:
         client.close()

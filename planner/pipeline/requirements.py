@@ -383,6 +383,12 @@ MODELS = ("3d", "paper")
 #: Side of a district block [m] (:mod:`planner.pipeline.district`): a few city blocks, a
 #: task of seconds to a minute.
 DEFAULT_BLOCK_M = 250.0
+#: A block holding more planned buildings than this is split into quadrants (again while
+#: needed). Measured on the synthetic town (benchmarks/RESULTS.md, district section): a
+#: block of 100 terraced buildings outgrew a 2 GB worker; one of 27 took 72 s (46 s of it
+#: the registration of 85 stations, whose chain then carried 5.8 mm of m_z); blocks of 10–11
+#: take 20–26 s and keep their registration chains short.
+MAX_BLOCK_BUILDINGS = 12
 
 
 @dataclass(frozen=True, kw_only=True)
