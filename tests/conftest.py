@@ -21,13 +21,15 @@ def _own_profile_folder(tmp_path_factory):
 
 @pytest.fixture(scope="session")
 def paper_scanner() -> Scanner:
-    """Seed 003's worked example: m_S = 4 mm, m_β = m_ν = 12.4″, station errors zero."""
+    """Voroshilov & Karachentsev's worked example: m_S = 4 mm, m_β = m_ν = 12.4″, station
+    errors zero."""
     return Scanner.from_name("leica-4mm-60urad")
 
 
 @pytest.fixture(scope="session")
 def ppm_scanner() -> Scanner:
-    """Ranging a + b·D (2 mm + 100 ppm, seed 004's requirement), distinct H and V angles."""
+    """Ranging a + b·D (2 mm + 100 ppm, Liu & Zhang's accuracy ±(2 + L/10000) mm), distinct H
+    and V angles."""
     return Scanner(
         name="ppm-test",
         range_rms_mm=2.0,

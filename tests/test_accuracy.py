@@ -19,7 +19,7 @@ from planner.units import RHO_ARCSEC
 
 
 def test_normal_case_terms_do_not_cross(paper_scanner):
-    """γ = 0: m_S does not reach m_x and m_β does not reach m_y (seed 003, §2)."""
+    """γ = 0: m_S does not reach m_x and m_β does not reach m_y (Voroshilov & Karachentsev, §2)."""
     m_x, m_y = planimetric_rms(100.0, 0.0, paper_scanner)
     assert m_x == pytest.approx(100_000 / RHO_ARCSEC * 12.4, abs=1e-6)  # mm, angular only
     assert m_y == pytest.approx(4.0, abs=1e-12)  # mm, ranging only

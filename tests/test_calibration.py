@@ -67,9 +67,10 @@ def test_m_r_of_pure_noise_is_the_noise_sigma():
 
 
 def test_lab_test_reproduces_the_inflated_angular_figures_of_short_lab_distances():
-    """Seed 002 found 284–1232″ horizontal m_r in a 9.3 × 7 × 3.3 m lab. A scanner with only
-    20″ angular noise simulated in such a room gives the same magnitude: target pairs nearly
-    above one another have tiny horizontal separations, and φ = arctan(ΔX/ΔY) blows up."""
+    """The Belgrade procedure found 284–1232″ horizontal m_r in a 9.3 × 7 × 3.3 m lab. A scanner
+    with only 20″ angular noise simulated in such a room gives the same magnitude: target pairs
+    nearly above one another have tiny horizontal separations, and φ = arctan(ΔX/ΔY) blows
+    up."""
     ref, scan = simulate_lab(angle_rms_arcsec=20.0, range_rms_mm=1.5)
     t = lab_test(ref, scan)
     assert t.m_r["horizontal_arcsec"] > 10 * 20.0
@@ -87,14 +88,15 @@ def test_lab_network_check_and_pairs_option():
         ref, scan, pairs="first", reference_precision_mm=0.7, declared_target_precision_mm=2.0
     )
     assert len(t.pairs) == 11 and set(t.pairs["target_a"]) == {"1"}
-    # seed 002: 0.7 mm against 2 mm — a third is 0.67 mm, so 0.7 passes only as the paper rounds
+    # the Belgrade procedure's network check: 0.7 mm against 2 mm — a third is 0.67 mm, so
+    # 0.7 passes only as the paper rounds
     assert "NOT good enough" in t.network and "0.67 mm" in t.network
     ok = lab_test(ref.assign(sigma_mm=0.5), scan, declared_target_precision_mm=2.0)
     assert ok.network.startswith("reference network good enough: point precision 0.5 mm")
 
 
 def test_baseline_recovers_k_and_R_within_their_standard_errors():
-    data = simulate_baseline(k_mm=3.9, scale_ppm=-30.0, noise_mm=1.0)  # seed 004's HDS3000
+    data = simulate_baseline(k_mm=3.9, scale_ppm=-30.0, noise_mm=1.0)  # Liu & Zhang's HDS3000
     r = baseline_calibration(data)
     assert abs(r.k_mm - 3.9) < 3 * r.k_se_mm
     assert abs(r.scale_ppm - (-30.0)) < 3 * r.scale_se_ppm
@@ -124,25 +126,25 @@ def test_axis_errors_recover_c_and_i():
     assert r.residual_rms_arcsec == pytest.approx(2.0, rel=0.4)
 
 
-SEED_002_TABLES = {  # Table 3 (k = 1) and Table 4 (k = 2): distance [mm], φ [″], θ [″]
+BELGRADE_TABLES = {  # Table 3 (k = 1) and Table 4 (k = 2): distance [mm], φ [″], θ [″]
     "FARO Focus3D": ((2.5, 1231.68, 59.31), (5.0, 2463.36, 118.62)),
     "Leica HDS3000": ((1.1, 606.89, 95.43), (2.3, 1213.77, 190.85)),
     "Leica ScanStation P20": ((1.7, 284.06, 52.49), (3.4, 568.13, 104.97)),
 }
 
 
-@pytest.mark.parametrize("scanner", SEED_002_TABLES)
-def test_seed_002_expanded_uncertainties_are_twice_the_standard_ones(scanner):
-    """M_r = 2·m_r (seed 002, eq. 8) within the rounding of the printed figures: a printed m_r
-    is ±half a unit of its last digit, so 2·m_r is ±one unit; plus half a unit for M_r.
+@pytest.mark.parametrize("scanner", BELGRADE_TABLES)
+def test_belgrade_expanded_uncertainties_are_twice_the_standard_ones(scanner):
+    """M_r = 2·m_r (Belgrade procedure, eq. 8) within the rounding of the printed figures: a
+    printed m_r is ±half a unit of its last digit, so 2·m_r is ±one unit; plus half a unit for M_r.
     (HDS3000: 2 × 1.1 = 2.2 but 2.3 printed — the unrounded m_r was 1.15 mm.)"""
-    m, big = SEED_002_TABLES[scanner]
+    m, big = BELGRADE_TABLES[scanner]
     for value, expanded, unit in zip(m, big, (0.1, 0.01, 0.01), strict=True):
         assert abs(expanded - 2 * value) <= unit + unit / 2 + 1e-9
 
 
-def test_seed_004_six_segment_table_cannot_be_recomputed_and_is_inconsistent():
-    """Seed 004, Table 1: the total station's mean distances from point 1 and the 'distances
+def test_liu_zhang_six_segment_table_cannot_be_recomputed_and_is_inconsistent():
+    """Liu & Zhang, Table 1: the total station's mean distances from point 1 and the 'distances
     corrected by the additive constant' C = −1.5 mm. Only 6 of the 21 observed distances are
     printed, so the adjustment cannot be redone; and the printed corrections are +1.8 … +3.8 mm,
     not the constant −1.5 mm: they are adjusted values, not D + C."""

@@ -1,6 +1,6 @@
 """The papers' printed tables, reproduced cell by cell from the formulas.
 
-Seed 003 (Voroshilov & Karachentsev) Tables 1–2 and Sossa's Tables 1–2. Where a printed
+Voroshilov & Karachentsev's Tables 1–2 and Sossa's Tables 1–2. Where a printed
 cell cannot come from the paper's own formula, the formula's value is asserted and the
 printed one is recorded here as a documented misprint.
 """
@@ -113,7 +113,8 @@ def test_table2_m_z_horizontal_beam_with_two_misprints(paper_scanner):
 
 
 def test_table2_rows_are_what_the_paper_concludes(paper_scanner):
-    """'For S <= 50 m, m_x and m_y stay within 4 mm and m_z within 5 mm' (seed 003)."""
+    """'For S <= 50 m, m_x and m_y stay within 4 mm and m_z within 5 mm' (Voroshilov &
+    Karachentsev, conclusions)."""
     s = np.array([10, 20, 30, 40, 50.0])
     m_z = height_rms(s[:, None], np.array([0, 30, 60, 90.0])[None, :], paper_scanner)
     assert m_z.max() <= 5.0 + 0.01  # mm (5.004 at S = 50 m, ν = 90°)
