@@ -297,6 +297,11 @@ def test_no_label_is_cut_off(dashboard_url, width):
         page.wait_for_timeout(500)
         cut = _cut_off(page)
         page.screenshot(path=str(ARTIFACTS / f"dashboard-{width}px.png"), full_page=True)
+        page.get_by_text("Edit stations", exact=True).click()
+        page.locator(".planner-whatif-map").wait_for(timeout=30_000)
+        page.wait_for_timeout(500)
+        cut += _cut_off(page)
+        page.screenshot(path=str(ARTIFACTS / f"dashboard-edit-{width}px.png"), full_page=True)
         browser.close()
     assert cut == [], f"cut off at {width} px: {cut}"
 

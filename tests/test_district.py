@@ -96,13 +96,3 @@ def test_a_crowded_block_is_split_until_it_fits():
     ids = [b for blk in blocks for b in blk.buildings]
     assert sorted(ids) == sorted(b.id for b in site.planned)  # each exactly once
     assert len(partition(site, 250.0, max_buildings=1000)) < len(blocks)
-
-
-def test_a_block_that_outgrows_its_worker_is_a_clear_error(district):
-    """A worker killed for memory on every try: an InputError naming the block and the way
-    out, not Dask's KilledWorker traceback."""
-    site, _ = district
-    with pytest.raises(InputError, match=r"needed more memory than a worker has \(60MB\)"):
-        plan_district(
-            site, SCANNER, settings=SETTINGS, block_m=80.0, workers=1, memory_limit="60MB"
-        )

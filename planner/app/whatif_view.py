@@ -132,7 +132,7 @@ class WhatIfMap:
         self.figure.add_class("planner-whatif-map")
         self.mode = w.ToggleButtons(options=MODES, value="move", description="Click to")
         self.reopt = w.Button(description="Re-optimise around the locked", icon="refresh")
-        self.reopt.layout.width = "auto"
+        self.reopt.layout.width = "22em"
         self.status = w.HTML("")
         self.status.add_class("planner-whatif-status")
         self.locked: list[bool] = []
@@ -160,7 +160,8 @@ class WhatIfMap:
                     "after every edit. Green samples meet the requirement, red ones do not."
                     "</small>"
                 ),
-                w.HBox([self.mode, self.reopt]),
+                self.mode,
+                self.reopt,
                 self.status,
                 self.figure,
             ]
