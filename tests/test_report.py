@@ -54,3 +54,28 @@ def test_report_bad_input_exits_2(tmp_path):
         str(tmp_path / "r.pdf"),
     )
     assert code == 2 and "must name an .html file" in err
+
+
+def test_dashboard_report_and_booklet_join_plan_zip():
+    """The dashboard's Make report / Make booklet buttons offer the file and add it to
+    plan.zip with the plan's files; with no plan they say so."""
+    import base64
+    import io
+    import re
+    import zipfile
+
+    from planner.app.dashboard import StationPlanner
+
+    ui = StationPlanner()
+    ui.make_booklet()
+    assert "make a plan first" in ui.booklet_status.value
+    ui.run()
+    ui.make_report()
+    ui.make_booklet()
+    assert 'download="report.html"' in ui.report_status.value
+    assert 'download="booklet.pdf"' in ui.booklet_status.value
+    data = re.search(
+        r'download="plan.zip" href="data:application/zip;base64,([^"]+)"', ui.downloads.value
+    ).group(1)
+    names = set(zipfile.ZipFile(io.BytesIO(base64.b64decode(data))).namelist())
+    assert {"report.html", "booklet.pdf", "stations.csv", "plan.dxf"} <= names

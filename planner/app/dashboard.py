@@ -898,35 +898,36 @@ class StationPlanner:
         """Render the static HTML report of the current inputs and offer it for download."""
         from planner.app.report import make_report
 
-        if self.plan is None:
-            self.report_status.value = _error_html("make a plan first")
-            return
-        self.report_status.value = "<i>rendering the report (a few seconds)…</i>"
-        self.report_button.disabled = True
-        try:
+        def build(p) -> bytes:
             out = Path(self._tmp.name) / "report.html"
-            make_report(self.plan, out)
-            self._add_download("report.html", out.read_bytes(), self.report_status)
-        except Exception as exc:
-            self.report_status.value = _error_html(f"the report failed: {exc}")
-        finally:
-            self.report_button.disabled = False
+            make_report(p, out)
+            return out.read_bytes()
+
+        self._make("report.html", build, "rendering the report (a few seconds)", "report")
 
     def make_booklet(self) -> None:
         """Render the field booklet of the plan on screen and offer it for download."""
         from planner.app.booklet import booklet_pdf
 
+        self._make(
+            "booklet.pdf", booklet_pdf, "drawing the booklet (a page per station)", "booklet"
+        )
+
+    def _make(self, name: str, build, doing: str, what: str) -> None:
+        """Make one more file of the plan on screen (its button off meanwhile), then offer it
+        for download and in plan.zip."""
+        status, button = getattr(self, f"{what}_status"), getattr(self, f"{what}_button")
         if self.plan is None:
-            self.booklet_status.value = _error_html("make a plan first")
+            status.value = _error_html("make a plan first")
             return
-        self.booklet_status.value = "<i>drawing the booklet (a page per station)…</i>"
-        self.booklet_button.disabled = True
+        status.value = f"<i>{doing}…</i>"
+        button.disabled = True
         try:
-            self._add_download("booklet.pdf", booklet_pdf(self.plan), self.booklet_status)
-        except Exception as exc:
-            self.booklet_status.value = _error_html(f"the booklet failed: {exc}")
+            self._add_download(name, build(self.plan), status)
+        except Exception as exc:  # the file's own failure, shown where it was asked for
+            status.value = _error_html(f"the {what} failed: {exc}")
         finally:
-            self.booklet_button.disabled = False
+            button.disabled = False
 
     def show(self) -> None:
         display(self.widget)
