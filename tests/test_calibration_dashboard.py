@@ -87,6 +87,11 @@ def test_an_upload_replaces_its_step_and_a_bad_one_withdraws_the_profile(ui):
     assert ui.scanner is None and ui.install.disabled
     assert "axis directions file" in _text(ui.profile_out)
 
+    # a distances file that fails: the profile names that file, not the six-segment case
+    ui.range_from.value = "baseline"
+    _upload(ui, "distances", "broken.csv", b"x;y\n1;2\n")
+    assert "distances file, which gave no result" in _text(ui.profile_out)
+
     ui.use_example()
     assert sorted(ui.results) == ["axes", "distances", "lab"]
     assert "example: axes.csv" in ui.slots["axes"].name.value

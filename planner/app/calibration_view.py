@@ -44,6 +44,14 @@ from planner.scanner import Scanner, installed_profile_path, user_profile_dir
 __all__ = ["CalibrationDashboard"]
 
 _STYLE = {"description_width": "16em"}
+
+#: Where a profile's figures come from (the choices of the profile's dropdowns): the step whose
+#: result gives them, and its files in words.
+_SOURCES = {
+    "lab": ("lab", "lab files"),
+    "baseline": ("distances", "distances file"),
+    "axes": ("axes", "axis directions file"),
+}
 _WIDE = w.Layout(width="95%")
 
 
@@ -315,24 +323,19 @@ class CalibrationDashboard:
         self._replace = None
         baseline = self.results.get("distances")
         try:
+            for source in (self.range_from.value, self.angles_from.value):
+                key, what = _SOURCES.get(source, (None, ""))
+                if key is not None and key not in self.results:
+                    raise PlannerError(
+                        f"the figures chosen come from the {what}, which gave no result "
+                        "(see its tab); upload a good file or choose another source"
+                    )
             if self.range_from.value == "baseline" and not isinstance(baseline, BaselineResult):
                 raise PlannerError(
                     "ranging from the distances needs a baseline comparison (measured_m, "
                     "reference_m); a six-segment file gives the additive constant only — "
                     "choose the lab test or the base profile"
                 )
-            for source, step, what in (
-                (self.range_from.value, "lab", "lab files"),
-                (self.angles_from.value, "lab", "lab files"),
-                (self.range_from.value, "baseline", "distances file"),
-                (self.angles_from.value, "axes", "axis directions file"),
-            ):
-                key = {"baseline": "distances"}.get(step, step)
-                if source == step and key not in self.results:
-                    raise PlannerError(
-                        f"the figures chosen come from the {what}, which gave no result "
-                        "(see its tab); upload a good file or choose another source"
-                    )
             scanner, notes = profile_from_calibration(
                 self.name.value.strip(),
                 base=Scanner.from_name(self.base.value),
