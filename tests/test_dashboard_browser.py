@@ -227,17 +227,8 @@ def test_an_unmet_requirement_explains_itself(opened):
 
 
 def _station_boxes(page) -> list[dict]:
-    """Screen centres of the station triangles of the what-if map."""
-    return page.evaluate(
-        """() => {
-        const fig = document.querySelector('.planner-whatif-map');
-        // the stations are the large marks (samples and targets are small)
-        const big = [...fig.querySelectorAll('g.object_grp path.dot')].filter(
-            d => d.getBoundingClientRect().width > 10);
-        return big.map(d => { const r = d.getBoundingClientRect();
-            return {x: r.x + r.width / 2, y: r.y + r.height / 2}; });
-    }"""
-    )
+    """Screen centres of the station triangles of the what-if map (the large marks)."""
+    return _marks(page, 10, 1e9)
 
 
 def test_dragging_a_station_changes_the_coverage(opened):
@@ -441,7 +432,7 @@ def test_adding_deleting_and_locking_by_hand(opened):
     page.get_by_text("Edit stations", exact=True).click()
     page.locator(".planner-whatif-map").wait_for(timeout=30_000)
     page.wait_for_timeout(1000)
-    boxes = _marks(page, 10, 1e9)
+    boxes = _station_boxes(page)
     assert len(boxes) == n
     # add: a click on free ground next to a station (stations stand on free ground)
     page.get_by_role("button", name="Add station", exact=True).click()
@@ -454,11 +445,11 @@ def test_adding_deleting_and_locking_by_hand(opened):
     text = _status_after(page, lambda: page.mouse.click(x, y))
     assert "judged again" in text, text
     assert _stations_in(text) >= n + 1
-    assert len(_marks(page, 10, 1e9)) == _stations_in(text)
+    assert len(_station_boxes(page)) == _stations_in(text)
     # delete: the station clicked goes
     before = _stations_in(text)
     page.get_by_role("button", name="Delete", exact=True).click()
-    b = _marks(page, 10, 1e9)[0]
+    b = _station_boxes(page)[0]
     text = _status_after(page, lambda: page.mouse.click(b["x"], b["y"]))
     assert _stations_in(text) == before - 1, text
     # a target clicked in Delete mode is ruled out: no target is drawn there any more
@@ -476,7 +467,7 @@ def test_adding_deleting_and_locking_by_hand(opened):
     page.get_by_text("Edit stations", exact=True).click()
     page.wait_for_timeout(500)
     page.get_by_role("button", name="Lock / unlock", exact=True).click()
-    b = _marks(page, 10, 1e9)[0]
+    b = _station_boxes(page)[0]
     text = _status_after(page, lambda: page.mouse.click(b["x"], b["y"]))
     assert "1 station(s) locked" in text
     page.get_by_role("button", name="Re-optimise around the locked").click()

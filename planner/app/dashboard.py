@@ -903,20 +903,29 @@ class StationPlanner:
             make_report(p, out)
             return out.read_bytes()
 
-        self._make("report.html", build, "rendering the report (a few seconds)", "report")
+        self._make(
+            "report.html",
+            build,
+            "rendering the report (a few seconds)",
+            self.report_status,
+            self.report_button,
+        )
 
     def make_booklet(self) -> None:
         """Render the field booklet of the plan on screen and offer it for download."""
         from planner.app.booklet import booklet_pdf
 
         self._make(
-            "booklet.pdf", booklet_pdf, "drawing the booklet (a page per station)", "booklet"
+            "booklet.pdf",
+            booklet_pdf,
+            "drawing the booklet (a page per station)",
+            self.booklet_status,
+            self.booklet_button,
         )
 
-    def _make(self, name: str, build, doing: str, what: str) -> None:
-        """Make one more file of the plan on screen (its button off meanwhile), then offer it
-        for download and in plan.zip."""
-        status, button = getattr(self, f"{what}_status"), getattr(self, f"{what}_button")
+    def _make(self, name: str, build, doing: str, status: w.HTML, button: w.Button) -> None:
+        """Make one more file of the plan on screen (``button`` off meanwhile, news in
+        ``status``), then offer it for download and in plan.zip."""
         if self.plan is None:
             status.value = _error_html("make a plan first")
             return
@@ -925,7 +934,7 @@ class StationPlanner:
         try:
             self._add_download(name, build(self.plan), status)
         except Exception as exc:  # the file's own failure, shown where it was asked for
-            status.value = _error_html(f"the {what} failed: {exc}")
+            status.value = _error_html(f"the {Path(name).stem} failed: {exc}")
         finally:
             button.disabled = False
 

@@ -747,9 +747,9 @@ def build_network(
                 lay = trial
     stations, sight, station_xyz, datum = lay.stations, lay.sight, lay.station_xyz, lay.datum
     k, xyz = lay.k, tc.xyz
-    # the links in tree order, each preferring the targets already set up (first those the
-    # surveyor placed by hand)
-    placed: set[int] = {int(t) for t in np.flatnonzero(seen.by_hand)}
+    # the links in tree order, each preferring the targets already set up (those the surveyor
+    # placed by hand are taken first by every link that sees them: _choose_link_targets)
+    placed: set[int] = set()
     links: list[Link] = []
     link_error: dict[tuple[int, int], float] = {}
     for parent, child in lay.tree:
@@ -810,7 +810,7 @@ def build_network(
         link_error_mm=link_error,
         link_sigma_mm=link_sigma,
         linkable=linkable,
-        targets=sorted({t for lk in links for t in lk.targets}),
+        targets=sorted(placed),
         datum=None if datum == CONTROL else datum,
         error=error,
         n_groups=n_groups,

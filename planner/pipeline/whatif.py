@@ -120,6 +120,7 @@ def edit_targets(
     wb = _workbench(p)
     tc, st, fac = wb.tc, wb.settings, wb.ctx.facades
     out = [_target_index(wb, p, t) for t in remove]
+    n_added = 0
     rows: list[tuple[list[float], str, list[float], int]] = []  # xyz, type, normal, facade
     for target_id, (e, n) in (move or {}).items():
         t = _target_index(wb, p, target_id)
@@ -145,6 +146,7 @@ def edit_targets(
             )
         for xy in _free_positions(wb, add_xy, "target stand"):
             rows.append(([*xy, st.target_height_m], "sphere", [0.0, 0.0], -1))
+            n_added += 1
     wb.seen.barred[out] = True
     if rows:
         wb.seen.add_targets(
@@ -161,16 +163,16 @@ def edit_targets(
     hand = idx[(p.stations["purpose"] == "hand").to_numpy()]
     done = [f"{len(remove)} ruled out"] if remove else []
     done += [f"{len(move)} moved"] if move else []
-    done += [f"{len(rows) - len(move or {})} added"] if len(rows) > len(move or {}) else []
+    done += [f"{n_added} added"] if n_added else []
     q = _judged(p, wb, idx, hand, f"Targets edited by hand: {', '.join(done)}.", t0)
     q.solver = dict(p.solver) | {"objective": q.solver["objective"]}
-    mine = wb.tc.xyz[wb.seen.by_hand]
-    if len(mine):
-        used = q.targets[["x", "y", "z"]].to_numpy(dtype=float)
-        n_used = sum(bool(np.any(np.all(np.abs(used - m) < 1e-6, axis=1))) for m in mine)
+    mine = int(wb.seen.by_hand.sum())
+    if mine:
+        used = q.network.targets if q.network is not None else []
+        n_used = int(wb.seen.by_hand[used].sum())
         q.messages.append(
-            f"Targets placed by hand: {n_used} of {len(mine)} used by the registration"
-            + ("" if n_used == len(mine) else " (the others no pair of stations needs or sees)")
+            f"Targets placed by hand: {n_used} of {mine} used by the registration"
+            + ("" if n_used == mine else " (the others no pair of stations needs or sees)")
             + "."
         )
     return q
