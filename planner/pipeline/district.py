@@ -44,6 +44,14 @@ __all__ = ["DEFAULT_BLOCK_M", "Block", "block_site", "partition", "plan_district
 
 Progress = Callable[[float, str], None]
 
+#: Environment of the local workers. Dask sets ``MALLOC_TRIM_THRESHOLD_`` for its workers
+#: so that freed memory goes back to the system; setting it turns off glibc's dynamic mmap
+#: threshold (``mallopt(3)``, M_MMAP_THRESHOLD), so every temporary array above 128 kB
+#: is mapped and unmapped again, and a block's evaluation ran 2.5 times slower in a worker
+#: than in one process (5.5 s against 14 s, benchmarks/RESULTS.md). Arrays up to 64 MB
+#: come from the heap again.
+WORKER_MALLOC = {"distributed.nanny.pre-spawn-environ.MALLOC_MMAP_THRESHOLD_": 64 * 2**20}
+
 
 @dataclass(frozen=True)
 class Block:
@@ -168,7 +176,7 @@ def plan_district(
     halo = reach_m(scanner, req, st.station_rms_pair, st.model)
     sites = [block_site(site, b, halo) for b in blocks]
     say(0.0, f"{len(blocks)} block(s) of {block_m:g} m, halo {halo:.0f} m")
-    from dask.distributed import Client, LocalCluster, as_completed
+    from dask.distributed import Client, as_completed
     from distributed.scheduler import KilledWorker
 
     cluster = None
@@ -181,13 +189,7 @@ def plan_district(
                 "(dask scheduler) or leave --scheduler out for a local cluster"
             ) from None
     else:
-        cluster = LocalCluster(
-            n_workers=workers,
-            threads_per_worker=1,
-            processes=True,
-            memory_limit=memory_limit,
-            dashboard_address=None,
-        )
+        cluster = local_cluster(workers, memory_limit)
         client = Client(cluster)
     try:
         futures = {
@@ -215,6 +217,22 @@ def plan_district(
     out.timings_s["total"] = time.perf_counter() - t0
     say(1.0, "plan ready")
     return out
+
+
+def local_cluster(workers: int, memory_limit: str):
+    """A ``LocalCluster`` of ``workers`` single-threaded processes, each with
+    ``memory_limit``, their allocator set by :data:`WORKER_MALLOC`."""
+    import dask
+    from dask.distributed import LocalCluster
+
+    with dask.config.set(WORKER_MALLOC):
+        return LocalCluster(
+            n_workers=workers,
+            threads_per_worker=1,
+            processes=True,
+            memory_limit=memory_limit,
+            dashboard_address=None,
+        )
 
 
 def _honest_bound(blocks: list[Block], plans: list[Plan], reach: float) -> float:

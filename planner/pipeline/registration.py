@@ -238,6 +238,15 @@ class SightCache:
         #: (preferred by every link that can use them)
         self.barred = np.zeros(len(tc.xyz), dtype=bool)
         self.by_hand = np.zeros(len(tc.xyz), dtype=bool)
+        #: link choices and centre RMS by candidate index, kept between the rounds of a plan
+        #: (one table per goal and state of the targets: see :meth:`memo_for`)
+        self.memos: dict[tuple, dict] = {}
+
+    def memo_for(self, goal_mm: float) -> dict:
+        """The table of link choices and centre RMS valid for ``goal_mm`` and the targets as
+        they stand (added, barred, placed by hand)."""
+        key = (goal_mm, len(self.tc.xyz), self.barred.tobytes(), self.by_hand.tobytes())
+        return self.memos.setdefault(key, {})
 
     def add_targets(self, more: TargetCandidates) -> np.ndarray:
         """Append target candidates (placed by hand); the sights of every station seen so
@@ -629,7 +638,9 @@ class _Layout:
             for b in range(a + 1, k)
             if _strong(self.sight, tc, a, b, tc.xyz)
         ]
-        self._rms: dict[tuple[int, int], float] = {}
+        # by candidate index (CONTROL for the control network), shared by the layouts of a
+        # plan: a link depends on its two stations and the child's facade points only
+        self._memo = seen.memo_for(goal_mm)
         self._links: dict[tuple[int, int], tuple[list[int], float]] = {}
         # the datum: the control network if any station sees three control points, else the
         # station from which the tree of registrations accumulates the least error
@@ -652,11 +663,11 @@ class _Layout:
 
     def sigma(self, j: int, t: int) -> float:
         """Centre RMS of target t from station j with the largest item it could need."""
-        key = (j, t)
-        if key not in self._rms:
+        key = ("rms", self.stations[j], t)
+        if key not in self._memo:
             size = _item_size(self.ctx, self.tc, t, float(self.sight.need_mm[t, j]))
-            self._rms[key] = centre_rms(self.ctx, self.tc, self.sight, t, j, size)
-        return self._rms[key]
+            self._memo[key] = centre_rms(self.ctx, self.tc, self.sight, t, j, size)
+        return self._memo[key]
 
     def probe(self, j: int) -> np.ndarray:
         """The facade points station j serves (a linking station: its targets' spread)."""
@@ -674,6 +685,11 @@ class _Layout:
         key = (i, j)
         if placed is None and key in self._links:
             return self._links[key]
+        probe = _probes(self.probe(j), self.station_xyz[j])
+        shared = (self.stations[i] if i != CONTROL else CONTROL, self.stations[j], probe.tobytes())
+        if placed is None and shared in self._memo:
+            self._links[key] = self._memo[shared]
+            return self._links[key]
         tc = self.tc
         if i == CONTROL:
             common = np.flatnonzero(self.sight.usable[:, j] & tc.is_control)
@@ -688,7 +704,7 @@ class _Layout:
                 tc.xyz,
                 s2,
                 self.station_xyz[j],
-                self.probe(j),
+                probe,
                 placed or set(),
                 self.ctx.scanner.is_levelled,
                 self.ctx.settings.max_targets_per_link,
@@ -696,7 +712,7 @@ class _Layout:
                 self.by_hand,
             )
         if placed is None:
-            self._links[key] = out
+            self._links[key] = self._memo[shared] = out
         return out
 
     def weak_groups(self, weak_mm: float) -> np.ndarray:
