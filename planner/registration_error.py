@@ -365,12 +365,20 @@ def pair_registration_variances(
     ``along_xy``, ``normal_xy``) scanned from each of ``c`` stations: arrays (c, n).
 
     Along a unit vector u the point moves by ``gᵀ·(δs, δω)`` with ``g = (u, r × u)``
-    (r = p − s in mm), so its variance is ``gᵀ C g``.
+    (r = p − s in mm), so its variance is ``gᵀ C g``. With ``r × u = Kᵀ r`` (K the cross
+    product matrix of u) that is ``b + M r`` for b = (u, 0) and M = (0; Kᵀ), and the
+    variance the quadratic ``bᵀCb + 2 (MᵀCb)·r + rᵀ (MᵀCM) r`` in the lever, its
+    coefficients once per station.
     """
     lever = (point_xyz[None, :, :] - station_xyz[:, None, :]) * 1000.0  # (c, n, 3) mm
     out = []
     for u2 in (along_xy, normal_xy, None):
         u = np.array([0.0, 0.0, 1.0]) if u2 is None else np.array([u2[0], u2[1], 0.0])
-        g = np.concatenate([np.broadcast_to(u, lever.shape), np.cross(lever, u)], axis=-1)
-        out.append(((g @ pose_cov) * g).sum(axis=-1))  # gᵀ C g per pair
+        b = np.concatenate([u, np.zeros(3)])
+        m = np.concatenate([np.zeros((3, 3)), _skew(u).T])  # (6, 3): r × u = m[3:] @ r
+        c0 = b @ pose_cov @ b  # (c,)
+        c1 = (b @ pose_cov) @ m  # (c, 3)
+        c2 = m.T @ pose_cov @ m  # (c, 3, 3)
+        quad = ((lever @ c2) * lever).sum(axis=-1)
+        out.append(c0[:, None] + 2.0 * (lever @ c1[:, :, None])[..., 0] + quad)
     return out[0], out[1], out[2]

@@ -44,13 +44,18 @@ __all__ = ["DEFAULT_BLOCK_M", "Block", "block_site", "partition", "plan_district
 
 Progress = Callable[[float, str], None]
 
-#: Environment of the local workers. Dask sets ``MALLOC_TRIM_THRESHOLD_`` for its workers
+#: Configuration of the local workers. Dask sets ``MALLOC_TRIM_THRESHOLD_`` for its workers
 #: so that freed memory goes back to the system; setting it turns off glibc's dynamic mmap
 #: threshold (``mallopt(3)``, M_MMAP_THRESHOLD), so every temporary array above 128 kB
 #: is mapped and unmapped again, and a block's evaluation ran 2.5 times slower in a worker
 #: than in one process (5.5 s against 14 s, benchmarks/RESULTS.md). Arrays up to 64 MB
 #: come from the heap again.
-WORKER_MALLOC = {"distributed.nanny.pre-spawn-environ.MALLOC_MMAP_THRESHOLD_": 64 * 2**20}
+#: The workers' statistical profiler (for Dask's dashboard, which the local cluster does
+#: not serve) is off too.
+WORKER_CONFIG = {
+    "distributed.nanny.pre-spawn-environ.MALLOC_MMAP_THRESHOLD_": 64 * 2**20,
+    "distributed.worker.profile.enabled": False,
+}
 
 
 @dataclass(frozen=True)
@@ -221,11 +226,11 @@ def plan_district(
 
 def local_cluster(workers: int, memory_limit: str):
     """A ``LocalCluster`` of ``workers`` single-threaded processes, each with
-    ``memory_limit``, their allocator set by :data:`WORKER_MALLOC`."""
+    ``memory_limit``, their allocator set by :data:`WORKER_CONFIG`."""
     import dask
     from dask.distributed import LocalCluster
 
-    with dask.config.set(WORKER_MALLOC):
+    with dask.config.set(WORKER_CONFIG):
         return LocalCluster(
             n_workers=workers,
             threads_per_worker=1,

@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import cached_property, partial
 
 import numpy as np
@@ -71,6 +71,9 @@ METRIC_KEYS = (
 #: Candidate × sample pairs evaluated at once: ~20 float arrays of this many stay in cache.
 PAIR_CHUNK = 65_536
 
+#: Clear heights kept between the evaluations of a plan (float64 values: 80 MB at most).
+MAX_KEPT_CLEAR = 10_000_000
+
 
 @dataclass(kw_only=True)
 class Context:
@@ -90,6 +93,9 @@ class Context:
     step_mm_at_10m: float
     limits: dict[str, np.ndarray]  # per check key: (N,) limit of every sample (±inf: none)
     stations_needed: np.ndarray  # (N,) stations (separate views) each sample needs
+    #: clear heights of the candidate chunks evaluated on every sample of a facade, kept for
+    #: the plan's next evaluation of all candidates (:meth:`clear_heights`)
+    _clear: dict[tuple[int, bytes], np.ndarray] = field(default_factory=dict, repr=False)
 
     @classmethod
     def build(
@@ -150,6 +156,32 @@ class Context:
         t = np.clip(rel @ v / (v @ v), 0.0, 1.0)
         dist = np.hypot(*(rel - t[:, None] * v).T)
         return np.flatnonzero(ahead & (dist <= self.reach_m))
+
+    def clear_heights(self, f: int, cand_xy: np.ndarray, keep: bool = False) -> np.ndarray:
+        """(c, k) lowest visible height [m] above facade ``f``'s columns from ``cand_xy``
+        (:func:`~planner.pipeline.visibility.clear_height`); ``keep`` keeps it for the same
+        facade and candidates again (while :data:`MAX_KEPT_CLEAR` values are kept)."""
+        key = (f, cand_xy.tobytes())
+        if key in self._clear:
+            return self._clear[key]
+        fac, cols = self.facades, self.cols_of[f]
+        em = self.edge_mask[f]
+        if len(em):
+            lo_xy = np.minimum(cand_xy.min(axis=0), np.minimum(fac.start[f], fac.end[f]))
+            hi_xy = np.maximum(cand_xy.max(axis=0), np.maximum(fac.start[f], fac.end[f]))
+            em = em[edges_in_box(self.edges[em], (*lo_xy, *hi_xy))]
+        target = fac.col_xy[cols] + SIGHT_OFFSET_M * fac.normal[f]
+        c, k = len(cand_xy), len(cols)
+        zc = clear_height(
+            np.repeat(cand_xy, k, axis=0),
+            self.settings.instrument_height_m,
+            np.tile(target, (c, 1)),
+            self.edges[em],
+            self.edge_heights[em],
+        ).reshape(c, k)
+        if keep and sum(v.size for v in self._clear.values()) + zc.size <= MAX_KEPT_CLEAR:
+            self._clear[key] = zc
+        return zc
 
     def pair_count(self, cand_xy: np.ndarray) -> int:
         """How many candidate × sample pairs the evaluation will compute (the work)."""
@@ -301,30 +333,18 @@ class PairMetrics:
 
 
 def facade_pairs(
-    ctx: Context, f: int, cand_xy: np.ndarray, smp: np.ndarray | None = None
+    ctx: Context, f: int, cand_xy: np.ndarray, smp: np.ndarray | None = None, keep: bool = False
 ) -> PairMetrics:
     """Evaluate candidates ``cand_xy`` against the samples ``smp`` (default: all) of facade
-    ``f``: geometry, visibility and the predicted variances."""
+    ``f``: geometry, visibility and the predicted variances (``keep``: keep the line of
+    sight for the next evaluation, :meth:`Context.clear_heights`)."""
     fac, sc = ctx.facades, ctx.scanner
     hi = ctx.settings.instrument_height_m
     cols = ctx.cols_of[f]
     smp = ctx.samples_of[f] if smp is None else smp
     n = fac.normal[f]
-    c, k = len(cand_xy), len(cols)
     # line of sight, once per (candidate, column), against the edges that can lie between
-    em = ctx.edge_mask[f]
-    if len(em):
-        lo_xy = np.minimum(cand_xy.min(axis=0), np.minimum(fac.start[f], fac.end[f]))
-        hi_xy = np.maximum(cand_xy.max(axis=0), np.maximum(fac.start[f], fac.end[f]))
-        em = em[edges_in_box(ctx.edges[em], (*lo_xy, *hi_xy))]
-    target = fac.col_xy[cols] + SIGHT_OFFSET_M * n
-    zc = clear_height(
-        np.repeat(cand_xy, k, axis=0),
-        hi,
-        np.tile(target, (c, 1)),
-        ctx.edges[em],
-        ctx.edge_heights[em],
-    ).reshape(c, k)
+    zc = ctx.clear_heights(f, cand_xy, keep)
     col_local = np.searchsorted(cols, fac.column[smp])
     # sight geometry (station minus point horizontally; point minus scanner vertically)
     dx = cand_xy[:, 0:1] - fac.xy[smp, 0]
@@ -450,7 +470,7 @@ def evaluate_candidates(
             if time.monotonic() > deadline:
                 break  # the facade's samples stay "not evaluated"; the pairs found count
             ci = cand[lo : lo + step]
-            m = facade_pairs(ctx, f, cand_xy[ci], smp)
+            m = facade_pairs(ctx, f, cand_xy[ci], smp, keep=only is None)
             if registration is not None:
                 add_registration(ctx, m, f, smp, registration, ci)
             r, c = np.nonzero(meets(ctx, m, smp) & ~m.untied)
