@@ -4,13 +4,15 @@ single-process plan."""
 
 from __future__ import annotations
 
+import numpy as np
+import pandas as pd
 import pytest
 from sites import run_cli as cli
 
 from planner.errors import InputError
-from planner.pipeline.district import block_site, local_cluster, partition, plan_district
+from planner.pipeline.district import block_site, local_cluster, partition, plan_district, stitch
 from planner.pipeline.planning import plan
-from planner.pipeline.requirements import PlanSettings
+from planner.pipeline.requirements import PlanSettings, Requirements
 from planner.scanner import load_scanner
 from planner.synthetic import town
 
@@ -108,3 +110,119 @@ def test_local_workers_keep_the_dynamic_mmap_threshold():
     with local_cluster(1, "1GB") as cluster, Client(cluster) as client:
         env = client.run(lambda: os.environ.get("MALLOC_MMAP_THRESHOLD_"))
     assert list(env.values()) == [str(64 * 2**20)]
+
+
+def _table(rows):
+    """A meeting table from (facade, sample, station, own) rows on distinct points."""
+    from planner.pipeline.district import MEETING_COLUMNS
+    from planner.pipeline.evaluate import METRIC_KEYS
+
+    out = pd.DataFrame(
+        [
+            {"facade_id": f, "sample_id": s, "x": float(int(s[1:])), "y": 0.0, "z": 1.0}
+            | {"station_id": st, "own": own, "needed": 1.0 if own else np.nan}
+            for f, s, st, own in rows
+        ]
+    )
+    for k in METRIC_KEYS:
+        out[k] = 1.0
+    return out[MEETING_COLUMNS + list(METRIC_KEYS)]
+
+
+def test_a_station_another_block_makes_redundant_is_found():
+    from planner.pipeline.district import redundant_stations
+
+    stations = pd.DataFrame(
+        {"station_id": ["K1-S01", "K1-S02", "K2-S01"], "purpose": ["cover"] * 3}
+    )
+    coverage = pd.DataFrame(
+        {
+            "facade_id": ["a", "a", "b"],
+            "sample_id": ["s1", "s2", "s3"],
+            "x": [1.0, 2.0, 3.0],
+            "y": 0.0,
+            "z": 1.0,
+            "station_id": ["K1-S01", "K1-S02", "K2-S01"],
+            "meets": True,
+            "party_wall": False,
+            "zone": "",
+        }
+    )
+    meeting = _table(
+        [
+            ("a", "s1", "K1-S01", True),
+            ("a", "s2", "K1-S02", True),
+            ("b", "s3", "K2-S01", True),
+            ("a", "s1", "K2-S01", False),  # K2-S01 also meets K1's s1
+        ]
+    )
+    links = pd.DataFrame({"station_a": ["K1-S02"], "station_b": ["K1-S01"]})
+    assert redundant_stations(stations, coverage, links, meeting) == ["K1-S01"]
+    # a station others are registered to stays
+    parent = pd.DataFrame({"station_a": ["K1-S01"], "station_b": ["K1-S02"]})
+    assert redundant_stations(stations, coverage, parent, meeting) == []
+    # the other block's view must be of the same point
+    moved = meeting.copy()
+    moved.loc[3, "x"] += 0.01
+    assert redundant_stations(stations, coverage, links, moved) == []
+    # and outside zones (a zone's requirement is its own block's)
+    zoned = coverage.assign(zone=["Z1", "", ""])
+    assert redundant_stations(stations, zoned, links, meeting) == []
+    # two stations of two blocks, each meeting the other's sample too: one goes, never both
+    both = _table(
+        [
+            ("a", "s1", "K1-S01", True),
+            ("a", "s1", "K2-S01", False),
+            ("b", "s3", "K2-S01", True),
+            ("b", "s3", "K1-S01", False),
+        ]
+    )
+    assert redundant_stations(stations, coverage, links, both) == ["K1-S01"]
+
+
+@pytest.fixture(scope="module")
+def blockwise(district):
+    """The blocks of the small district planned in this process, with their meeting tables."""
+    from planner.pipeline.district import meeting_table
+    from planner.pipeline.planning import reach_m
+
+    site, blocks = district
+    req = Requirements()
+    halo = reach_m(SCANNER, req, SETTINGS.station_rms_pair, SETTINGS.model)
+    plans = [plan(block_site(site, b, halo), SCANNER, req, SETTINGS) for b in blocks]
+    tables = [meeting_table(p) for p in plans]
+    return site, blocks, plans, tables, halo
+
+
+def test_the_meeting_table_agrees_with_the_coverage(blockwise):
+    _, _, plans, tables, _ = blockwise
+    for p, t in zip(plans, tables, strict=True):
+        own = t[t["own"]]
+        counts = own.groupby(["facade_id", "sample_id"]).size()
+        cov = p.scanned.set_index(["facade_id", "sample_id"])
+        met = cov[cov["meets"]]
+        assert (counts.reindex(met.index).fillna(0) == met["stations_meeting"]).all()
+        assert not t[~t["own"]]["facade_id"].isin(cov.index.get_level_values(0)).any()
+
+
+def test_stitching_removes_redundant_stations_and_keeps_every_sample(blockwise):
+    site, blocks, plans, tables, halo = blockwise
+    req = Requirements()
+    plain = stitch(site, SCANNER, req, SETTINGS, blocks, plans, halo)
+    lean = stitch(site, SCANNER, req, SETTINGS, blocks, plans, halo, tables)
+    removed = lean.solver["redundant_removed"]
+    assert removed >= 1
+    assert len(lean.stations) == len(plain.stations) - removed
+    assert lean.solver["objective"] == plain.solver["objective"] - removed
+    a, b = plain.scanned.set_index("sample_id"), lean.scanned.set_index("sample_id")
+    assert (a["meets"] == b.loc[a.index, "meets"]).all()  # nothing met is lost
+    ids = set(lean.stations["station_id"])
+    assert set(b.loc[b["meets"], "station_id"]) <= ids
+    assert set(lean.links["station_b"]) <= ids and set(lean.links["station_a"]) <= ids | {"control"}
+    assert all(s in ids for sids in lean.targets["station_ids"] for s in sids)
+    # a moved sample's metrics are its new station's, within its limit
+    moved = b[b["station_id"] != a.loc[b.index, "station_id"]]
+    assert len(moved) > 0
+    assert (moved.loc[moved["meets"], "m_z_mm"] <= req.max_z_mm + 1e-9).all()
+    assert any("removed as redundant" in m for m in lean.messages)
+    assert len(lean.route.table) == len(lean.stations)

@@ -7,7 +7,10 @@ near a block edge, and occluders across it, are seen exactly as in the whole sit
 candidate grid is anchored to the CRS, so a block's candidates are the whole site's). The
 blocks run as tasks on ``dask.distributed``: a ``LocalCluster`` by default, or an existing
 cluster's scheduler. Their plans are stitched: ids prefixed with the block's key, each
-block's registration network said per block, one route through all stations.
+block's registration network said per block, one route through all stations. Each block
+also judges its stations on the buildings of its halo (:func:`meeting_table`), and a
+covering station whose every met sample another station still meets — one of a
+neighbouring block, across the block edge — is removed (:func:`redundant_stations`).
 
 **The bound stays honest.** A block's lower bound holds for the stations meeting *its*
 samples. Two blocks farther apart than twice the reach share no station, so the sum of the
@@ -136,17 +139,75 @@ def block_site(site: Site, block: Block, halo_m: float) -> Site:
     )
 
 
-def _plan_block(site: Site, scanner: Scanner, req: Requirements, settings: PlanSettings) -> Plan:
-    """One block's plan (a Dask task); its network and workbench stay on the worker. Its
-    timings say the worker process's peak memory so far [MB] (``worker_peak_mb``)."""
+def _plan_block(
+    site: Site, scanner: Scanner, req: Requirements, settings: PlanSettings
+) -> tuple[Plan, pd.DataFrame]:
+    """One block's plan (a Dask task) and its :func:`meeting_table`; its network and
+    workbench stay on the worker. Its timings say the worker process's peak memory so far
+    [MB] (``worker_peak_mb``)."""
     import resource
 
     from planner.pipeline.planning import plan
 
     p = plan(site, scanner, req, settings)
+    table = meeting_table(p)
     p.network = p.workbench = None
     p.timings_s["worker_peak_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
-    return p
+    return p, table
+
+
+#: The columns of :func:`meeting_table`.
+MEETING_COLUMNS = ["facade_id", "sample_id", "x", "y", "z", "station_id", "own", "needed"]
+
+
+def meeting_table(p: Plan) -> pd.DataFrame:
+    """Which of a block plan's stations meet which samples — of its own buildings and of the
+    others within reach (its halo's, planned by other blocks) — on the scanner's error plus
+    the block's registration, with the pair's metrics: what the stitch needs to find the
+    stations a neighbouring block makes redundant. A halo building is judged on the site's
+    requirement (``needed`` NaN: its zones, if any, belong to its own block)."""
+    from planner.pipeline.evaluate import METRIC_KEYS, Context, meeting_pairs
+    from planner.pipeline.facades import build_facades
+
+    wb, st = p.workbench, p.settings
+    xy = p.stations[["x", "y"]].to_numpy(dtype=float)
+    reg = p.network.registration() if p.network is not None else None
+    columns = MEETING_COLUMNS + list(METRIC_KEYS)
+    if not len(xy):
+        return pd.DataFrame(columns=columns)
+    stations = shapely.MultiPoint(xy)
+    halo = [
+        replace(b, planned=not b.planned)
+        for b in wb.site.buildings
+        if b.planned or b.footprint.distance(stations) <= wb.reach
+    ]
+    contexts = [(wb.ctx, True)]
+    if any(b.planned for b in halo):
+        around = replace(wb.site, buildings=halo, zones=[])
+        fac = build_facades(around, st.sample_spacing_m, st.sample_height_step_m)
+        contexts.append(
+            (Context.build(around, fac, p.scanner, p.requirements, st, wb.reach), False)
+        )
+    parts = []
+    for c, own in contexts:
+        smp, k, metrics = meeting_pairs(c, xy, reg)
+        f = c.facades
+        parts.append(
+            pd.DataFrame(
+                {
+                    "facade_id": f.facade_id[f.facade[smp]],
+                    "sample_id": f.sample_id[smp],
+                    "x": f.xy[smp, 0],
+                    "y": f.xy[smp, 1],
+                    "z": f.z[smp],
+                    "station_id": p.stations["station_id"].to_numpy()[k],
+                    "own": own,
+                    "needed": c.stations_needed[smp] if own else np.nan,
+                    **metrics,
+                }
+            )
+        )
+    return pd.concat(parts, ignore_index=True)[columns]
 
 
 def plan_district(
@@ -202,10 +263,11 @@ def plan_district(
             for k, s in enumerate(sites)
         }
         plans: list[Plan | None] = [None] * len(blocks)
+        tables: list[pd.DataFrame | None] = [None] * len(blocks)
         for done, fut in enumerate(as_completed(futures), start=1):
             k = futures[fut]
             try:
-                plans[k] = fut.result()
+                plans[k], tables[k] = fut.result()
             except KilledWorker:
                 raise InputError(
                     f"block {blocks[k].key} ({len(blocks[k].buildings)} buildings) needed more "
@@ -218,7 +280,7 @@ def plan_district(
         if cluster is not None:
             cluster.close()
     say(0.96, "stitching the blocks")
-    out = stitch(site, scanner, req, st, blocks, plans, halo)
+    out = stitch(site, scanner, req, st, blocks, plans, halo, tables)
     out.timings_s["total"] = time.perf_counter() - t0
     say(1.0, "plan ready")
     return out
@@ -259,9 +321,11 @@ def stitch(
     blocks: list[Block],
     plans: list[Plan],
     reach: float,
+    tables: list[pd.DataFrame] | None = None,
 ) -> Plan:
     """One plan from the blocks' plans: ids prefixed with the block key (control points keep
-    theirs), an honest bound, a message per block, one route."""
+    theirs), the stations a neighbouring block makes redundant removed (given the blocks'
+    :func:`meeting_table`), an honest bound, a message per block, one route."""
     stations, targets, coverage, facades, links, zones, cands = [], [], [], [], [], [], []
     messages = [f"District: {len(blocks)} blocks planned on Dask, halo {reach:.0f} m."]
     control = {c.id for c in site.control}
@@ -297,6 +361,26 @@ def stitch(
     coverage_df = pd.concat(coverage, ignore_index=True)
     links_df = pd.concat(links, ignore_index=True)
     objective = int(sum(p.solver["objective"] for p in plans))
+    removed: list[str] = []
+    if tables is not None:
+        meeting = pd.concat(
+            [
+                t.assign(station_id=f"{b.key}-" + t["station_id"].astype(str))
+                for b, t in zip(blocks, tables, strict=True)
+            ],
+            ignore_index=True,
+        )
+        removed = redundant_stations(stations_df, coverage_df, links_df, meeting)
+        if removed:
+            stations_df, coverage_df, links_df, targets_df = _without(
+                removed, stations_df, coverage_df, links_df, targets_df, meeting
+            )
+            objective -= len(removed)
+            messages.append(
+                f"{len(removed)} station(s) on block edges removed as redundant: every sample "
+                "they met is met from another station, some of a neighbouring block (those "
+                "samples are in that block's frame)."
+            )
     bound = _honest_bound(blocks, plans, reach)
     statuses = {p.solver["status"] for p in plans}
     solver = {
@@ -316,6 +400,7 @@ def stitch(
         "registration_rounds": max(int(p.solver["registration_rounds"]) for p in plans),
         "blocks": len(blocks),
         "block_bound_sum": float(sum(p.solver.get("lower_bound") or 0 for p in plans)),
+        "redundant_removed": len(removed),
     }
     route = field_route(site, scanner, st, stations_df, targets_df, coverage_df, links_df)
     messages.insert(0, f"Accuracy model: {st.model_description()}.")
@@ -340,6 +425,83 @@ def stitch(
             "worker_peak_mb": max(p.timings_s.get("worker_peak_mb", 0.0) for p in plans),
         },
     )
+
+
+def redundant_stations(
+    stations: pd.DataFrame, coverage: pd.DataFrame, links: pd.DataFrame, meeting: pd.DataFrame
+) -> list[str]:
+    """Covering stations whose every met sample stays met without them (ids), fewest
+    samples first, each checked against those already removed. Only a covering station no
+    other is registered to can go, and only samples needing one station are served from
+    elsewhere; a sample of another block counts where that block's stations meet it on the
+    same point (to the millimetre) and it lies in no zone (a zone's requirement is its own
+    block's)."""
+    met = coverage[coverage["meets"] & ~coverage["party_wall"]]
+    key = ["facade_id", "sample_id"]
+    own = meeting[meeting["own"]]
+    # another block's view of a sample counts only where it is the same point, outside zones
+    foreign = meeting[~meeting["own"]].merge(
+        met[[*key, "x", "y", "z", "zone"]], on=key, suffixes=("", "_c")
+    )
+    same = foreign[["x", "y", "z"]].to_numpy() - foreign[["x_c", "y_c", "z_c"]].to_numpy()
+    foreign = foreign[(np.abs(same).max(axis=1) < 1e-3) & (foreign["zone"] == "")]
+    pairs = pd.concat([own[[*key, "station_id"]], foreign[[*key, "station_id"]]])
+    pairs = pairs.merge(met[key], on=key)  # only the samples met now must stay met
+    multi = set(own.loc[own["needed"] > 1, "station_id"])
+    parents = set(links["station_a"])
+    movable = stations[(stations["purpose"] == "cover")]["station_id"]
+    movable = [s for s in movable if s not in parents and s not in multi]
+    sample_of = pairs[key].apply(tuple, axis=1).to_numpy() if len(pairs) else np.empty(0)
+    by_sample: dict[tuple, set[str]] = {}
+    by_station: dict[str, list[tuple]] = {}
+    for smp, s in zip(sample_of, pairs["station_id"], strict=True):
+        by_sample.setdefault(smp, set()).add(s)
+        by_station.setdefault(s, []).append(smp)
+    removed: list[str] = []
+    for s in sorted(movable, key=lambda s: len(by_station.get(s, []))):
+        gone = {*removed, s}
+        if all(by_sample[smp] - gone for smp in by_station.get(s, [])):
+            removed.append(s)
+    return removed
+
+
+def _without(
+    removed: list[str],
+    stations: pd.DataFrame,
+    coverage: pd.DataFrame,
+    links: pd.DataFrame,
+    targets: pd.DataFrame,
+    meeting: pd.DataFrame,
+) -> tuple[pd.DataFrame, pd.DataFrame, pd.DataFrame, pd.DataFrame]:
+    """The plan's tables without the ``removed`` stations: their samples served by the
+    remaining station meeting them with the smallest largest RMS (its metrics taken over),
+    their links gone, and the targets no link uses any more."""
+    from planner.pipeline.evaluate import METRIC_KEYS
+
+    gone = set(removed)
+    key = ["facade_id", "sample_id"]
+    cov = coverage.copy()
+    left = meeting[~meeting["station_id"].isin(gone)]
+    left = left.assign(worst=left[["m_x_mm", "m_y_mm", "m_z_mm"]].max(axis=1))
+    best = left.sort_values("worst").drop_duplicates(key).set_index(key)
+    counts = left.groupby(key)["station_id"].nunique()
+    idx = cov.set_index(key).index
+    moved = cov["station_id"].isin(gone).to_numpy()
+    take = best.reindex(idx[moved])
+    cov.loc[moved, "station_id"] = take["station_id"].to_numpy()
+    for k in METRIC_KEYS:
+        if k in cov.columns:
+            cov.loc[moved, k] = take[k].to_numpy()
+    met = cov["meets"].to_numpy()
+    cov.loc[met, "stations_meeting"] = counts.reindex(idx[met]).fillna(0).astype(int).to_numpy()
+    links = links[~links["station_b"].isin(gone)].reset_index(drop=True)
+    used = {t for ids in links["target_ids"] for t in str(ids).split(";") if t}
+    targets = targets[targets["target_id"].isin(used) | (targets["type"] == "control")].copy()
+    targets["station_ids"] = targets["station_ids"].map(
+        lambda ids: [s for s in ids if s not in gone]
+    )
+    stations = stations[~stations["station_id"].isin(gone)].reset_index(drop=True)
+    return stations, cov, links, targets.reset_index(drop=True)
 
 
 def _merge_control(t: pd.DataFrame) -> pd.DataFrame:

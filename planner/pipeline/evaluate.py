@@ -600,6 +600,36 @@ def assign_stations(
     return Assignment(station, metrics, n_meeting, met_by)
 
 
+def meeting_pairs(
+    ctx: Context, station_xy: np.ndarray, registration: Registration | None = None
+) -> tuple[np.ndarray, np.ndarray, dict[str, np.ndarray]]:
+    """Every (sample, station) pair where the station meets the sample's requirement on the
+    scanner's error plus, when given, the registration's: sample and station indices and the
+    pair's :data:`METRIC_KEYS` (one facade at a time, like :func:`assign_stations`)."""
+    fac = ctx.facades
+    smp_out, st_out = [], []
+    vals: dict[str, list[np.ndarray]] = {key: [] for key in METRIC_KEYS}
+    for f in range(fac.n_facades):
+        smp = ctx.samples_of[f]
+        ahead = np.flatnonzero((station_xy - fac.start[f]) @ fac.normal[f] > 0)
+        if not len(ahead) or not len(smp):
+            continue
+        m = facade_pairs(ctx, f, station_xy[ahead])
+        if registration is not None:
+            add_registration(ctx, m, f, smp, registration, ahead)
+        r, c = np.nonzero(meets(ctx, m, smp) & ~m.untied)
+        smp_out.append(smp[c])
+        st_out.append(ahead[r])
+        for key in METRIC_KEYS:
+            vals[key].append(m.value(key)[r, c])
+    empty = np.empty(0, dtype=np.int64)
+    return (
+        np.concatenate(smp_out) if smp_out else empty,
+        np.concatenate(st_out) if st_out else empty,
+        {k: np.concatenate(v) if v else np.empty(0) for k, v in vals.items()},
+    )
+
+
 def _views(ctx: Context, ok: np.ndarray, station_xy: np.ndarray, smp: np.ndarray) -> np.ndarray:
     """Per sample, the stations meeting it that count as separate views: all of them where
     one is needed, else those at least ``min_view_angle_deg`` apart in direction (two
