@@ -590,13 +590,15 @@ def _bfs_chain(
 ) -> list[int] | None:
     """Shortest chain of pool candidates from group 0 to any other group (pool indices,
     the one touching the other group first), or None."""
-    start = np.flatnonzero(((common_ps >= 3) & (groups == 0)[None, :]).any(axis=1))
+    hop = common_ps >= 3
+    start = np.flatnonzero(hop[:, groups == 0].any(axis=1))
+    goal = hop[:, groups > 0].any(axis=1)
     prev = {int(i): -1 for i in start}
     queue = [int(i) for i in start]
     while queue:
         nxt = []
         for i in queue:
-            if ((common_ps[i] >= 3) & (groups > 0)).any():
+            if goal[i]:
                 chain = []
                 while i != -1:
                     chain.append(i)
