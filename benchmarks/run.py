@@ -15,13 +15,13 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import platform
 import resource
 import subprocess
 import sys
 import time
-from datetime import UTC, datetime
 from pathlib import Path
+
+from _results import machine, write_section
 
 HERE = Path(__file__).resolve().parent
 CASES = ["default", "large-courtyard", "district-50"]
@@ -142,11 +142,9 @@ def main() -> None:
         )
     if not args.no_write:
         lines = [
-            "# Benchmark results",
+            "## Single process (benchmarks/run.py)",
             "",
-            f"Written by `benchmarks/run.py` on {datetime.now(UTC):%Y-%m-%d %H:%M} UTC; "
-            f"{platform.processor() or platform.machine()}, {os.cpu_count()} cores, Python "
-            f"{platform.python_version()}, NumPy {results[0]['np']}; one thread.",
+            f"{machine()}; one thread.",
             "Requirements 5 mm / 5 mm, scanner leica-4mm-60urad, default settings (grid 2 m, samples 2 m × 2 m).",
             "",
             "| case | buildings | samples | candidates | pairs evaluated | evaluation | pairs/s | plan end-to-end | peak RSS | stations | solver | fewest by the scanner ≥ proven bound |",
@@ -162,8 +160,8 @@ def main() -> None:
         lines += [f"- {r['case']}: {r['stages_s']}" for r in results]
         lines += ["", "Set-cover reductions (first choice of stations):", ""]
         lines += [f"- {r['case']}: {r['reductions']}" for r in results]
-        lines += ["", "Targets: default <= 1 s, district <= 60 s, >= 20 M pairs/s.", ""]
-        (HERE / "RESULTS.md").write_text("\n".join(lines))
+        lines += ["", "Targets: default <= 1 s, district <= 60 s, >= 20 M pairs/s."]
+        write_section("cases", lines)
 
 
 if __name__ == "__main__":
