@@ -183,20 +183,28 @@ def test_a_station_another_block_makes_redundant_is_found():
 @pytest.fixture(scope="module")
 def blockwise(district):
     """The blocks of the small district planned in this process, with their meeting tables."""
-    from planner.pipeline.district import meeting_table
+    from planner.pipeline.district import block_region, meeting_table
     from planner.pipeline.planning import reach_m
 
     site, blocks = district
     req = Requirements()
     halo = reach_m(SCANNER, req, SETTINGS.station_rms_pair, SETTINGS.model)
     plans = [plan(block_site(site, b, halo), SCANNER, req, SETTINGS) for b in blocks]
-    tables = [meeting_table(p) for p in plans]
+    tables = [meeting_table(p, block_region(b, halo)) for p, b in zip(plans, blocks, strict=True)]
     return site, blocks, plans, tables, halo
 
 
 def test_the_meeting_table_agrees_with_the_coverage(blockwise):
-    _, _, plans, tables, _ = blockwise
-    for p, t in zip(plans, tables, strict=True):
+    import shapely
+
+    from planner.pipeline.district import block_region
+
+    _, blocks, plans, tables, halo = blockwise
+    assert any((~t["own"]).any() for t in tables)  # stations do meet samples across edges
+    for b, p, t in zip(blocks, plans, tables, strict=True):
+        # another block's samples only where no building outside this block's site can block
+        other = t[~t["own"]]
+        assert shapely.contains_xy(block_region(b, halo), other["x"], other["y"]).all()
         own = t[t["own"]]
         counts = own.groupby(["facade_id", "sample_id"]).size()
         cov = p.scanned.set_index(["facade_id", "sample_id"])

@@ -43,7 +43,16 @@ from planner.pipeline.route import field_route
 from planner.scanner import Scanner
 from planner.site import Site
 
-__all__ = ["DEFAULT_BLOCK_M", "Block", "block_site", "partition", "plan_district"]
+__all__ = [
+    "DEFAULT_BLOCK_M",
+    "Block",
+    "block_region",
+    "block_site",
+    "meeting_table",
+    "partition",
+    "plan_district",
+    "redundant_stations",
+]
 
 Progress = Callable[[float, str], None]
 
@@ -111,10 +120,15 @@ def partition(
     return out
 
 
+def block_region(block: Block, halo_m: float) -> shapely.Geometry:
+    """The block's box grown by ``halo_m``: what its site holds (convex)."""
+    return box(*block.footprint.bounds).buffer(halo_m)
+
+
 def block_site(site: Site, block: Block, halo_m: float) -> Site:
     """The site of one block: its buildings planned; everything within ``halo_m`` of them
     kept (other buildings only block the beam)."""
-    region = box(*block.footprint.bounds).buffer(halo_m)
+    region = block_region(block, halo_m)
     mine = set(block.buildings)
     buildings = [
         replace(b, planned=b.id in mine)
@@ -140,17 +154,21 @@ def block_site(site: Site, block: Block, halo_m: float) -> Site:
 
 
 def _plan_block(
-    site: Site, scanner: Scanner, req: Requirements, settings: PlanSettings
+    site: Site,
+    scanner: Scanner,
+    req: Requirements,
+    settings: PlanSettings,
+    region: shapely.Geometry | None = None,
 ) -> tuple[Plan, pd.DataFrame]:
-    """One block's plan (a Dask task) and its :func:`meeting_table`; its network and
-    workbench stay on the worker. Its timings say the worker process's peak memory so far
-    [MB] (``worker_peak_mb``)."""
+    """One block's plan (a Dask task) and its :func:`meeting_table` (within ``region``,
+    the block's box grown by its halo); its network and workbench stay on the worker. Its
+    timings say the worker process's peak memory so far [MB] (``worker_peak_mb``)."""
     import resource
 
     from planner.pipeline.planning import plan
 
     p = plan(site, scanner, req, settings)
-    table = meeting_table(p)
+    table = meeting_table(p, region)
     p.network = p.workbench = None
     p.timings_s["worker_peak_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
     return p, table
@@ -160,12 +178,14 @@ def _plan_block(
 MEETING_COLUMNS = ["facade_id", "sample_id", "x", "y", "z", "station_id", "own", "needed"]
 
 
-def meeting_table(p: Plan) -> pd.DataFrame:
+def meeting_table(p: Plan, region: shapely.Geometry | None = None) -> pd.DataFrame:
     """Which of a block plan's stations meet which samples — of its own buildings and of the
     others within reach (its halo's, planned by other blocks) — on the scanner's error plus
     the block's registration, with the pair's metrics: what the stitch needs to find the
     stations a neighbouring block makes redundant. A halo building is judged on the site's
-    requirement (``needed`` NaN: its zones, if any, belong to its own block)."""
+    requirement (``needed`` NaN: its zones, if any, belong to its own block), and only at
+    samples inside ``region`` (:func:`block_region`): a sight line between two points in it
+    can only be blocked by buildings the block's site holds."""
     from planner.pipeline.evaluate import METRIC_KEYS, Context, meeting_pairs
     from planner.pipeline.facades import build_facades
 
@@ -192,6 +212,9 @@ def meeting_table(p: Plan) -> pd.DataFrame:
     for c, own in contexts:
         smp, k, metrics = meeting_pairs(c, xy, reg)
         f = c.facades
+        if not own and region is not None:
+            inside = shapely.contains_xy(region, f.xy[smp, 0], f.xy[smp, 1])
+            smp, k, metrics = smp[inside], k[inside], {n: v[inside] for n, v in metrics.items()}
         parts.append(
             pd.DataFrame(
                 {
@@ -259,8 +282,8 @@ def plan_district(
         client = Client(cluster)
     try:
         futures = {
-            client.submit(_plan_block, s, scanner, req, st, pure=False): k
-            for k, s in enumerate(sites)
+            client.submit(_plan_block, s, scanner, req, st, block_region(b, halo), pure=False): k
+            for k, (b, s) in enumerate(zip(blocks, sites, strict=True))
         }
         plans: list[Plan | None] = [None] * len(blocks)
         tables: list[pd.DataFrame | None] = [None] * len(blocks)

@@ -96,6 +96,7 @@ class Context:
     #: clear heights of the candidate chunks evaluated on every sample of a facade, kept for
     #: the plan's next evaluation of all candidates (:meth:`clear_heights`)
     _clear: dict[tuple[int, bytes], np.ndarray] = field(default_factory=dict, repr=False)
+    _kept: int = field(default=0, repr=False)  # values in ``_clear``
 
     @classmethod
     def build(
@@ -179,8 +180,9 @@ class Context:
             self.edges[em],
             self.edge_heights[em],
         ).reshape(c, k)
-        if keep and sum(v.size for v in self._clear.values()) + zc.size <= MAX_KEPT_CLEAR:
+        if keep and self._kept + zc.size <= MAX_KEPT_CLEAR:
             self._clear[key] = zc
+            self._kept += zc.size
         return zc
 
     def pair_count(self, cand_xy: np.ndarray) -> int:

@@ -239,14 +239,17 @@ class SightCache:
         self.barred = np.zeros(len(tc.xyz), dtype=bool)
         self.by_hand = np.zeros(len(tc.xyz), dtype=bool)
         #: link choices and centre RMS by candidate index, kept between the rounds of a plan
-        #: (one table per goal and state of the targets: see :meth:`memo_for`)
-        self.memos: dict[tuple, dict] = {}
+        #: (for one goal and state of the targets: see :meth:`memo_for`)
+        self._memo_key: tuple | None = None
+        self._memo: dict = {}
 
     def memo_for(self, goal_mm: float) -> dict:
         """The table of link choices and centre RMS valid for ``goal_mm`` and the targets as
-        they stand (added, barred, placed by hand)."""
+        they stand (added, barred, placed by hand); a new table when either changed."""
         key = (goal_mm, len(self.tc.xyz), self.barred.tobytes(), self.by_hand.tobytes())
-        return self.memos.setdefault(key, {})
+        if key != self._memo_key:
+            self._memo_key, self._memo = key, {}
+        return self._memo
 
     def add_targets(self, more: TargetCandidates) -> np.ndarray:
         """Append target candidates (placed by hand); the sights of every station seen so
