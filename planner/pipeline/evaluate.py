@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from functools import cached_property, partial
 
@@ -569,6 +569,23 @@ def add_registration(
     m.add_registration(*rv, untied=~registration.tied[stations][:, None])
 
 
+def _judged_facades(
+    ctx: Context, station_xy: np.ndarray, registration: Registration | None
+) -> Iterator[tuple[np.ndarray, np.ndarray, PairMetrics, np.ndarray]]:
+    """Per facade, its samples, the stations in front of it (indices), their pairs' metrics
+    (scanner plus, when given, registration) and where they meet the requirement."""
+    fac = ctx.facades
+    for f in range(fac.n_facades):
+        smp = ctx.samples_of[f]
+        ahead = np.flatnonzero((station_xy - fac.start[f]) @ fac.normal[f] > 0)
+        if not len(ahead) or not len(smp):
+            continue
+        m = facade_pairs(ctx, f, station_xy[ahead])
+        if registration is not None:
+            add_registration(ctx, m, f, smp, registration, ahead)
+        yield smp, ahead, m, meets(ctx, m, smp) & ~m.untied
+
+
 def assign_stations(
     ctx: Context, station_xy: np.ndarray, registration: Registration | None = None
 ) -> Assignment:
@@ -581,15 +598,7 @@ def assign_stations(
     metrics = {key: np.full(n, np.nan) for key in METRIC_KEYS}
     n_meeting = np.zeros(n, dtype=np.int64)
     met_by = np.zeros(k, dtype=np.int64)
-    for f in range(fac.n_facades):
-        smp = ctx.samples_of[f]
-        ahead = np.flatnonzero((station_xy - fac.start[f]) @ fac.normal[f] > 0)
-        if not len(ahead) or not len(smp):
-            continue
-        m = facade_pairs(ctx, f, station_xy[ahead])
-        if registration is not None:
-            add_registration(ctx, m, f, smp, registration, ahead)
-        ok = meets(ctx, m, smp) & ~m.untied
+    for smp, ahead, m, ok in _judged_facades(ctx, station_xy, registration):
         sc = score(ctx, m, smp)
         rank = np.where(m.view, np.where(ok, sc, sc + 1e6), np.inf)
         best = np.argmin(rank, axis=0)
@@ -608,18 +617,10 @@ def meeting_pairs(
     """Every (sample, station) pair where the station meets the sample's requirement on the
     scanner's error plus, when given, the registration's: sample and station indices and the
     pair's :data:`METRIC_KEYS` (one facade at a time, like :func:`assign_stations`)."""
-    fac = ctx.facades
     smp_out, st_out = [], []
     vals: dict[str, list[np.ndarray]] = {key: [] for key in METRIC_KEYS}
-    for f in range(fac.n_facades):
-        smp = ctx.samples_of[f]
-        ahead = np.flatnonzero((station_xy - fac.start[f]) @ fac.normal[f] > 0)
-        if not len(ahead) or not len(smp):
-            continue
-        m = facade_pairs(ctx, f, station_xy[ahead])
-        if registration is not None:
-            add_registration(ctx, m, f, smp, registration, ahead)
-        r, c = np.nonzero(meets(ctx, m, smp) & ~m.untied)
+    for smp, ahead, m, ok in _judged_facades(ctx, station_xy, registration):
+        r, c = np.nonzero(ok)
         smp_out.append(smp[c])
         st_out.append(ahead[r])
         for key in METRIC_KEYS:
