@@ -165,6 +165,11 @@ def test_a_station_another_block_makes_redundant_is_found():
     moved = meeting.copy()
     moved.loc[3, "x"] += 0.01
     assert redundant_stations(stations, coverage, links, moved) == []
+    # … and that view is not one a moved sample can be given either
+    from planner.pipeline.district import _counting_pairs
+
+    assert len(_counting_pairs(coverage, moved)) == 3
+    assert len(_counting_pairs(coverage, meeting)) == 4
     # and outside zones (a zone's requirement is its own block's)
     zoned = coverage.assign(zone=["Z1", "", ""])
     assert redundant_stations(stations, zoned, links, meeting) == []

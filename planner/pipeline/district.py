@@ -459,25 +459,15 @@ def redundant_stations(
     elsewhere; a sample of another block counts where that block's stations meet it on the
     same point (to the millimetre) and it lies in no zone (a zone's requirement is its own
     block's)."""
-    met = coverage[coverage["meets"] & ~coverage["party_wall"]]
-    key = ["facade_id", "sample_id"]
-    own = meeting[meeting["own"]]
-    # another block's view of a sample counts only where it is the same point, outside zones
-    foreign = meeting[~meeting["own"]].merge(
-        met[[*key, "x", "y", "z", "zone"]], on=key, suffixes=("", "_c")
-    )
-    same = foreign[["x", "y", "z"]].to_numpy() - foreign[["x_c", "y_c", "z_c"]].to_numpy()
-    foreign = foreign[(np.abs(same).max(axis=1) < 1e-3) & (foreign["zone"] == "")]
-    pairs = pd.concat([own[[*key, "station_id"]], foreign[[*key, "station_id"]]])
-    pairs = pairs.merge(met[key], on=key)  # only the samples met now must stay met
-    multi = set(own.loc[own["needed"] > 1, "station_id"])
+    pairs = _counting_pairs(coverage, meeting)  # only the samples met now must stay met
+    multi = set(pairs.loc[pairs["own"] & (pairs["needed"] > 1), "station_id"])
     parents = set(links["station_a"])
     movable = stations[(stations["purpose"] == "cover")]["station_id"]
     movable = [s for s in movable if s not in parents and s not in multi]
-    sample_of = pairs[key].apply(tuple, axis=1).to_numpy() if len(pairs) else np.empty(0)
     by_sample: dict[tuple, set[str]] = {}
     by_station: dict[str, list[tuple]] = {}
-    for smp, s in zip(sample_of, pairs["station_id"], strict=True):
+    samples = zip(pairs["facade_id"], pairs["sample_id"], strict=True)
+    for smp, s in zip(samples, pairs["station_id"], strict=True):
         by_sample.setdefault(smp, set()).add(s)
         by_station.setdefault(s, []).append(smp)
     removed: list[str] = []
@@ -486,6 +476,17 @@ def redundant_stations(
         if all(by_sample[smp] - gone for smp in by_station.get(s, [])):
             removed.append(s)
     return removed
+
+
+def _counting_pairs(coverage: pd.DataFrame, meeting: pd.DataFrame) -> pd.DataFrame:
+    """The rows of the meeting table that count for the samples met now: a block's own, and
+    another block's where it is the same point (to the millimetre) outside zones."""
+    key = ["facade_id", "sample_id"]
+    met = coverage.loc[coverage["meets"] & ~coverage["party_wall"], [*key, "x", "y", "z", "zone"]]
+    rows = meeting.merge(met, on=key, suffixes=("", "_c"))
+    same = rows[["x", "y", "z"]].to_numpy() - rows[["x_c", "y_c", "z_c"]].to_numpy()
+    counts = rows["own"] | ((np.abs(same).max(axis=1) < 1e-3) & (rows["zone"] == ""))
+    return rows.loc[counts, meeting.columns]
 
 
 def _without(
@@ -497,14 +498,16 @@ def _without(
     meeting: pd.DataFrame,
 ) -> tuple[pd.DataFrame, pd.DataFrame, pd.DataFrame, pd.DataFrame]:
     """The plan's tables without the ``removed`` stations: their samples served by the
-    remaining station meeting them with the smallest largest RMS (its metrics taken over),
-    their links gone, and the targets no link uses any more."""
+    remaining station meeting them (:func:`_counting_pairs`) with the smallest largest RMS
+    (its metrics taken over) and counted again, their links gone, and the targets no link
+    uses any more."""
     from planner.pipeline.evaluate import METRIC_KEYS
 
     gone = set(removed)
     key = ["facade_id", "sample_id"]
     cov = coverage.copy()
-    left = meeting[~meeting["station_id"].isin(gone)]
+    left = _counting_pairs(coverage, meeting)
+    left = left[~left["station_id"].isin(gone)]
     left = left.assign(worst=left[["m_x_mm", "m_y_mm", "m_z_mm"]].max(axis=1))
     best = left.sort_values("worst").drop_duplicates(key).set_index(key)
     counts = left.groupby(key)["station_id"].nunique()
