@@ -379,10 +379,13 @@ def test_calibration_dashboard_uploads_plots_once_and_installs(calibration, tmp_
             timeout=30_000,
         )
         assert "my_baseline.csv" in page.locator(".calibration-file").nth(2).inner_text()
+        # the example's profile was withdrawn before the new result showed; wait for the new
+        page.locator("a[download='my-scanner.toml']").wait_for(timeout=30_000)
         with page.expect_download() as download:
             page.locator("a[download='my-scanner.toml']").click()
         toml = Path(download.value.path()).read_text()
         assert 'name = "my-scanner"' in toml and "[[scanner]]" in toml
+        assert f"n = {len(rows) - 3}.0 }}" in toml  # the uploaded file's, not the example's
         page.get_by_role("button", name="Install").click()
         page.locator(".calibration-installed").wait_for(timeout=30_000)
         assert (profiles / "my-scanner.toml").read_text() == toml

@@ -251,6 +251,8 @@ class CalibrationDashboard:
     def _compute(self, step: str, profile: bool = True) -> None:
         """Run one step on its files and show its result; a failure replaces the result."""
         keys = ("reference", "scan") if step == "lab" else (step,)
+        if profile:
+            self._withdraw()  # the old profile is not offered beside the new result
         self._names(*keys)
         run: Callable[[], tuple[object, list]] = getattr(self, f"_run_{step}")
         self.results.pop(step, None)
@@ -316,11 +318,7 @@ class CalibrationDashboard:
         """The profile of the chosen figures; nothing to download while it cannot be made."""
         from planner.calibration import BaselineResult
 
-        self.scanner = None
-        self.download.value = ""
-        self.install.disabled = True
-        self.install_status.value = ""
-        self._replace = None
+        self._withdraw()
         baseline = self.results.get("distances")
         try:
             for source in (self.range_from.value, self.angles_from.value):
@@ -369,6 +367,14 @@ class CalibrationDashboard:
             f"{scanner.name}.toml", toml.encode("utf-8"), "application/toml"
         )
         self.install.disabled = False
+
+    def _withdraw(self) -> None:
+        """No profile on offer: no download, no install."""
+        self.scanner = None
+        self.download.value = ""
+        self.install.disabled = True
+        self.install_status.value = ""
+        self._replace = None
 
     def install_profile(self) -> None:
         """Install the profile in the user's profile folder, to choose it by name in the
