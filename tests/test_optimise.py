@@ -84,6 +84,16 @@ def test_subset_pairs_are_exactly_the_subsets():
         if i != j and dense[i].any() and not (dense[i] & ~dense[j]).any()
     }
     assert found == truth and len(truth) > 100
+    # only some sets as the subset; one pair per subset or per superset that has any
+    among = np.arange(len(dense)) % 3 == 0
+    x, y = subset_pairs(a, among=among)
+    assert set(zip(x.tolist(), y.tolist(), strict=True)) == {p for p in truth if among[p[0]]}
+    for side, witness in ((0, "x"), (1, "y")):
+        pairs = list(zip(*subset_pairs(a, witness=witness), strict=True))
+        assert set(pairs) <= truth
+        assert sorted(p[side] for p in pairs) == sorted({p[side] for p in truth})
+    x, y = subset_pairs(a, allowed=lambda x, y: x < y)
+    assert set(zip(x.tolist(), y.tolist(), strict=True)) == {p for p in truth if p[0] < p[1]}
 
 
 def test_reductions_remove_what_they_should():
@@ -136,6 +146,57 @@ def test_lagrangian_bound_is_below_the_lp_and_close_to_it():
     assert bound >= opt.packing_lower_bound(a, d) - 1
 
 
+def textbook_greedy(a, demand, w):
+    """Greedy multi-cover recounting every column's (weighted) gain at every pick, then
+    dropping redundant columns, least-weighted first."""
+    dense = a.toarray().astype(float)
+    need = demand.astype(int).copy()
+    taken = np.zeros(a.shape[1], dtype=bool)
+    while True:
+        gain = np.where(taken, -1.0, dense.T @ np.where(need > 0, w, 0.0))
+        j = int(np.argmax(gain))
+        if gain[j] <= 0:
+            break
+        taken[j] = True
+        need -= dense[:, j].astype(int)
+    served = dense @ taken
+    chosen = np.flatnonzero(taken)
+    for j in chosen[np.argsort((dense.T @ w)[chosen], kind="stable")]:
+        rows = dense[:, j] > 0
+        if (served[rows] - 1 >= demand[rows]).all():
+            taken[j] = False
+            served[rows] -= 1
+    return np.flatnonzero(taken)
+
+
+def test_greedy_keeps_its_gains_up_to_date():
+    """The greedy cover updates a column's gain as rows are served instead of recounting
+    them all at every pick: the same columns as the textbook greedy, weighted or not."""
+    for seed in range(6):
+        a, d = random_cover(60, 80, 0.06, seed=seed, max_demand=2)
+        w = np.random.default_rng(seed).integers(1, 5, a.shape[0]).astype(float)
+        assert opt.greedy_cover(a, d, w).tolist() == textbook_greedy(a, d, w).tolist()
+        assert opt.greedy_cover(a, d).tolist() == textbook_greedy(a, d, np.ones(len(d))).tolist()
+
+
+def test_lagrangian_heuristic_and_merging_improve_on_greedy():
+    """The covers found along the ascent (greedy weighted by the multipliers) are covers and
+    smaller than the plain greedy one; the integer program on their union is smaller still
+    or equal, and never below the bound."""
+    import time
+
+    a, d = random_cover(300, 400, 0.02, seed=0, max_demand=2)
+    g = opt.greedy_cover(a, d)
+    pool = [g]
+    bound = opt.lagrangian_bound(a, d, len(g), np.inf, covers=pool)
+    assert len(pool) > 10 and all(covers(a, d, c) for c in pool)
+    best = min(pool, key=len)
+    assert len(best) <= len(g) - 5  # 86 → 79 columns on this instance
+    merged, _ = opt._merge(a, d, pool, time.monotonic() + 5)
+    assert covers(a, d, merged)
+    assert bound <= len(merged) <= len(best)
+
+
 def test_highs_starts_from_greedy_and_never_returns_worse():
     """With almost no time, HiGHS still returns the greedy start (or better), never nothing;
     the bound reported is a true bound (≤ the proven optimum found with time)."""
@@ -175,14 +236,21 @@ def test_interrupt_cancels_the_solver(monkeypatch):
     import highspy
 
     calls = []
+    real_wait, real_cancel = highspy.Highs.wait, highspy.Highs.cancelSolve
 
-    def wait(self, timeout):
+    def wait(self, timeout):  # Ctrl+C during the first wait; then the solve is joined
         calls.append(timeout)
-        raise KeyboardInterrupt
+        if len(calls) == 1:
+            raise KeyboardInterrupt
+        return real_wait(self, timeout)
+
+    def cancel(self):
+        cancelled.append(1)
+        return real_cancel(self)
 
     monkeypatch.setattr(highspy.Highs, "wait", wait, raising=False)
     cancelled = []
-    monkeypatch.setattr(highspy.Highs, "cancelSolve", lambda self: cancelled.append(1))
+    monkeypatch.setattr(highspy.Highs, "cancelSolve", cancel)
     a, d = random_cover(60, 80, 0.06, seed=4)
     with pytest.raises(KeyboardInterrupt):
         opt._highs(a, d, opt.greedy_cover(a, d), 5.0)

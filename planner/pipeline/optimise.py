@@ -46,25 +46,52 @@ class CoverSolution:
     details: dict = field(default_factory=dict)
 
 
-def greedy_cover(a: sp.csr_matrix, demand: np.ndarray) -> np.ndarray:
+#: Steps of the subgradient ascent between two covers of the Lagrangian heuristic.
+HEURISTIC_EVERY = 25
+
+
+def greedy_cover(
+    a: sp.csr_matrix,
+    demand: np.ndarray,
+    weights: np.ndarray | None = None,
+    noise: float = 0.0,
+    rng: np.random.Generator | None = None,
+) -> np.ndarray:
     """Greedy multi-cover: repeatedly take the column that serves the most unmet demand, then
-    drop chosen columns that became redundant (their rows are served enough without them)."""
-    a = sp.csr_matrix(a, dtype=np.int32)
+    drop chosen columns that became redundant (their rows are served enough without them).
+
+    ``weights`` (one per row, default 1) weigh the rows served: the Lagrangian heuristic of
+    Beasley ("A Lagrangian heuristic for set-covering problems", Naval Research Logistics 37,
+    1990, https://doi.org/10.1002/1520-6750(199002)37:1<151::AID-NAV3220370110>3.0.CO;2-2)
+    uses the multipliers, so rows hard to cover count more. ``noise`` > 0 scales each
+    column's gain by a random factor in [1, 1 + noise) for the whole run (a different cover
+    each run). A column's gain is kept up to date as rows are served (each row is handled
+    once), not recomputed for every pick.
+    """
+    a = sp.csr_matrix(a, dtype=np.float64)
     at = a.T.tocsr()
+    w = np.ones(a.shape[0]) if weights is None else np.asarray(weights, dtype=np.float64)
     need = demand.astype(np.int64).copy()
-    chosen: list[int] = []
+    gain = at @ np.where(need > 0, w, 0.0)
+    scale = 1.0 + noise * rng.random(a.shape[1]) if noise > 0 else 1.0
     taken = np.zeros(a.shape[1], dtype=bool)
-    while need.max(initial=0) > 0:
-        gain = at @ (need > 0).astype(np.int32)
-        gain[taken] = -1
-        j = int(np.argmax(gain))
-        if gain[j] <= 0:
-            break  # the rest cannot be served
-        chosen.append(j)
+    while True:
+        score = np.where(taken, -1.0, gain * scale)
+        j = int(np.argmax(score))
+        if score[j] <= 1e-12:
+            break  # all served, or the rest cannot be
         taken[j] = True
-        need[at.indices[at.indptr[j] : at.indptr[j + 1]]] -= 1
-    served = a @ taken.astype(np.int32)
-    for j in sorted(chosen, key=lambda c: at.indptr[c + 1] - at.indptr[c]):
+        rows = at.indices[at.indptr[j] : at.indptr[j + 1]]
+        need[rows] -= 1
+        served = rows[need[rows] == 0]
+        if len(served):  # these rows no longer count for any column
+            sub = a[served]
+            gain -= np.bincount(
+                sub.indices, weights=np.repeat(w[served], np.diff(sub.indptr)), minlength=len(gain)
+            )
+    served = np.asarray(a @ taken.astype(np.float64)).ravel()
+    chosen = np.flatnonzero(taken)
+    for j in chosen[np.argsort((at @ w)[chosen], kind="stable")]:  # least served first
         rows = at.indices[at.indptr[j] : at.indptr[j + 1]]
         if (served[rows] - 1 >= demand[rows]).all():
             taken[j] = False
@@ -88,7 +115,12 @@ def packing_lower_bound(a: sp.csr_matrix, demand: np.ndarray) -> int:
 
 
 def lagrangian_bound(
-    a: sp.csr_matrix, demand: np.ndarray, upper: float, deadline: float, iterations: int = 1500
+    a: sp.csr_matrix,
+    demand: np.ndarray,
+    upper: float,
+    deadline: float,
+    iterations: int = 1500,
+    covers: list[np.ndarray] | None = None,
 ) -> float:
     """A lower bound on the fewest columns by Lagrangian relaxation of the cover rows.
 
@@ -97,6 +129,10 @@ def lagrangian_bound(
     subgradient optimization", Mathematical Programming 6, 1974,
     https://doi.org/10.1007/BF01580223; step rule of Beasley 1987) raises it towards the LP
     relaxation's value. ``upper``: a known cover's size (for the step length).
+
+    ``covers``: when a list is given, the Lagrangian heuristic (Beasley 1990, see
+    :func:`greedy_cover`) appends to it, every ``HEURISTIC_EVERY`` steps, the greedy cover
+    weighted by the multipliers of that step; a smaller one also shortens the steps.
     """
     a = sp.csr_matrix(a, dtype=np.float64)
     at = a.T.tocsr()
@@ -104,7 +140,7 @@ def lagrangian_bound(
     col_size = np.asarray(a.sum(axis=0)).ravel()
     u = 1.0 / a.multiply(col_size).max(axis=1).toarray().ravel()  # feasible dual: Aᵀu ≤ 1
     best, step, stall = -np.inf, 2.0, 0
-    for _ in range(iterations):
+    for it in range(iterations):
         reduced = 1.0 - at @ u
         x = reduced < 0
         value = d @ u + reduced[x].sum()
@@ -114,6 +150,9 @@ def lagrangian_bound(
             stall += 1
             if stall >= 20:
                 step, stall = step / 2, 0
+        if covers is not None and it % HEURISTIC_EVERY == 0:
+            covers.append(greedy_cover(a, demand, u + 1e-6))
+            upper = min(upper, len(covers[-1]))
         g = d - a @ x.astype(np.float64)
         g[(u <= 0) & (g < 0)] = 0.0
         norm = g @ g
@@ -200,24 +239,60 @@ class _Part:
         return self.bound >= len(self.chosen)
 
 
+def _merge(
+    a: sp.csr_matrix, demand: np.ndarray, covers: list[np.ndarray], deadline: float
+) -> tuple[np.ndarray, bool]:
+    """The fewest columns out of the union of ``covers`` (each a cover of ``a``): the integer
+    program on that small core, reduced first and started from the smallest cover.
+
+    Solution merging, the core problem of Caprara, Fischetti & Toth ("A heuristic method for
+    the set covering problem", Operations Research 47, 1999,
+    https://doi.org/10.1287/opre.47.5.730) built from the Lagrangian heuristic's covers.
+    Returns (columns, proven optimal on the core).
+    """
+    best = min(covers, key=len)
+    core = np.unique(np.concatenate(covers))
+    red = reduce_cover(a[:, core], demand)
+    if not red.a.shape[0]:
+        return core[red.forced], True
+    start = np.flatnonzero(np.isin(core[red.columns], best))
+    optimal, x, _ = _highs(red.a, red.demand, start, deadline - time.monotonic())
+    if x is None or len(x) + len(red.forced) >= len(best):
+        return best, optimal
+    return np.union1d(core[red.forced], core[red.columns[x]]), optimal
+
+
 def _solve_part(a: sp.csr_matrix, demand: np.ndarray, deadline: float, method: str) -> _Part:
+    """Greedy cover and its bounds; then, where they differ, the Lagrangian heuristic's best
+    cover, solution merging, and the whole integer program while time is left."""
     g = greedy_cover(a, demand)
     bound = packing_lower_bound(a, demand)
     if bound >= len(g):
         return _Part(g, len(g), len(g), "greedy = packing bound")
-    bound = max(bound, int(np.ceil(lagrangian_bound(a, demand, len(g), deadline) - 1e-6)))
-    if bound >= len(g) or method == "greedy":
-        return _Part(g, min(bound, len(g)), len(g), "greedy, Lagrangian bound")
-    left = deadline - time.monotonic()
-    if left <= 0.05:
-        return _Part(g, bound, len(g), "greedy (no time left for the integer program)")
-    optimal, x, dual = _highs(a, demand, g, left)
+    covers = [g]  # the ascent gets half the time left: the covers it finds are merged after
+    share = 1.0 if method == "greedy" else 0.5
+    ascent_end = time.monotonic() + (deadline - time.monotonic()) * share
+    bound = max(
+        bound, int(np.ceil(lagrangian_bound(a, demand, len(g), ascent_end, covers=covers) - 1e-6))
+    )
+    best = min(covers, key=len)
+    if bound >= len(best) or method == "greedy":
+        return _Part(best, min(bound, len(best)), len(g), "greedy, Lagrangian bound")
+    how = "greedy (no time left for the integer program)"
+    if deadline - time.monotonic() > 0.05 and len(covers) > 1:
+        merged, core_solved = _merge(a, demand, covers, deadline)
+        if len(merged) < len(best):
+            best, how = merged, "integer program on the Lagrangian heuristic's covers"
+        if not core_solved:  # the whole program is larger still: no use starting it
+            return _Part(best, min(bound, len(best)), len(g), how)
+    if deadline - time.monotonic() <= 0.05:
+        return _Part(best, min(bound, len(best)), len(g), how)
+    optimal, x, dual = _highs(a, demand, best, deadline - time.monotonic())
     if dual is not None:
         bound = max(bound, int(np.ceil(dual - 1e-6)))
-    how = "integer program"
-    if x is None or len(x) >= len(g):
-        x, how = g, "greedy, integer program's bound"
-    return _Part(x, len(x) if optimal else min(bound, len(x)), len(g), how)
+    if x is not None and len(x) <= len(best):
+        best, how = x, "integer program"
+    return _Part(best, len(best) if optimal else min(bound, len(best)), len(g), how)
 
 
 def solve_cover(
@@ -257,7 +332,7 @@ def solve_cover(
     n = len(chosen_all)
     bound = len(red.forced) + sum(p.bound for p in parts)
     proven = all(p.proven for p in parts)
-    used_milp = any(p.how == "integer program" for p in parts)
+    used_milp = any(p.how.startswith("integer program") for p in parts)
     details["parts"] = len(parts)
     greedy_total = len(red.forced) + sum(p.greedy for p in parts)
     if method == "milp" and not proven:

@@ -11,13 +11,16 @@ Journal of Operational Research 31, 1987, https://doi.org/10.1016/0377-2217(87)9
 - **dominated columns**: a column whose rows are all rows of another column, where every one
   of those rows needs a single station, can always be swapped for that column.
 
-Repeated to a fixed point. Subset pairs are found exactly: candidates share the subset's
-rarest item (its pivot); random members of the subset are looked up in the superset's bit set
-to discard most non-pairs cheaply, and the survivors are checked word by word.
+Repeated to a fixed point; after the first pass a new pair can only have for its subset a
+set that lost members since, so later passes look only there. Subset pairs are found
+exactly: candidates share the subset's rarest item (its pivot); random members of the subset
+are looked up in the superset's bit set to discard most non-pairs cheaply, and the survivors
+are checked word by word.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -43,10 +46,22 @@ def _bitsets(sets: sp.csr_matrix) -> np.ndarray:
 
 
 def subset_pairs(
-    sets: sp.csr_matrix, seed: int = 0, chunk: int = 20_000
+    sets: sp.csr_matrix,
+    seed: int = 0,
+    chunk: int = 20_000,
+    allowed: Callable[[np.ndarray, np.ndarray], np.ndarray] | None = None,
+    witness: str | None = None,
+    among: np.ndarray | None = None,
 ) -> tuple[np.ndarray, np.ndarray] | None:
-    """Every pair ``(x, y)``, ``x != y``, with items(x) ⊆ items(y), for the rows of ``sets``
-    (a sparse 0/1 matrix, one row per set); ``None`` when the bit sets would be too large."""
+    """Pairs ``(x, y)``, ``x != y``, with items(x) ⊆ items(y), for the rows of ``sets`` (a
+    sparse 0/1 matrix, one row per set); ``None`` when the bit sets would be too large.
+
+    ``allowed(x, y)``: a mask of the pairs wanted, applied before any set is compared.
+    ``witness``: ``None`` for every pair; ``"x"`` (``"y"``) for one pair per subset
+    (superset) that has any — enough to know which sets a rule removes, and far fewer
+    comparisons where most sets have many partners. ``among``: a mask of the sets that may
+    be the subset ``x`` (default all).
+    """
     sets = sp.csr_matrix(sets)
     sets.sort_indices()
     n, m = sets.shape
@@ -56,27 +71,45 @@ def subset_pairs(
     members = sets.T.tocsr()
     degree = np.diff(members.indptr)
     # the pivot of each set: its item in the fewest sets; a superset must hold it too
-    owner = np.repeat(np.arange(n), size)
-    order = np.lexsort((degree[sets.indices], owner))
-    xs = np.flatnonzero(size > 0)
-    pivot = sets.indices[order[sets.indptr[xs]]]
+    full = np.flatnonzero(size > 0)
+    key = degree[sets.indices].astype(np.int64) * m + sets.indices
+    pivot = np.minimum.reduceat(key, sets.indptr[full]) % m if len(full) else full
+    xs = full if among is None else full[among[full]]
+    pivot = pivot if among is None else pivot[among[full]]
     count = degree[pivot]
     x = np.repeat(xs, count)
-    offset = np.arange(len(x)) - np.repeat(np.cumsum(count) - count, count)
-    y = members.indices[np.repeat(members.indptr[pivot], count) + offset]
+    first = np.cumsum(count) - count
+    rank = np.arange(len(x)) - np.repeat(first, count)  # y's place among x's candidates
+    y = members.indices[np.repeat(members.indptr[pivot], count) + rank]
     keep = (x != y) & (size[x] <= size[y])
-    x, y = x[keep], y[keep]
+    if allowed is not None:
+        keep &= allowed(x, y)
+    x, y, rank = x[keep], y[keep], rank[keep]
     bits = _bitsets(sets)
     rng = np.random.default_rng(seed)
     for _ in range(_PROBES):  # a true superset holds every member: only non-pairs drop out
         item = sets.indices[sets.indptr[x] + (rng.random(len(x)) * size[x]).astype(np.int64)]
         word = bits[y, item >> 6] >> (item & 63).astype(np.uint64)
         held = (word & np.uint64(1)).astype(bool)
-        x, y = x[held], y[held]
+        x, y, rank = x[held], y[held], rank[held]
+    if witness is not None:  # each set's first candidates first; found sets skip the rest
+        order = np.argsort(rank, kind="stable")
+        x, y = x[order], y[order]
+    side = {"x": x, "y": y}.get(witness)
+    found = np.zeros(n, dtype=bool)
     exact = np.zeros(len(x), dtype=bool)
     for lo in range(0, len(x), chunk):
-        a, b = x[lo : lo + chunk], y[lo : lo + chunk]
-        exact[lo : lo + chunk] = ~(bits[a] & ~bits[b]).any(axis=1)
+        at = np.arange(lo, min(lo + chunk, len(x)))
+        if side is not None:
+            at = at[~found[side[at]]]
+        a, b = x[at], y[at]
+        exact[at] = ~(bits[a] & ~bits[b]).any(axis=1)
+        if side is not None:
+            at = at[exact[at]]
+            first_of = np.unique(side[at], return_index=True)[1]
+            exact[at] = False
+            exact[at[first_of]] = True
+            found[side[at]] = True
     return x[exact], y[exact]
 
 
@@ -116,6 +149,9 @@ def reduce_cover(a: sp.csr_matrix, demand: np.ndarray) -> Reduced:
     columns = np.arange(a.shape[1])
     forced: list[np.ndarray] = []
     counts = {"forced": 0, "implied rows": 0, "dominated columns": 0, "skipped": 0}
+    # the rows (columns) that lost members since their last pass; None: look at all
+    rows_new: np.ndarray | None = None
+    cols_new: np.ndarray | None = None
     while True:
         before = a.shape
         # rows served or without demand go; columns that meet nothing go
@@ -123,6 +159,8 @@ def reduce_cover(a: sp.csr_matrix, demand: np.ndarray) -> Reduced:
         a, demand = a[live], demand[live]
         used = np.flatnonzero(np.diff(a.tocsc().indptr) > 0)
         a, columns = a[:, used].tocsr(), columns[used]
+        if rows_new is not None:
+            rows_new, cols_new = rows_new[live], cols_new[used]
         if a.shape[0] == 0:
             break
         # forced: every column of a row that needs all of them
@@ -134,31 +172,45 @@ def reduce_cover(a: sp.csr_matrix, demand: np.ndarray) -> Reduced:
             demand = demand - np.asarray(a[:, take].sum(axis=1)).ravel()
             rest = np.setdiff1d(np.arange(a.shape[1]), take)
             a, columns = a[:, rest].tocsr(), columns[rest]
+            rows_new = cols_new = None  # demands changed: every pair is new
             continue
         # implied rows: cols(x) ⊆ cols(y) and demand(x) ≥ demand(y) → y goes
-        pairs = subset_pairs(a)
+        size = np.diff(a.indptr)
+        pairs = subset_pairs(
+            a,
+            allowed=lambda x, y, d=demand, n=size: (
+                (d[x] >= d[y]) & ((n[x] < n[y]) | (d[x] > d[y]) | (x < y))
+            ),
+            witness="y",
+            among=rows_new,
+        )
         if pairs is None:
             counts["skipped"] = 1
             break
-        x, y = pairs
-        size = np.diff(a.indptr)
-        goes = (demand[x] >= demand[y]) & ((size[x] < size[y]) | (demand[x] > demand[y]) | (x < y))
-        drop = np.unique(y[goes])
+        drop = np.unique(pairs[1])
+        if cols_new is not None:
+            cols_new[a[drop].indices] = True
+        rows_new = np.zeros(a.shape[0] - len(drop), dtype=bool)
         if len(drop):
             counts["implied rows"] += len(drop)
             keep = np.setdiff1d(np.arange(a.shape[0]), drop)
             a, demand = a[keep], demand[keep]
         # dominated columns: rows(x) ⊆ rows(y), all rows of x needing one → x goes
         cols = a.T.tocsr()
-        pairs = subset_pairs(cols)
+        single = np.asarray(cols @ (demand > 1).astype(np.int64)).ravel() == 0
+        size = np.diff(cols.indptr)
+        pairs = subset_pairs(
+            cols,
+            allowed=lambda x, y, one=single, n=size: one[x] & ((n[x] < n[y]) | (x > y)),
+            witness="x",
+            among=cols_new,
+        )
         if pairs is None:
             counts["skipped"] = 1
             break
-        x, y = pairs
-        single = np.asarray(cols @ (demand > 1).astype(np.int64)).ravel() == 0
-        size = np.diff(cols.indptr)
-        goes = single[x] & ((size[x] < size[y]) | (x > y))
-        drop = np.unique(x[goes])
+        drop = np.unique(pairs[0])
+        rows_new[cols[drop].indices] = True
+        cols_new = np.zeros(a.shape[1] - len(drop), dtype=bool)
         if len(drop):
             counts["dominated columns"] += len(drop)
             keep = np.setdiff1d(np.arange(a.shape[1]), drop)
