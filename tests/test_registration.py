@@ -12,6 +12,7 @@ from planner.pipeline.planning import plan
 from planner.registration_error import (
     CONTROL,
     Link,
+    adjust,
     point_registration_variances,
     propagate,
     target_centre_rms_mm,
@@ -265,8 +266,9 @@ def test_control_targets_are_a_datum():
 
 # -- the whole chain of a real plan ---------------------------------------------------------
 def test_the_default_plans_registration_error_matches_a_monte_carlo_of_its_network():
-    """The default site's plan, its network as planned (stations, links, the targets each
-    link uses, every observation's centre RMS), simulated end to end; the empirical error
+    """The default site's plan, its network as planned (stations, targets, every station's
+    observation of every placed target it sees, with its centre RMS), simulated end to end
+    and adjusted together; the empirical error
     of every facade sample scanned from a registered station, along the facade, across it
     and in height, against the registration RMS the coverage reports. Negative control:
     the same network without its rotations' lever arms (shift errors only) misses."""
@@ -280,14 +282,13 @@ def test_the_default_plans_registration_error_matches_a_monte_carlo_of_its_netwo
     rows = {j: r.iloc[:: max(1, len(r) // 12)] for j, r in rows.items() if len(r)}
     samples = {j: r[["x", "y", "z"]].to_numpy() for j, r in rows.items()}
     trials = 3000
-    sim = _simulate_chain(
+    sim = _simulate_adjustment(
         net.centre_rms,
         False,
         0.0,
         np.random.default_rng(11),
         stations=net.station_xyz,
         targets=net.candidates.xyz,
-        links=net.links,
         samples=samples,
         datum=net.datum,
         trials=trials,
@@ -315,3 +316,143 @@ def test_the_default_plans_registration_error_matches_a_monte_carlo_of_its_netwo
         shift_only = max(shift_only, float(np.max(emp[:, 2] / shifts[2] - 1)))
     assert worst < tol, worst
     assert shift_only > 4 * tol  # the rotations matter: ignoring them is rejected
+
+
+# -- the simultaneous adjustment --------------------------------------------------------
+#: every target a station sees within this range is observed (loops beyond the tree) [m]
+SEEN_M = 36.0
+
+
+def _observed_rms(seed: int = 4) -> dict[tuple[int, int], float]:
+    rng = np.random.default_rng(seed)
+    rms = {}
+    for k, s in enumerate(STATIONS):
+        for t, x in enumerate(TARGETS):
+            d = np.linalg.norm(x - s)
+            if d <= SEEN_M or any(k in (lk.parent, lk.child) and t in lk.targets for lk in LINKS):
+                rms[(k, t)] = 0.6 + 0.02 * d + 0.3 * rng.random()  # mm, per axis
+    return rms
+
+
+def _rotvec(v):
+    from scipy.spatial.transform import Rotation
+
+    return Rotation.from_rotvec(v).as_matrix()
+
+
+def _simulate_adjustment(
+    rms,
+    levelled,
+    tilt_arcsec,
+    rng,
+    *,
+    stations=STATIONS,
+    targets=TARGETS,
+    samples=SAMPLES,
+    datum=0,
+    trials=TRIALS,
+):
+    """Errors [mm] of every sample point after one joint least-squares adjustment of all
+    the observations ``rms`` ((station, target) → RMS): rigid station frames (random
+    heading, and a random tilt when levelled), noisy target centres, the datum fixed at its
+    nominal frame; the adjustment is a Gauss-Newton step from the nominal poses with a
+    finite-difference Jacobian of the rigid model (nothing shared with the covariance
+    formula). Returns {station: (trials, points, 3)}."""
+    keys = list(rms)
+    seen = sorted({t for _, t in keys})
+    col = {t: n for n, t in enumerate(seen)}
+    kappas = rng.uniform(0, 2 * np.pi, len(stations))
+    nominal = [_rot_z(k) for k in kappas]
+    w = np.repeat([1.0 / rms[key] ** 2 for key in keys], 3)
+    free = [j for j in range(len(stations)) if j != datum]
+    n_rot = 1 if levelled else 3
+    size = 3 + n_rot
+
+    def unpack(u):
+        poses = {datum: (nominal[datum], stations[datum])}
+        for n, j in enumerate(free):
+            rot = u[n * size : n * size + n_rot]
+            vec = np.array([0.0, 0.0, rot[0]]) if levelled else rot
+            poses[j] = (
+                _rotvec(vec) @ nominal[j],
+                stations[j] + u[n * size + n_rot : (n + 1) * size],
+            )
+        return poses, targets[seen] + u[len(free) * size :].reshape(-1, 3)
+
+    def residual(u, meas):
+        poses, xt = unpack(u)
+        return np.concatenate(
+            [poses[k][0] @ meas[(k, t)] + poses[k][1] - xt[col[t]] for k, t in keys]
+        )
+
+    n_u = len(free) * size + 3 * len(seen)
+    exact = {(k, t): nominal[k].T @ (targets[t] - stations[k]) for k, t in keys}
+    r0 = residual(np.zeros(n_u), exact)
+    h = 1e-7
+    jac = np.column_stack([(residual(h * np.eye(n_u)[c], exact) - r0) / h for c in range(n_u)])
+    normal = jac.T @ (w[:, None] * jac)
+    tau = tilt_arcsec / RHO_ARCSEC
+    res, true_rot = [], []
+    for _ in range(trials):
+        rot = [(_rot_xy(*rng.normal(0, tau, 2)) if levelled else np.eye(3)) @ n for n in nominal]
+        meas = {
+            (k, t): rot[k].T @ (targets[t] - stations[k]) + rng.normal(0, rms[(k, t)] / 1000, 3)
+            for k, t in keys
+        }
+        res.append(residual(np.zeros(n_u), meas))
+        true_rot.append(rot)
+    steps = -np.linalg.solve(normal, jac.T @ (w[:, None] * np.array(res).T)).T
+    out = {j: [] for j in samples}
+    for step, rot in zip(steps, true_rot, strict=True):
+        poses, _ = unpack(step)
+        for j, pts in samples.items():
+            local = (rot[j].T @ (pts - stations[j]).T).T
+            r_hat, t_hat = poses[j]
+            out[j].append(((r_hat @ local.T).T + t_hat - pts) * 1000)
+    return {j: np.array(v) for j, v in out.items()}
+
+
+@pytest.mark.parametrize(("levelled", "tilt"), [(False, 0.0), (True, 3.0)])
+def test_simultaneous_adjustment_matches_a_monte_carlo(levelled, tilt):
+    """Every target each station sees (loops beyond the tree), adjusted together: the
+    predicted RMS of every sample point matches the Monte Carlo; the chain of pairwise
+    registrations over the same network predicts more (negative control: the chain's
+    prediction is rejected as a model of the joint adjustment)."""
+    rms = _observed_rms()
+    assert len(rms) > sum(2 * len(lk.targets) for lk in LINKS)  # more than the tree's
+    cov = adjust(
+        STATIONS, TARGETS, rms, np.ones(4, bool), datum=0, levelled=levelled, tilt_rms_arcsec=tilt
+    )
+    sim = _simulate_adjustment(rms, levelled, tilt, np.random.default_rng(23 + levelled))
+    chain = propagate(
+        STATIONS, TARGETS, rms, LINKS, datum=0, levelled=levelled, tilt_rms_arcsec=tilt
+    )
+    net = type(chain)(pose_cov=cov, link_cov={}, tied=chain.tied)
+    misses = []
+    for j in SAMPLES:
+        emp = np.sqrt(np.mean(np.square(sim[j]), axis=0))
+        np.testing.assert_allclose(emp, np.sqrt(np.column_stack(_predicted(net, j))), rtol=REL_TOL)
+        chained = np.sqrt(np.column_stack(_predicted(chain, j)))
+        assert (chained >= emp * (1 - REL_TOL)).all()  # the chain never promises more
+        misses.append(float(np.max(chained / emp - 1)))
+    assert max(misses) > 4 * REL_TOL, misses
+
+
+@pytest.mark.parametrize("levelled", [False, True])
+def test_adjustment_of_a_tree_is_the_chain(levelled):
+    """Where each target serves one registration only, adjusting everything together is
+    the chain of pairwise registrations: the same covariance to rounding."""
+    links = [Link(0, 1, (0, 1, 2)), Link(1, 2, (3, 4, 5, 6)), Link(1, 3, (7, 8, 9))]
+    rms = {
+        (k, t): 0.7 + 0.01 * t + 0.05 * k
+        for lk in links
+        for t in lk.targets
+        for k in (lk.parent, lk.child)
+    }
+    chain = propagate(
+        STATIONS, TARGETS, rms, links, datum=0, levelled=levelled, tilt_rms_arcsec=3.0
+    )
+    cov = adjust(
+        STATIONS, TARGETS, rms, chain.tied, datum=0, levelled=levelled, tilt_rms_arcsec=3.0
+    )
+    np.testing.assert_allclose(cov, chain.pose_cov, rtol=1e-9, atol=1e-18)

@@ -208,8 +208,8 @@ class ReportContent:
         else:
             reg = (
                 "computed from the targets: each target's centre RMS (type, size, distance, "
-                "incidence), pairwise registrations chained from the datum, propagated to "
-                "every sample and added in quadrature"
+                "incidence), every scan's targets adjusted together to the datum, propagated "
+                "to every sample and added in quadrature"
             )
         items = [
             f"Accuracy model: {html.escape(st.model_description())}, the ranging RMS at "

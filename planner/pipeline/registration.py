@@ -18,8 +18,10 @@ registrations, and its error at every facade sample.
    stations (searched along chains of candidates, as many hops as needed); the datum is
    the control network when three control points are seen, else the station that keeps the
    chain shortest in error; the registrations form a tree from it, each station joined
-   where its accumulated error is smallest; and the error is propagated exactly
-   (:func:`planner.registration_error.propagate`).
+   where its accumulated error is smallest (the chain's error,
+   :func:`planner.registration_error.propagate`, chooses it). The error the plan is judged
+   on is that of the simultaneous adjustment of every placed target each station sees
+   (:func:`planner.registration_error.adjust`), as registration software computes it.
 """
 
 from __future__ import annotations
@@ -39,6 +41,7 @@ from planner.registration_error import (
     MAX_CONDITION,
     Link,
     NetworkError,
+    adjust,
     point_registration_variances,
     propagate,
     scaled_condition,
@@ -421,7 +424,8 @@ class Network:
     sight: Sight  # of ``stations``
     candidates: TargetCandidates  # where targets could go; ``targets`` index them
     station_xyz: np.ndarray  # (K, 3) scanner centres [m]
-    centre_rms: dict[tuple[int, int], float] = field(default_factory=dict)  # (station, t)
+    #: every observation adjusted: (station, target) → centre RMS [mm] per axis
+    centre_rms: dict[tuple[int, int], float] = field(default_factory=dict)
 
     @property
     def tied(self) -> np.ndarray:
@@ -789,10 +793,18 @@ def build_network(
             if lk.parent != CONTROL:
                 users[t].add(lk.parent)
     final_rms: dict[tuple[int, int], float] = {}
+    seen_rms: dict[tuple[int, int], float] = {}  # every station that sees a placed target
     for t, who in users.items():
         size = _item_size(ctx, tc, t, max(float(sight.need_mm[t, j]) for j in who))
         for j in who:
             final_rms[(j, t)] = centre_rms(ctx, tc, sight, t, j, size)
+        if tc.type[t] == "control":
+            continue  # a control point's coordinates come from the survey, not the scans
+        for j in np.flatnonzero(sight.usable[t] & (sight.need_mm[t] <= size)):
+            seen_rms[(int(j), t)] = final_rms.get((int(j), t)) or centre_rms(
+                ctx, tc, sight, t, int(j), size
+            )
+    observed = {**seen_rms, **final_rms}
     control_rms = {int(t): float(tc.control_rms_mm[t]) for t in np.flatnonzero(tc.is_control)}
     link_sigma: dict[tuple[int, int], float] = {}
     error = None
@@ -804,6 +816,17 @@ def build_network(
             links,
             datum=None if datum == CONTROL else datum,
             control_rms_mm=control_rms,
+            levelled=levelled,
+            tilt_rms_arcsec=ctx.scanner.initial_tilt_rms_arcsec if levelled else 0.0,
+        )
+        # the registration as it is computed: every target each scan sees, adjusted together
+        error.pose_cov = adjust(
+            station_xyz,
+            xyz,
+            observed,
+            error.tied,
+            datum=None if datum == CONTROL else datum,
+            control_rms_mm={t: r for t, r in control_rms.items() if t in users},
             levelled=levelled,
             tilt_rms_arcsec=ctx.scanner.initial_tilt_rms_arcsec if levelled else 0.0,
         )
@@ -839,7 +862,7 @@ def build_network(
         sight=sight,
         candidates=tc,
         station_xyz=station_xyz,
-        centre_rms=final_rms,
+        centre_rms=observed,
     )
 
 
