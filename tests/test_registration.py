@@ -438,21 +438,30 @@ def test_simultaneous_adjustment_matches_a_monte_carlo(levelled, tilt):
     assert max(misses) > 4 * REL_TOL, misses
 
 
-@pytest.mark.parametrize("levelled", [False, True])
-def test_adjustment_of_a_tree_is_the_chain(levelled):
+@pytest.mark.parametrize(("levelled", "control"), [(False, False), (True, False), (False, True)])
+def test_adjustment_of_a_tree_is_the_chain(levelled, control):
     """Where each target serves one registration only, adjusting everything together is
-    the chain of pairwise registrations: the same covariance to rounding."""
-    links = [Link(0, 1, (0, 1, 2)), Link(1, 2, (3, 4, 5, 6)), Link(1, 3, (7, 8, 9))]
+    the chain of pairwise registrations: the same covariance to rounding — from a datum
+    station, or from control points (targets 0–2 with known coordinates)."""
+    first = Link(CONTROL, 0, (0, 1, 2)) if control else Link(0, 1, (0, 1, 2))
+    second = Link(0, 1, (3, 4, 5, 6)) if control else Link(1, 2, (3, 4, 5, 6))
+    links = [first, second, Link(1, 3, (7, 8, 9))]
     rms = {
         (k, t): 0.7 + 0.01 * t + 0.05 * k
         for lk in links
         for t in lk.targets
         for k in (lk.parent, lk.child)
+        if k != CONTROL
     }
-    chain = propagate(
-        STATIONS, TARGETS, rms, links, datum=0, levelled=levelled, tilt_rms_arcsec=3.0
+    ctl = {0: 1.5, 1: 2.0, 2: 1.0} if control else None
+    kw = {
+        "datum": None if control else 0,
+        "control_rms_mm": ctl,
+        "levelled": levelled,
+        "tilt_rms_arcsec": 3.0,
+    }
+    chain = propagate(STATIONS, TARGETS, rms, links, **kw)
+    assert chain.tied[[0, 1, 3]].all() and chain.pose_cov[3].trace() > 0
+    np.testing.assert_allclose(
+        adjust(STATIONS, TARGETS, rms, chain.tied, **kw), chain.pose_cov, rtol=1e-9, atol=1e-18
     )
-    cov = adjust(
-        STATIONS, TARGETS, rms, chain.tied, datum=0, levelled=levelled, tilt_rms_arcsec=3.0
-    )
-    np.testing.assert_allclose(cov, chain.pose_cov, rtol=1e-9, atol=1e-18)

@@ -54,8 +54,6 @@ def greedy_cover(
     a: sp.csr_matrix,
     demand: np.ndarray,
     weights: np.ndarray | None = None,
-    noise: float = 0.0,
-    rng: np.random.Generator | None = None,
 ) -> np.ndarray:
     """Greedy multi-cover: repeatedly take the column that serves the most unmet demand, then
     drop chosen columns that became redundant (their rows are served enough without them).
@@ -63,20 +61,17 @@ def greedy_cover(
     ``weights`` (one per row, default 1) weigh the rows served: the Lagrangian heuristic of
     Beasley ("A Lagrangian heuristic for set-covering problems", Naval Research Logistics 37,
     1990, https://doi.org/10.1002/1520-6750(199002)37:1<151::AID-NAV3220370110>3.0.CO;2-2)
-    uses the multipliers, so rows hard to cover count more. ``noise`` > 0 scales each
-    column's gain by a random factor in [1, 1 + noise) for the whole run (a different cover
-    each run). A column's gain is kept up to date as rows are served (each row is handled
-    once), not recomputed for every pick.
+    uses the multipliers, so rows hard to cover count more. A column's gain is kept up to
+    date as rows are served (each row is handled once), not recomputed for every pick.
     """
     a = sp.csr_matrix(a, dtype=np.float64)
     at = a.T.tocsr()
     w = np.ones(a.shape[0]) if weights is None else np.asarray(weights, dtype=np.float64)
     need = demand.astype(np.int64).copy()
     gain = at @ np.where(need > 0, w, 0.0)
-    scale = 1.0 + noise * rng.random(a.shape[1]) if noise > 0 else 1.0
     taken = np.zeros(a.shape[1], dtype=bool)
     while True:
-        score = np.where(taken, -1.0, gain * scale)
+        score = np.where(taken, -1.0, gain)
         j = int(np.argmax(score))
         if score[j] <= 1e-12:
             break  # all served, or the rest cannot be
@@ -255,7 +250,7 @@ def _merge(
     red = reduce_cover(a[:, core], demand)
     if not red.a.shape[0]:
         return core[red.forced], True
-    start = np.flatnonzero(np.isin(core[red.columns], best))
+    start = np.flatnonzero(np.isin(core[red.columns], best))  # HiGHS repairs it if need be
     optimal, x, _ = _highs(red.a, red.demand, start, deadline - time.monotonic())
     if x is None or len(x) + len(red.forced) >= len(best):
         return best, optimal
@@ -278,7 +273,7 @@ def _solve_part(a: sp.csr_matrix, demand: np.ndarray, deadline: float, method: s
     best = min(covers, key=len)
     if bound >= len(best) or method == "greedy":
         return _Part(best, min(bound, len(best)), len(g), "greedy, Lagrangian bound")
-    how = "greedy (no time left for the integer program)"
+    how = "greedy, Lagrangian bound"
     if deadline - time.monotonic() > 0.05 and len(covers) > 1:
         merged, core_solved = _merge(a, demand, covers, deadline)
         if len(merged) < len(best):
@@ -286,6 +281,7 @@ def _solve_part(a: sp.csr_matrix, demand: np.ndarray, deadline: float, method: s
         if not core_solved:  # the whole program is larger still: no use starting it
             return _Part(best, min(bound, len(best)), len(g), how)
     if deadline - time.monotonic() <= 0.05:
+        how += " (no time left for the integer program)"
         return _Part(best, min(bound, len(best)), len(g), how)
     optimal, x, dual = _highs(a, demand, best, deadline - time.monotonic())
     if dual is not None:

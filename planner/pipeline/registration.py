@@ -799,7 +799,7 @@ def build_network(
         for j in who:
             final_rms[(j, t)] = centre_rms(ctx, tc, sight, t, j, size)
         if tc.type[t] == "control":
-            continue  # a control point's coordinates come from the survey, not the scans
+            continue  # a control point is observed by the stations its links tie to it
         for j in np.flatnonzero(sight.usable[t] & (sight.need_mm[t] <= size)):
             seen_rms[(int(j), t)] = final_rms.get((int(j), t)) or centre_rms(
                 ctx, tc, sight, t, int(j), size
