@@ -214,3 +214,47 @@ def test_without_registration_error_the_plan_says_so(tmp_path):
     assert "Registration error: not counted" in out
     cov = pd.read_csv(tmp_path / "p" / "coverage.csv")
     np.testing.assert_allclose(cov["m_x_mm"], cov["scanner_m_x_mm"], atol=1e-3)  # mm
+
+
+def _queue_bfs(common_pp, common_ps, groups):
+    """The plain queue breadth-first search the bridge search is defined by."""
+    hop = common_ps >= 3
+    start = np.flatnonzero(hop[:, groups == 0].any(axis=1))
+    goal = hop[:, groups > 0].any(axis=1)
+    prev = {int(i): -1 for i in start}
+    queue = [int(i) for i in start]
+    while queue:
+        nxt = []
+        for i in queue:
+            if goal[i]:
+                chain = []
+                while i != -1:
+                    chain.append(i)
+                    i = prev[i]
+                return chain
+            for j in np.flatnonzero(common_pp[i] >= 3):
+                if int(j) not in prev:
+                    prev[int(j)] = i
+                    nxt.append(int(j))
+        queue = nxt
+    return None
+
+
+def test_bridge_search_finds_the_queue_searchs_chain():
+    """The level-at-a-time search returns the very chain of a plain queue search (or none
+    where it finds none), on random pools of linking candidates."""
+    from planner.pipeline.registration import _bfs_chain
+
+    rng = np.random.default_rng(8)
+    found = 0
+    for _ in range(200):
+        p, k = int(rng.integers(2, 40)), int(rng.integers(2, 8))
+        pp = rng.integers(0, 6, (p, p)) * (rng.random((p, p)) < 0.12)
+        pp = np.maximum(pp, pp.T)
+        ps = rng.integers(0, 6, (p, k)) * (rng.random((p, k)) < 0.1)
+        groups = rng.integers(0, 3, k)
+        groups[0] = 0
+        mine = _bfs_chain(pp, ps, groups)
+        assert mine == _queue_bfs(pp, ps, groups)
+        found += mine is not None and len(mine) > 1
+    assert found > 10  # chains of several hops, not only direct links

@@ -596,26 +596,31 @@ def _bfs_chain(
     common_pp: np.ndarray, common_ps: np.ndarray, groups: np.ndarray
 ) -> list[int] | None:
     """Shortest chain of pool candidates from group 0 to any other group (pool indices,
-    the one touching the other group first), or None."""
+    the one touching the other group first), or None.
+
+    Breadth-first, a level at a time on the boolean hop matrix; within a level the order is
+    that of a plain queue (by parent, then index), so the chain found is the queue's."""
     hop = common_ps >= 3
-    start = np.flatnonzero(hop[:, groups == 0].any(axis=1))
+    adj = common_pp >= 3
+    frontier = np.flatnonzero(hop[:, groups == 0].any(axis=1))
     goal = hop[:, groups > 0].any(axis=1)
-    prev = {int(i): -1 for i in start}
-    queue = [int(i) for i in start]
-    while queue:
-        nxt = []
-        for i in queue:
-            if goal[i]:
-                chain = []
-                while i != -1:
-                    chain.append(i)
-                    i = prev[i]
-                return chain
-            for j in np.flatnonzero(common_pp[i] >= 3):
-                if int(j) not in prev:
-                    prev[int(j)] = i
-                    nxt.append(int(j))
-        queue = nxt
+    prev = np.full(len(adj), -2)  # -2: not reached; -1: a start
+    prev[frontier] = -1
+    while len(frontier):
+        hit = frontier[goal[frontier]]
+        if len(hit):
+            i, chain = int(hit[0]), []
+            while i != -1:
+                chain.append(i)
+                i = int(prev[i])
+            return chain
+        reach = adj[frontier]  # (F, P)
+        new = np.flatnonzero(reach.any(axis=0) & (prev == -2))
+        if not len(new):
+            return None
+        first = reach[:, new].argmax(axis=0)  # the earliest parent in queue order
+        prev[new] = frontier[first]
+        frontier = new[np.lexsort((new, first))]
     return None
 
 
