@@ -141,6 +141,18 @@ def _rms_table(seed: int = 3):
     return rms
 
 
+def _scan(rms, nominal, levelled, tau, stations, targets, rng):
+    """One trial's true station frames (the nominal heading, tilted by a random ``tau``
+    [rad] per axis when levelled) and every observation (station, target) → the target's
+    centre measured once in the station's frame [m], with its RMS of noise."""
+    rot = [(_rot_xy(*rng.normal(0, tau, 2)) if levelled else np.eye(3)) @ n for n in nominal]
+    meas = {
+        (k, t): rot[k].T @ (targets[t] - stations[k]) + rng.normal(0, sigma / 1000, 3)
+        for (k, t), sigma in rms.items()
+    }
+    return rot, meas
+
+
 def _simulate_chain(
     rms,
     levelled,
@@ -159,18 +171,11 @@ def _simulate_chain(
     noise, each link is a weighted least-squares rigid registration to its parent's
     estimate, and the sample points of each station are carried along (trials × …)."""
     kappas = rng.uniform(0, 2 * np.pi, len(stations))
+    nominal = [_rot_z(k) for k in kappas]
     tau = tilt_arcsec / RHO_ARCSEC
     out = {j: [] for j in samples}
     for _ in range(trials):
-        true_rot = []
-        for k in range(len(stations)):
-            tilt = _rot_xy(*rng.normal(0, tau, 2)) if levelled else np.eye(3)
-            true_rot.append(tilt @ _rot_z(kappas[k]))
-        # each station measures each of its targets once, in its own frame
-        meas = {}
-        for (k, t), sigma in rms.items():
-            local = true_rot[k].T @ (targets[t] - stations[k])
-            meas[(k, t)] = local + rng.normal(0, sigma / 1000, 3)
+        true_rot, meas = _scan(rms, nominal, levelled, tau, stations, targets, rng)
         # the datum's frame: its own (levelled: its nominal orientation, tilt unknown)
         est = {datum: (_rot_z(kappas[datum]), stations[datum].copy())}
         for link in links:
@@ -394,11 +399,7 @@ def _simulate_adjustment(
     tau = tilt_arcsec / RHO_ARCSEC
     res, true_rot = [], []
     for _ in range(trials):
-        rot = [(_rot_xy(*rng.normal(0, tau, 2)) if levelled else np.eye(3)) @ n for n in nominal]
-        meas = {
-            (k, t): rot[k].T @ (targets[t] - stations[k]) + rng.normal(0, rms[(k, t)] / 1000, 3)
-            for k, t in keys
-        }
+        rot, meas = _scan(rms, nominal, levelled, tau, stations, targets, rng)
         res.append(residual(np.zeros(n_u), meas))
         true_rot.append(rot)
     steps = -np.linalg.solve(normal, jac.T @ (w[:, None] * np.array(res).T)).T
