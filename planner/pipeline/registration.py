@@ -797,19 +797,17 @@ def build_network(
             users.setdefault(t, set()).add(lk.child)
             if lk.parent != CONTROL:
                 users[t].add(lk.parent)
-    final_rms: dict[tuple[int, int], float] = {}
-    seen_rms: dict[tuple[int, int], float] = {}  # every station that sees a placed target
+    final_rms: dict[tuple[int, int], float] = {}  # the links' observations
+    observed: dict[tuple[int, int], float] = {}  # and every other station's that sees one
     for t, who in users.items():
         size = _item_size(ctx, tc, t, max(float(sight.need_mm[t, j]) for j in who))
         for j in who:
-            final_rms[(j, t)] = centre_rms(ctx, tc, sight, t, j, size)
+            final_rms[(j, t)] = observed[(j, t)] = centre_rms(ctx, tc, sight, t, j, size)
         if tc.type[t] == "control":
             continue  # a control point is observed by the stations its links tie to it
-        for j in np.flatnonzero(sight.usable[t] & (sight.need_mm[t] <= size)):
-            seen_rms[(int(j), t)] = final_rms.get((int(j), t)) or centre_rms(
-                ctx, tc, sight, t, int(j), size
-            )
-    observed = {**seen_rms, **final_rms}
+        for j in map(int, np.flatnonzero(sight.usable[t] & (sight.need_mm[t] <= size))):
+            if (j, t) not in observed:
+                observed[(j, t)] = centre_rms(ctx, tc, sight, t, j, size)
     control_rms = {int(t): float(tc.control_rms_mm[t]) for t in np.flatnonzero(tc.is_control)}
     link_sigma: dict[tuple[int, int], float] = {}
     error = None
