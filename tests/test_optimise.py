@@ -142,7 +142,7 @@ def test_lagrangian_bound_is_below_the_lp_and_close_to_it():
     g = opt.greedy_cover(a, d)
     bound = opt.lagrangian_bound(a, d, len(g), deadline=np.inf, iterations=3000)
     assert bound <= lp + 1e-6  # stations: a valid bound never exceeds the LP optimum
-    assert bound >= 0.97 * lp  # and the ascent gets close to it
+    assert bound >= 0.999 * lp  # and the ascent along averaged subgradients gets close to it
     assert bound >= opt.packing_lower_bound(a, d) - 1
 
 
