@@ -8,8 +8,11 @@ that meet every requirement there — a set multi-cover problem.
 3. Per part: greedy set cover (the start and the fallback), the packing bound and a
    Lagrangian bound (subgradient ascent on the samples' multipliers; any multipliers give a
    valid bound, approaching the LP relaxation's value); when these meet, the greedy cover is
-   proven optimal; otherwise the integer program is solved by HiGHS (``highspy``) under the
-   time left, started from the greedy cover, its dual bound kept when it is stronger.
+   proven optimal. Otherwise the ascent also yields covers (greedy weighted by its
+   multipliers); the integer program on the union of the smallest of them is solved by HiGHS
+   (``highspy``), started from the best cover, the union doubled while it is solved in time;
+   when every cover's union was solved, the whole integer program gets the time left, its
+   dual bound kept when it is stronger.
 
 The lower bound reported is the sum over parts of the best bound proven for each plus the
 forced stations: a real bound on the fewest stations, whatever stopped the solver.
