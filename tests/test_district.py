@@ -91,6 +91,44 @@ def test_unreachable_scheduler_is_exit_2(tmp_path):
     assert not (tmp_path / "p").exists()
 
 
+def test_a_worker_that_dies_is_exit_2_and_nothing_written(tmp_path):
+    """A worker that dies while planning a block (as Dask's nanny stops one past its memory
+    limit) is an exit-2 message naming the block, and nothing is written."""
+    import dask
+    from dask.distributed import Client, LocalCluster
+
+    with dask.config.set({"distributed.scheduler.allowed-failures": 0}):
+        cluster = LocalCluster(
+            n_workers=1, threads_per_worker=1, processes=True, dashboard_address=None
+        )
+    with cluster, Client(cluster) as client:
+        client.run(  # in the worker's process: planning a block ends it
+            exec,
+            "import os, planner.pipeline.district as d\n"
+            "d._plan_block = lambda *a, **k: os._exit(1)",
+        )
+        out = tmp_path / "p"
+        code, _, err = cli("plan", "--scheduler", cluster.scheduler_address, "--out", str(out))
+    assert code == 2, err
+    assert "the worker planning block K01 (1 building) died" in err
+    assert "the cluster's limit" in err and "Traceback" not in err
+    assert not out.exists()
+
+
+@pytest.mark.parametrize(
+    ("option", "message"),
+    [
+        (("--workers", "0"), "--workers must be at least 1"),
+        (("--worker-memory", "lots"), "worker memory 'lots' is not a size"),
+        (("--worker-memory", "100MB"), "at least 256 MB"),
+    ],
+)
+def test_bad_cluster_options_are_exit_2(tmp_path, option, message):
+    code, _, err = cli("plan", "--district", "on", *option, "--out", str(tmp_path / "p"))
+    assert code == 2 and message in err, err
+    assert not (tmp_path / "p").exists()
+
+
 def test_block_size_is_checked(district):
     with pytest.raises(InputError, match="at least 20 m"):
         partition(district[0], 5.0)

@@ -287,6 +287,7 @@ def run_plan(args: argparse.Namespace) -> int:
             block_m=args.block_m,
             scheduler=args.scheduler,
             workers=args.workers,
+            memory_limit=args.worker_memory,
             progress=progress,
         )
     else:
@@ -675,7 +676,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     _plan_arguments(pl)
     pl.add_argument("--out", required=True, metavar="DIR", help="folder for the plan's files")
-    from planner.pipeline.requirements import DEFAULT_BLOCK_M
+    from planner.pipeline.requirements import DEFAULT_BLOCK_M, WORKER_MEMORY
 
     pl.add_argument(
         "--district",
@@ -696,7 +697,14 @@ def build_parser() -> argparse.ArgumentParser:
         type=int,
         default=2,
         metavar="N",
-        help="worker processes of the local Dask cluster (default 2; 2 GB each)",
+        help="worker processes of the local Dask cluster (default 2)",
+    )
+    pl.add_argument(
+        "--worker-memory",
+        default=WORKER_MEMORY,
+        metavar="SIZE",
+        help=f"memory of each local worker, e.g. 3GB (default {WORKER_MEMORY}); a worker "
+        "that needs more is stopped and the plan not written",
     )
     pl.add_argument(
         "--scheduler",

@@ -35,6 +35,7 @@ from planner.errors import InputError
 from planner.pipeline.requirements import (
     DEFAULT_BLOCK_M,
     MAX_BLOCK_BUILDINGS,
+    WORKER_MEMORY,
     PlanSettings,
     Requirements,
 )
@@ -242,7 +243,7 @@ def plan_district(
     block_m: float = DEFAULT_BLOCK_M,
     scheduler: str | None = None,
     workers: int = 2,
-    memory_limit: str = "2GB",
+    memory_limit: str = WORKER_MEMORY,
     progress: Progress | None = None,
 ) -> Plan:
     """Plan a district block by block on Dask (see the module's text) and stitch one plan.
@@ -263,6 +264,9 @@ def plan_district(
     t0 = time.perf_counter()
     blocks = partition(site, block_m)
     halo = reach_m(scanner, req, st.station_rms_pair, st.model)
+    if workers < 1:
+        raise InputError(f"--workers must be at least 1 (got {workers})")
+    _memory_bytes(memory_limit)
     sites = [block_site(site, b, halo) for b in blocks]
     say(0.0, f"{len(blocks)} block(s) of {block_m:g} m, halo {halo:.0f} m")
     from dask.distributed import Client, as_completed
@@ -292,10 +296,14 @@ def plan_district(
             try:
                 plans[k], tables[k] = fut.result()
             except KilledWorker:
+                limit = "the cluster's limit" if scheduler else memory_limit
+                n = len(blocks[k].buildings)
                 raise InputError(
-                    f"block {blocks[k].key} ({len(blocks[k].buildings)} buildings) needed more "
-                    f"memory than a worker has ({memory_limit}); plan with smaller blocks "
-                    f"(--block-m {block_m / 2:g}) or workers with more memory"
+                    f"the worker planning block {blocks[k].key} ({n} building"
+                    f"{'s' * (n != 1)}) died, most often because the block needed more "
+                    f"memory than a worker has ({limit}); no plan was written. Plan with "
+                    f"smaller blocks (--block-m {block_m / 2:g}) or give the workers more memory"
+                    + ("" if scheduler else " (--worker-memory)")
                 ) from None
             say(0.95 * done / len(blocks), f"block {done} of {len(blocks)} planned")
     finally:
@@ -307,6 +315,21 @@ def plan_district(
     out.timings_s["total"] = time.perf_counter() - t0
     say(1.0, "plan ready")
     return out
+
+
+def _memory_bytes(text: str) -> int:
+    """A worker's memory (``"2GB"``, ``"1.5 GiB"``) in bytes, or an input error."""
+    from dask.utils import parse_bytes
+
+    try:
+        size = parse_bytes(text)
+    except (ValueError, TypeError):
+        size = 0
+    if size < 256 * 2**20:
+        raise InputError(
+            f"worker memory {text!r} is not a size of at least 256 MB; give e.g. 2GB or 3.5GiB"
+        )
+    return size
 
 
 def local_cluster(workers: int, memory_limit: str):
