@@ -7,7 +7,6 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import pytest
-import scipy.sparse as sp
 from sites import run_cli as cli
 
 from planner.errors import InputError
@@ -82,65 +81,6 @@ def test_stitched_matches_the_single_process_plan_within_its_bound(stitched, dis
     assert w["lower_bound"] <= cover
     assert abs(cover - w["objective"]) <= cover - s["lower_bound"]
     assert s["lower_bound"] <= s["block_bound_sum"]
-
-
-def _fewest(ok: np.ndarray, demand: np.ndarray, price: np.ndarray | None = None) -> float:
-    """The cheapest cover (each column ``price``, default 1) by the integer program."""
-    from scipy.optimize import LinearConstraint, milp
-
-    c = np.ones(ok.shape[1]) if price is None else price
-    res = milp(c, constraints=LinearConstraint(ok, demand, np.inf), integrality=1, bounds=(0, 1))
-    assert res.status == 0
-    return float(res.fun)
-
-
-def test_shared_bounds_add_up_to_a_bound_of_the_whole():
-    """Blocks of random sites (samples in four strips, candidates anywhere, a sample met by
-    some candidates within the reach): each block's cover, its candidates priced 1 / (the
-    regions — strip grown by the reach — they lie in), bounded by the Lagrangian ascent. The
-    sum never exceeds the whole's optimum, and comes nearer to it than the sum over blocks
-    farther apart than twice the reach; the plain sum of the blocks' fewest stations
-    exceeds it (the negative control: a station serves two strips)."""
-    from planner.pipeline.optimise import lagrangian_bound
-
-    rng = np.random.default_rng(3)
-    reach, edges = 18.0, np.array([0.0, 50.0, 100.0, 150.0, 200.0])
-    ratios, plain_exceeds = [], 0
-    for _ in range(25):
-        smp = rng.uniform(0, 200, (60, 2)) * [1, 0.5]
-        cand = rng.uniform(-reach, 200 + reach, (70, 2)) * [1, 0.5]
-        near = np.linalg.norm(smp[:, None] - cand[None], axis=2) <= reach
-        ok = near & (rng.uniform(size=near.shape) < 0.6)  # some views blocked
-        keep = ok.any(axis=1)
-        smp, ok = smp[keep], ok[keep]
-        demand = np.minimum(1 + (rng.uniform(size=len(smp)) < 0.2), ok.sum(axis=1))
-        strip = np.searchsorted(edges, smp[:, 0], side="right") - 1
-        # a candidate's regions: the strips grown by the reach that it lies in
-        inside = [
-            (cand[:, 0] >= edges[k] - reach) & (cand[:, 0] <= edges[k + 1] + reach)
-            for k in range(4)
-        ]
-        price = 1.0 / np.sum(inside, axis=0)
-        shared, fewest = 0.0, np.zeros(4)
-        for k in range(4):
-            rows = strip == k
-            pool = inside[k] & ok[rows].any(axis=0)  # every candidate meeting them is inside
-            assert not (ok[rows][:, ~inside[k]]).any()
-            if not rows.any():
-                continue
-            sub = sp.csr_matrix(ok[rows][:, pool].astype(float))
-            shared += lagrangian_bound(sub, demand[rows], 10.0, np.inf, 3000, cost=price[pool])
-            fewest[k] = _fewest(sub.toarray(), demand[rows])
-        whole = _fewest(ok.astype(float), demand)
-        assert shared <= whole + 1e-6
-        # the other bound: strips two apart are farther apart than twice the reach
-        far = max(fewest[0] + fewest[2], fewest[0] + fewest[3], fewest[1] + fewest[3])
-        ratios.append((shared / whole, far / whole))
-        plain_exceeds += fewest.sum() > whole
-    shared_mean, far_mean = np.mean(ratios, axis=0)  # 0.77 and 0.62 of the optimum
-    assert shared_mean > 0.7  # a useful bound, not only a true one …
-    assert shared_mean > far_mean + 0.1  # … stronger than the far-apart blocks' sum
-    assert plain_exceeds >= 5
 
 
 def test_unreachable_scheduler_is_exit_2(tmp_path):

@@ -13,22 +13,10 @@ covering station whose every met sample another station still meets — one of a
 neighbouring block, across the block edge — is removed (:func:`redundant_stations`).
 
 **The bound stays honest.** A block's lower bound holds for the stations meeting *its*
-samples; the plain sum of all blocks' bounds does not hold for the whole (a station on a
-block edge may serve two blocks). Two bounds that do:
-
-* **Shared costs** (:func:`shared_bound`): a candidate that meets a sample of a block lies
-  within the reach of it, so inside the block's region (its box grown by the halo); a
-  candidate in c regions is priced 1/c in each of those blocks' covers. Any cover of the
-  district, restricted to one block's candidates, covers that block's samples; summed over
-  the blocks, the prices count each station at most once. So the sum over the blocks of a
-  lower bound on their cover at these prices (a Lagrangian bound) is a lower bound on the
-  fewest stations of the district. (This project's own argument, beyond the papers; tested
-  against the optimum of random instances in ``tests/test_district.py``.)
-* **Far apart**: blocks farther apart than twice the reach share no station, so the sum of
-  the bounds of blocks pairwise that far apart is a bound; the largest such sum found
-  (greedy).
-
-The plan reports the larger of the two.
+samples. Two blocks farther apart than twice the reach share no station, so the sum of the
+bounds of blocks pairwise that far apart is a lower bound of the whole; the plan reports the
+largest such sum found (greedy), never the plain sum of all blocks (a station on a block
+edge may serve two blocks).
 """
 
 from __future__ import annotations
@@ -172,55 +160,19 @@ def _plan_block(
     req: Requirements,
     settings: PlanSettings,
     region: shapely.Geometry | None = None,
-    regions: list[shapely.Geometry] | None = None,
 ) -> tuple[Plan, pd.DataFrame]:
-    """One block's plan (a Dask task), its :func:`meeting_table` (within ``region``, the
-    block's box grown by its halo) and, given every block's ``regions``, its
-    :func:`shared_bound` (``solver["shared_bound"]``); its network and workbench stay on the
-    worker. Its timings say the worker process's peak memory so far [MB]
-    (``worker_peak_mb``)."""
+    """One block's plan (a Dask task) and its :func:`meeting_table` (within ``region``,
+    the block's box grown by its halo); its network and workbench stay on the worker. Its
+    timings say the worker process's peak memory so far [MB] (``worker_peak_mb``)."""
     import resource
 
     from planner.pipeline.planning import plan
 
     p = plan(site, scanner, req, settings)
     table = meeting_table(p, region)
-    if regions is not None:
-        t = time.perf_counter()
-        p.solver["shared_bound"] = shared_bound(p, regions)
-        p.timings_s["shared_bound"] = time.perf_counter() - t
     p.network = p.workbench = None
     p.timings_s["worker_peak_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
     return p, table
-
-
-#: Time for the Lagrangian ascent of a block's :func:`shared_bound` [s].
-SHARED_BOUND_S = 3.0
-
-
-def shared_bound(p: Plan, regions: list[shapely.Geometry]) -> float:
-    """A lower bound on the cover of the block planned in ``p`` (its first evaluation, by the
-    scanner's error) with each candidate priced 1 / (the number of ``regions`` — every
-    block's box grown by the halo — it lies in); the blocks' shared bounds add up to a lower
-    bound on the fewest stations of the whole district (module text)."""
-    from planner.pipeline.optimise import lagrangian_bound
-    from planner.pipeline.planning import cover_demand
-
-    wb = p.workbench
-    if wb is None or wb.evaluation is None:
-        return 0.0
-    ok = wb.evaluation.ok
-    x, y = wb.pool[: ok.shape[1], 0], wb.pool[: ok.shape[1], 1]
-    n_regions = np.zeros(len(x))
-    for r in regions:
-        n_regions += shapely.intersects_xy(r, x, y)
-    demand = cover_demand(wb.ctx, ok)
-    if not demand.any():
-        return 0.0
-    price = 1.0 / np.maximum(n_regions, 1.0)  # a candidate lies at least in its own region
-    deadline = time.monotonic() + SHARED_BOUND_S
-    upper = float(p.solver["objective"])  # a cover at unit prices: at least its cost here
-    return max(0.0, lagrangian_bound(ok, demand, upper, deadline, cost=price))
 
 
 #: The columns of :func:`meeting_table`.
@@ -316,7 +268,6 @@ def plan_district(
         raise InputError(f"--workers must be at least 1 (got {workers})")
     _memory_bytes(memory_limit)
     sites = [block_site(site, b, halo) for b in blocks]
-    regions = [block_region(b, halo) for b in blocks]
     say(0.0, f"{len(blocks)} block(s) of {block_m:g} m, halo {halo:.0f} m")
     from dask.distributed import Client, as_completed
     from distributed.scheduler import KilledWorker
@@ -335,8 +286,8 @@ def plan_district(
         client = Client(cluster)
     try:
         futures = {
-            client.submit(_plan_block, s, scanner, req, st, regions[k], regions, pure=False): k
-            for k, s in enumerate(sites)
+            client.submit(_plan_block, s, scanner, req, st, block_region(b, halo), pure=False): k
+            for k, (b, s) in enumerate(zip(blocks, sites, strict=True))
         }
         plans: list[Plan | None] = [None] * len(blocks)
         tables: list[pd.DataFrame | None] = [None] * len(blocks)
@@ -476,8 +427,7 @@ def stitch(
                 "they met is met from another station, some of a neighbouring block (those "
                 "samples are in that block's frame)."
             )
-    shared = sum(float(p.solver.get("shared_bound") or 0.0) for p in plans)
-    bound = max(_honest_bound(blocks, plans, reach), float(math.ceil(shared - 1e-6)))
+    bound = _honest_bound(blocks, plans, reach)
     statuses = {p.solver["status"] for p in plans}
     solver = {
         "method": f"district ({len(blocks)} blocks)",
@@ -496,7 +446,6 @@ def stitch(
         "registration_rounds": max(int(p.solver["registration_rounds"]) for p in plans),
         "blocks": len(blocks),
         "block_bound_sum": float(sum(p.solver.get("lower_bound") or 0 for p in plans)),
-        "shared_bound": shared,
         "redundant_removed": len(removed),
     }
     route = field_route(site, scanner, st, stations_df, targets_df, coverage_df, links_df)

@@ -596,7 +596,8 @@ def _choose(
     timings["evaluate"] = timings.get("evaluate", 0.0) + time.perf_counter() - t
     say(0.7, "choosing the fewest stations")
     t = time.perf_counter()
-    demand = cover_demand(ctx, ev.ok)
+    n_ok = np.asarray(ev.ok.sum(axis=1)).ravel()
+    demand = np.where(fac.party_wall, 0, np.minimum(ctx.stations_needed, n_ok))
     remaining = max(MIN_SOLVER_S, deadline - time.monotonic())
     if forced is None or not len(forced):
         sol = solve_cover(ev.ok, demand, remaining, st.method)
@@ -615,13 +616,6 @@ def _choose(
             sol.gap = (sol.objective - sol.lower_bound) / sol.objective
     timings["optimise"] = timings.get("optimise", 0.0) + time.perf_counter() - t
     return ev, sol
-
-
-def cover_demand(ctx: Context, ok: sp.csr_matrix) -> np.ndarray:
-    """The stations the cover owes each sample (``ok``: samples × candidates meeting them):
-    the stations it needs, at most as many as meet it; none on a party wall."""
-    n_ok = np.asarray(ok.sum(axis=1)).ravel()
-    return np.where(ctx.facades.party_wall, 0, np.minimum(ctx.stations_needed, n_ok))
 
 
 def _network(
