@@ -37,10 +37,9 @@ def brute_force(a: sp.csr_matrix, demand: np.ndarray) -> int:
     raise AssertionError("no cover")
 
 
-def lp_value(a: sp.csr_matrix, demand: np.ndarray, cost: np.ndarray | None = None) -> float:
+def lp_value(a: sp.csr_matrix, demand: np.ndarray) -> float:
     m = a.shape[1]
-    c = np.ones(m) if cost is None else cost
-    res = linprog(c, A_ub=-a.toarray(), b_ub=-demand, bounds=(0, 1), method="highs")
+    res = linprog(np.ones(m), A_ub=-a.toarray(), b_ub=-demand, bounds=(0, 1), method="highs")
     assert res.status == 0
     return float(res.fun)
 
@@ -150,17 +149,13 @@ def test_lagrangian_bound_is_below_the_lp_and_close_to_it():
 def test_lagrangian_bound_never_passes_the_lp_on_small_instances():
     """Small instances whose multipliers have directions along which the bound is flat (a
     row needing both of its two columns): the averaged direction once carried the ascent
-    off along them (multipliers of 1e15, a 'bound' of 2^30 from cancellation). With unit
-    costs and with the district's prices (1, 1/2, 1/3)."""
-    rng = np.random.default_rng(5)
-    for seed in range(40):
+    off along them (multipliers of 1e15, a 'bound' of 2^30 from cancellation)."""
+    for seed in range(80):
         a, d = random_cover(9 + seed % 7, 7 + seed % 5, 0.2, seed=seed, max_demand=2)
-        for cost in (None, 1.0 / rng.integers(1, 4, a.shape[1])):
-            lp = lp_value(a, d, cost)
-            upper = a.shape[1]
-            bound = opt.lagrangian_bound(a, d, upper, np.inf, 3000, cost=cost)
-            assert bound <= lp + 1e-6
-            assert bound >= 0.95 * lp - 1e-6
+        lp = lp_value(a, d)
+        bound = opt.lagrangian_bound(a, d, a.shape[1], np.inf, 3000)
+        assert bound <= lp + 1e-6
+        assert bound >= 0.95 * lp - 1e-6
 
 
 def textbook_greedy(a, demand, w):

@@ -126,16 +126,14 @@ def lagrangian_bound(
     deadline: float,
     iterations: int = 1500,
     covers: list[np.ndarray] | None = None,
-    cost: np.ndarray | None = None,
 ) -> float:
     """A lower bound on the fewest columns by Lagrangian relaxation of the cover rows.
 
-    For multipliers u ≥ 0, L(u) = Σ dᵢuᵢ + Σⱼ min(0, cⱼ − Σ_{i∈j} uᵢ) is a valid bound on the
-    integer (and the LP) optimum of the cover of least cost (``cost`` c, default 1 per
-    column: the fewest columns); subgradient ascent (Held, Wolfe & Crowder, "Validation of
+    For multipliers u ≥ 0, L(u) = Σ dᵢuᵢ + Σⱼ min(0, 1 − Σ_{i∈j} uᵢ) is a valid bound on the
+    integer (and the LP) optimum; subgradient ascent (Held, Wolfe & Crowder, "Validation of
     subgradient optimization", Mathematical Programming 6, 1974,
     https://doi.org/10.1007/BF01580223; step rule of Beasley 1987) raises it towards the LP
-    relaxation's value. ``upper``: a known cover's cost (for the step length).
+    relaxation's value. ``upper``: a known cover's size (for the step length).
 
     The ascent moves along the subgradients averaged with weights decaying by ``MOMENTUM``
     per step rather than along the last one alone, as the volume algorithm does (Barahona &
@@ -151,18 +149,12 @@ def lagrangian_bound(
     a = sp.csr_matrix(a, dtype=np.float64)
     at = a.T.tocsr()
     d = demand.astype(np.float64)
-    c = np.ones(a.shape[1]) if cost is None else np.asarray(cost, dtype=np.float64)
-    if covers is not None and cost is not None:
-        raise ValueError("the Lagrangian heuristic's covers are for unit costs only")
     col_size = np.asarray(a.sum(axis=0)).ravel()
-    # a feasible dual to start from (Aᵀu ≤ c): each row the least of c / size over its columns
-    ratio = np.where(col_size > 0, col_size / np.maximum(c, 1e-12), 0.0)
-    u = 1.0 / np.maximum(a.multiply(ratio).max(axis=1).toarray().ravel(), 1e-12)
-    u[np.asarray(a.sum(axis=1)).ravel() == 0] = 0.0
+    u = 1.0 / a.multiply(col_size).max(axis=1).toarray().ravel()  # feasible dual: Aᵀu ≤ 1
     best, step, stall = -np.inf, 2.0, 0
     direction = np.zeros_like(d)
     for it in range(iterations):
-        reduced = c - at @ u
+        reduced = 1.0 - at @ u
         x = reduced < 0
         value = d @ u + reduced[x].sum()
         if value > best + 1e-9:
