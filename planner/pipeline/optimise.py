@@ -137,7 +137,8 @@ def lagrangian_bound(
     integer (and the LP) optimum; subgradient ascent (Held, Wolfe & Crowder, "Validation of
     subgradient optimization", Mathematical Programming 6, 1974,
     https://doi.org/10.1007/BF01580223; step rule of Beasley 1987) raises it towards the LP
-    relaxation's value. ``upper``: a known cover's size (for the step length).
+    relaxation's value. ``upper``: a known cover's size (for the step length; the ascent
+    stops once the bound, rounded up, reaches it).
 
     The ascent moves along the subgradients averaged with weights decaying by ``MOMENTUM``
     per step rather than along the last one alone, as the volume algorithm does (Barahona &
@@ -170,6 +171,8 @@ def lagrangian_bound(
         if covers is not None and it % HEURISTIC_EVERY == 0:
             covers.append(greedy_cover(a, demand, u + 1e-6))
             upper = min(upper, len(covers[-1]))
+        if best > upper - 1 + 1e-6:  # rounded up, the bound proves that cover optimal
+            break
         g = d - a @ x.astype(np.float64)
         g[(u <= 0) & (g < 0)] = 0.0  # no move out of u ≥ 0
         if not g.any() or step < 1e-5 or time.monotonic() > deadline:
