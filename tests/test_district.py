@@ -282,3 +282,37 @@ def test_stitching_removes_redundant_stations_and_keeps_every_sample(blockwise):
     assert (moved.loc[moved["meets"], "m_z_mm"] <= req.max_z_mm + 1e-9).all()
     assert any("removed as redundant" in m for m in lean.messages)
     assert len(lean.route.table) == len(lean.stations)
+
+
+def test_meeting_reach_is_the_farthest_meeting_pair(blockwise):
+    from planner.pipeline.district import meeting_reach
+
+    _, _, plans, _, halo = blockwise
+    for p in plans:
+        wb = p.workbench
+        i, j = np.nonzero(wb.evaluation.ok.toarray())
+        farthest = np.hypot(*(wb.facades.xy[i] - wb.pool[j]).T).max()
+        assert meeting_reach(p, rows_per_chunk=7) == pytest.approx(farthest, abs=1e-9)  # m
+        assert 0 < farthest <= halo
+
+
+def test_blocks_farther_apart_than_their_meeting_reaches_add_their_bounds():
+    """Two blocks 100 m apart with a reach of 80 m: only if each block's candidates meet its
+    samples within 30 m (not 60 m) can no station serve both, and their bounds add up."""
+    from types import SimpleNamespace
+
+    from shapely.geometry import box
+
+    from planner.pipeline.district import Block, _honest_bound
+
+    blocks = [Block("K01", ("a",), box(0, 0, 10, 10)), Block("K02", ("b",), box(110, 0, 120, 10))]
+
+    def plans(meet_m):
+        return [
+            SimpleNamespace(solver={"lower_bound": b, "meeting_reach_m": meet_m}) for b in (7, 5)
+        ]
+
+    assert _honest_bound(blocks, plans(30.0), 80.0) == 12
+    assert _honest_bound(blocks, plans(60.0), 80.0) == 7
+    assert _honest_bound(blocks, plans(np.inf), 80.0) == 7  # never beyond the reach
+    assert _honest_bound(blocks, plans(30.0), 40.0) == 12

@@ -13,10 +13,14 @@ covering station whose every met sample another station still meets — one of a
 neighbouring block, across the block edge — is removed (:func:`redundant_stations`).
 
 **The bound stays honest.** A block's lower bound holds for the stations meeting *its*
-samples. Two blocks farther apart than twice the reach share no station, so the sum of the
-bounds of blocks pairwise that far apart is a lower bound of the whole; the plan reports the
-largest such sum found (greedy), never the plain sum of all blocks (a station on a block
-edge may serve two blocks).
+samples. Each block also says the farthest any candidate meets one of its samples (its
+**meeting reach**, :func:`meeting_reach`, at most the reach): every candidate of the whole
+site that meets a sample of the block is among the block's candidates (the grid is shared
+and the halo holds everything within the reach), so it stands within that distance of the
+block's footprint. Two blocks farther apart than the sum of their meeting reaches therefore
+share no station, and the sum of the bounds of blocks pairwise that far apart is a lower
+bound of the whole. The plan reports the largest such sum found (greedy), never the plain
+sum of all blocks (a station on a block edge may serve two blocks).
 """
 
 from __future__ import annotations
@@ -170,9 +174,26 @@ def _plan_block(
 
     p = plan(site, scanner, req, settings)
     table = meeting_table(p, region)
+    p.solver["meeting_reach_m"] = meeting_reach(p)
     p.network = p.workbench = None
     p.timings_s["worker_peak_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
     return p, table
+
+
+def meeting_reach(p: Plan, rows_per_chunk: int = 2000) -> float:
+    """The farthest a candidate meets one of the plan's samples in its first evaluation (by
+    the scanner's error), horizontally [m]; the plan's reach when it was not kept."""
+    wb = p.workbench
+    if wb is None or wb.evaluation is None:
+        return float(p.solver.get("reach_m", np.inf))
+    ok, xy, pool = wb.evaluation.ok.tocsr(), wb.facades.xy, wb.pool
+    farthest = 0.0
+    for start in range(0, ok.shape[0], rows_per_chunk):
+        part = ok[start : start + rows_per_chunk].tocoo()
+        if part.nnz:
+            d = xy[start + part.row] - pool[part.col]
+            farthest = max(farthest, float(np.sqrt((d**2).sum(axis=1)).max()))
+    return farthest
 
 
 #: The columns of :func:`meeting_table`.
@@ -349,12 +370,16 @@ def local_cluster(workers: int, memory_limit: str):
 
 
 def _honest_bound(blocks: list[Block], plans: list[Plan], reach: float) -> float:
-    """The largest sum of block bounds over blocks pairwise farther apart than twice the
-    reach (greedy, by bound), never below the largest single block's."""
+    """The largest sum of block bounds over blocks pairwise farther apart than the sum of
+    their meeting reaches (the ``reach`` where a block does not say its own; greedy, by
+    bound), never below the largest single block's."""
     bounds = [float(p.solver.get("lower_bound") or 0.0) for p in plans]
+    meet = [min(reach, float(p.solver.get("meeting_reach_m", reach))) for p in plans]
     chosen: list[int] = []
     for k in np.argsort(bounds)[::-1]:
-        if all(blocks[k].footprint.distance(blocks[j].footprint) > 2 * reach for j in chosen):
+        if all(
+            blocks[k].footprint.distance(blocks[j].footprint) > meet[k] + meet[j] for j in chosen
+        ):
             chosen.append(int(k))
     return max(sum(bounds[k] for k in chosen), max(bounds, default=0.0))
 
@@ -440,6 +465,7 @@ def stitch(
         "reductions": "",
         "parts": sum(int(p.solver.get("parts") or 0) for p in plans),
         "reach_m": reach,
+        "meeting_reach_m": max(float(p.solver.get("meeting_reach_m", reach)) for p in plans),
         "candidates": sum(int(p.solver["candidates"]) for p in plans),
         "samples": sum(int(p.solver["samples"]) for p in plans),
         "pairs": sum(int(p.solver["pairs"]) for p in plans),
