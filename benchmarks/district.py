@@ -90,8 +90,9 @@ def main() -> None:
         )
     lines += [
         "",
-        "The proven bound sums the bounds of blocks pairwise farther apart than twice the "
-        "reach (they share no station); the sum of all block bounds is not a bound of the "
+        "The proven bound sums the bounds of blocks pairwise farther apart than the sum of "
+        "their meeting reaches (the farthest any candidate meets one of a block's samples: "
+        "they share no station); the sum of all block bounds is not a bound of the "
         "whole (a station on a block edge may serve two blocks). Stations removed on block "
         "edges: covering stations whose every met sample a station of its own or a "
         "neighbouring block still meets. Targets: 1000 buildings in <= 10 min, <= 2 GB per "
