@@ -36,6 +36,7 @@ import shapely
 from shapely.geometry import box
 
 from planner.errors import InputError
+from planner.pipeline.facades import estimate_samples
 from planner.pipeline.requirements import (
     DEFAULT_BLOCK_M,
     MAX_BLOCK_BUILDINGS,
@@ -305,10 +306,15 @@ def plan_district(
     else:
         cluster = local_cluster(workers, memory_limit)
         client = Client(cluster)
+    # the largest blocks first (by their samples), so that the last ones to finish are small
+    # and no worker idles long while another plans a large block at the end
+    work = [estimate_samples(s, st.sample_spacing_m, st.sample_height_step_m) for s in sites]
     try:
         futures = {
-            client.submit(_plan_block, s, scanner, req, st, block_region(b, halo), pure=False): k
-            for k, (b, s) in enumerate(zip(blocks, sites, strict=True))
+            client.submit(
+                _plan_block, s, scanner, req, st, block_region(b, halo), priority=w, pure=False
+            ): k
+            for k, (b, s, w) in enumerate(zip(blocks, sites, work, strict=True))
         }
         plans: list[Plan | None] = [None] * len(blocks)
         tables: list[pd.DataFrame | None] = [None] * len(blocks)
