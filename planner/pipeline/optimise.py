@@ -144,8 +144,8 @@ def lagrangian_bound(
     per step rather than along the last one alone, as the volume algorithm does (Barahona &
     Anbil, "The volume algorithm: producing primal solutions with a subgradient method",
     Mathematical Programming 87, 2000, https://doi.org/10.1007/s101070050002): on the
-    50-building district's cover the bound passes 42 in 6 s where the plain ascent stalled
-    at 40.6 (the LP relaxation is 42.73; benchmarks/RESULTS.md).
+    50-building district's cover the bound reaches 42.09 in 6 s where the plain ascent
+    stalls at 40.63 (the LP relaxation is 42.73; benchmarks/RESULTS.md).
 
     ``covers``: when a list is given, the Lagrangian heuristic (Beasley 1990, see
     :func:`greedy_cover`) appends to it, every ``HEURISTIC_EVERY`` steps, the greedy cover
