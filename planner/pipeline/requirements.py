@@ -389,8 +389,9 @@ DEFAULT_BLOCK_M = 250.0
 #: the registration of 85 stations, whose chain then carried 5.8 mm of m_z); blocks of 10–11
 #: take 20–26 s and keep their registration chains short.
 MAX_BLOCK_BUILDINGS = 12
-#: Memory of each local Dask worker: a block of up to MAX_BLOCK_BUILDINGS planned buildings
-#: peaked at 525 MB on the 1000-building town (benchmarks/RESULTS.md).
+#: Memory of each local Dask worker: blocks of up to MAX_BLOCK_BUILDINGS planned buildings
+#: peaked at 473 MB per worker on the 1000-building town with 2 workers, 615 MB with one
+#: (benchmarks/RESULTS.md).
 WORKER_MEMORY = "2GB"
 
 
