@@ -294,7 +294,9 @@ def choose_stations(
             resolved = True
             backbone = np.union1d(r.net.backbone, forced)
             estimate = r.net.estimate(cand, st.instrument_height_m)
-            _, again = _choose(ctx, cand, say, deadline, timings, estimate, forced=backbone)
+            _, again = _choose(
+                ctx, cand, say, deadline, timings, estimate, forced=backbone, scanner_ok=ev.ok
+            )
             chosen = again.chosen
             r = _Round(cover=chosen)
         else:
@@ -580,10 +582,15 @@ def _choose(
     timings: dict[str, float],
     estimate: Registration | None = None,
     forced: np.ndarray | None = None,
+    scanner_ok: sp.csr_matrix | None = None,
 ) -> tuple[CandidateEvaluation, CoverSolution]:
     """Evaluate every candidate on the scanner's error (plus the ``estimate`` of its
     registration error) and choose the fewest stations (with the redundant views spread);
-    the ``forced`` candidates are taken and the fewest others added to them."""
+    the ``forced`` candidates are taken and the fewest others added to them. A sample the
+    estimate leaves fewer candidates than the ``scanner_ok`` (the evaluation on the
+    scanner's error alone) would give it is covered on ``scanner_ok``: by stations it
+    is met from by the scanner's error, where the exact network may still meet it — not
+    by whichever station happens to be nearest."""
     fac, req, st = ctx.facades, ctx.req, ctx.settings
     t = time.perf_counter()
     ev = evaluate_candidates(
@@ -596,20 +603,28 @@ def _choose(
     timings["evaluate"] = timings.get("evaluate", 0.0) + time.perf_counter() - t
     say(0.7, "choosing the fewest stations")
     t = time.perf_counter()
-    n_ok = np.asarray(ev.ok.sum(axis=1)).ravel()
+    ok = ev.ok
+    n_ok = np.asarray(ok.sum(axis=1)).ravel()
+    if scanner_ok is not None:
+        n_scanner = np.asarray(scanner_ok.sum(axis=1)).ravel()
+        lost = n_ok < np.minimum(ctx.stations_needed, n_scanner)
+        if lost.any():
+            mixed = ok.multiply(~lost[:, None]) + scanner_ok.multiply(lost[:, None])
+            ok = sp.csr_matrix(mixed > 0)
+            n_ok = np.where(lost, n_scanner, n_ok)
     demand = np.where(fac.party_wall, 0, np.minimum(ctx.stations_needed, n_ok))
     remaining = max(MIN_SOLVER_S, deadline - time.monotonic())
     if forced is None or not len(forced):
-        sol = solve_cover(ev.ok, demand, remaining, st.method)
+        sol = solve_cover(ok, demand, remaining, st.method)
     else:  # the others for what the forced stations leave
         free = np.ones(len(cand))
         free[forced] = 0.0
-        left = np.maximum(0, demand - np.asarray(ev.ok[:, forced].sum(axis=1)).ravel())
-        sol = solve_cover(sp.csr_matrix((ev.ok @ sp.diags(free)) > 0), left, remaining, st.method)
+        left = np.maximum(0, demand - np.asarray(ok[:, forced].sum(axis=1)).ravel())
+        sol = solve_cover(sp.csr_matrix((ok @ sp.diags(free)) > 0), left, remaining, st.method)
         sol.chosen = np.union1d(sol.chosen, forced)
         sol.objective = len(sol.chosen)
     if (ctx.stations_needed > 1).any():
-        spread = spread_views(ev.ok, demand, sol.chosen, cand, fac.xy, req.min_view_angle_deg)
+        spread = spread_views(ok, demand, sol.chosen, cand, fac.xy, req.min_view_angle_deg)
         if len(spread) > len(sol.chosen):  # the bound still holds; the gap is the spread's
             sol.status += f"; {len(spread) - len(sol.chosen)} added for separate views"
             sol.chosen, sol.objective = spread, len(spread)
