@@ -81,6 +81,7 @@ def test_stitched_matches_the_single_process_plan_within_its_bound(stitched, dis
     assert w["lower_bound"] <= cover
     assert abs(cover - w["objective"]) <= cover - s["lower_bound"]
     assert s["lower_bound"] <= s["block_bound_sum"]
+    assert 0 < s["shared_bound"] <= s["lower_bound"] + 1 - 1e-6
 
 
 def test_unreachable_scheduler_is_exit_2(tmp_path):
@@ -226,6 +227,11 @@ def test_a_station_another_block_makes_redundant_is_found():
         ]
     )
     assert redundant_stations(stations, coverage, links, both) == ["K1-S01"]
+    # a station an unmet sample is scanned from stays (its values are that sample's best)
+    unmet = pd.concat([coverage, coverage.iloc[[0]].assign(sample_id="s9", meets=False)])
+    assert redundant_stations(stations, unmet, links, meeting) == []
+    wall = unmet.assign(party_wall=[False, False, False, True])  # not scanned: pins nothing
+    assert redundant_stations(stations, wall, links, meeting) == ["K1-S01"]
 
 
 @pytest.fixture(scope="module")
@@ -273,7 +279,26 @@ def test_stitching_removes_redundant_stations_and_keeps_every_sample(blockwise):
     a, b = plain.scanned.set_index("sample_id"), lean.scanned.set_index("sample_id")
     assert (a["meets"] == b.loc[a.index, "meets"]).all()  # nothing met is lost
     ids = set(lean.stations["station_id"])
-    assert set(b.loc[b["meets"], "station_id"]) <= ids
+    assert set(b["station_id"]) <= ids | {""}
+    # an unmet sample keeps its station and values, and its reason names stations of the plan
+    unmet = ~a["meets"] & ~a["party_wall"]
+    assert unmet.sum() > 0
+    for k in ("station_id", "m_x_mm", "m_z_mm", "reason"):
+        pd.testing.assert_series_equal(a.loc[unmet, k], b.loc[a.index[unmet], k])
+    assert set(b["reason"].str.extractall(r"station ([A-Z]\S*\d)")[0]) <= ids
+    # a reason naming a block's station names it by its id in the whole plan
+    import copy
+
+    first = copy.copy(plans[0])
+    first.coverage = first.coverage.copy()
+    first.coverage.loc[0, "reason"] = (
+        "a (station S01) = b; its station S02 cannot; no station meets"
+    )
+    named = stitch(site, SCANNER, req, SETTINGS, blocks, [first, *plans[1:]], halo)
+    key = blocks[0].key
+    assert named.coverage.loc[0, "reason"] == (
+        f"a (station {key}-S01) = b; its station {key}-S02 cannot; no station meets"
+    )
     assert set(lean.links["station_b"]) <= ids and set(lean.links["station_a"]) <= ids | {"control"}
     assert all(s in ids for sids in lean.targets["station_ids"] for s in sids)
     # a moved sample's metrics are its new station's, within its limit
@@ -294,6 +319,76 @@ def test_meeting_reach_is_the_farthest_meeting_pair(blockwise):
         farthest = np.hypot(*(wb.facades.xy[i] - wb.pool[j]).T).max()
         assert meeting_reach(p, rows_per_chunk=7) == pytest.approx(farthest, abs=1e-9)  # m
         assert 0 < farthest <= halo
+
+
+def test_shared_prices_split_a_candidate_between_the_blocks_holding_it():
+    from planner.pipeline.district import shared_prices
+
+    a = np.array([[0.0, 0.0], [2.0, 0.0], [4.0, 0.0]])
+    b = np.array([[4.0, 0.0], [6.0, 0.0]])
+    c = np.array([[4.0004, 0.0], [2.0, 0.0]])  # the same grid points, to the millimetre
+    pa, pb, pc = shared_prices([a, b, c])
+    assert pa.tolist() == [1.0, 0.5, pytest.approx(1 / 3)]
+    assert pb.tolist() == [pytest.approx(1 / 3), 1.0]
+    assert pc.tolist() == [pytest.approx(1 / 3), 0.5]
+    assert [len(p) for p in shared_prices([a, np.empty((0, 2))])] == [3, 0]
+
+
+def _fewest(ok: np.ndarray, demand: np.ndarray) -> float:
+    """The fewest columns covering ``ok`` (integer program)."""
+    from scipy.optimize import LinearConstraint, milp
+
+    res = milp(
+        np.ones(ok.shape[1]),
+        constraints=LinearConstraint(ok, demand, np.inf),
+        integrality=1,
+        bounds=(0, 1),
+    )
+    assert res.status == 0
+    return float(res.fun)
+
+
+def test_shared_bounds_add_up_to_a_bound_of_the_whole():
+    """Random sites cut into four strips (samples in strips, candidates anywhere, a sample
+    met by some candidates within the reach): each strip's cover, its candidates priced
+    1 / (the strips whose samples they meet), relaxed to an LP. The sum never exceeds the
+    whole's optimum and comes nearer to it than the sum over strips farther apart than twice
+    the reach; the plain sum of the strips' fewest stations exceeds it (the negative control:
+    a station serves two strips)."""
+    import scipy.sparse as sp
+
+    from planner.pipeline.district import shared_prices
+    from planner.pipeline.optimise import lp_bound
+
+    rng = np.random.default_rng(3)
+    reach, edges = 18.0, np.array([0.0, 50.0, 100.0, 150.0, 200.0])
+    ratios, plain_exceeds = [], 0
+    for _ in range(25):
+        smp = rng.uniform(0, 200, (60, 2)) * [1, 0.5]
+        cand = rng.uniform(-reach, 200 + reach, (70, 2)) * [1, 0.5]
+        near = np.linalg.norm(smp[:, None] - cand[None], axis=2) <= reach
+        ok = near & (rng.uniform(size=near.shape) < 0.6)  # some views blocked
+        keep = ok.any(axis=1)
+        smp, ok = smp[keep], ok[keep]
+        demand = np.minimum(1 + (rng.uniform(size=len(smp)) < 0.2), ok.sum(axis=1))
+        strip = np.searchsorted(edges, smp[:, 0], side="right") - 1
+        used = [np.flatnonzero(ok[strip == k].any(axis=0)) for k in range(4)]
+        prices = shared_prices([cand[u] for u in used])
+        shared, fewest = 0.0, np.zeros(4)
+        for k in range(4):
+            sub = ok[strip == k][:, used[k]]
+            if len(sub):
+                shared += lp_bound(sp.csr_matrix(sub), demand[strip == k], prices[k], 10.0)
+                fewest[k] = _fewest(sub.astype(float), demand[strip == k])
+        whole = _fewest(ok.astype(float), demand)
+        assert shared <= whole + 1e-6
+        far = max(fewest[0] + fewest[2], fewest[0] + fewest[3], fewest[1] + fewest[3])
+        ratios.append((shared / whole, far / whole))
+        plain_exceeds += fewest.sum() > whole
+    shared_mean, far_mean = np.mean(ratios, axis=0)  # 0.97 and 0.62 of the optimum
+    assert shared_mean > 0.9  # a useful bound, not only a true one …
+    assert shared_mean > far_mean + 0.25  # … stronger than the far-apart strips' sum
+    assert plain_exceeds >= 15  # 23 of the 25
 
 
 def test_blocks_farther_apart_than_their_meeting_reaches_add_their_bounds():

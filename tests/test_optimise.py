@@ -160,6 +160,19 @@ def test_lagrangian_bound_never_passes_the_lp_on_small_instances():
         assert bound >= 0.95 * lp - 1e-6 or np.ceil(bound - 1e-6) >= upper
 
 
+def test_lp_bound_is_the_lp_relaxation_at_any_prices():
+    """HiGHS's dual simplex through ``lp_bound`` against scipy's LP, unit and uneven prices;
+    never above the integer optimum (brute force)."""
+    for seed in range(12):
+        a, d = random_cover(10, 8, 0.3, seed=seed, max_demand=2)
+        price = np.random.default_rng(seed).choice([1.0, 0.5, 1 / 3], a.shape[1])
+        for c in (np.ones(a.shape[1]), price):
+            res = linprog(c, A_ub=-a.toarray(), b_ub=-d, bounds=(0, 1), method="highs")
+            assert opt.lp_bound(a, d, c, 10.0) == pytest.approx(res.fun, abs=1e-5)  # stations
+        assert opt.lp_bound(a, d, np.ones(a.shape[1]), 10.0) <= brute_force(a, d) + 1e-9
+    assert opt.lp_bound(a, np.zeros_like(d), np.ones(a.shape[1]), 10.0) == 0.0
+
+
 def textbook_greedy(a, demand, w):
     """Greedy multi-cover recounting every column's (weighted) gain at every pick, then
     dropping redundant columns, least-weighted first."""

@@ -13,14 +13,25 @@ covering station whose every met sample another station still meets — one of a
 neighbouring block, across the block edge — is removed (:func:`redundant_stations`).
 
 **The bound stays honest.** A block's lower bound holds for the stations meeting *its*
-samples. Each block also says the farthest any candidate meets one of its samples (its
-**meeting reach**, :func:`meeting_reach`, at most the reach): every candidate of the whole
-site that meets a sample of the block is among the block's candidates (the grid is shared
-and the halo holds everything within the reach), so it stands within that distance of the
-block's footprint. Two blocks farther apart than the sum of their meeting reaches therefore
-share no station, and the sum of the bounds of blocks pairwise that far apart is a lower
-bound of the whole. The plan reports the largest such sum found (greedy), never the plain
-sum of all blocks (a station on a block edge may serve two blocks).
+samples; the plain sum of all blocks' bounds does not hold for the whole (a station on a
+block edge may serve two blocks). Every candidate of the whole site that meets a sample of
+a block is among that block's candidates, at the same grid position (the grid is anchored
+to the CRS and the halo holds everything within the reach). Two bounds follow, and the
+plan reports the larger:
+
+* **Shared stations** (:func:`shared_prices`, :func:`block_cover`): each block's cover by
+  the scanner's error, with every candidate priced 1 / (the number of blocks whose samples
+  it meets). A cover of the whole site, restricted to the candidates meeting one block's
+  samples, covers that block; summed over the blocks, these prices count each of its
+  stations once. So the sum of the blocks' LP relaxations at these prices is a lower bound
+  on the fewest stations of the whole (Lagrangian decomposition with the shared columns'
+  costs split evenly; Guignard & Kim, "Lagrangean decomposition: a model yielding stronger
+  Lagrangean bounds", Mathematical Programming 39, 1987,
+  https://doi.org/10.1007/BF02592954; tested against the optimum of random instances).
+* **Far apart**: each block says the farthest any candidate meets one of its samples (its
+  **meeting reach**, :func:`meeting_reach`, at most the reach). Two blocks farther apart
+  than the sum of their meeting reaches share no station, so the sum of the bounds of
+  blocks pairwise that far apart is a bound (the largest such sum found, greedy).
 """
 
 from __future__ import annotations
@@ -32,6 +43,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 import pandas as pd
+import scipy.sparse as sp
 import shapely
 from shapely.geometry import box
 
@@ -52,12 +64,15 @@ from planner.site import Site
 __all__ = [
     "DEFAULT_BLOCK_M",
     "Block",
+    "BlockCover",
+    "block_cover",
     "block_region",
     "block_site",
     "meeting_table",
     "partition",
     "plan_district",
     "redundant_stations",
+    "shared_prices",
 ]
 
 Progress = Callable[[float, str], None]
@@ -165,10 +180,11 @@ def _plan_block(
     req: Requirements,
     settings: PlanSettings,
     region: shapely.Geometry | None = None,
-) -> tuple[Plan, pd.DataFrame]:
-    """One block's plan (a Dask task) and its :func:`meeting_table` (within ``region``,
-    the block's box grown by its halo); its network and workbench stay on the worker. Its
-    timings say the worker process's peak memory so far [MB] (``worker_peak_mb``)."""
+) -> tuple[Plan, pd.DataFrame, BlockCover]:
+    """One block's plan (a Dask task), its :func:`meeting_table` (within ``region``, the
+    block's box grown by its halo) and its :func:`block_cover`; its network and workbench
+    stay on the worker. Its timings say the worker process's peak memory so far [MB]
+    (``worker_peak_mb``)."""
     import resource
 
     from planner.pipeline.planning import plan
@@ -176,9 +192,70 @@ def _plan_block(
     p = plan(site, scanner, req, settings)
     table = meeting_table(p, region)
     p.solver["meeting_reach_m"] = meeting_reach(p)
+    cover = block_cover(p)
     p.network = p.workbench = None
     p.timings_s["worker_peak_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
-    return p, table
+    return p, table, cover
+
+
+def _shown(planned: tuple[Plan, pd.DataFrame, BlockCover]) -> tuple:
+    """What the stitch needs of a planned block: its plan, its meeting table and where its
+    cover's candidates stand (the cover itself stays on the worker)."""
+    p, table, cover = planned
+    return p, table, cover.xy
+
+
+@dataclass(frozen=True)
+class BlockCover:
+    """A block's cover by the scanner's error (its first evaluation): its samples needing a
+    station as rows (``demand`` stations each), the candidates meeting any of them as
+    columns, standing at ``xy`` [m] on the grid the whole site shares."""
+
+    xy: np.ndarray
+    a: sp.csr_matrix
+    demand: np.ndarray
+
+
+def block_cover(p: Plan) -> BlockCover:
+    """The cover problem of the plan's first choice of stations (empty when it was not
+    kept)."""
+    from planner.pipeline.planning import cover_demand
+
+    wb = p.workbench
+    if wb is None or wb.evaluation is None:
+        return BlockCover(np.empty((0, 2)), sp.csr_matrix((0, 0), dtype=bool), np.empty(0))
+    ok = wb.evaluation.ok.tocsr()
+    demand = cover_demand(wb.ctx, np.asarray(ok.sum(axis=1)).ravel())
+    rows = ok[demand > 0].tocsc()
+    cols = np.flatnonzero(np.diff(rows.indptr) > 0)
+    return BlockCover(wb.pool[cols].copy(), rows[:, cols].tocsr(), demand[demand > 0])
+
+
+def shared_prices(xys: list[np.ndarray]) -> list[np.ndarray]:
+    """Each block's cover candidates (standing at ``xys[k]``) priced 1 / (the number of
+    blocks whose covers hold the same grid position, to the millimetre)."""
+    sizes = [len(xy) for xy in xys]
+    if not sum(sizes):
+        return [np.empty(0) for _ in xys]
+    keys = np.round(np.concatenate(xys) * 1000.0).astype(np.int64)
+    _, where, count = np.unique(keys, axis=0, return_inverse=True, return_counts=True)
+    return np.split(1.0 / count[where.ravel()], np.cumsum(sizes)[:-1])
+
+
+#: Time for the LP relaxation of one block's cover at shared prices [s].
+SHARED_BOUND_S = 20.0
+
+
+def _cover(planned: tuple[Plan, pd.DataFrame, BlockCover]) -> BlockCover:
+    return planned[2]
+
+
+def _shared_bound(cover: BlockCover, price: np.ndarray) -> float:
+    """The LP relaxation of a block's cover with its candidates at ``price`` (a Dask task,
+    on the worker holding the cover)."""
+    from planner.pipeline.optimise import lp_bound
+
+    return lp_bound(cover.a, cover.demand, price, SHARED_BOUND_S)
 
 
 def meeting_reach(p: Plan, rows_per_chunk: int = 2000) -> float:
@@ -310,18 +387,26 @@ def plan_district(
     # and no worker idles long while another plans a large block at the end
     work = [estimate_samples(s, st.sample_spacing_m, st.sample_height_step_m) for s in sites]
     try:
-        futures = {
+        planned = [
             client.submit(
                 _plan_block, s, scanner, req, st, block_region(b, halo), priority=w, pure=False
-            ): k
-            for k, (b, s, w) in enumerate(zip(blocks, sites, work, strict=True))
+            )
+            for b, s, w in zip(blocks, sites, work, strict=True)
+        ]
+        # the plans and tables come here; the covers stay on the workers for the bound
+        covers = [client.submit(_cover, f, priority=w) for f, w in zip(planned, work, strict=True)]
+        futures = {
+            client.submit(_shown, f, priority=w): k
+            for k, (f, w) in enumerate(zip(planned, work, strict=True))
         }
+        del planned
         plans: list[Plan | None] = [None] * len(blocks)
         tables: list[pd.DataFrame | None] = [None] * len(blocks)
+        xys: list[np.ndarray] = [np.empty((0, 2))] * len(blocks)
         for done, fut in enumerate(as_completed(futures), start=1):
             k = futures[fut]
             try:
-                plans[k], tables[k] = fut.result()
+                plans[k], tables[k], xys[k] = fut.result()
             except KilledWorker:
                 limit = "the cluster's limit" if scheduler else memory_limit
                 n = len(blocks[k].buildings)
@@ -332,13 +417,21 @@ def plan_district(
                     f"smaller blocks (--block-m {block_m / 2:g}) or give the workers more memory"
                     + ("" if scheduler else " (--worker-memory)")
                 ) from None
-            say(0.95 * done / len(blocks), f"block {done} of {len(blocks)} planned")
+            say(0.93 * done / len(blocks), f"block {done} of {len(blocks)} planned")
+        say(0.93, "bounding the fewest stations (blocks' shared stations priced by share)")
+        prices = shared_prices(xys)
+        shared = sum(
+            client.gather(
+                [client.submit(_shared_bound, c, q) for c, q in zip(covers, prices, strict=True)]
+            )
+        )
+        del covers
     finally:
         client.close()
         if cluster is not None:
             cluster.close()
     say(0.96, "stitching the blocks")
-    out = stitch(site, scanner, req, st, blocks, plans, halo, tables)
+    out = stitch(site, scanner, req, st, blocks, plans, halo, tables, shared)
     out.timings_s["total"] = time.perf_counter() - t0
     say(1.0, "plan ready")
     return out
@@ -390,6 +483,10 @@ def _honest_bound(blocks: list[Block], plans: list[Plan], reach: float) -> float
     return max(sum(bounds[k] for k in chosen), max(bounds, default=0.0))
 
 
+#: A station named in a sample's reason (``(station S04)``, ``its station S04 cannot…``).
+STATION_IN_TEXT = r"(?<=station )S\d+\b"
+
+
 def stitch(
     site: Site,
     scanner: Scanner,
@@ -399,10 +496,13 @@ def stitch(
     plans: list[Plan],
     reach: float,
     tables: list[pd.DataFrame] | None = None,
+    shared: float = 0.0,
 ) -> Plan:
     """One plan from the blocks' plans: ids prefixed with the block key (control points keep
     theirs), the stations a neighbouring block makes redundant removed (given the blocks'
-    :func:`meeting_table`), an honest bound, a message per block, one route."""
+    :func:`meeting_table`), an honest bound (the larger of the far-apart blocks' and the
+    ``shared`` one, the sum of the blocks' covers at shared prices), a message per block, one
+    route."""
     stations, targets, coverage, facades, links, zones, cands = [], [], [], [], [], [], []
     messages = [f"District: {len(blocks)} blocks planned on Dask, halo {reach:.0f} m."]
     control = {c.id for c in site.control}
@@ -416,6 +516,9 @@ def stitch(
         targets.append(t)
         c = p.coverage.copy()
         c["station_id"] = c["station_id"].map(lambda s, m=sid: m.get(s, s))
+        c["reason"] = c["reason"].str.replace(  # the stations a reason names, too
+            STATION_IN_TEXT, lambda hit, m=sid: m.get(hit[0], hit[0]), regex=True
+        )
         coverage.append(c)
         facades.append(p.facades)
         lk = p.links.copy()
@@ -458,7 +561,7 @@ def stitch(
                 "they met is met from another station, some of a neighbouring block (those "
                 "samples are in that block's frame)."
             )
-    bound = _honest_bound(blocks, plans, reach)
+    bound = max(_honest_bound(blocks, plans, reach), float(math.ceil(shared - 1e-6)))
     statuses = {p.solver["status"] for p in plans}
     solver = {
         "method": f"district ({len(blocks)} blocks)",
@@ -478,6 +581,7 @@ def stitch(
         "registration_rounds": max(int(p.solver["registration_rounds"]) for p in plans),
         "blocks": len(blocks),
         "block_bound_sum": float(sum(p.solver.get("lower_bound") or 0 for p in plans)),
+        "shared_bound": shared,
         "redundant_removed": len(removed),
     }
     route = field_route(site, scanner, st, stations_df, targets_df, coverage_df, links_df)
@@ -510,15 +614,17 @@ def redundant_stations(
 ) -> list[str]:
     """Covering stations whose every met sample stays met without them (ids), fewest
     samples first, each checked against those already removed. Only a covering station no
-    other is registered to can go, and only samples needing one station are served from
+    other is registered to and no unmet sample is scanned from (its best achievable values
+    are those of its station) can go, and only samples needing one station are served from
     elsewhere; a sample of another block counts where that block's stations meet it on the
     same point (to the millimetre) and it lies in no zone (a zone's requirement is its own
     block's)."""
     pairs = _counting_pairs(coverage, meeting)  # only the samples met now must stay met
     multi = set(pairs.loc[pairs["own"] & (pairs["needed"] > 1), "station_id"])
     parents = set(links["station_a"])
+    unmet = set(coverage.loc[~coverage["meets"] & ~coverage["party_wall"], "station_id"])
     movable = stations[(stations["purpose"] == "cover")]["station_id"]
-    movable = [s for s in movable if s not in parents and s not in multi]
+    movable = [s for s in movable if s not in parents | multi | unmet]
     by_sample: dict[tuple, set[str]] = {}
     by_station: dict[str, list[tuple]] = {}
     samples = zip(pairs["facade_id"], pairs["sample_id"], strict=True)

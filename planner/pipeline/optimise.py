@@ -30,7 +30,7 @@ from planner.errors import PlannerError
 from planner.pipeline.reduce import reduce_cover
 from planner.polar import separated_directions
 
-__all__ = ["CoverSolution", "greedy_cover", "lagrangian_bound", "solve_cover"]
+__all__ = ["CoverSolution", "greedy_cover", "lagrangian_bound", "lp_bound", "solve_cover"]
 
 
 @dataclass(kw_only=True)
@@ -194,16 +194,54 @@ def _highs(a: sp.csr_matrix, demand: np.ndarray, start: np.ndarray, time_limit_s
     """
     import highspy  # heavy: only when solving
 
+    h = _cover_model(a, demand, np.ones(a.shape[1]), time_limit_s, integer=True)
+    h.setOptionValue("mip_rel_gap", 0.0)
+    x0 = np.zeros(a.shape[1])
+    x0[start] = 1.0
+    _set_start(h, highspy, x0)
+    _run(h)
+    status = h.getModelStatus()
+    info = h.getInfo()
+    has_x = info.primal_solution_status == 2  # kSolutionStatusFeasible
+    x = np.flatnonzero(np.asarray(h.getSolution().col_value) > 0.5) if has_x else None
+    dual = info.mip_dual_bound if np.isfinite(info.mip_dual_bound) else None
+    return status == highspy.HighsModelStatus.kOptimal, x, dual
+
+
+def lp_bound(a: sp.csr_matrix, demand: np.ndarray, cost: np.ndarray, time_limit_s: float) -> float:
+    """The LP relaxation's optimum of the cover of least ``cost`` (each column at most once),
+    by HiGHS's dual simplex: a lower bound on the integer optimum, less a margin for the
+    solver's tolerances; 0.0 (still a bound) when it is not solved within the time."""
+    import highspy
+
+    if not (demand > 0).any():
+        return 0.0
+    h = _cover_model(a, demand, cost, time_limit_s, integer=False)
+    h.setOptionValue("solver", "simplex")
+    h.setOptionValue("simplex_strategy", 1)  # dual
+    _run(h)
+    if h.getModelStatus() != highspy.HighsModelStatus.kOptimal:
+        return 0.0
+    value = float(h.getInfo().objective_function_value)
+    return max(0.0, value - 1e-6 * max(1.0, abs(value)))
+
+
+def _cover_model(
+    a: sp.csr_matrix, demand: np.ndarray, cost: np.ndarray, time_limit_s: float, integer: bool
+):
+    """A HiGHS instance holding min cᵀx, Ax ≥ demand, 0 ≤ x ≤ 1 (x integer or not); quiet,
+    one thread, ``time_limit_s``."""
+    import highspy
+
     n, m = a.shape
     h = highspy.Highs()
     h.setOptionValue("output_flag", False)
     h.setOptionValue("time_limit", float(time_limit_s))
-    h.setOptionValue("mip_rel_gap", 0.0)
     h.setOptionValue("threads", 1)
     ac = sp.csc_matrix(a, dtype=np.float64)
     lp = highspy.HighsLp()
     lp.num_col_, lp.num_row_ = m, n
-    lp.col_cost_ = np.ones(m)
+    lp.col_cost_ = np.asarray(cost, dtype=np.float64)
     lp.col_lower_ = np.zeros(m)
     lp.col_upper_ = np.ones(m)
     lp.row_lower_ = demand.astype(np.float64)
@@ -212,11 +250,15 @@ def _highs(a: sp.csr_matrix, demand: np.ndarray, start: np.ndarray, time_limit_s
     lp.a_matrix_.start_ = ac.indptr
     lp.a_matrix_.index_ = ac.indices
     lp.a_matrix_.value_ = ac.data
-    lp.integrality_ = [highspy.HighsVarType.kInteger] * m
+    if integer:
+        lp.integrality_ = [highspy.HighsVarType.kInteger] * m
     h.passModel(lp)
-    x0 = np.zeros(m)
-    x0[start] = 1.0
-    _set_start(h, highspy, x0)
+    return h
+
+
+def _run(h) -> None:
+    """Solve in HiGHS's own thread, so that Ctrl+C, SIGTERM or SIGHUP stop it at once
+    (cancelled, then re-raised)."""
     h.startSolve()
     try:
         while not h.wait(0.1)[0]:
@@ -225,12 +267,6 @@ def _highs(a: sp.csr_matrix, demand: np.ndarray, start: np.ndarray, time_limit_s
         h.cancelSolve()
         h.wait(5.0)
         raise
-    status = h.getModelStatus()
-    info = h.getInfo()
-    has_x = info.primal_solution_status == 2  # kSolutionStatusFeasible
-    x = np.flatnonzero(np.asarray(h.getSolution().col_value) > 0.5) if has_x else None
-    dual = info.mip_dual_bound if np.isfinite(info.mip_dual_bound) else None
-    return status == highspy.HighsModelStatus.kOptimal, x, dual
 
 
 def _set_start(h, highspy, x0: np.ndarray) -> None:

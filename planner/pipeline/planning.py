@@ -612,7 +612,7 @@ def _choose(
             mixed = ok.multiply(~lost[:, None]) + scanner_ok.multiply(lost[:, None])
             ok = sp.csr_matrix(mixed > 0)
             n_ok = np.where(lost, n_scanner, n_ok)
-    demand = np.where(fac.party_wall, 0, np.minimum(ctx.stations_needed, n_ok))
+    demand = cover_demand(ctx, n_ok)
     remaining = max(MIN_SOLVER_S, deadline - time.monotonic())
     if forced is None or not len(forced):
         sol = solve_cover(ok, demand, remaining, st.method)
@@ -631,6 +631,13 @@ def _choose(
             sol.gap = (sol.objective - sol.lower_bound) / sol.objective
     timings["optimise"] = timings.get("optimise", 0.0) + time.perf_counter() - t
     return ev, sol
+
+
+def cover_demand(ctx: Context, n_ok: np.ndarray) -> np.ndarray:
+    """How many of the chosen stations each sample needs, given how many candidates meet it
+    (``n_ok``): the stations its requirement asks for, at most as many as meet it; none on a
+    party wall."""
+    return np.where(ctx.facades.party_wall, 0, np.minimum(ctx.stations_needed, n_ok))
 
 
 def _network(
