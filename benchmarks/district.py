@@ -54,6 +54,9 @@ def run(n: int, workers: int) -> dict:
         "block_bounds": s["block_bound_sum"],
         "met": int(cov["meets"].sum()),
         "pairs_per_s": s["pairs"] / max(p.timings_s["blocks_s"], 1e-9),
+        "blocks_s": p.timings_s["blocks_s"],
+        "shared_bound_s": p.timings_s["shared_bound_s"],
+        "stitch_s": p.timings_s["stitch_s"],
     }
 
 

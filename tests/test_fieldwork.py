@@ -79,6 +79,25 @@ def test_open_path_order_is_optimal_on_small_instances():
         assert length <= best * 1.05 + 1e-9  # m: 2-opt from the best start, within 5 %
 
 
+def test_open_path_order_of_a_district_is_a_short_permutation():
+    """Thousands of stations (a district): fewer nearest-neighbour starts and 2-opt in
+    windows, several reversals a pass. Every station once, and shorter than the nearest
+    neighbour path from the first station alone (1.73 s and 122.9 km here, against 13.0 s
+    and 126.5 km for 150 starts and one reversal a pass)."""
+    rng = np.random.default_rng(0)
+    xy = rng.uniform(0, 3000, (2640, 2))
+    d = np.hypot(*(xy[:, None] - xy[None]).transpose(2, 0, 1))
+    order = _open_path_order(d)
+    assert sorted(order) == list(range(len(xy)))
+    seen, nn = np.zeros(len(xy), bool), [0]
+    seen[0] = True
+    for _ in range(len(xy) - 1):
+        nn.append(int(np.argmin(np.where(seen, np.inf, d[nn[-1]]))))
+        seen[nn[-1]] = True
+    length, greedy = d[order[:-1], order[1:]].sum(), d[nn[:-1], nn[1:]].sum()
+    assert length < 0.95 * greedy  # m: 122.9 km against 135.4 km
+
+
 def test_route_of_the_default_plan(default_plan):
     p = default_plan
     t = p.route.table

@@ -419,19 +419,24 @@ def plan_district(
                 ) from None
             say(0.93 * done / len(blocks), f"block {done} of {len(blocks)} planned")
         say(0.93, "bounding the fewest stations (blocks' shared stations priced by share)")
+        t_bound = time.perf_counter()
         prices = shared_prices(xys)
         shared = sum(
             client.gather(
                 [client.submit(_shared_bound, c, q) for c, q in zip(covers, prices, strict=True)]
             )
         )
+        bound_s = time.perf_counter() - t_bound
         del covers
     finally:
         client.close()
         if cluster is not None:
             cluster.close()
     say(0.96, "stitching the blocks")
+    t_stitch = time.perf_counter()
     out = stitch(site, scanner, req, st, blocks, plans, halo, tables, shared)
+    out.timings_s["shared_bound_s"] = bound_s
+    out.timings_s["stitch_s"] = time.perf_counter() - t_stitch
     out.timings_s["total"] = time.perf_counter() - t0
     say(1.0, "plan ready")
     return out

@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 import shapely
-from scipy.sparse import coo_matrix
+from scipy.sparse import coo_matrix, csr_matrix
 from scipy.sparse.csgraph import dijkstra
 from scipy.spatial import cKDTree
 
@@ -45,6 +45,13 @@ SECTOR_MARGIN_DEG = 5.0
 NEIGHBOURS = 40
 #: Up to this many stations the order is chosen on the full matrix of walking distances.
 EXACT_MAX_STATIONS = 400
+#: Nearest-neighbour paths are tried from up to 150 starts, fewer where the stations are so
+#: many that the starts would look at more than this many matrix entries in all.
+ORDER_WORK = 1e8
+#: Beyond this many stations, 2-opt reverses only stretches of up to this many stations …
+TWO_OPT_WINDOW = 400
+#: … and looks at this many of the best reversals in a pass.
+MOVES_PER_PASS = 2000
 
 #: route.csv: one row per station in visiting order.
 ROUTE_COLUMNS = [
@@ -155,7 +162,7 @@ class _WalkGraph:
     nodes: np.ndarray  # (V, 2), the stations first
     n_stations: int
     length: coo_matrix  # geometric length of each free edge
-    weight: coo_matrix  # length with the no-go penalty (what the order minimises)
+    weight: csr_matrix  # length with the no-go penalty (what the order minimises)
 
 
 def _walk_graph(site: Site, points: np.ndarray, clearance_m: float) -> _WalkGraph:
@@ -203,7 +210,7 @@ def _walk_graph(site: Site, points: np.ndarray, clearance_m: float) -> _WalkGrap
         nodes=nodes,
         n_stations=len(points),
         length=coo_matrix((np.concatenate([length, length]), sym), shape=(n, n)),
-        weight=coo_matrix((np.concatenate([weight, weight]) + 1e-9, sym), shape=(n, n)),
+        weight=csr_matrix((np.concatenate([weight, weight]) + 1e-9, sym), shape=(n, n)),
     )
 
 
@@ -218,7 +225,7 @@ def walk_paths(site: Site, points: np.ndarray, clearance_m: float = 1.0) -> np.n
 
 def _shortest(g: _WalkGraph, sources: np.ndarray, limit: float = np.inf):
     """Weights to every node and predecessor rows of the shortest walks from ``sources``."""
-    return dijkstra(g.weight.tocsr(), indices=sources, return_predecessors=True, limit=limit)
+    return dijkstra(g.weight, indices=sources, return_predecessors=True, limit=limit)
 
 
 def _leg(g: _WalkGraph, a: int, b: int, pred: np.ndarray) -> tuple[float, np.ndarray | None]:
@@ -237,13 +244,15 @@ def _leg(g: _WalkGraph, a: int, b: int, pred: np.ndarray) -> tuple[float, np.nda
 # -- visiting order -----------------------------------------------------------------------
 def _open_path_order(d: np.ndarray) -> np.ndarray:
     """A short open path through all points of the distance matrix ``d``: nearest
-    neighbour from every start, the best improved by 2-opt."""
+    neighbour from up to 150 starts spread over the points (fewer for thousands, see
+    :data:`ORDER_WORK`), the best improved by 2-opt."""
     n = len(d)
     if n <= 2:
         return np.arange(n)
     big = np.where(np.isfinite(d), d, np.nanmax(np.where(np.isfinite(d), d, 0)) * 10 + 1e6)
     best, best_len = None, math.inf
-    for s in range(n) if n <= 150 else np.linspace(0, n - 1, 150).astype(int):
+    starts = int(min(n, 150, max(4, ORDER_WORK // (n * n))))
+    for s in np.unique(np.linspace(0, n - 1, starts).astype(int)):
         seen = np.zeros(n, bool)
         order = [s]
         seen[s] = True
@@ -259,13 +268,19 @@ def _open_path_order(d: np.ndarray) -> np.ndarray:
 
 
 def _two_opt(order: np.ndarray, d: np.ndarray, max_passes: int = 50) -> np.ndarray:
-    """2-opt on an open path: reverse ``order[i..j]`` while that shortens it."""
+    """2-opt on an open path: reverse ``order[i..j]`` while that shortens it (stretches of
+    up to :data:`TWO_OPT_WINDOW` stations where there are more). Each pass makes the best
+    reversals whose stretches, with a station either side, do not overlap: each one's gain
+    stays what it was computed as."""
     n = len(order)
+    i, j = np.triu_indices(n, 1)
+    if n > TWO_OPT_WINDOW:
+        near = j - i <= TWO_OPT_WINDOW
+        i, j = i[near], j[near]
     for _ in range(max_passes):
         o = order
         prev = np.concatenate([[-1], o[:-1]])  # node before position i
         nxt = np.concatenate([o[1:], [-1]])  # node after position j
-        i, j = np.triu_indices(n, 1)
         before = np.where(prev[i] >= 0, d[prev[i], o[i]], 0.0) + np.where(
             nxt[j] >= 0, d[o[j], nxt[j]], 0.0
         )
@@ -273,11 +288,16 @@ def _two_opt(order: np.ndarray, d: np.ndarray, max_passes: int = 50) -> np.ndarr
             nxt[j] >= 0, d[o[i], nxt[j]], 0.0
         )
         gain = before - after
-        k = int(np.argmax(gain))
-        if gain[k] <= 1e-9:
+        better = np.flatnonzero(gain > 1e-9)
+        if not len(better):
             break
-        a, b = i[k], j[k]
-        order = np.concatenate([o[:a], o[a : b + 1][::-1], o[b + 1 :]])
+        better = better[np.argsort(-gain[better], kind="stable")][:MOVES_PER_PASS]
+        order = o.copy()
+        touched = np.zeros(n + 2, dtype=bool)  # positions −1 … n, shifted by one
+        for a, b in zip(i[better], j[better], strict=True):
+            if not touched[a : b + 3].any():
+                touched[a : b + 3] = True
+                order[a : b + 1] = o[a : b + 1][::-1]
     return order
 
 
