@@ -55,7 +55,7 @@ def run(n: int, workers: int) -> dict:
         "met": int(cov["meets"].sum()),
         "pairs_per_s": s["pairs"] / max(p.timings_s["blocks_s"], 1e-9),
         "blocks_s": p.timings_s["blocks_s"],
-        "shared_bound_s": p.timings_s["shared_bound_s"],
+        "bound_wait_s": p.timings_s["bound_wait_s"],
         "stitch_s": p.timings_s["stitch_s"],
     }
 

@@ -418,25 +418,22 @@ def plan_district(
                     + ("" if scheduler else " (--worker-memory)")
                 ) from None
             say(0.93 * done / len(blocks), f"block {done} of {len(blocks)} planned")
-        say(0.93, "bounding the fewest stations (blocks' shared stations priced by share)")
-        t_bound = time.perf_counter()
+        # the workers bound the fewest stations while the blocks are stitched here
+        say(0.93, "stitching the blocks (and bounding the fewest stations)")
+        t = time.perf_counter()
         prices = shared_prices(xys)
-        shared = sum(
-            client.gather(
-                [client.submit(_shared_bound, c, q) for c, q in zip(covers, prices, strict=True)]
-            )
-        )
-        bound_s = time.perf_counter() - t_bound
+        bounds = [client.submit(_shared_bound, c, q) for c, q in zip(covers, prices, strict=True)]
         del covers
+        out = stitch(site, scanner, req, st, blocks, plans, halo, tables)
+        stitched = time.perf_counter()
+        shared = float(sum(client.gather(bounds)))
+        out.solver.update(_bound_fields(out.solver["objective"], out.solver["far_bound"], shared))
+        out.timings_s["stitch_s"] = stitched - t
+        out.timings_s["bound_wait_s"] = time.perf_counter() - stitched
     finally:
         client.close()
         if cluster is not None:
             cluster.close()
-    say(0.96, "stitching the blocks")
-    t_stitch = time.perf_counter()
-    out = stitch(site, scanner, req, st, blocks, plans, halo, tables, shared)
-    out.timings_s["shared_bound_s"] = bound_s
-    out.timings_s["stitch_s"] = time.perf_counter() - t_stitch
     out.timings_s["total"] = time.perf_counter() - t0
     say(1.0, "plan ready")
     return out
@@ -492,6 +489,14 @@ def _honest_bound(blocks: list[Block], plans: list[Plan], reach: float) -> float
 STATION_IN_TEXT = r"(?<=station )S\d+\b"
 
 
+def _bound_fields(objective: int, far: float, shared: float) -> dict[str, float]:
+    """The plan's bound — the larger of the far-apart blocks' (``far``) and the blocks'
+    covers at shared prices (``shared``), rounded up — and its gap."""
+    bound = max(far, float(math.ceil(shared - 1e-6)))
+    gap = 0.0 if objective == 0 else max(0.0, (objective - bound) / objective)
+    return {"lower_bound": bound, "gap": gap, "shared_bound": shared}
+
+
 def stitch(
     site: Site,
     scanner: Scanner,
@@ -501,13 +506,12 @@ def stitch(
     plans: list[Plan],
     reach: float,
     tables: list[pd.DataFrame] | None = None,
-    shared: float = 0.0,
 ) -> Plan:
     """One plan from the blocks' plans: ids prefixed with the block key (control points keep
     theirs), the stations a neighbouring block makes redundant removed (given the blocks'
-    :func:`meeting_table`), an honest bound (the larger of the far-apart blocks' and the
-    ``shared`` one, the sum of the blocks' covers at shared prices), a message per block, one
-    route."""
+    :func:`meeting_table`), an honest bound (the far-apart blocks'; :func:`plan_district`
+    raises it to the blocks' covers at shared prices where that is larger), a message per
+    block, one route."""
     stations, targets, coverage, facades, links, zones, cands = [], [], [], [], [], [], []
     messages = [f"District: {len(blocks)} blocks planned on Dask, halo {reach:.0f} m."]
     control = {c.id for c in site.control}
@@ -566,14 +570,14 @@ def stitch(
                 "they met is met from another station, some of a neighbouring block (those "
                 "samples are in that block's frame)."
             )
-    bound = max(_honest_bound(blocks, plans, reach), float(math.ceil(shared - 1e-6)))
+    far = _honest_bound(blocks, plans, reach)
     statuses = {p.solver["status"] for p in plans}
     solver = {
         "method": f"district ({len(blocks)} blocks)",
         "status": statuses.pop() if len(statuses) == 1 else "mixed: " + ", ".join(sorted(statuses)),
         "objective": objective,
-        "lower_bound": bound,
-        "gap": 0.0 if objective == 0 else max(0.0, (objective - bound) / objective),
+        **_bound_fields(objective, far, 0.0),
+        "far_bound": far,
         "seconds": max(float(p.solver["seconds"]) for p in plans),
         "greedy_objective": sum(int(p.solver.get("greedy_objective") or 0) for p in plans),
         "reductions": "",
@@ -586,7 +590,6 @@ def stitch(
         "registration_rounds": max(int(p.solver["registration_rounds"]) for p in plans),
         "blocks": len(blocks),
         "block_bound_sum": float(sum(p.solver.get("lower_bound") or 0 for p in plans)),
-        "shared_bound": shared,
         "redundant_removed": len(removed),
     }
     route = field_route(site, scanner, st, stations_df, targets_df, coverage_df, links_df)
