@@ -390,8 +390,9 @@ DEFAULT_BLOCK_M = 250.0
 #: take 20–26 s and keep their registration chains short.
 MAX_BLOCK_BUILDINGS = 12
 #: Memory of each local Dask worker: blocks of up to MAX_BLOCK_BUILDINGS planned buildings
-#: peaked at 473 MB per worker on the 1000-building town with 2 workers, 615 MB with one
-#: (benchmarks/RESULTS.md).
+#: peaked at 551 MB per worker on the 1000-building town with 2 workers, 727 MB with one
+#: (each worker also holds its blocks' covers until the district's bound is computed;
+#: benchmarks/RESULTS.md).
 WORKER_MEMORY = "2GB"
 
 
