@@ -116,6 +116,30 @@ def test_a_worker_that_dies_is_exit_2_and_nothing_written(tmp_path):
     assert not out.exists()
 
 
+def test_a_worker_that_dies_on_the_bound_leaves_the_plan_standing(tmp_path):
+    """The bound's LPs run after the blocks are planned: a worker dying there costs the
+    shared-station bound (the far-apart one stays), not the plan."""
+    import dask
+    from dask.distributed import Client, LocalCluster
+
+    with dask.config.set({"distributed.scheduler.allowed-failures": 0}):
+        cluster = LocalCluster(
+            n_workers=1, threads_per_worker=1, processes=True, dashboard_address=None
+        )
+    with cluster, Client(cluster) as client:
+        client.run(
+            exec,
+            "import os, planner.pipeline.district as d\n"
+            "d._shared_bound = lambda *a, **k: os._exit(1)",
+        )
+        out = tmp_path / "p"
+        code, _, err = cli("plan", "--scheduler", cluster.scheduler_address, "--out", str(out))
+    assert code in (0, 1), err
+    assert "Traceback" not in err
+    summary = (out / "summary.txt").read_text()
+    assert "bound on shared stations was not computed" in summary
+
+
 @pytest.mark.parametrize(
     ("option", "message"),
     [
