@@ -151,14 +151,24 @@ class Sight:
         cols = np.asarray(cols, dtype=np.int64)
         return Sight(*(getattr(self, f)[:, cols] for f in Sight.__dataclass_fields__))
 
-    def join(self, other: Sight) -> Sight:
-        """Other stations' sights of the same targets, as columns after these."""
-        return Sight(
-            *(
-                np.column_stack([getattr(self, f), getattr(other, f)])
-                for f in Sight.__dataclass_fields__
-            )
-        )
+    def put(self, used: int, other: Sight) -> Sight:
+        """These sights' first ``used`` columns followed by ``other``'s (more stations, the
+        same targets), in arrays with room to spare: a cache growing a batch of columns at
+        a time is copied a logarithmic number of times, not at every batch."""
+        need = used + other.usable.shape[1]
+        fields = Sight.__dataclass_fields__
+        if need > self.usable.shape[1]:
+            cap = max(need, 2 * self.usable.shape[1])
+            grown = []
+            for f in fields:
+                old = getattr(self, f)
+                new = np.empty((old.shape[0], cap), dtype=old.dtype)
+                new[:, :used] = old[:, :used]
+                grown.append(new)
+            self = Sight(*grown)
+        for f in fields:
+            getattr(self, f)[:, used:need] = getattr(other, f)
+        return self
 
     def stack(self, other: Sight) -> Sight:
         """The same stations' sights of other targets, as rows after these."""
@@ -266,25 +276,42 @@ class SightCache:
         )
         if self.sight is not None:
             cols = sorted(self.column, key=self.column.__getitem__)
-            self.sight = self.sight.stack(sights(self.ctx, more, self.cand_xy[cols]))
+            self.sight = self.sight.take(np.arange(len(cols))).stack(
+                sights(self.ctx, more, self.cand_xy[cols])
+            )
         self.barred = np.concatenate([self.barred, np.zeros(len(more.xyz), dtype=bool)])
         self.by_hand = np.concatenate([self.by_hand, np.ones(len(more.xyz), dtype=bool)])
         return np.arange(first, len(self.tc.xyz))
 
     def __call__(self, idx: Sequence[int] | np.ndarray) -> Sight:
         """The sights of candidates ``idx``, in that order."""
+        cols = self._columns(idx)
+        if self.sight is None:
+            return sights(self.ctx, self.tc, self.cand_xy[:0])
+        out = self.sight.take(cols)  # a copy
+        out.usable[self.barred] = False
+        return out
+
+    def usable(self, idx: Sequence[int] | np.ndarray) -> np.ndarray:
+        """(T, len(idx)) which targets candidates ``idx`` can use: the one field of
+        :meth:`__call__` a search over many candidates needs, without copying the rest."""
+        cols = self._columns(idx)
+        if self.sight is None:
+            return np.zeros((len(self.tc.xyz), 0), dtype=bool)
+        out = self.sight.usable[:, cols]
+        out[self.barred] = False
+        return out
+
+    def _columns(self, idx: Sequence[int] | np.ndarray) -> list[int]:
+        """The cache's columns of candidates ``idx``, computing the sights of new ones."""
         idx = [int(i) for i in idx]
         new = [i for i in dict.fromkeys(idx) if i not in self.column]
         if new:
             fresh = sights(self.ctx, self.tc, self.cand_xy[new])
-            base = 0 if self.sight is None else self.sight.usable.shape[1]
-            self.sight = fresh if self.sight is None else self.sight.join(fresh)
+            base = len(self.column)
+            self.sight = fresh if self.sight is None else self.sight.put(base, fresh)
             self.column.update({i: base + n for n, i in enumerate(new)})
-        if self.sight is None:
-            return sights(self.ctx, self.tc, self.cand_xy[:0])
-        out = self.sight.take([self.column[i] for i in idx])  # a copy
-        out.usable[self.barred] = False
-        return out
+        return [self.column[i] for i in idx]
 
 
 def centre_rms(
@@ -333,15 +360,23 @@ def _a_matrix(lever_mm: np.ndarray, levelled: bool) -> np.ndarray:
 
 def _probe_errors(n_mats: np.ndarray, g: np.ndarray) -> np.ndarray:
     """Largest per-axis RMS [mm] of the child's error at the probe points, for a stack of
-    normal matrices (B, p, p) of its registration (the link alone); ``g`` (P, 3, p) the
-    probes' design rows. inf where a matrix is singular."""
-    out = np.full(len(n_mats), np.inf)
-    ok = scaled_condition(n_mats) < MAX_CONDITION
-    if ok.any():
-        cov = np.linalg.inv(n_mats[ok])
-        var = np.einsum("nij,bjk,nik->bni", g, cov, g)
-        out[ok] = np.sqrt(var.reshape(len(cov), -1).max(axis=1))
-    return out
+    invertible normal matrices (B, p, p) of its registration (the link alone); ``g``
+    (P, 3, p) the probes' design rows. Whether a matrix fixes the registration is for the
+    caller to judge (:func:`_well_posed`)."""
+    rows = g.reshape(-1, g.shape[-1])  # (3P, p)
+    var = ((rows @ np.linalg.inv(n_mats)) * rows).sum(axis=-1)  # (B, 3P)
+    return np.sqrt(var.max(axis=1))
+
+
+def _well_posed(n_mats: np.ndarray, order: np.ndarray) -> int | None:
+    """The first of ``order`` (indices into the stack ``n_mats``) whose matrix fixes a
+    registration (:func:`~planner.registration_error.scaled_condition`), or None. One
+    matrix at a time: the greedy choice needs only its best trial's, and that is nearly
+    always the first."""
+    for i in order:
+        if scaled_condition(n_mats[i]) < MAX_CONDITION:
+            return int(i)
+    return None
 
 
 #: The facade points a link's error is judged at: the farthest from the station and a
@@ -384,21 +419,29 @@ def _choose_link_targets(
     chosen = [] if must is None else [int(c) for c in np.flatnonzero(must[common])]
     chosen = chosen[: int(max_targets)]
     n_mat = contrib[chosen].sum(axis=0) if chosen else np.zeros(prior.shape)
-    error = float(_probe_errors((n_mat + prior)[None], g)[0]) if chosen else np.inf
+    error = np.inf
+    if chosen and scaled_condition(n_mat + prior) < MAX_CONDITION:
+        error = float(_probe_errors((n_mat + prior)[None], g)[0])
+    free = np.ones(len(common), dtype=bool)
+    free[chosen] = False
     while len(chosen) < max_targets:
-        left = np.array([c for c in range(len(common)) if c not in chosen], dtype=np.int64)
+        left = np.flatnonzero(free)
         if not len(left):
             break
-        trial = _probe_errors(n_mat + contrib[left] + prior, g)
-        best = int(np.argmin(trial))
-        if reused[left].any():
-            r = int(np.argmin(np.where(reused[left], trial, np.inf)))
-            if trial[r] <= trial[best] * (1 + MIN_GAIN):
-                best = r
-        new_error = float(trial[best])
+        mats = n_mat + contrib[left] + prior
+        trial = _probe_errors(mats, g)
+        order = np.argsort(trial, kind="stable")
+        best = _well_posed(mats, order)
+        new_error = np.inf if best is None else float(trial[best])
+        best = 0 if best is None else best
+        if np.isfinite(new_error) and reused[left].any():
+            r = _well_posed(mats, order[reused[left][order]])
+            if r is not None and trial[r] <= new_error * (1 + MIN_GAIN):
+                best, new_error = r, float(trial[r])
         if len(chosen) >= 3 and (error <= goal_mm or new_error > error * (1 - MIN_GAIN)):
             break
         chosen.append(int(left[best]))
+        free[left[best]] = False
         n_mat = n_mat + contrib[left[best]]
         error = new_error
     if len(chosen) < 3 or scaled_condition(n_mat) > MAX_CONDITION:
@@ -545,8 +588,7 @@ def _bridges(
     pool = pool[near.min(axis=1) <= BRIDGE_RADIUS_M]
     if not len(pool):
         return []
-    ps = seen(pool)
-    u_pool = (ps.usable & ~tc.is_control[:, None]).astype(np.float32)
+    u_pool = (seen.usable(pool) & ~tc.is_control[:, None]).astype(np.float32)
     u_st = (sight.usable & ~tc.is_control[:, None]).astype(np.float32)
     common_pp = u_pool.T @ u_pool  # (P, P) common targets, exact in float32 below 2**24
     common_ps = u_pool.T @ u_st  # (P, K)
