@@ -479,3 +479,27 @@ def test_registration_targets_tie_the_default_plan(rich_plan):
             for s in r.station_ids
         )
         assert r.min_size_mm >= 2 * p.scanner.step_mm_at_10m * s_max / 10 - 1e-9
+
+
+@pytest.mark.parametrize("registration", [True, False])
+def test_the_optimiser_leaves_the_registration_its_share_of_the_time(monkeypatch, registration):
+    """The whole plan shares --time-limit-s: with the registration still to be built, the
+    optimiser may take half of what is left when it starts, else all of it."""
+    import planner.pipeline.planning as planning
+
+    limits = []
+    real = planning.solve_cover
+
+    def spy(ok, demand, time_limit_s, method):
+        if method != "greedy":  # a greedy cover takes no time limit
+            limits.append(time_limit_s)
+        return real(ok, demand, time_limit_s, method)
+
+    monkeypatch.setattr(planning, "solve_cover", spy)
+    budget = 40.0  # s
+    settings = PlanSettings(time_limit_s=budget, registration_error=registration)
+    plan(square_site(20.0, 10.0), PAPER, Requirements(max_xy_mm=6, max_z_mm=6), settings)
+    assert limits
+    share = 0.5 if registration else 1.0  # the registration is left at least half
+    assert all(planning.MIN_SOLVER_S <= s <= share * budget for s in limits)
+    assert limits[0] > share * budget - 10.0  # s: most of the share is still there

@@ -65,6 +65,9 @@ PAIRS_PER_S = 20e6
 #: The optimiser always gets at least this long, even when the evaluation used the budget
 #: (greedy set cover takes well under it) [s].
 MIN_SOLVER_S = 2.0
+#: The share of the time left that the optimiser may take when the registration network is
+#: still to be built and judged after it (its rounds need the rest of the budget).
+SOLVER_SHARE = 0.5
 
 
 def reach_m(
@@ -423,8 +426,7 @@ def _best_effort(
     demand = ((np.asarray(ok.sum(axis=1)).ravel() > 0) & ~served).astype(np.int64)
     if not demand.any():
         return none
-    remaining = max(MIN_SOLVER_S, deadline - time.monotonic())
-    sol = solve_cover(ok, demand, remaining, ctx.settings.method)
+    sol = solve_cover(ok, demand, _solver_time(ctx, deadline), ctx.settings.method)
     return np.asarray(sol.chosen, dtype=np.int64), factor
 
 
@@ -613,7 +615,7 @@ def _choose(
             ok = sp.csr_matrix(mixed > 0)
             n_ok = np.where(lost, n_scanner, n_ok)
     demand = cover_demand(ctx, n_ok)
-    remaining = max(MIN_SOLVER_S, deadline - time.monotonic())
+    remaining = _solver_time(ctx, deadline)
     if forced is None or not len(forced):
         sol = solve_cover(ok, demand, remaining, st.method)
     else:  # the others for what the forced stations leave
@@ -631,6 +633,14 @@ def _choose(
             sol.gap = (sol.objective - sol.lower_bound) / sol.objective
     timings["optimise"] = timings.get("optimise", 0.0) + time.perf_counter() - t
     return ev, sol
+
+
+def _solver_time(ctx: Context, deadline: float) -> float:
+    """The optimiser's time limit [s]: what is left of the plan's budget, or its
+    :data:`SOLVER_SHARE` when the registration network is still to be built and judged;
+    never under :data:`MIN_SOLVER_S`."""
+    share = SOLVER_SHARE if ctx.settings.computes_registration else 1.0
+    return max(MIN_SOLVER_S, share * (deadline - time.monotonic()))
 
 
 def cover_demand(ctx: Context, n_ok: np.ndarray) -> np.ndarray:

@@ -430,8 +430,10 @@ class PlanSettings:
     scan_rate_hz : float, default 500 000
         Measurement rate [points/s] for scan times when the scanner's profile gives none.
     time_limit_s : float, default 60
-        Time budget of the whole plan: evaluation, optimiser and registration share it;
-        when it runs out, the best plan found so far is kept and says so.
+        Time budget of the whole plan: evaluation, optimiser and registration share it (the
+        optimiser takes at most half of what is left when it starts, so that the
+        registration's rounds get the rest); when it runs out, the best plan found so far is
+        kept and says so.
     max_samples, max_pairs : float, default 1 000 000 and 10⁹
         The work the planner accepts before it starts: facade samples, and candidate ×
         sample evaluations (about 20 million a second). Beyond them the plan is refused with
