@@ -56,6 +56,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit
 
 from planner.errors import InputError
 from planner.units import RHO_ARCSEC
@@ -437,23 +438,19 @@ def point_registration_variances(
 
     ``pose_cov`` (P, 6, 6) is the pose covariance of the station each point was scanned
     from (``station_xyz`` (P, 3)); ``along_xy``, ``normal_xy`` (P, 2) the facade's unit
-    vectors. The point moves by ``δs + δω × (p − s)``.
+    vectors. The point moves by ``δs + δω × (p − s)`` (see
+    :func:`pair_registration_variances` for the quadratic this is).
     """
-    lever = (np.asarray(point_xyz) - np.asarray(station_xyz)) * 1000.0  # mm
-    p = len(lever)
-    jac = np.zeros((p, 3, 6))
-    jac[:, :, :3] = np.eye(3)
-    x, y, z = lever[:, 0], lever[:, 1], lever[:, 2]
-    # −[r]× : δω × r = −r × δω
-    jac[:, 0, 4], jac[:, 0, 5] = z, -y
-    jac[:, 1, 3], jac[:, 1, 5] = -z, x
-    jac[:, 2, 3], jac[:, 2, 4] = y, -x
-    cov = jac @ pose_cov @ np.transpose(jac, (0, 2, 1))  # (P, 3, 3) in the site frame
-    u = np.column_stack([along_xy, np.zeros(p)])
-    n = np.column_stack([normal_xy, np.zeros(p)])
-    var_x = np.einsum("pi,pij,pj->p", u, cov, u)
-    var_y = np.einsum("pi,pij,pj->p", n, cov, n)
-    return var_x, var_y, cov[:, 2, 2]
+    p = len(pose_cov)
+    out = np.empty((3, 1, p))
+    _lever_quadratics(
+        _variance_coefficients(np.asarray(pose_cov, dtype=float), along_xy, normal_xy),
+        np.ascontiguousarray(station_xyz, dtype=float),
+        np.ascontiguousarray(point_xyz, dtype=float),
+        True,
+        out,
+    )
+    return out[0, 0], out[1, 0], out[2, 0]
 
 
 def pair_registration_variances(
@@ -472,15 +469,65 @@ def pair_registration_variances(
     variance the quadratic ``bᵀCb + 2 (MᵀCb)·r + rᵀ (MᵀCM) r`` in the lever, its
     coefficients once per station.
     """
-    lever = (point_xyz[None, :, :] - station_xyz[:, None, :]) * 1000.0  # (c, n, 3) mm
-    out = []
-    for u2 in (along_xy, normal_xy, None):
-        u = np.array([0.0, 0.0, 1.0]) if u2 is None else np.array([u2[0], u2[1], 0.0])
-        b = np.concatenate([u, np.zeros(3)])
-        m = np.concatenate([np.zeros((3, 3)), _skew(u).T])  # (6, 3): r × u = m[3:] @ r
-        c0 = b @ pose_cov @ b  # (c,)
-        c1 = (b @ pose_cov) @ m  # (c, 3)
-        c2 = m.T @ pose_cov @ m  # (c, 3, 3)
-        quad = ((lever @ c2) * lever).sum(axis=-1)
-        out.append(c0[:, None] + 2.0 * (lever @ c1[:, :, None])[..., 0] + quad)
+    c, n = len(pose_cov), len(point_xyz)
+    out = np.empty((3, c, n))
+    _lever_quadratics(
+        _variance_coefficients(np.asarray(pose_cov, dtype=float), along_xy, normal_xy),
+        np.ascontiguousarray(station_xyz, dtype=float),
+        np.ascontiguousarray(point_xyz, dtype=float),
+        False,
+        out,
+    )
     return out[0], out[1], out[2]
+
+
+def _variance_coefficients(
+    pose_cov: np.ndarray, along_xy: np.ndarray, normal_xy: np.ndarray
+) -> np.ndarray:
+    """(3, S, 10) the variance along the facade, across it and in height as quadratics in
+    the lever r [mm], per pose covariance (S, 6, 6): ``bᵀCb``, ``2 MᵀCb`` (x, y, z) and
+    ``MᵀCM`` (xx, yy, zz, then xy, xz, yz doubled) — :func:`pair_registration_variances`.
+    The facade's unit vectors are one (2,) or one per pose (S, 2)."""
+    s = len(pose_cov)
+    flat = np.zeros((s, 3))
+    out = np.empty((3, s, 10))
+    for k, u2 in enumerate((along_xy, normal_xy, None)):
+        u = flat.copy()
+        if u2 is None:
+            u[:, 2] = 1.0
+        else:
+            u[:, :2] = u2
+        b = np.concatenate([u, flat], axis=1)  # (S, 6)
+        m = np.concatenate([np.zeros((s, 3, 3)), np.swapaxes(_skew(u), 1, 2)], axis=1)
+        mt = np.swapaxes(m, 1, 2)  # (S, 3, 6): r × u = Kᵀ r, the rows of δω
+        cb = (pose_cov @ b[:, :, None])[..., 0]  # (S, 6)
+        c2 = mt @ pose_cov @ m  # (S, 3, 3)
+        out[k, :, 0] = (b * cb).sum(axis=1)
+        out[k, :, 1:4] = 2.0 * (mt @ cb[:, :, None])[..., 0]
+        out[k, :, 4:7] = np.diagonal(c2, axis1=1, axis2=2)
+        out[k, :, 7] = 2.0 * c2[:, 0, 1]
+        out[k, :, 8] = 2.0 * c2[:, 0, 2]
+        out[k, :, 9] = 2.0 * c2[:, 1, 2]
+    return out
+
+
+@njit(cache=True, nogil=True)
+def _lever_quadratics(coef, station_xyz, point_xyz, paired, out):  # pragma: no cover
+    """Evaluate the quadratics ``coef`` (3, S, 10) of :func:`_variance_coefficients` at the
+    levers r = (point − station)·1000 [mm]: every station with every point into ``out``
+    (3, S, n), or (``paired``) station i with point i only into ``out`` (3, 1, S)."""
+    for k in range(coef.shape[0]):
+        for j in range(coef.shape[1]):
+            a = coef[k, j]
+            first, last = (j, j + 1) if paired else (0, point_xyz.shape[0])
+            for i in range(first, last):
+                x = (point_xyz[i, 0] - station_xyz[j, 0]) * 1000.0
+                y = (point_xyz[i, 1] - station_xyz[j, 1]) * 1000.0
+                z = (point_xyz[i, 2] - station_xyz[j, 2]) * 1000.0
+                v = a[0] + a[1] * x + a[2] * y + a[3] * z
+                v += a[4] * x * x + a[5] * y * y + a[6] * z * z
+                v += a[7] * x * y + a[8] * x * z + a[9] * y * z
+                if paired:
+                    out[k, 0, j] = v
+                else:
+                    out[k, j, i] = v

@@ -13,6 +13,7 @@ from planner.registration_error import (
     CONTROL,
     Link,
     adjust,
+    pair_registration_variances,
     point_registration_variances,
     propagate,
     target_centre_rms_mm,
@@ -50,6 +51,36 @@ def test_two_stations_three_targets_by_hand():
     assert vx[0] == pytest.approx(expected, rel=1e-9)  # mm²
     assert vz[0] == pytest.approx(2 * sigma**2 / 3, rel=1e-9)  # the rotation does not lift it
     assert net.pose_cov[0] == pytest.approx(np.zeros((6, 6)))  # the datum
+
+
+def test_pair_and_point_variances_are_g_transposed_c_g():
+    """Both layouts (every station with every point; each point with its own station) against
+    the variance written out: along a unit vector u a point at lever r [mm] moves by
+    g·(δs, δω) with g = (u, r × u), so its variance is gᵀ C g."""
+    rng = np.random.default_rng(7)
+    c, n = 6, 9
+    a = rng.normal(size=(c, 6, 6))
+    cov = a @ np.transpose(a, (0, 2, 1)) * np.array([1.0] * 3 + [1e-4] * 3)[:, None]
+    cov = (cov + np.transpose(cov, (0, 2, 1))) / 2  # mm² and rad², symmetric
+    stations = rng.uniform(0, 50, (c, 3)) + np.array([400_000.0, 5_600_000.0, 0.0])  # m
+    points = rng.uniform(0, 50, (n, 3)) + np.array([400_000.0, 5_600_000.0, 0.0])
+    along = np.array([0.6, 0.8])
+    normal = np.array([0.8, -0.6])
+
+    def written_out(j, i, u):
+        r = (points[i] - stations[j]) * 1000.0
+        g = np.concatenate([u, np.cross(r, u)])
+        return g @ cov[j] @ g
+
+    units = [np.append(along, 0.0), np.append(normal, 0.0), np.array([0.0, 0.0, 1.0])]
+    want = np.array([[[written_out(j, i, u) for i in range(n)] for j in range(c)] for u in units])
+    got = np.array(pair_registration_variances(cov, stations, points, along, normal))
+    assert got == pytest.approx(want, rel=1e-9)  # mm²
+    j = rng.integers(0, c, n)
+    alongs, normals = np.tile(along, (n, 1)), np.tile(normal, (n, 1))
+    one = np.array(point_registration_variances(cov[j], stations[j], points, alongs, normals))
+    assert one == pytest.approx(want[:, j, np.arange(n)], rel=1e-9)  # mm²
+    assert not np.allclose(want[0], want[1], rtol=1e-3)  # along and across differ here
 
 
 def test_collinear_targets_do_not_fix_a_registration():
