@@ -463,7 +463,12 @@ def _memory_bytes(text: str) -> int:
 
 def local_cluster(workers: int, memory_limit: str):
     """A ``LocalCluster`` of ``workers`` single-threaded processes, each with
-    ``memory_limit``, their allocator set by :data:`WORKER_CONFIG`."""
+    ``memory_limit``, their allocator set by :data:`WORKER_CONFIG`. Its own log lines are
+    kept off the terminal: a worker that dies reaches the user as the planner's message
+    naming the block, and closing the cluster can log a heartbeat error with a traceback
+    that means nothing (dask/distributed issue 7105; seen after a 1000-building plan)."""
+    import logging
+
     import dask
     from dask.distributed import LocalCluster
 
@@ -474,6 +479,7 @@ def local_cluster(workers: int, memory_limit: str):
             processes=True,
             memory_limit=memory_limit,
             dashboard_address=None,
+            silence_logs=logging.CRITICAL,
         )
 
 
