@@ -441,16 +441,8 @@ def point_registration_variances(
     vectors. The point moves by ``δs + δω × (p − s)`` (see
     :func:`pair_registration_variances` for the quadratic this is).
     """
-    p = len(pose_cov)
-    out = np.empty((3, 1, p))
-    _lever_quadratics(
-        _variance_coefficients(np.asarray(pose_cov, dtype=float), along_xy, normal_xy),
-        np.ascontiguousarray(station_xyz, dtype=float),
-        np.ascontiguousarray(point_xyz, dtype=float),
-        True,
-        out,
-    )
-    return out[0, 0], out[1, 0], out[2, 0]
+    var = _lever_variances(pose_cov, station_xyz, point_xyz, along_xy, normal_xy, paired=True)
+    return var[0, 0], var[1, 0], var[2, 0]
 
 
 def pair_registration_variances(
@@ -469,16 +461,31 @@ def pair_registration_variances(
     variance the quadratic ``bᵀCb + 2 (MᵀCb)·r + rᵀ (MᵀCM) r`` in the lever, its
     coefficients once per station.
     """
-    c, n = len(pose_cov), len(point_xyz)
-    out = np.empty((3, c, n))
+    var = _lever_variances(pose_cov, station_xyz, point_xyz, along_xy, normal_xy, paired=False)
+    return var[0], var[1], var[2]
+
+
+def _lever_variances(
+    pose_cov: np.ndarray,
+    station_xyz: np.ndarray,
+    point_xyz: np.ndarray,
+    along_xy: np.ndarray,
+    normal_xy: np.ndarray,
+    paired: bool,
+) -> np.ndarray:
+    """The variances [mm²] along, across and in height: (3, S, n) for every one of the S
+    stations with every one of the n points, or (``paired``) (3, 1, S) for station i with
+    point i."""
+    s = len(pose_cov)
+    out = np.empty((3, 1, s) if paired else (3, s, len(point_xyz)))
     _lever_quadratics(
         _variance_coefficients(np.asarray(pose_cov, dtype=float), along_xy, normal_xy),
         np.ascontiguousarray(station_xyz, dtype=float),
         np.ascontiguousarray(point_xyz, dtype=float),
-        False,
+        paired,
         out,
     )
-    return out[0], out[1], out[2]
+    return out
 
 
 def _variance_coefficients(
