@@ -157,6 +157,7 @@ class Sight:
         a time is copied a logarithmic number of times, not at every batch."""
         need = used + other.usable.shape[1]
         fields = Sight.__dataclass_fields__
+        out = self
         if need > self.usable.shape[1]:
             cap = max(need, 2 * self.usable.shape[1])
             grown = []
@@ -165,10 +166,10 @@ class Sight:
                 new = np.empty((old.shape[0], cap), dtype=old.dtype)
                 new[:, :used] = old[:, :used]
                 grown.append(new)
-            self = Sight(*grown)
+            out = Sight(*grown)
         for f in fields:
-            getattr(self, f)[:, used:need] = getattr(other, f)
-        return self
+            getattr(out, f)[:, used:need] = getattr(other, f)
+        return out
 
     def stack(self, other: Sight) -> Sight:
         """The same stations' sights of other targets, as rows after these."""
