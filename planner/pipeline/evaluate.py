@@ -17,7 +17,7 @@ import math
 import time
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
-from functools import cached_property, partial
+from functools import cached_property
 
 import numpy as np
 import scipy.sparse as sp
@@ -223,7 +223,7 @@ class PairMetrics:
         var_z: np.ndarray,
         view: np.ndarray,
         step_mm_at_10m: float,
-        footprint: Callable[[np.ndarray, np.ndarray], np.ndarray] | None = None,
+        beam: Scanner | None = None,
     ) -> None:
         self.distance_m = distance_m
         self.slope_distance_m = slope_distance_m
@@ -232,7 +232,7 @@ class PairMetrics:
         self.var_x, self.var_y, self.var_z = var_x, var_y, var_z
         self.view = view  # sees the sample: in front, line of sight, range, field of view
         self.step_mm_at_10m = step_mm_at_10m
-        self.footprint = footprint  # (S, cos θ) -> footprint [mm], when the model counts it
+        self.beam = beam  # the scanner whose beam footprint the model counts, if it does
         self.scanner_var = (var_x, var_y, var_z)
         self.reg_var = (0.0, 0.0, 0.0)
         self.untied = np.zeros((1, 1), dtype=bool)  # stations not tied to the datum
@@ -326,9 +326,10 @@ class PairMetrics:
         spacing = facade_spacing_kernel(
             self.distance_m, self.slope_distance_m, self.cos_gamma, self.step_mm_at_10m
         )
-        if self.footprint is None:
+        if self.beam is None:
             return spacing
-        return np.maximum(spacing, self.footprint(self.slope_distance_m, self.cos_incidence))
+        footprint = footprint_mm(self.slope_distance_m, self.beam, self.cos_incidence)
+        return np.maximum(spacing, footprint)
 
     def value(self, metric: str) -> np.ndarray:
         return getattr(self, metric)
@@ -371,7 +372,7 @@ def facade_pairs(
     st = ctx.settings
     m_s = sc.range_rms_at(s)
     no_station = (0.0, 0.0)  # the station's own error is the registration's part, below
-    footprint = None
+    beam = None
     if st.model == "paper":  # eq. 2 and 4 of Voroshilov & Karachentsev
         var_x, var_y = eq2_variances(d, cos_g * cos_g, m_s, sc.angle_rms_arcsec, no_station)
         var_z = eq4_variance(
@@ -393,7 +394,7 @@ def facade_pairs(
             no_station,
         )
         if st.beam_footprint and (sc.beam_divergence_mrad or sc.beam_exit_mm):
-            footprint = partial(footprint_mm, scanner=sc)
+            beam = sc
     m = PairMetrics(
         distance_m=d,
         slope_distance_m=s,
@@ -404,7 +405,7 @@ def facade_pairs(
         var_z=var_z,
         view=view,
         step_mm_at_10m=ctx.step_mm_at_10m,
-        footprint=footprint,
+        beam=beam,
     )
     m_xc, m_yc = st.station_rms_pair
     if m_xc or m_yc:  # the paper's m_xc, m_yc given as a figure: the registration's part
