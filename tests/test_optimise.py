@@ -282,3 +282,14 @@ def test_interrupt_cancels_the_solver(monkeypatch):
     with pytest.raises(KeyboardInterrupt):
         opt._highs(a, d, opt.greedy_cover(a, d), 5.0)
     assert cancelled and calls
+
+
+def test_highs_prints_nothing_on_the_standard_output(capfd):
+    """HiGHS writes its licence banner to the C standard output when an instance is made;
+    the planner's standard output carries the summary, and ``-q`` promises quiet."""
+    a, demand = random_cover(n_rows=30, n_cols=40, seed=5)
+    assert opt.lp_bound(a, demand, np.ones(a.shape[1]), 5.0) > 0
+    opt._highs(a, demand, np.arange(a.shape[1]), 5.0)
+    out, err = capfd.readouterr()
+    assert "HiGHS" not in out + err
+    assert out == ""

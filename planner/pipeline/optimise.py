@@ -20,7 +20,11 @@ forced stations: a real bound on the fewest stations, whatever stopped the solve
 
 from __future__ import annotations
 
+import contextlib
+import os
+import sys
 import time
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -234,7 +238,8 @@ def _cover_model(
     import highspy
 
     n, m = a.shape
-    h = highspy.Highs()
+    with _c_stdout_to_null():
+        h = highspy.Highs()
     h.setOptionValue("output_flag", False)
     h.setOptionValue("time_limit", float(time_limit_s))
     h.setOptionValue("threads", 1)
@@ -254,6 +259,27 @@ def _cover_model(
         lp.integrality_ = [highspy.HighsVarType.kInteger] * m
     h.passModel(lp)
     return h
+
+
+@contextlib.contextmanager
+def _c_stdout_to_null() -> Iterator[None]:
+    """The process's standard output (file descriptor 1) sent to the null device: HiGHS
+    prints its banner there while an instance is made, before any option can turn its output
+    off (ERGO-Code/HiGHS issues 1932 and 2749), and the planner's standard output carries
+    the plan's summary."""
+    sys.stdout.flush()
+    try:
+        saved = os.dup(1)
+    except OSError:  # no standard output at all: nothing to keep clean
+        yield
+        return
+    try:
+        with open(os.devnull, "wb") as null:
+            os.dup2(null.fileno(), 1)
+        yield
+    finally:
+        os.dup2(saved, 1)
+        os.close(saved)
 
 
 def _run(h) -> None:
