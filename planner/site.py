@@ -7,8 +7,9 @@ are written back in the same coordinates. Heights are metres above the (flat) gr
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field, replace
+from typing import Any
 
 import numpy as np
 import shapely
@@ -16,6 +17,7 @@ from shapely.geometry import MultiPolygon, Polygon
 from shapely.geometry.base import BaseGeometry
 
 from planner.errors import InputError
+from planner.sitecheck import CLIP_SHARE, SiteNote, SiteProblem, SiteProblems, near_mask
 from planner.zones import Zone
 
 __all__ = [
@@ -167,42 +169,76 @@ def _where(what: str, ident: str) -> str:
     return f"{what} {ident!r}"
 
 
-def _check_kind(geom: BaseGeometry, who: str) -> None:
+def _usable(geom: Any) -> bool:
+    return isinstance(geom, Polygon | MultiPolygon) and not geom.is_empty
+
+
+def _free_id(ident: str, taken: dict[str, bool]) -> str:
+    """``ident`` with the first suffix ``-2``, ``-3``… not yet taken."""
+    k = 2
+    while f"{ident}-{k}" in taken:
+        k += 1
+    return f"{ident}-{k}"
+
+
+#: The fix offered for an outline that is not a valid polygon.
+OUTLINE_FIX = (
+    "fix the outline in your CAD/GIS, or repair it explicitly with make_valid (repair=True, "
+    "--make-valid)"
+)
+
+
+def _kind_problem(geom: BaseGeometry, who: str, ident: str) -> SiteProblem | None:
+    """A geometry that is not a usable polygon (None, empty, another type, NaN)."""
     if geom is not None and not isinstance(geom, BaseGeometry):
-        raise InputError(
-            f"{who} has a {type(geom).__name__} where a shapely Polygon is expected "
-            "(e.g. shapely.box(x0, y0, x1, y1) or shapely.Polygon([(x, y), ...]))"
+        return SiteProblem(
+            "geometry",
+            (ident,),
+            f"{who} has a {type(geom).__name__} where a shapely Polygon is expected",
+            "e.g. shapely.box(x0, y0, x1, y1) or shapely.Polygon([(x, y), ...])",
         )
     if geom is None or geom.is_empty:
-        raise InputError(f"{who} has an empty geometry; remove the feature or draw its outline")
-    if not isinstance(geom, Polygon | MultiPolygon):
-        hint = (
-            " (buffer a wall line by half its thickness)" if geom.geom_type == "LineString" else ""
+        return SiteProblem(
+            "geometry", (ident,), f"{who} has an empty geometry", "remove it or draw its outline"
         )
-        raise InputError(f"{who} is a {geom.geom_type}; it must be a Polygon or MultiPolygon{hint}")
-    coords = shapely.get_coordinates(geom)
-    if not np.isfinite(coords).all():
-        raise InputError(f"{who} has coordinates that are not finite numbers (NaN or infinity)")
+    if not isinstance(geom, Polygon | MultiPolygon):
+        hint = "buffer a wall line by half its thickness" if geom.geom_type == "LineString" else ""
+        return SiteProblem(
+            "geometry", (ident,), f"{who} is a {geom.geom_type}; it must be a Polygon", hint
+        )
+    if not np.isfinite(shapely.get_coordinates(geom)).all():
+        return SiteProblem(
+            "geometry",
+            (ident,),
+            f"{who} has coordinates that are not finite numbers (NaN or infinity)",
+            "fix its coordinates",
+        )
+    return None
 
 
-def _check_shape(geom: BaseGeometry, who: str) -> None:
+def _shape_problem(geom: BaseGeometry, who: str, ident: str) -> SiteProblem | None:
+    """A zero-length edge (a repeated vertex) or an invalid polygon."""
     for ring in _rings(geom):
         xy = np.asarray(ring.coords)[:, :2]
         step = np.hypot(*np.diff(xy, axis=0).T)
         bad = np.flatnonzero(step < ZERO_EDGE_M)
         if bad.size:
             x, y = xy[bad[0]]
-            raise InputError(
-                f"{who} has a zero-length edge (a repeated vertex) at ({x:.3f}, {y:.3f}); "
+            return SiteProblem(
+                "edge",
+                (ident,),
+                f"{who} has a zero-length edge (a repeated vertex) at ({x:.3f}, {y:.3f})",
                 "remove the duplicate vertex, or repair the geometry explicitly "
-                "(repair=True, --make-valid)"
+                "(repair=True, --make-valid)",
             )
     if not geom.is_valid:
-        reason = shapely.is_valid_reason(geom)
-        raise InputError(
-            f"{who} is not a valid polygon: {reason}; fix the outline in your CAD/GIS, or repair "
-            "it explicitly with make_valid (repair=True, --make-valid)"
+        return SiteProblem(
+            "outline",
+            (ident,),
+            f"{who} is not a valid polygon: {shapely.is_valid_reason(geom)}",
+            OUTLINE_FIX,
         )
+    return None
 
 
 def _rings(geom: Polygonal) -> Iterable:
@@ -211,56 +247,45 @@ def _rings(geom: Polygonal) -> Iterable:
         yield from poly.interiors
 
 
-def _check_height(h: float, who: str, lo: float, hi: float) -> float:
-    """A height [m] in (0, hi], at least ``lo``; a bool or a text that is not a number is
-    refused (``true`` is not a height)."""
+def _height_problem(h: float, who: str, ident: str, lo: float, hi: float) -> SiteProblem | str:
+    """A height [m] in (0, hi], at least ``lo``, as a float; or the problem (a bool or a
+    text that is not a number is refused: ``true`` is not a height)."""
+    number = "give the height in metres as a number"
     if isinstance(h, bool):
-        raise InputError(f"{who} has height {h!r}; give the height in metres as a number")
+        return SiteProblem("height", (ident,), f"{who} has height {h!r}", number)
     try:
         v = float(h)
     except (TypeError, ValueError):
-        raise InputError(f"{who} has height {h!r}; give the height in metres as a number") from None
+        return SiteProblem("height", (ident,), f"{who} has height {h!r}", number)
     if not math.isfinite(v) or v <= 0:
-        raise InputError(f"{who} has height {h!r}; it must be a number > 0 [m]")
+        return SiteProblem(
+            "height", (ident,), f"{who} has height {h!r}", "it must be a number > 0 [m]"
+        )
     if v > hi:
-        raise InputError(
-            f"{who} has height {v:g} m, higher than any building ({hi:g} m); check the unit "
-            "(heights are metres), or raise the limit if it is real (--max-building-height-m)"
+        return SiteProblem(
+            "height",
+            (ident,),
+            f"{who} has height {v:g} m, higher than any building ({hi:g} m)",
+            "check the unit (heights are metres), or raise the limit if it is real "
+            "(--max-building-height-m)",
         )
     if v < lo:
-        raise InputError(
-            f"{who} has height {v:g} m, lower than a building to scan ({lo:g} m); check the "
-            "unit (heights are metres), or give it as an obstacle (role obstacle)"
+        return SiteProblem(
+            "height",
+            (ident,),
+            f"{who} has height {v:g} m, lower than a building to scan ({lo:g} m)",
+            "check the unit (heights are metres), or give it as an obstacle (role obstacle)",
         )
     return v
 
 
-def _check_extent(
-    geoms: Sequence[tuple[BaseGeometry, str]], buildings: Sequence[Building], limits: SiteLimits
-) -> None:
-    """Coordinates on Earth, footprints and the site no larger than a real one."""
-    for geom, who in geoms:
-        x0, y0, x1, y1 = geom.bounds
-        if max(abs(x0), abs(y0), abs(x1), abs(y1)) > MAX_COORDINATE_M:
-            raise InputError(
-                f"{who} has coordinates of {max(abs(x0), abs(y0), abs(x1), abs(y1)):.3g}, "
-                "beyond any projected CRS in metres; check the file's coordinates and CRS"
-            )
-    for b in buildings:
-        x0, y0, x1, y1 = b.footprint.bounds
-        if max(x1 - x0, y1 - y0) > limits.max_building_size_m:
-            raise InputError(
-                f"building {b.id!r} is {max(x1 - x0, y1 - y0):.0f} m across, larger than a real "
-                f"building ({limits.max_building_size_m:g} m); check the unit (coordinates are "
-                "metres), or raise the limit if it is real (--max-building-size-m)"
-            )
-    bounds = np.array([g.bounds for g, _ in geoms])
-    size = max(bounds[:, 2].max() - bounds[:, 0].min(), bounds[:, 3].max() - bounds[:, 1].min())
-    if size > limits.max_site_size_m:
-        raise InputError(
-            f"the site is {size / 1000:.1f} km across, more than {limits.max_site_size_m:g} m; "
-            "check the coordinates, plan it in parts, or raise the limit (--max-site-size-m)"
-        )
+def _largest_coordinate(geom: BaseGeometry) -> float:
+    x0, y0, x1, y1 = geom.bounds
+    return max(abs(x0), abs(y0), abs(x1), abs(y1))
+
+
+def _beyond_any_crs(geom: BaseGeometry) -> bool:
+    return _largest_coordinate(geom) > MAX_COORDINATE_M
 
 
 def _looks_like_degrees(geoms: Sequence[BaseGeometry]) -> bool:
@@ -275,14 +300,26 @@ def _looks_like_degrees(geoms: Sequence[BaseGeometry]) -> bool:
     return max(sizes) < 0.01
 
 
+#: Problems in features farther than this from every building to plan do not stop the plan
+#: (:mod:`planner.sitecheck`) [m]; the plan command sets it to its search radius.
+DEFAULT_NEAR_M = 150.0
+#: Height given to a building far from the planned ones whose height is missing or not a
+#: building's: it blocks no sight line the plan needs [m].
+FAR_HEIGHT_M = 10.0
+
+
 @dataclass
 class Site:
     """Buildings (planned or not), obstacles, no-go areas and an optional boundary.
 
-    Construction validates everything and raises :class:`InputError` naming the feature
-    and the fix: empty or invalid polygons, zero-length edges, bad heights, coordinates that
-    look like longitude/latitude, duplicate ids, obstacles overlapping buildings, buildings
+    Construction validates everything and raises :class:`~planner.sitecheck.SiteProblems`
+    (an :class:`InputError`) naming every problem at once, each feature and the fix: empty
+    or invalid polygons, zero-length edges, bad heights, coordinates that look like
+    longitude/latitude, duplicate ids, obstacles overlapping buildings, buildings
     overlapping each other, no building to plan, a boundary that does not hold them.
+    A problem only in features farther than ``near_m`` from every planned building cannot
+    change the plan: the feature is repaired (make_valid), given a height, renamed or left
+    out, and that is noted in ``notes`` (:class:`~planner.sitecheck.SiteNote`) instead.
     """
 
     buildings: list[Building]
@@ -295,6 +332,8 @@ class Site:
     limits: SiteLimits = field(default_factory=SiteLimits)
     control: list[ControlPoint] = field(default_factory=list)
     zones: list[Zone] = field(default_factory=list)
+    notes: list[SiteNote] = field(default_factory=list)
+    near_m: float = DEFAULT_NEAR_M
 
     def __post_init__(self) -> None:
         for name, kind in (
@@ -303,6 +342,7 @@ class Site:
             ("no_go", Area),
             ("control", ControlPoint),
             ("zones", Zone),
+            ("notes", SiteNote),
         ):
             items = getattr(self, name)
             if isinstance(items, str | bytes) or not hasattr(items, "__iter__"):
@@ -315,125 +355,381 @@ class Site:
                     f"Site {name} must hold {kind.__name__} objects; got "
                     f"{type(bad[0]).__name__} {bad[0]!r}"[:200]
                 )
+        if not (isinstance(self.near_m, int | float) and self.near_m >= 0):
+            raise InputError(f"near_m must be a distance >= 0 [m]; got {self.near_m!r}")
         self.buildings = list(self.buildings)
         self.control = list(self.control)
-        ids = [c.id for c in self.control]
-        if len(set(ids)) != len(ids):
-            raise InputError("control point ids must be unique; one appears twice")
         self.obstacles = list(self.obstacles)
         self.no_go = list(self.no_go)
-        seen: set[str] = set()
-        named = [(b.footprint, _where("building", b.id)) for b in self.buildings]
-        named += [(o.geometry, _where(o.kind, o.id)) for o in self.obstacles]
-        named += [(a.geometry, _where("no-go area", a.id)) for a in self.no_go]
-        if self.boundary is not None:
-            named.append((self.boundary, "the site boundary"))
-        for geom, who in named:
-            _check_kind(geom, who)
-        _check_extent(named, self.buildings, self.limits)
+        self.notes = list(self.notes)
+        problems: list[SiteProblem] = []
+        any_planned = any(b.planned for b in self.buildings)
+        self._check_features(problems)
+        if problems and problems[-1].kind == "site":  # degrees: nothing else is meaningful
+            raise SiteProblems(problems[-1:])
+        if not any_planned:
+            problems.append(
+                SiteProblem(
+                    "site",
+                    (),
+                    "the site has no building to plan",
+                    "add a building footprint with role 'building', or choose buildings to "
+                    "plan (--buildings ID,ID)",
+                )
+            )
+        self._check_overlaps(problems)
+        problems += self._check_control()
+        problems += self._check_zones()
+        if problems:
+            raise SiteProblems(problems)
+
+    # -- validation ---------------------------------------------------------------------------
+    def _note(self, note: SiteNote) -> None:
+        if all(n.key != note.key for n in self.notes):
+            self.notes.append(note)
+
+    def _near(self, geoms: Sequence[BaseGeometry | None]) -> np.ndarray:
+        planned = [b.footprint for b in self.buildings if b.planned and _usable(b.footprint)]
+        return near_mask(planned, geoms, self.near_m)
+
+    def _check_features(self, problems: list[SiteProblem]) -> None:
+        """Every feature on its own: geometry, extent, id, height, outline. A problem far
+        from the planned buildings is repaired (or the feature left out) and noted."""
         lim = self.limits
-        for b in self.buildings:
+        b_near = self._near([b.footprint for b in self.buildings]) | np.array(
+            [b.planned for b in self.buildings], dtype=bool
+        )
+        o_near = self._near([o.geometry for o in self.obstacles])
+        a_near = self._near([a.geometry for a in self.no_go])
+
+        def keep(items: list, near: np.ndarray, what: Callable[[Any], str], geom_of, ident_of):
+            """The items whose geometry is usable; far ones that are not are noted and left."""
+            out, flags = [], []
+            for item, is_near in zip(items, near, strict=True):
+                who, ident, geom = what(item), ident_of(item), geom_of(item)
+                p = _kind_problem(geom, who, ident)
+                if p is None and _beyond_any_crs(geom):
+                    p = SiteProblem(
+                        "extent",
+                        (ident,),
+                        f"{who} has coordinates of {_largest_coordinate(geom):.3g}, beyond any "
+                        "projected CRS in metres",
+                        "check the file's coordinates and CRS",
+                    )
+                    problems.append(p)  # the whole file is in another unit or CRS
+                    continue
+                if p is not None and is_near:
+                    problems.append(p)
+                    continue
+                if p is not None:
+                    self._note(SiteNote("geometry", (ident,), "dropped", p.text))
+                    continue
+                out.append(item)
+                flags.append(bool(is_near))
+            return out, np.array(flags, dtype=bool)
+
+        self.buildings, b_near = keep(
+            self.buildings,
+            b_near,
+            lambda b: _where("building", b.id),
+            lambda b: b.footprint,
+            lambda b: b.id,
+        )
+        self.obstacles, o_near = keep(
+            self.obstacles,
+            o_near,
+            lambda o: _where(o.kind, o.id),
+            lambda o: o.geometry,
+            lambda o: o.id,
+        )
+        self.no_go, a_near = keep(
+            self.no_go,
+            a_near,
+            lambda a: _where("no-go area", a.id),
+            lambda a: a.geometry,
+            lambda a: a.id,
+        )
+        if self.boundary is not None:
+            p = _kind_problem(self.boundary, "the site boundary", "boundary")
+            if p is not None:
+                problems.append(p)
+                self.boundary = None
+        everything = [b.footprint for b in self.buildings] + [o.geometry for o in self.obstacles]
+        if everything and _looks_like_degrees(everything):
+            problems.append(
+                SiteProblem(
+                    "site",
+                    (),
+                    "the coordinates look like longitude/latitude degrees (every outline is "
+                    "smaller than 0.01 units)",
+                    "say so with --crs EPSG:4326 (they are then projected to their UTM zone), "
+                    "or reproject the file to a projected CRS",
+                )
+            )
+            return
+        # building size, ids, heights
+        kept, near_kept = [], []
+        seen: dict[str, bool] = {}
+        for b, is_near in zip(self.buildings, b_near, strict=True):
+            x0, y0, x1, y1 = b.footprint.bounds
+            size = max(x1 - x0, y1 - y0)
+            if size > lim.max_building_size_m:
+                text = (
+                    f"building {b.id!r} is {size:.0f} m across, larger than a real building "
+                    f"({lim.max_building_size_m:g} m)"
+                )
+                if is_near:
+                    problems.append(
+                        SiteProblem(
+                            "extent",
+                            (b.id,),
+                            text,
+                            "check the unit (coordinates are metres), or raise the limit if "
+                            "it is real (--max-building-size-m)",
+                        )
+                    )
+                else:
+                    self._note(SiteNote("extent", (b.id,), "dropped", text))
+                continue
             if b.id in seen:
-                raise InputError(f"building {b.id!r} appears twice; building ids must be unique")
-            seen.add(b.id)
-            h = _check_height(
+                if is_near or seen[b.id]:
+                    problems.append(
+                        SiteProblem(
+                            "id",
+                            (b.id,),
+                            f"building {b.id!r} appears twice",
+                            "building ids must be unique",
+                        )
+                    )
+                    continue
+                new_id = _free_id(b.id, seen)
+                self._note(SiteNote("id", (b.id,), "renamed", f"the second {b.id!r} is {new_id!r}"))
+                b = replace(b, id=new_id)
+            seen[b.id] = bool(is_near)
+            h = _height_problem(
                 b.height_m,
                 _where("building", b.id),
+                b.id,
                 lim.min_building_height_m,
                 lim.max_building_height_m,
             )
+            if isinstance(h, SiteProblem):
+                if is_near:
+                    problems.append(h)
+                    continue
+                self._note(
+                    SiteNote("height", (b.id,), "far", f"{h.text}; {FAR_HEIGHT_M:g} m taken")
+                )
+                h = FAR_HEIGHT_M
             object.__setattr__(b, "height_m", h)
-        for o in self.obstacles:
-            h = _check_height(o.height_m, _where(o.kind, o.id), 0.0, lim.max_building_height_m)
+            kept.append(b)
+            near_kept.append(is_near)
+        self.buildings = kept
+        for o, is_near in zip(self.obstacles, o_near, strict=True):
+            h = _height_problem(
+                o.height_m, _where(o.kind, o.id), o.id, 0.0, lim.max_building_height_m
+            )
+            if isinstance(h, SiteProblem):
+                if is_near:
+                    problems.append(h)
+                    continue
+                self._note(
+                    SiteNote("height", (o.id,), "far", f"{h.text}; {FAR_HEIGHT_M:g} m taken")
+                )
+                h = FAR_HEIGHT_M
             object.__setattr__(o, "height_m", h)
-        everything = [b.footprint for b in self.buildings] + [o.geometry for o in self.obstacles]
-        if _looks_like_degrees(everything):
-            raise InputError(
-                "the coordinates look like longitude/latitude degrees (every outline is smaller "
-                "than 0.01 units); say so with --crs EPSG:4326 (they are then projected to their "
-                "UTM zone), or reproject the file to a projected CRS"
+        # outlines: far ones repaired
+        for items, near, attr, label in (
+            (self.buildings, near_kept, "footprint", lambda b: _where("building", b.id)),
+            (self.obstacles, o_near, "geometry", lambda o: _where(o.kind, o.id)),
+            (self.no_go, a_near, "geometry", lambda a: _where("no-go area", a.id)),
+        ):
+            for k, (item, is_near) in enumerate(zip(items, near, strict=True)):
+                geom = getattr(item, attr)
+                p = _shape_problem(geom, label(item), item.id)
+                if p is None:
+                    continue
+                if is_near:
+                    problems.append(p)
+                    continue
+                fixed = repair_geometry(geom)
+                self._note(SiteNote(p.kind, (item.id,), "far", p.text))
+                items[k] = replace(item, **{attr: fixed})
+        empty = [b.id for b in self.buildings if b.footprint.is_empty]
+        self.buildings = [b for b in self.buildings if not b.footprint.is_empty]
+        self.obstacles = [o for o in self.obstacles if not o.geometry.is_empty]
+        self.no_go = [a for a in self.no_go if not a.geometry.is_empty]
+        for i in empty:
+            self._note(SiteNote("geometry", (i,), "dropped", "nothing was left of it"))
+        if self.boundary is not None:
+            p = _shape_problem(self.boundary, "the site boundary", "boundary")
+            if p is not None:
+                problems.append(p)
+        named = [(b.footprint, b.id) for b in self.buildings]
+        named += [(o.geometry, o.id) for o in self.obstacles]
+        if self.boundary is not None:
+            named.append((self.boundary, "boundary"))
+        if named:
+            bounds = np.array([g.bounds for g, _ in named])
+            size = max(
+                bounds[:, 2].max() - bounds[:, 0].min(), bounds[:, 3].max() - bounds[:, 1].min()
             )
-        for geom, who in named:
-            _check_shape(geom, who)
-        if not any(b.planned for b in self.buildings):
-            raise InputError(
-                "the site has no building to plan; add a building footprint with role "
-                "'building', or choose buildings to plan (--buildings ID,ID)"
-            )
-        self._check_overlaps()
-        self._check_control()
-        self._check_zones()
+            if size > lim.max_site_size_m:
+                problems.append(
+                    SiteProblem(
+                        "extent",
+                        (),
+                        f"the site is {size / 1000:.1f} km across, more than "
+                        f"{lim.max_site_size_m:g} m",
+                        "check the coordinates, plan it in parts, or raise the limit "
+                        "(--max-site-size-m)",
+                    )
+                )
 
-    def _check_zones(self) -> None:
+    def _check_zones(self) -> list[SiteProblem]:
         """Zone ids unique; each on a building of the site (a facade id names its building:
         ``<building>-f<NN>``)."""
         self.zones = list(self.zones)
+        out = []
         ids = [z.id for z in self.zones]
-        dup = sorted({i for i in ids if ids.count(i) > 1})
-        if dup:
-            raise InputError(f"zone id {dup[0]!r} appears twice; zone ids must be unique")
+        for dup in sorted({i for i in ids if ids.count(i) > 1}):
+            out.append(
+                SiteProblem(
+                    "zone", (dup,), f"zone id {dup!r} appears twice", "zone ids must be unique"
+                )
+            )
         known = {b.id for b in self.buildings}
         for z in self.zones:
             bid = z.building_id or (z.facade_id or "").rsplit("-f", 1)[0]
             if bid not in known:
                 where = z.building_id or z.facade_id
-                raise InputError(
-                    f"zone {z.id!r} is on {where!r}, which is not a building (or a facade "
-                    f"<building>-f<NN>) of the site; buildings: {', '.join(sorted(known)[:20])}"
+                out.append(
+                    SiteProblem(
+                        "zone",
+                        (z.id,),
+                        f"zone {z.id!r} is on {where!r}, which is not a building (or a facade "
+                        "<building>-f<NN>) of the site",
+                        f"buildings: {', '.join(sorted(known)[:20])}",
+                    )
                 )
+        return out
 
-    def _check_control(self) -> None:
+    def _check_control(self) -> list[SiteProblem]:
         """Control points must be on the site: not inside a building, not kilometres away
-        (most often another CRS or swapped x, y)."""
+        (most often another CRS or swapped x, y); their ids unique."""
         if not self.control:
-            return
+            return []
+        out = []
+        ids = [c.id for c in self.control]
+        if len(set(ids)) != len(ids):
+            out.append(
+                SiteProblem("control", (), "control point ids must be unique; one appears twice")
+            )
+        if not self.buildings:
+            return out
         foot = shapely.union_all([b.footprint for b in self.buildings])
         for c in self.control:
             p = shapely.Point(c.xyz[:2])
             d = float(foot.distance(p))
             if d > MAX_CONTROL_DISTANCE_M:
-                raise InputError(
-                    f"control point {c.id!r} is {d:,.0f} m from the nearest building; control "
-                    "points must be given in the site's CRS (is it another CRS, or are x and "
-                    "y swapped?)"
+                out.append(
+                    SiteProblem(
+                        "control",
+                        (c.id,),
+                        f"control point {c.id!r} is {d:,.0f} m from the nearest building",
+                        "control points must be given in the site's CRS (is it another CRS, or "
+                        "are x and y swapped?)",
+                    )
                 )
+                continue
             inside = [b.id for b in self.buildings if b.footprint.buffer(-0.05).contains(p)]
             if inside:
-                raise InputError(
-                    f"control point {c.id!r} is inside building {inside[0]!r}; a scanner "
-                    "must see it: give the point where it stands on open ground or on a wall"
+                out.append(
+                    SiteProblem(
+                        "control",
+                        (c.id,),
+                        f"control point {c.id!r} is inside building {inside[0]!r}",
+                        "a scanner must see it: give the point where it stands on open ground "
+                        "or on a wall",
+                    )
                 )
+        return out
 
-    def _check_overlaps(self) -> None:
-        foot = [b.footprint for b in self.buildings]
+    def _check_overlaps(self, problems: list[SiteProblem]) -> None:
+        """Buildings may share walls but not ground; obstacles may not stand in buildings;
+        the planned buildings inside the boundary. Far pairs are noted and left."""
+        valid = [b for b in self.buildings if b.footprint.is_valid]  # the others are said
+        if not valid:
+            return
+        foot = [b.footprint for b in valid]
+        near = self._near(foot)
         tree = shapely.STRtree(foot)
         pairs = tree.query(foot, predicate="intersects")
         for i, j in pairs.T:
             if i < j:
-                area = shapely.intersection(foot[i], foot[j]).area
+                inter = shapely.intersection(foot[i], foot[j])
+                area = inter.area
                 if area > OVERLAP_TOLERANCE_M2:
-                    a, b = self.buildings[i].id, self.buildings[j].id
-                    raise InputError(
-                        f"buildings {a!r} and {b!r} overlap by {area:.2f} m²; buildings may "
-                        "share walls but not ground: fix the outlines or remove the duplicate"
-                    )
-        if self.obstacles:
-            obs = [o.geometry for o in self.obstacles]
+                    a, b = valid[i].id, valid[j].id
+                    c = inter.representative_point()
+                    if near[i] or near[j]:
+                        share = 100 * area / min(foot[i].area, foot[j].area)
+                        problems.append(
+                            SiteProblem(
+                                "overlap",
+                                (a, b),
+                                f"buildings {a!r} and {b!r} overlap by {area:.2f} m² "
+                                f"({share:.0f} % of the smaller) at ({c.x:.1f}, {c.y:.1f})",
+                                "buildings may share walls but not ground: fix the outlines, "
+                                "remove a building drawn twice, or let the repair snap shared "
+                                f"walls and clip overlaps up to {100 * CLIP_SHARE:.0f} % of the "
+                                "smaller building (--make-valid)",
+                            )
+                        )
+                    else:
+                        self._note(
+                            SiteNote(
+                                "overlap",
+                                (a, b),
+                                "left",
+                                "far from the planned buildings",
+                                float(area),
+                                c.x,
+                                c.y,
+                            )
+                        )
+        obstacles = [o for o in self.obstacles if o.geometry.is_valid]
+        if obstacles:
+            obs = [o.geometry for o in obstacles]
+            o_near = self._near(obs)
             for i, j in tree.query(obs, predicate="intersects").T:
                 area = shapely.intersection(obs[i], foot[j]).area
                 if area > OVERLAP_TOLERANCE_M2:
-                    o, b = self.obstacles[i], self.buildings[j]
-                    raise InputError(
-                        f"{o.kind} {o.id!r} overlaps building {b.id!r} by {area:.2f} m²; "
-                        "clip the obstacle to the building's outline, or make it part of "
-                        "the building"
-                    )
-        if self.boundary is not None:
-            for b in self.planned:
-                if not shapely.covers(self.boundary.buffer(1e-6), b.footprint):
-                    raise InputError(
-                        f"building {b.id!r} is not inside the site boundary; enlarge the "
-                        "boundary or leave the building out of the plan"
+                    o, b = obstacles[i], valid[j]
+                    if o_near[i] or near[j]:
+                        problems.append(
+                            SiteProblem(
+                                "obstacle-overlap",
+                                (o.id, b.id),
+                                f"{o.kind} {o.id!r} overlaps building {b.id!r} by {area:.2f} m²",
+                                "clip the obstacle to the building's outline, or make it part "
+                                "of the building",
+                            )
+                        )
+                    else:
+                        self._note(
+                            SiteNote("obstacle-overlap", (o.id, b.id), "left", "", float(area))
+                        )
+        if self.boundary is not None and self.boundary.is_valid:
+            for b in valid:
+                if b.planned and not shapely.covers(self.boundary.buffer(1e-6), b.footprint):
+                    problems.append(
+                        SiteProblem(
+                            "boundary",
+                            (b.id,),
+                            f"building {b.id!r} is not inside the site boundary",
+                            "enlarge the boundary or leave the building out of the plan",
+                        )
                     )
 
     # -- views ----------------------------------------------------------------------------
@@ -454,17 +750,23 @@ class Site:
         """The same site planning only ``building_ids`` (the others act as obstacles)."""
         if building_ids is None:
             return self
-        wanted = [str(i) for i in building_ids]
-        known = {b.id for b in self.buildings}
-        missing = [i for i in wanted if i not in known]
-        if missing:
-            shown = ", ".join(sorted(known)[:20]) + (" …" if len(known) > 20 else "")
-            raise InputError(
-                f"no building with id {', '.join(map(repr, missing))}; ids are: {shown}"
-            )
-        chosen = set(wanted)
         return replace(
             self,
-            buildings=[replace(b, planned=b.id in chosen) for b in self.buildings],
+            buildings=with_planned(self.buildings, building_ids),
             warnings=list(self.warnings),
         )
+
+
+def with_planned(buildings: Sequence[Building], ids: Sequence[str] | None) -> list[Building]:
+    """The buildings with those of ``ids`` planned and the others not (as they are when
+    None); an unknown id is refused, naming the known ones."""
+    if ids is None:
+        return list(buildings)
+    wanted = [str(i) for i in ids]
+    known = {b.id for b in buildings}
+    missing = [i for i in wanted if i not in known]
+    if missing:
+        shown = ", ".join(sorted(known)[:20]) + (" …" if len(known) > 20 else "")
+        raise InputError(f"no building with id {', '.join(map(repr, missing))}; ids are: {shown}")
+    chosen = set(wanted)
+    return [replace(b, planned=b.id in chosen) for b in buildings]

@@ -37,7 +37,7 @@ import math
 import os
 from collections import defaultdict
 from collections.abc import Callable, Iterator, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from importlib import resources
 from pathlib import Path
 from typing import Any
@@ -52,6 +52,9 @@ from planner.crs import GEOJSON_DEFAULT
 from planner.errors import InputError
 from planner.site import (
     DEFAULT_CONTROL_RMS_MM,
+    DEFAULT_NEAR_M,
+    FAR_HEIGHT_M,
+    OVERLAP_TOLERANCE_M2,
     Area,
     Building,
     ControlPoint,
@@ -59,7 +62,9 @@ from planner.site import (
     Site,
     SiteLimits,
     repair_geometry,
+    with_planned,
 )
+from planner.sitecheck import SiteNote, SiteProblem, SiteProblems, near_mask, resolve_overlaps
 from planner.zones import ALIASES, ZONE_KEYS, Zone, zone_from_row
 
 __all__ = ["default_site", "read_control", "read_site", "site_from_features", "site_from_geojson"]
@@ -136,53 +141,98 @@ def site_from_features(
     crs: str | None = None,
     name: str = "site",
     limits: SiteLimits | None = None,
+    near_m: float = DEFAULT_NEAR_M,
+    storey_height_m: float = DEFAULT_STOREY_HEIGHT_M,
+    origin: str = "",
 ) -> Site:
     """Turn parsed features into a validated :class:`Site` (longitude/latitude projected to
-    its UTM zone; a projected CRS label checked against the coordinates)."""
+    its UTM zone; a projected CRS label checked against the coordinates).
+
+    Every problem is collected and reported at once (:mod:`planner.sitecheck`); problems far
+    from the buildings to plan (``buildings``; all when None) are noted, not refused. A
+    building without a height takes ``building:levels`` × ``storey_height_m``, else
+    ``default_height_m``; ``repair`` mends outlines and overlapping buildings. What was
+    done is in the site's ``notes``."""
     warnings: list[str] = []
+    problems: list[SiteProblem] = []
+    notes: list[SiteNote] = []
+    _check_storey_height(storey_height_m)
+    heights = [_height_of(f.props, f.geometry, storey_height_m) for f in features]  # KML: z
     crs = _to_metres(features, crs, warnings)
     blds: list[Building] = []
+    heightless: list[tuple[int, Feature]] = []  # (index into blds, its feature)
     obstacles: list[Obstacle] = []
     no_go: list[Area] = []
     boundaries: list[BaseGeometry] = []
     control: list[ControlPoint] = []
     zones: list[Zone] = []
-    for f in features:
+    for f, (height, source) in zip(features, heights, strict=True):
         role = str(f.props.get("role", "building")).strip().lower()
         role = _ROLE_ALIASES.get(role, role)
         if role not in ROLES:
-            raise InputError(f"{f.who()} has role {role!r}; use one of {', '.join(ROLES)}")
+            problems.append(
+                SiteProblem(
+                    "role",
+                    (f.ident,),
+                    f"{f.who()} has role {role!r}",
+                    f"use one of {', '.join(ROLES)}",
+                )
+            )
+            continue
         geom = f.geometry
         if geom is None:
-            raise InputError(f"{f.who()} has no geometry; remove it or draw its outline")
+            problems.append(
+                SiteProblem(
+                    "geometry",
+                    (f.ident,),
+                    f"{f.who()} has no geometry",
+                    "remove it or draw its outline",
+                )
+            )
+            continue
         if role == "control":
             control.append(_control_point(f))
             continue
         geom = shapely.force_2d(geom)
-        if repair:
+        polygonal = _polygonal(geom)  # anything else is the site's to refuse or leave out
+        if repair and polygonal:
             repaired = repair_geometry(geom)
             if not repaired.equals(geom):
-                warnings.append(f"{f.who()}: geometry repaired (repeated vertices, make_valid)")
+                x0, y0, x1, y1 = geom.bounds
+                notes.append(
+                    SiteNote(
+                        "outline",
+                        (f.ident,),
+                        "repaired",
+                        shapely.is_valid_reason(geom),
+                        x=(x0 + x1) / 2,
+                        y=(y0 + y1) / 2,
+                    )
+                )
             geom = repaired
         if role in ("building", "obstacle"):
-            height = f.props.get("height", f.props.get("height_m"))
-            if height is None or (isinstance(height, str) and not height.strip()):
-                if default_height_m is None:
-                    raise InputError(
-                        f"{role} {f.who()} has no height; add a 'height' property in metres, "
-                        "or give a default height (--height H)"
+            if source == "levels" and polygonal:
+                notes.append(SiteNote("no-height", (f.ident,), "levels", f"{height:g} m"))
+            if height is None:
+                if default_height_m is not None and polygonal:
+                    height = default_height_m
+                    notes.append(
+                        SiteNote("no-height", (f.ident,), "default", f"{default_height_m:g} m")
                     )
-                height = default_height_m
-                warnings.append(f"{role} {f.ident!r} has no height; using {default_height_m:g} m")
+                elif role == "obstacle":
+                    problems.append(_no_height(role, f))
+                    continue
             if role == "building":
                 zone = _building_zone(f)
                 if zone is not None:
                     zones.append(zone)
+                if height is None and polygonal:  # decided once it is known what is near
+                    heightless.append((len(blds), f))
                 blds.append(
                     Building(
                         f.ident,
                         geom,
-                        height,
+                        height if height is not None else FAR_HEIGHT_M,
                         planned=_truthy(f.props.get("plan", True)),
                         name=str(f.props.get("name", "")),
                     )
@@ -196,24 +246,189 @@ def site_from_features(
         else:
             boundaries.append(geom)
     if len(boundaries) > 1:
-        raise InputError(f"the file has {len(boundaries)} boundary features; keep one")
-    if not blds:
-        raise InputError(
-            "the file has no building footprint (a polygon with role 'building' or no role)"
+        problems.append(
+            SiteProblem("site", (), f"the file has {len(boundaries)} boundary features", "keep one")
         )
-    site = Site(
-        buildings=blds,
-        obstacles=obstacles,
-        no_go=no_go,
-        boundary=boundaries[0] if boundaries else None,
-        crs=crs,
-        name=name,
-        warnings=warnings,
-        limits=limits or SiteLimits(),
-        control=control,
-        zones=zones,
+    if not blds:
+        problems.append(
+            SiteProblem(
+                "site",
+                (),
+                "the file has no building footprint (a polygon with role 'building' or no role)",
+            )
+        )
+        raise SiteProblems(problems, origin)
+    blds = with_planned(blds, buildings)
+    if heightless:  # far from the planned buildings a height is immaterial: noted, not asked
+        planned = [b.footprint for b in blds if b.planned and _polygonal(b.footprint)]
+        near = near_mask(planned, [blds[i].footprint for i, _ in heightless], near_m)
+        for (i, f), is_near in zip(heightless, near, strict=True):
+            if is_near or blds[i].planned:
+                problems.append(_no_height("building", f))
+            else:
+                notes.append(SiteNote("no-height", (f.ident,), "far", f"{FAR_HEIGHT_M:g} m"))
+    if repair:
+        good = [
+            k
+            for k, b in enumerate(blds)
+            if isinstance(b.footprint, Polygon | MultiPolygon)
+            and not b.footprint.is_empty
+            and b.footprint.is_valid
+        ]
+        fixed, overlap_notes = resolve_overlaps(
+            [blds[k].id for k in good], [blds[k].footprint for k in good], OVERLAP_TOLERANCE_M2
+        )
+        for k, geom in zip(good, fixed, strict=True):
+            if geom is not blds[k].footprint:
+                blds[k] = replace(blds[k], footprint=geom)
+        notes += overlap_notes
+    try:
+        site = Site(
+            buildings=blds,
+            obstacles=obstacles,
+            no_go=no_go,
+            boundary=boundaries[0] if boundaries else None,
+            crs=crs,
+            name=name,
+            warnings=warnings,
+            limits=limits or SiteLimits(),
+            control=control,
+            zones=zones,
+            notes=notes,
+            near_m=near_m,
+        )
+    except SiteProblems as exc:
+        problems += exc.problems
+    if problems:
+        raise SiteProblems(problems, origin)
+    return site
+
+
+def _polygonal(geom: Any) -> bool:
+    return isinstance(geom, Polygon | MultiPolygon) and not geom.is_empty
+
+
+def _height_of(props: dict[str, Any], geom: BaseGeometry | None, storey_height_m: float):
+    """A feature's height [m] and where it comes from: ``"given"`` — ``height`` or
+    ``height_m`` (as given: a text that is not a height is refused later), else
+    OpenStreetMap's ``building:height`` or ``est_height`` when they read as a number ("12 m"
+    is 12); ``"levels"`` — ``building:levels`` (or ``levels``) × ``storey_height_m``;
+    ``"extruded"`` — the altitude of a KML polygon extruded from the ground; else
+    ``(None, "")``."""
+    low = {k.lower(): k for k in props}
+    for key in ("height", "height_m"):
+        raw = props[low[key]] if key in low else None
+        if raw is not None and not (isinstance(raw, str) and not raw.strip()):
+            v = _number_in(raw) if isinstance(raw, str) else None
+            return (v if v is not None else raw), "given"
+    for key in ("building:height", "est_height"):
+        v = _number_in(props[low[key]]) if key in low else None
+        if v is not None:
+            return v, "given"
+    levels = next(
+        (_number_in(props[low[k]]) for k in ("building:levels", "levels") if k in low), None
     )
-    return site.select(buildings)
+    if levels is not None and levels > 0:
+        return levels * storey_height_m, "levels"
+    if (
+        geom is not None
+        and shapely.has_z(geom)
+        and str(props.get("extrude", "0")) in ("1", "True", "true")
+    ):
+        z = shapely.get_coordinates(geom, include_z=True)[:, 2]
+        if np.isfinite(z).all() and z.max() > 0:
+            return float(z.max()), "extruded"
+    return None, ""
+
+
+def _check_storey_height(storey_height_m: float) -> None:
+    if not (
+        isinstance(storey_height_m, int | float)
+        and not isinstance(storey_height_m, bool)
+        and 0 < storey_height_m <= 20
+    ):
+        raise InputError(f"the storey height must be > 0 and <= 20 m; got {storey_height_m!r}")
+
+
+def _no_height(role: str, f: Feature) -> SiteProblem:
+    return SiteProblem(
+        "no-height",
+        (f.ident,),
+        f"{role} {f.who()} has no height",
+        "add a 'height' (or 'building:levels') property in metres, or give a default height "
+        "(--height H)",
+    )
+
+
+def _polygonal(geom: Any) -> bool:
+    return isinstance(geom, Polygon | MultiPolygon) and not geom.is_empty
+
+
+def _height_of(props: dict[str, Any], geom: BaseGeometry | None, storey_height_m: float):
+    """A feature's height [m] and where it comes from: ``"given"`` — ``height`` or
+    ``height_m`` (as given: a text that is not a height is refused later), else
+    OpenStreetMap's ``building:height`` or ``est_height`` when they read as a number ("12 m"
+    is 12); ``"levels"`` — ``building:levels`` (or ``levels``) × ``storey_height_m``;
+    ``"extruded"`` — the altitude of a KML polygon extruded from the ground; else
+    ``(None, "")``."""
+    low = {k.lower(): k for k in props}
+    for key in ("height", "height_m"):
+        raw = props[low[key]] if key in low else None
+        if raw is not None and not (isinstance(raw, str) and not raw.strip()):
+            v = _number_in(raw) if isinstance(raw, str) else None
+            return (v if v is not None else raw), "given"
+    for key in ("building:height", "est_height"):
+        v = _number_in(props[low[key]]) if key in low else None
+        if v is not None:
+            return v, "given"
+    levels = next(
+        (_number_in(props[low[k]]) for k in ("building:levels", "levels") if k in low), None
+    )
+    if levels is not None and levels > 0:
+        return levels * storey_height_m, "levels"
+    if (
+        geom is not None
+        and shapely.has_z(geom)
+        and str(props.get("extrude", "0")) in ("1", "True", "true")
+    ):
+        z = shapely.get_coordinates(geom, include_z=True)[:, 2]
+        if np.isfinite(z).all() and z.max() > 0:
+            return float(z.max()), "extruded"
+    return None, ""
+
+
+def _check_storey_height(storey_height_m: float) -> None:
+    if not (
+        isinstance(storey_height_m, int | float)
+        and not isinstance(storey_height_m, bool)
+        and 0 < storey_height_m <= 20
+    ):
+        raise InputError(f"the storey height must be > 0 and <= 20 m; got {storey_height_m!r}")
+
+
+def _no_height(role: str, f: Feature) -> SiteProblem:
+    return SiteProblem(
+        "no-height",
+        (f.ident,),
+        f"{role} {f.who()} has no height",
+        "add a 'height' (or 'building:levels') property in metres, or give a default height "
+        "(--height H)",
+    )
+
+
+def _select(blds: list[Building], ids: Sequence[str] | None) -> list[Building]:
+    """The buildings with ``ids`` planned (all as the file says when None); an unknown id
+    is refused, naming the known ones."""
+    if ids is None:
+        return blds
+    wanted = [str(i) for i in ids]
+    known = {b.id for b in blds}
+    missing = [i for i in wanted if i not in known]
+    if missing:
+        shown = ", ".join(sorted(known)[:20]) + (" …" if len(known) > 20 else "")
+        raise InputError(f"no building with id {', '.join(map(repr, missing))}; ids are: {shown}")
+    chosen = set(wanted)
+    return [replace(b, planned=b.id in chosen) for b in blds]
 
 
 def _building_zone(f: Feature) -> Zone | None:
@@ -386,7 +601,7 @@ def site_from_geojson(obj: dict | str, **kwargs: Any) -> Site:
         crs = kwargs.pop("crs", None) or crs
         if crs is None and _in_degree_range(_coordinates(features)):
             crs = GEOJSON_DEFAULT  # RFC 7946: GeoJSON without a CRS is longitude/latitude
-        return site_from_features(features, crs=crs, **kwargs)
+        return site_from_features(features, crs=crs, origin=origin, **kwargs)
 
 
 # -- WKT ----------------------------------------------------------------------------------
@@ -545,6 +760,7 @@ def read_site(
     limits: SiteLimits | None = None,
     crs: str | None = None,
     storey_height_m: float = DEFAULT_STOREY_HEIGHT_M,
+    near_m: float = DEFAULT_NEAR_M,
 ) -> Site:
     """Read a site file (``.geojson``/``.json``, ``.wkt``/``.txt``, ``.csv``, ``.gpkg``,
     ``.shp``, ``.kml`` or ``.kmz``).
@@ -552,17 +768,24 @@ def read_site(
     Parameters
     ----------
     default_height_m : float, optional
-        Height for buildings and obstacles that have none (a warning is recorded).
+        Height for buildings and obstacles that have none, nor ``building:levels`` (noted).
     buildings : list of str, optional
         Ids of the buildings to plan; all others only block the beam.
     repair : bool
-        Apply the explicit geometry repair (repeated vertices, ``make_valid``).
+        Apply the explicit repair: outlines (repeated vertices, ``make_valid``) and
+        overlapping buildings (:func:`planner.sitecheck.resolve_overlaps`), each noted.
     crs : str, optional
         The CRS of the coordinates (e.g. ``EPSG:25832``, ``EPSG:4326``), overriding the file's
         own label; longitude/latitude is projected to its UTM zone. GeoJSON without a label in
         the degree range is longitude/latitude (RFC 7946).
     storey_height_m : float, default 3
-        Height of a storey, for buildings known by ``building:levels`` only (GIS formats).
+        Height of a storey, for buildings known by ``building:levels`` only.
+    near_m : float, default :data:`planner.site.DEFAULT_NEAR_M`
+        Problems in features farther than this from every building to plan do not stop
+        the reading: such features are repaired, given a height or left out, and noted
+        (the ``plan`` command passes its search radius).
+
+    Every problem of the file is reported at once (:class:`planner.sitecheck.SiteProblems`).
     """
     if not isinstance(path, str | os.PathLike):
         raise InputError(f"a site file is named by a path; got {type(path).__name__} {path!r}")
@@ -589,10 +812,13 @@ def read_site(
         "name": p.stem,
         "limits": limits,
         "crs": crs,
+        "storey_height_m": storey_height_m,
+        "near_m": near_m,
+        "origin": p.name,
     }
     if kind in GIS_KINDS:
         with _reading(p.name, kind):
-            features, file_crs = _gis_features(p, kind, storey_height_m)
+            features, file_crs = _gis_features(p, kind)
             kw["crs"] = crs or file_crs
             return site_from_features(features, **kw)
     raw = p.read_bytes()
@@ -616,7 +842,7 @@ def read_site(
                 raise InputError(
                     f"{p.name} is not valid JSON (line {exc.lineno}: {exc.msg})"
                 ) from None
-            return site_from_geojson(obj, origin=p.name, **kw)
+            return site_from_geojson(obj, **kw)
         parse: Callable[[str, str], list[Feature]] = (
             _wkt_features if kind == "wkt" else _csv_features
         )
@@ -624,14 +850,12 @@ def read_site(
 
 
 # -- GeoPackage, Shapefile, KML/KMZ (GDAL through pyogrio) -----------------------------------
-def _gis_features(p: Path, kind: str, storey_height_m: float) -> tuple[list[Feature], str | None]:
+def _gis_features(p: Path, kind: str) -> tuple[list[Feature], str | None]:
     """Every layer's features, with roles, heights and ids mapped (see the module's text),
     and the file's CRS."""
     import pyogrio  # heavy (GDAL): only when such a file is read
     from pyogrio.errors import DataLayerError, DataSourceError
 
-    if not (isinstance(storey_height_m, int | float) and 0 < storey_height_m <= 20):
-        raise InputError(f"the storey height must be > 0 and <= 20 m; got {storey_height_m!r}")
     try:
         layers = pyogrio.list_layers(p)
     except (DataSourceError, DataLayerError) as exc:
@@ -661,7 +885,7 @@ def _gis_features(p: Path, kind: str, storey_height_m: float) -> tuple[list[Feat
             props = {n: _plain(v[i]) for n, v in zip(names, values, strict=True)}
             props = {k: v for k, v in props.items() if v is not None}
             geom = shapely.from_wkb(blob) if blob is not None else None
-            _map_gis_props(props, geom, kind, layer_role, storey_height_m)
+            _map_gis_props(props, kind, layer_role)
             features.append(Feature(len(features), geom, props))
     if not features:
         raise InputError(f"{p.name} holds no features; export the buildings into it")
@@ -714,39 +938,14 @@ def _number_in(text: Any) -> float | None:
         return None
 
 
-def _map_gis_props(
-    props: dict[str, Any],
-    geom: BaseGeometry | None,
-    kind: str,
-    layer_role: str | None,
-    storey_height_m: float,
-) -> None:
-    """Roles, heights and ids of a GIS feature in the keys the site reader knows."""
+def _map_gis_props(props: dict[str, Any], kind: str, layer_role: str | None) -> None:
+    """Roles and ids of a GIS feature in the keys the site reader knows (heights:
+    :func:`_height_of`, as for every format)."""
     low = {k.lower(): k for k in props}
     if "role" not in props and "role" in low:
         props["role"] = props[low["role"]]
     if "role" not in props and layer_role:
         props["role"] = layer_role
-    if "height" not in props and "height_m" not in props:
-        for key in ("height", "height_m", "building:height", "est_height"):
-            if key in low and _number_in(props[low[key]]) is not None:
-                props["height"] = _number_in(props[low[key]])
-                break
-        else:
-            levels = next(
-                (_number_in(props[low[k]]) for k in ("building:levels", "levels") if k in low),
-                None,
-            )
-            if levels is not None:
-                props["height"] = levels * storey_height_m
-            elif (
-                geom is not None
-                and shapely.has_z(geom)
-                and str(props.get("extrude", "0")) in ("1", "True", "true")
-            ):
-                z = shapely.get_coordinates(geom, include_z=True)[:, 2]
-                if np.isfinite(z).all() and z.max() > 0:
-                    props["height"] = float(z.max())
     if kind in ("KML", "KMZ") and props.get("Name"):
         props["id"] = props["Name"]  # LIBKML's own "id" is the layer and a counter
     elif "id" not in props:

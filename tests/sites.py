@@ -71,3 +71,91 @@ def run_cli(*argv: str) -> tuple[int, str, str]:
         except SystemExit as exc:
             code = int(exc.code or 0)
     return code, out.getvalue(), err.getvalue()
+
+
+def osm_like_export() -> dict:
+    """An OpenStreetMap-style export around the default site, in longitude/latitude
+    (RFC 7946 GeoJSON, ids ``way/…``), with the problems real exports have.
+
+    Near the default site's ``main`` (a row across the street to the north):
+    ``way/1001`` only ``building:levels`` 4; ``way/1002`` ``height`` "14 m", its shared
+    wall with 1001 digitised twice (a 0.3 m overlap); ``way/1003`` no height at all;
+    ``way/1004`` overlapping 1003's corner by 8 m² (8 % of it); ``way/1005`` a
+    self-intersecting outline. Far away (400 m and more east): 30 buildings, 20 without a
+    height, 5 by levels only, 3 self-intersecting, 3 overlapping pairs (one drawn twice) and
+    an unclosed way tagged as a building.
+    """
+    import json
+
+    from pyproj import Transformer
+
+    from planner.siteio import default_site  # noqa: F401  (the file below is its source)
+
+    base = json.loads(
+        __import__("importlib.resources", fromlist=["files"])
+        .files("planner.data")
+        .joinpath("default_site.geojson")
+        .read_text("utf-8")
+    )
+    to_ll = Transformer.from_crs("EPSG:25832", "EPSG:4326", always_xy=True)
+    x0, y0 = 691000.0, 5335000.0
+
+    def ll(coords):
+        return [list(to_ll.transform(x0 + x, y0 + y)) for x, y in coords]
+
+    def building(ident, coords, **tags):
+        return {
+            "type": "Feature",
+            "id": ident,
+            "properties": {"@id": ident, "building": "yes", **tags},
+            "geometry": {"type": "Polygon", "coordinates": [ll([*coords, coords[0]])]},
+        }
+
+    def box_(a, b, c, d):
+        return [(a, b), (c, b), (c, d), (a, d)]
+
+    def bowtie(a, b, size):
+        return [(a, b), (a + size, b + size), (a + size, b), (a, b + size)]
+
+    feats = []
+    for f in base["features"]:
+        if f["properties"]["role"] == "boundary":
+            continue
+        g = f["geometry"]
+        rings = [[list(to_ll.transform(x, y)) for x, y in ring] for ring in g["coordinates"]]
+        feats.append({**f, "geometry": {"type": "Polygon", "coordinates": rings}})
+    feats += [
+        building("way/1001", box_(0, 50, 20, 62), **{"building:levels": "4"}),
+        building("way/1002", box_(19.7, 50, 35, 62), height="14 m"),
+        building("way/1003", box_(35, 50, 50, 62)),
+        building("way/1004", box_(48, 58, 60, 66), **{"building:levels": "3"}),
+        building("way/1005", bowtie(65, 50, 10), height="9"),
+    ]
+    far = 0
+    for row in range(5):
+        for col in range(6):
+            x, y = 400 + 30 * col, 40 * row
+            ident = f"way/2{far:03d}"
+            tags = {}
+            if far % 30 < 20:
+                pass  # no height at all
+            elif far % 30 < 25:
+                tags["building:levels"] = str(2 + far % 4)
+            else:
+                tags["height"] = "11"
+            shape = bowtie(x, y, 12) if far in (3, 14, 27) else box_(x, y, x + 15, y + 12)
+            feats.append(building(ident, shape, **tags))
+            far += 1
+    # overlapping pairs far away: a neighbour 2 m into another, one drawn twice, a corner
+    feats.append(building("way/3001", box_(400 + 13, 0, 400 + 25, 12), height="10"))
+    feats.append(building("way/3002", box_(430, 40, 445, 52), height="10"))  # = way/2007
+    feats.append(building("way/3003", box_(460 + 12, 80 + 9, 460 + 20, 80 + 16), height="8"))
+    feats.append(
+        {
+            "type": "Feature",
+            "id": "way/3004",
+            "properties": {"@id": "way/3004", "building": "yes"},
+            "geometry": {"type": "LineString", "coordinates": ll([(600, 150), (620, 150)])},
+        }
+    )
+    return {"type": "FeatureCollection", "features": feats}

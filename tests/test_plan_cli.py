@@ -164,7 +164,7 @@ def test_site_file_with_height_and_selection(tmp_path):
         *FAST,
     )
     assert code == 0, stdout
-    assert "has no height; using 9 m" in stdout
+    assert "buildings without a height given the default height 9 m" in stdout
     cov = pd.read_csv(tmp_path / "o" / "coverage.csv")
     assert set(cov["building_id"]) == {"h2"}
 

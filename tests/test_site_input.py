@@ -11,6 +11,7 @@ from sites import E0, N0, rect
 
 from planner import InputError
 from planner.site import Building, Obstacle, Site
+from planner.sitecheck import notes_summary
 from planner.siteio import default_site, read_site
 
 
@@ -105,12 +106,17 @@ def test_selection_makes_the_others_obstacles(tmp_path):
 def test_missing_height_uses_the_default_with_a_warning(tmp_path):
     p = write(tmp_path, "h.geojson", fc(feat(rect(0, 0, 5, 5), id="A")))
     with pytest.raises(
-        InputError, match=r"has no height; add a 'height' property .* \(--height H\)"
+        InputError,
+        match=r"has no height; add a 'height' \(or 'building:levels'\) property .* \(--height H\)",
     ):
         read_site(p)
     s = read_site(p, default_height_m=11.0)
     assert s.buildings[0].height_m == 11.0
-    assert s.warnings == ["building 'A' has no height; using 11 m"]
+    assert [(n.kind, n.ids, n.action) for n in s.notes] == [("no-height", ("A",), "default")]
+    assert notes_summary(s.notes) == [
+        "Site: 1 building without a height given the default height 11 m (A; each in "
+        "site_repairs.csv)."
+    ]
 
 
 BOWTIE = shapely.Polygon([(E0, N0), (E0 + 10, N0 + 10), (E0 + 10, N0), (E0, N0 + 10)])
@@ -156,7 +162,7 @@ BOWTIE = shapely.Polygon([(E0, N0), (E0 + 10, N0 + 10), (E0 + 10, N0), (E0, N0 +
         ),
         (
             [feat(rect(0, 0, 10, 10), id="A", height=9, role="roof")],
-            "has role 'roof'; use one of building",
+            "has role 'roof' — use one of building",
         ),
         ([feat(rect(0, 0, 10, 10), role="obstacle", height=3)], "no building footprint"),
         (
@@ -204,7 +210,7 @@ def test_make_valid_is_an_explicit_option(tmp_path):
     s = read_site(p, repair=True)
     assert s.buildings[0].footprint.is_valid
     assert s.buildings[0].footprint.area == pytest.approx(50.0)
-    assert "geometry repaired" in s.warnings[0]
+    assert [(n.kind, n.ids, n.action) for n in s.notes] == [("outline", ("bow",), "repaired")]
 
 
 @pytest.mark.parametrize(

@@ -205,11 +205,17 @@ def plan_inputs(args: argparse.Namespace):
     """Site, scanner, requirements and settings from the options shared by ``plan`` and
     ``report`` — the one function both use, so a report shows exactly the plan ``plan``
     makes. Options not given are None, and the data classes' defaults apply."""
+    from planner.pipeline.planning import reach_m
     from planner.pipeline.requirements import requirements_and_settings
     from planner.site import SiteLimits
     from planner.siteio import default_site, read_site
     from planner.targets import parse_inventory
 
+    options = dict(vars(args))
+    if args.inventory:
+        options["inventory"] = parse_inventory(_read_text(args.inventory, "inventory file"))
+    req, settings = requirements_and_settings(options)
+    scanner = load_scanner(args.scanner or DEFAULT_SCANNER)
     limits = SiteLimits(
         **{f.name: getattr(args, f.name) for f in fields(SiteLimits) if getattr(args, f.name)}
     )
@@ -221,6 +227,8 @@ def plan_inputs(args: argparse.Namespace):
             repair=args.make_valid,
             limits=limits,
             crs=args.crs,
+            # a problem farther than any station reaches cannot change the plan
+            near_m=reach_m(scanner, req, settings.station_rms_pair, settings.model),
             **({"storey_height_m": args.storey_height_m} if args.storey_height_m else {}),
         )
     else:
@@ -242,11 +250,7 @@ def plan_inputs(args: argparse.Namespace):
         for n, text in enumerate(args.zone or [], start=1):
             zones.append(parse_zone(text, f"zone{n}"))
         site = replace(site, zones=zones)
-    options = dict(vars(args))
-    if args.inventory:
-        options["inventory"] = parse_inventory(_read_text(args.inventory, "inventory file"))
-    req, settings = requirements_and_settings(options)
-    return site, load_scanner(args.scanner or DEFAULT_SCANNER), req, settings
+    return site, scanner, req, settings
 
 
 def _read_text(path: str, what: str) -> str:
@@ -490,7 +494,7 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         type=float,
         default=None,
         metavar="H",
-        help="height [m] for buildings and obstacles that have none",
+        help="height [m] for buildings and obstacles that have none (nor building:levels)",
     )
     pl.add_argument(
         "--storey-height-m",
@@ -510,7 +514,9 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
     pl.add_argument(
         "--make-valid",
         action="store_true",
-        help="repair invalid outlines (repeated vertices, make_valid) instead of stopping",
+        help="repair the site instead of stopping: invalid outlines (repeated vertices, "
+        "make_valid) and overlapping buildings (shared walls snapped, small overlaps clipped "
+        "from the smaller); every repair is listed in site_repairs.csv",
     )
     pl.add_argument(
         "--scanner",

@@ -60,6 +60,7 @@ from planner.pipeline.result import Plan
 from planner.pipeline.route import field_route
 from planner.scanner import Scanner
 from planner.site import Site
+from planner.sitecheck import notes_summary
 
 __all__ = [
     "DEFAULT_BLOCK_M",
@@ -164,6 +165,7 @@ def block_site(site: Site, block: Block, halo_m: float) -> Site:
         crs=site.crs,
         name=f"{site.name} {block.key}",
         limits=site.limits,
+        near_m=site.near_m,
         control=[c for c in site.control if region.contains(shapely.Point(c.x, c.y))],
         zones=[
             z
@@ -526,7 +528,11 @@ def stitch(
     raises it to the blocks' covers at shared prices where that is larger), a message per
     block, one route."""
     stations, targets, coverage, facades, links, zones, cands = [], [], [], [], [], [], []
-    messages = [f"District: {len(blocks)} blocks planned on Dask, halo {reach:.0f} m."]
+    messages = [
+        *site.warnings,
+        *notes_summary(site.notes),
+        f"District: {len(blocks)} blocks planned on Dask, halo {reach:.0f} m.",
+    ]
     control = {c.id for c in site.control}
     for b, p in zip(blocks, plans, strict=True):
         sid = {s: f"{b.key}-{s}" for s in p.stations["station_id"]}

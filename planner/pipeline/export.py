@@ -18,6 +18,7 @@ from planner.atomic import replace_folder_files
 from planner.pipeline.deliver import dxf_text, kml_text, stakeout_csv
 from planner.pipeline.result import LINK_COLUMNS, TARGET_COLUMNS, ZONE_COLUMNS, Plan
 from planner.pipeline.route import ROUTE_COLUMNS
+from planner.sitecheck import notes_table
 
 __all__ = [
     "COVERAGE_COLUMNS",
@@ -119,6 +120,14 @@ def coverage_csv(p: Plan) -> str:
 
 def facades_csv(p: Plan) -> str:
     return to_csv(p.facades)
+
+
+def site_repairs_csv(p: Plan) -> str | None:
+    """What the site reader repaired or let pass (:mod:`planner.sitecheck`), a row per
+    feature or pair; None when it did nothing."""
+    if not p.site.notes:
+        return None
+    return to_csv(notes_table(p.site.notes))
 
 
 def route_csv(p: Plan) -> str | None:
@@ -295,6 +304,7 @@ FILES = {
     "plan.kml": kml_text,  # only when the site has a CRS
     "stakeout.csv": stakeout_csv,
     "route.csv": route_csv,
+    "site_repairs.csv": site_repairs_csv,
     "summary.txt": summary_text,
 }
 

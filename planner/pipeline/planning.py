@@ -51,6 +51,7 @@ from planner.pipeline.zones import ZoneTable, apply_zones
 from planner.registration_error import CONTROL, Link
 from planner.scanner import DEFAULT_SCANNER, Scanner, load_scanner
 from planner.site import Site
+from planner.sitecheck import notes_summary
 from planner.targets import choose_target
 
 __all__ = ["Workbench", "assemble", "choose_stations", "plan"]
@@ -187,7 +188,7 @@ def _prepare(
     """Samples, zones, search radius, candidate grid, target candidates (refusing work beyond
     the settings' limits with what to change)."""
     t0 = time.perf_counter()
-    messages = list(site.warnings)
+    messages = [*site.warnings, *notes_summary(site.notes)]
     say(0.0, "sampling facades")
     n_est = estimate_samples(site, st.sample_spacing_m, st.sample_height_step_m)
     if n_est > st.max_samples:
