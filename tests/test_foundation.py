@@ -8,6 +8,7 @@ import doctest
 import html.parser
 import importlib
 import inspect
+import json
 import subprocess
 import sys
 from dataclasses import fields
@@ -16,6 +17,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+from sites import osm_like_export
 from test_cli import run
 
 import planner
@@ -28,6 +30,7 @@ from planner.pipeline.requirements import (
     requirements_and_settings,
 )
 from planner.scanner import DEFAULT_SCANNER
+from planner.siteio import read_site
 
 PACKAGE = Path(planner.__file__).resolve().parent
 
@@ -202,6 +205,35 @@ def test_widgets_take_default_and_bounds_from_the_data_classes():
     assert ui.per_sample.min == 1 and ui.per_sample.max == rq["stations_per_sample"].hi == 10
     assert ui.grid.value == PlanSettings().grid_m and ui.grid.min == ps["grid_m"].lo == 0.25
     assert ui.max_x.value == Requirements().max_x_mm
+
+
+def test_dashboard_messages_name_its_own_controls(tmp_path):
+    """One wording, two renderings: a message names ``--make-valid`` and ``--height H`` on
+    the command line; the dashboard shows the same message with the labels of its own
+    controls, and an option it has no control for as the command line's."""
+    from planner.app.dashboard import StationPlanner, _error_html
+    from planner.app.wording import SITE_LABELS, dashboard_labels, for_dashboard
+    from planner.sitecheck import SiteProblems
+
+    path = tmp_path / "export.geojson"
+    path.write_text(json.dumps(osm_like_export()))
+    with pytest.raises(SiteProblems) as caught:
+        read_site(path, buildings=["main"])
+    cli = str(caught.value)
+    assert "(--height H)" in cli and "(repair=True, --make-valid)" in cli
+    page = for_dashboard(cli)
+    assert "--" not in page and "repair=True" not in page
+    ui = StationPlanner()
+    for flag, box in (("--make-valid", ui.make_valid), ("--height", ui.height)):
+        assert box.description == SITE_LABELS[flag]
+        assert f"the ‘{box.description}’ control" in page
+    assert "<br>" in _error_html(cli)  # one line per kind of problem
+    for flag, label in dashboard_labels().items():
+        assert for_dashboard(f"x ({flag})") == f"x (the ‘{label}’ control)"
+    assert ui.grid.description.startswith(dashboard_labels()["--grid-m"])
+    assert for_dashboard("raise it (--max-site-size-m)") == (
+        "raise it (the command line's --max-site-size-m)"
+    )
 
 
 def test_cli_defaults_are_the_data_class_defaults(tmp_path):

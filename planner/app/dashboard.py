@@ -27,6 +27,7 @@ from IPython.display import display
 
 from planner.app.serve import UPLOAD_ROOT_ENV
 from planner.app.whatif_view import WhatIfMap
+from planner.app.wording import SITE_LABELS, for_dashboard, for_dashboard_html
 from planner.errors import PlannerError
 from planner.pipeline.requirements import (
     FieldSpec,
@@ -36,6 +37,7 @@ from planner.pipeline.requirements import (
     requirements_and_settings,
 )
 from planner.scanner import DEFAULT_SCANNER, Scanner, catalogue, user_profiles
+from planner.site import DEFAULT_NEAR_M
 from planner.siteio import DEFAULT_STOREY_HEIGHT_M
 from planner.tables import SOSSA_DISTANCES_M, height_table, planimetric_table
 from planner.targets import DEFAULT_INVENTORY, SOSSA_STEP_MM_AT_10M
@@ -44,10 +46,11 @@ __all__ = ["AccuracyExplorer", "StationPlanner", "TargetExplorer"]
 
 
 def _error_html(message: str, head: str = "Cannot plan") -> str:
+    """A message (in the dashboard's words: :mod:`planner.app.wording`) as an error box."""
     return (
         f'<div class="planner-error" style="color:#922;background:#fdecea;border:1px solid #e6b0aa;'
         f'padding:6px 10px;border-radius:4px"><b>{html.escape(head)}:</b> '
-        f"{html.escape(message)}</div>"
+        f"{for_dashboard_html(message)}</div>"
     )
 
 
@@ -312,25 +315,25 @@ class StationPlanner:
         )
         self.upload_name = w.HTML("<small>no file chosen</small>")
         self.upload_name.add_class("planner-upload-name")
-        self.height = _number(0.0, 0.0, 1000.0, 0.5, "Height where missing [m] (0: none)")
+        self.height = _number(0.0, 0.0, 1000.0, 0.5, SITE_LABELS["--height"])
         self.storey = _number(
-            DEFAULT_STOREY_HEIGHT_M, 0.5, 20.0, 0.1, "Storey height for levels [m]"
+            DEFAULT_STOREY_HEIGHT_M, 0.5, 20.0, 0.1, SITE_LABELS["--storey-height-m"]
         )
         self.crs = w.Text(
             value="",
             placeholder="as in the file, e.g. EPSG:25832",
-            description="CRS of the coordinates",
+            description=SITE_LABELS["--crs"],
             style=_STYLE,
             layout=_FULL,
         )
         self.make_valid = w.Checkbox(
-            value=False, description="repair invalid outlines (make valid)", indent=False
+            value=False, description=SITE_LABELS["--make-valid"], indent=False
         )
         self.buildings = w.Text(
             value="",
             placeholder="all (as in the file)",
             style=_STYLE,
-            description="Buildings to plan (ids)",
+            description=SITE_LABELS["--buildings"],
             layout=_FULL,
         )
         self.scanner = _scanner_dropdown()
@@ -566,8 +569,9 @@ class StationPlanner:
         self.site_source.value = "Upload a file"
         self._offer_facades()
 
-    def _site(self):
-        """The site chosen (default or uploaded), without the editor's zones."""
+    def _site(self, near_m: float = DEFAULT_NEAR_M):
+        """The site chosen (default or uploaded), without the editor's zones; problems
+        farther than ``near_m`` from the buildings to plan are noted, not refused."""
         from planner.siteio import default_site, read_site
 
         ids = [s.strip() for s in self.buildings.value.split(",") if s.strip()] or None
@@ -589,6 +593,7 @@ class StationPlanner:
             repair=self.make_valid.value,
             crs=self.crs.value.strip() or None,
             storey_height_m=self.storey.value,
+            near_m=near_m,
         )
 
     def _offer_facades(self) -> None:
@@ -603,11 +608,9 @@ class StationPlanner:
     def _inputs(self):
         from dataclasses import replace
 
+        from planner.pipeline.planning import reach_m
         from planner.targets import parse_inventory
 
-        site = self._site()
-        if self.zone_editor.zones:
-            site = replace(site, zones=[*site.zones, *self.zone_editor.zones])
         cls = self.accuracy_class.value.strip() or None
         more = {name: _field_value(self._specs[name], box) for name, box in self.more.items()}
         req, settings = requirements_and_settings(
@@ -625,7 +628,12 @@ class StationPlanner:
                 "inventory": parse_inventory(self.inventory.value),
             }
         )
-        return site, Scanner.from_name(self.scanner.value), req, settings
+        scanner = Scanner.from_name(self.scanner.value)
+        # a problem farther than any station reaches cannot change the plan
+        site = self._site(reach_m(scanner, req, settings.station_rms_pair, settings.model))
+        if self.zone_editor.zones:
+            site = replace(site, zones=[*site.zones, *self.zone_editor.zones])
+        return site, scanner, req, settings
 
     def _show_class(self) -> None:
         """The chosen class, what it means and what it sets (the limit boxes follow it)."""
@@ -827,7 +835,7 @@ class StationPlanner:
         )
         hints = ""
         if not p.meets_all:
-            items = "".join(f"<li>{html.escape(s)}</li>" for s in suggestions(p))
+            items = "".join(f"<li>{html.escape(for_dashboard(s))}</li>" for s in suggestions(p))
             hints = f"<p><b>What would meet it:</b></p><ul class='planner-hints'>{items}</ul>"
 
         self.summary.value = (
@@ -835,7 +843,7 @@ class StationPlanner:
             f"{len(p.targets)} targets — {verdict}</h3>{hints}"
             f"<p>{n_met} of {n_all} samples meet every requirement.</p>"
             f"<details><summary>Summary</summary><pre style='white-space:pre-wrap;"
-            f"font-size:85%'>{html.escape(p.summary())}</pre></details>"
+            f"font-size:85%'>{html.escape(for_dashboard(p.summary()))}</pre></details>"
         )
         _show(self.map_out, plot_plan_map(p))
         if whatif:
