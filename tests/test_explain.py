@@ -21,8 +21,12 @@ def test_too_strict_gives_stations_not_zero(strict):
     assert len(strict.unmet) > 0
     assert any(m.startswith("Best effort:") for m in strict.messages)
     assert (strict.stations["purpose"] == "best-effort").any()
-    # every unmet sample is seen by a station and carries its predicted values
-    assert (strict.unmet["station_id"] != "").all()
+    # every unmet sample within the ground's reach is seen by a station and carries its
+    # predicted values; none is spent on those above the annex's roof
+    ground = strict.unmet[strict.unmet["elevated_station"] == ""]
+    assert (ground["station_id"] != "").all()
+    above = strict.unmet[strict.unmet["elevated_station"] != ""]
+    assert set(above["elevated_station"]) == {"roof of annex"}
 
 
 def test_the_failing_quantity_is_named_with_its_limit_and_worst_value(strict):
@@ -30,8 +34,10 @@ def test_the_failing_quantity_is_named_with_its_limit_and_worst_value(strict):
     assert t.iloc[0]["quantity"] == "m_z"
     row = t.iloc[0]
     assert row["limit"] == pytest.approx(2.0)  # mm
-    assert row["samples"] == int((strict.unmet["m_z_mm"] > 2.0).sum())
-    assert row["worst"] == pytest.approx(strict.unmet["m_z_mm"].max(), abs=0.01)  # mm
+    ground = strict.unmet[strict.unmet["elevated_station"] == ""]
+    assert row["samples"] == int((ground["m_z_mm"] > 2.0).sum())
+    assert row["worst"] == pytest.approx(ground["m_z_mm"].max(), abs=0.01)  # mm
+    assert "needs an elevated station" in set(t["quantity"])
 
 
 def test_the_relaxation_is_what_the_plan_meets(strict):

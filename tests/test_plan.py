@@ -153,8 +153,37 @@ def test_too_small_courtyard_is_reported_unmet_with_the_reason():
     court_ids = set(p.facades.loc[p.facades["courtyard"], "facade_id"])
     unmet = p.unmet
     assert set(unmet["facade_id"]) == court_ids
-    assert (unmet["reason"].str.startswith("no free station position sees this point")).all()
+    assert (
+        unmet["reason"]
+        == "no ground station sees it: it needs an elevated station (a lift or a mast)"
+    ).all()
+    assert (unmet["elevated_station"] == "above the ground").all()
     assert any("do not meet the requirements" in m for m in p.messages)
+
+
+def test_a_wall_above_a_lower_neighbours_roof_needs_an_elevated_station():
+    """The default site's east wall above the annex's 7 m roof (12 m deep): the samples
+    at 8.4 m are seen from the ground only over the roof's edge, steeply; with the X7 none
+    is met (best m_z 5.2 mm). They need a station on the annex's roof: no best-effort
+    ground station is spent on them (two were), and no longer-range scanner is offered."""
+    from planner.pipeline.explain import explain_unmet, suggestions
+    from planner.siteio import default_site
+
+    p = plan(default_site(), "trimble-x7")
+    unmet = p.unmet
+    assert set(unmet["facade_id"]) == {"main-f09"}
+    assert unmet["z"].to_numpy() == pytest.approx(8.44, abs=0.01)  # m
+    assert (unmet["elevated_station"] == "roof of annex").all()
+    assert unmet["reason"].str.endswith("it needs an elevated station (e.g. on that roof)").all()
+    assert not (p.stations["purpose"] == "best-effort").any()
+    assert not any(m.startswith("Best effort:") for m in p.messages)
+    table = explain_unmet(p)
+    assert table["quantity"].tolist() == ["needs an elevated station"]
+    hints = suggestions(p)
+    assert hints[0].startswith("an elevated station on the roof of annex for 3 sample(s)")
+    assert not any("a scanner that keeps these limits farther out" in h for h in hints)
+    # a sample in the open, not above a roof, is not marked
+    assert (p.coverage.loc[p.coverage["meets"], "elevated_station"] == "").all()
 
 
 def test_facade_reachable_only_at_grazing_angles():
@@ -404,6 +433,7 @@ def test_every_meets_row_really_meets_the_requirements(rich_plan):
         "reg_m_z_mm",
         "spacing_mm",
         "reason",
+        "elevated_station",
         "zone",
     ]
     assert (csv.loc[csv["meets"], "m_x_mm"] <= 4.0 + 0.0005).all()

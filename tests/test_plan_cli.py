@@ -62,7 +62,8 @@ def test_wall_just_above_a_lower_neighbours_roof_is_unseen_from_the_ground(tmp_p
     cov = pd.read_csv(tmp_path / "coverage.csv")
     unmet = cov[~cov["meets"]]
     assert set(unmet["facade_id"]) == {"main-f09"} and set(unmet["z"]) == {7.5}
-    assert "no free station position sees this point" in stdout
+    assert set(unmet["elevated_station"]) == {"roof of annex"}
+    assert "no ground station sees it over the roof of 'annex'" in stdout
 
 
 def test_unmet_samples_exit_1_and_are_listed(tmp_path):

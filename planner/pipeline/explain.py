@@ -1,8 +1,9 @@
 """Why a plan leaves samples unmet, and what would meet them: per quantity, how many samples
 fail, where, the best the plan's stations achieve there, the limits this plan does meet
-everywhere (the smallest relaxation with these stations), and what else could help — a
-scanner of the catalogue that reaches farther for the same limits, a higher station for the
-upper storeys."""
+everywhere (the smallest relaxation with these stations), and what else could help — an
+elevated station where the ground cannot reach (a wall above a neighbour's roof), a scanner
+of the catalogue that reaches farther for the same limits, a higher station for the upper
+storeys."""
 
 from __future__ import annotations
 
@@ -23,10 +24,15 @@ EXPLAIN_COLUMNS = ["quantity", "limit", "unit", "samples", "facades", "z_from", 
 
 def explain_unmet(p: Plan) -> pd.DataFrame:
     """Per check (:data:`~planner.pipeline.requirements.CHECKS`) failing its site-wide limit
-    at some unmet sample (:data:`EXPLAIN_COLUMNS`), the most failing first. Samples no
-    station sees are one row, quantity "not seen"."""
+    at some unmet sample (:data:`EXPLAIN_COLUMNS`), the most failing first. The samples
+    that need an elevated station are one row ("needs an elevated station"), those no
+    station sees otherwise another ("not seen")."""
     u = p.unmet
     rows = []
+    elevated = u["elevated_station"] != ""
+    if elevated.any():
+        rows.append(_row("needs an elevated station", np.nan, "", u[elevated], np.nan))
+    u = u[~elevated]
     seen = u["station_id"] != ""
     for c in CHECKS:
         limit = c.limit_of(p.requirements)
@@ -79,14 +85,32 @@ def relaxation_text(p: Plan) -> str:
     return "no station sees any sample" if met is None else "this plan meets " + met
 
 
+def _elevated_suggestions(u: pd.DataFrame) -> list[str]:
+    """Where the ground cannot reach: one line per place an elevated station would stand."""
+    out = []
+    for where, g in u.groupby("elevated_station", sort=True):
+        facades = ", ".join(sorted(g["facade_id"].unique()))
+        place = f"on the {where}" if where.startswith("roof") else "on a lift or a mast"
+        out.append(
+            f"an elevated station {place} for {len(g)} sample(s) (facade {facades}, z "
+            f"{g['z'].min():.1f}–{g['z'].max():.1f} m): the ground sees them only over a "
+            "roof's edge, or not at all — no ground station is spent on them"
+        )
+    return out
+
+
 def suggestions(p: Plan) -> list[str]:
-    """What else could meet the requirement: catalogue scanners that reach farther for the
-    same limits (:func:`planner.pipeline.planning.reach_m`), a higher station where m_z
+    """What else could meet the requirement: an elevated station where the ground cannot
+    reach (the samples' ``elevated_station``), catalogue scanners that reach farther for
+    the same limits (:func:`planner.pipeline.planning.reach_m`), a higher station where m_z
     fails high up at steep elevation angles, and the limits the plan meets."""
     u = p.unmet
     if u.empty:
         return []
-    out = []
+    out = _elevated_suggestions(u[u["elevated_station"] != ""])
+    u = u[u["elevated_station"] == ""]  # the ground cannot reach those: no scanner helps
+    if u.empty:
+        return out
     st = p.settings
     now = reach_m(p.scanner, p.requirements, st.station_rms_pair, st.model)
     better = []

@@ -61,6 +61,7 @@ COVERAGE_COLUMNS = [
     "reg_m_z_mm",
     "spacing_mm",
     "reason",
+    "elevated_station",
     "zone",
 ]
 

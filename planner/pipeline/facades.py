@@ -20,12 +20,16 @@ __all__ = [
     "build_facades",
     "estimate_samples",
     "footprint_edges",
+    "lower_roof_in_front",
     "party_wall_mask",
 ]
 
 #: A sample whose point, moved this far outward, lies in another building or obstacle
 #: lower than the neighbour's height is on a party wall [m].
 PARTY_WALL_GAP_M = 0.10
+#: A sample whose point, moved this far outward, lies over a lower building faces that
+#: building's roof: ground stations see it only over the roof's edge [m].
+ROOF_PROBE_M = 0.5
 #: Sight lines end this far in front of the facade, so the wall itself is not crossed [m].
 SIGHT_OFFSET_M = 0.02
 
@@ -207,6 +211,28 @@ def party_wall_mask(
         bid, _, h = blockers[j]
         if bid != owner[k] and z[k] <= h:
             out[k] = True
+    return out
+
+
+def lower_roof_in_front(site: Site, fac: FacadeSet, samples: np.ndarray) -> np.ndarray:
+    """For each of ``samples`` (indices), the id of the lower building whose roof it faces
+    (its point moved :data:`ROOF_PROBE_M` outward lies in that building's footprint, which is
+    lower than the point), else ``""``: a wall above a neighbour's roof, which a station on
+    that roof sees square and close, and the ground only over the roof's edge."""
+    out = np.full(len(samples), "", dtype=object)
+    if not len(samples):
+        return out
+    f = fac.facade[samples]
+    probe = fac.xy[samples] + ROOF_PROBE_M * fac.normal[f]
+    z = fac.z[samples]
+    owner = fac.building_id[f]
+    blds = site.buildings
+    tree = shapely.STRtree([b.footprint for b in blds])
+    best = np.full(len(samples), -np.inf)
+    for k, j in tree.query(shapely.points(probe), predicate="intersects").T:
+        b = blds[j]
+        if b.id != owner[k] and b.height_m < z[k] and b.height_m > best[k]:
+            out[k], best[k] = b.id, b.height_m
     return out
 
 

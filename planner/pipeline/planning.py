@@ -35,7 +35,12 @@ from planner.pipeline.evaluate import (
     best_achievable,
     evaluate_candidates,
 )
-from planner.pipeline.facades import FacadeSet, build_facades, estimate_samples
+from planner.pipeline.facades import (
+    FacadeSet,
+    build_facades,
+    estimate_samples,
+    lower_roof_in_front,
+)
 from planner.pipeline.optimise import CoverSolution, solve_cover, spread_views
 from planner.pipeline.registration import (
     Network,
@@ -368,13 +373,23 @@ class Diagnosis:
     samples: np.ndarray  # (M,) sorted sample indices
     best: dict[str, np.ndarray]  # per check key, "score" and "done": (M,) each
     n_view: np.ndarray  # (M,) candidates that see each
+    roof: np.ndarray  # (M,) the lower building whose roof each faces ("" none)
 
-    def at(self, sample: int) -> tuple[int, dict[str, float]] | None:
-        """(candidates seeing it, best values) of ``sample``; None where not diagnosed."""
+    @property
+    def elevated(self) -> np.ndarray:
+        """(M,) bool: beyond the ground's reach — no ground candidate sees the sample, or it
+        faces a lower neighbour's roof (seen from the ground only over the roof's edge): a
+        station on that roof, a lift or a mast would serve it; none is spent on it here."""
+        return (self.n_view == 0) | (self.roof != "")
+
+    def at(self, sample: int) -> tuple[int, dict[str, float], str] | None:
+        """(candidates seeing it, best values, the roof it faces) of ``sample``; None where
+        not diagnosed."""
         j = int(np.searchsorted(self.samples, sample))
         if j == len(self.samples) or self.samples[j] != sample or not self.best["done"][j]:
             return None
-        return int(self.n_view[j]), {key: float(v[j]) for key, v in self.best.items()}
+        best = {key: float(v[j]) for key, v in self.best.items()}
+        return int(self.n_view[j]), best, str(self.roof[j])
 
 
 def _diagnose(
@@ -389,8 +404,9 @@ def _diagnose(
     n_ok = np.asarray(ev.ok.sum(axis=1)).ravel()
     hopeless = np.flatnonzero(~ctx.facades.party_wall & (n_ok < ctx.stations_needed) & ev.evaluated)
     best = best_achievable(ctx, cand, hopeless, deadline) if len(hopeless) else {"done": []}
+    roof = lower_roof_in_front(ctx.site, ctx.facades, hopeless)
     timings["diagnosis"] = time.perf_counter() - t
-    return Diagnosis(hopeless, best, ev.n_view[hopeless])
+    return Diagnosis(hopeless, best, ev.n_view[hopeless], roof)
 
 
 def _best_effort(
@@ -405,12 +421,13 @@ def _best_effort(
     such sample seen could be met (the largest of their best achievable scores, value /
     limit, times :data:`BEST_EFFORT_SLACK`), the fewest candidates (greedy) meeting them
     under it — so that a requirement a little too strict gives the plan that comes closest,
-    not zero stations. The samples stay unmet."""
+    not zero stations. The samples stay unmet. None is spent on the samples beyond the
+    ground's reach (:attr:`Diagnosis.elevated`): they need an elevated station."""
     none = np.empty(0, dtype=np.int64), 1.0
     if not len(diagnosis.samples) or time.monotonic() > deadline:
         return none
     best = diagnosis.best
-    good = best["done"] & np.isfinite(best["score"]) & (diagnosis.n_view > 0)
+    good = best["done"] & np.isfinite(best["score"]) & ~diagnosis.elevated
     if not good.any():
         return none
     factor = float(best["score"][good].max()) * BEST_EFFORT_SLACK
@@ -811,10 +828,29 @@ def _expect(value: object, kind: type, name: str, hint: str) -> None:
         )
 
 
-def _reason(ctx: Context, sample: int, n_view: int, best: dict[str, float], n_meet: int) -> str:
-    """Why no station meets ``sample``, in words: each check the best candidate fails."""
+def _reason(
+    ctx: Context, sample: int, n_view: int, best: dict[str, float], n_meet: int, roof: str = ""
+) -> str:
+    """Why no station meets ``sample``, in words: each check the best candidate fails; where
+    the ground cannot reach it, that it needs an elevated station (on ``roof``'s roof)."""
+    if n_view == 0 and roof:
+        return (
+            f"no ground station sees it over the roof of {roof!r}: it needs an elevated "
+            "station (e.g. on that roof)"
+        )
     if n_view == 0:
-        return "no free station position sees this point (blocked, or out of the scanner's range)"
+        return "no ground station sees it: it needs an elevated station (a lift or a mast)"
+    why = _unmet_checks(ctx, sample, best, n_meet)
+    if roof:
+        return (
+            f"{why} from the ground, seen only over the roof of {roof!r}: it needs an "
+            "elevated station (e.g. on that roof)"
+        )
+    return why
+
+
+def _unmet_checks(ctx: Context, sample: int, best: dict[str, float], n_meet: int) -> str:
+    """Each check the best candidate fails at ``sample``, in words."""
     k = int(ctx.stations_needed[sample])
     if 0 < n_meet < k:
         return f"only {n_meet} station position(s) meet every requirement here; {k} required"
@@ -873,13 +909,16 @@ def _coverage(
         untied[has] = ~net.error.tied[assignment.station[has]]
     for i in np.flatnonzero(candidates_meet):
         reason[i] = _short_reason(ctx, i, picked, station[i], untied[i], n_meeting[i], k_req[i])
+    elevated = np.full(n, "", dtype=object)
     for i in np.flatnonzero(~meets & demanded & (n_ok_cand < k_req) & ev.evaluated):
         found = diagnosis.at(int(i))
         if found is None:
             reason[i] = "no station meets it (not diagnosed further: the time limit ran out)"
             continue
-        n_view, best = found
-        reason[i] = _reason(ctx, int(i), n_view, best, int(n_ok_cand[i]))
+        n_view, best, roof = found
+        reason[i] = _reason(ctx, int(i), n_view, best, int(n_ok_cand[i]), roof)
+        if n_view == 0 or roof:
+            elevated[i] = f"roof of {roof}" if roof else "above the ground"
     reason[~meets & demanded & ~ev.evaluated] = (
         f"not evaluated: the time limit of {ctx.settings.time_limit_s:g} s ran out"
     )
@@ -909,6 +948,7 @@ def _coverage(
             "stations_meeting": n_meeting,
             "party_wall": fac.party_wall,
             "reason": reason,
+            "elevated_station": elevated,
             "zone": ctx_zone_ids,
             **extra,
         }
