@@ -57,7 +57,10 @@ def utm_for(lon: float, lat: float) -> str:
     return f"EPSG:{found[0].code}"
 
 
+@lru_cache(maxsize=32)
 def _transformer(src: str, dst: str):
+    """The transformation ``src`` → ``dst`` (made once: making one takes milliseconds, and
+    a plan's KML transforms every outline on its own)."""
     from pyproj import Transformer
 
     return Transformer.from_crs(_crs(src), _crs(dst), always_xy=True)

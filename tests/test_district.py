@@ -16,7 +16,7 @@ from planner.pipeline.requirements import PlanSettings, Requirements
 from planner.scanner import load_scanner
 from planner.synthetic import town
 
-SETTINGS = PlanSettings(grid_m=4, sample_spacing_m=4, sample_height_step_m=4, time_limit_s=30)
+SETTINGS = PlanSettings(grid_m=4, sample_spacing_m=4, sample_height_step_m=4, time_limit_s=300)
 SCANNER = load_scanner("leica-4mm-60urad")
 
 

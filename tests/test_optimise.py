@@ -242,7 +242,7 @@ def test_milp_method_is_strict(monkeypatch):
     monkeypatch.setattr(opt, "_highs", lambda *a, **k: (False, None, None))
     monkeypatch.setattr(opt, "packing_lower_bound", lambda a, d: 0)
     monkeypatch.setattr(opt, "lagrangian_bound", lambda *a, **k: 0.0)
-    monkeypatch.setattr(opt, "reduce_cover", lambda a, d: _unreduced(a, d))
+    monkeypatch.setattr(opt, "reduce_cover", lambda a, d, deadline=None: _unreduced(a, d))
     with pytest.raises(PlannerError, match="not proven optimal"):
         opt.solve_cover(a, d, 5.0, "milp")
     auto = opt.solve_cover(a, d, 5.0, "auto")

@@ -2,12 +2,17 @@
 order. No science here: everything comes from the plan and its route.
 
 Matplotlib writes the multi-page PDF (``PdfPages``); no other dependency. The same plan gives
-the same bytes (no creation date is written).
+the same bytes (no creation date is written). A station's page has a fixed layout (no
+layout engine) and draws only what its map window shows, so a page costs the same in a
+district of a thousand buildings as around one. Given a deadline, the booklet ends with the
+pages drawn in time and a last page listing the stations left out.
 """
 
 from __future__ import annotations
 
 import io
+import math
+import time
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -15,6 +20,7 @@ import pandas as pd
 from matplotlib.backends.backend_pdf import PdfPages
 from matplotlib.figure import Figure
 from matplotlib.patches import Wedge
+from shapely.geometry import box
 
 from planner.app.maps import (
     COLOURS,
@@ -32,6 +38,10 @@ __all__ = ["booklet_pdf", "compass"]
 
 A4_LANDSCAPE = (11.69, 8.27)
 A4_PORTRAIT = (8.27, 11.69)
+#: Where a station page's parts sit (figure fractions: left, bottom, width, height).
+HEAD_BOX = (0.06, 0.755, 0.9, 0.2)
+MAP_BOX = (0.14, 0.315, 0.8, 0.415)
+TABLE_BOX = (0.06, 0.02, 0.9, 0.25)
 _POINTS = ("N", "NE", "E", "SE", "S", "SW", "W", "NW")
 
 
@@ -42,18 +52,50 @@ def compass(azimuth_deg: float) -> str:
     return f"{_POINTS[int(((azimuth_deg % 360) + 22.5) // 45) % 8]} ({azimuth_deg:.0f}°)"
 
 
-def booklet_pdf(p: Plan) -> bytes:
+def booklet_pdf(p: Plan, deadline: float = math.inf) -> bytes:
     """The field booklet of a plan as PDF bytes: the overview map with the plan's summary,
     then a page per station (coordinates, instrument height, targets to set up before it,
-    scan sector, resolution and time, links)."""
+    scan sector, resolution and time, links). After ``deadline`` (a :func:`time.monotonic`
+    time) no more station pages are drawn: a last page lists the stations left out."""
+    return booklet(p, deadline)[0]
+
+
+def booklet(p: Plan, deadline: float = math.inf) -> tuple[bytes, list[str]]:
+    """:func:`booklet_pdf`, and the stations whose pages the deadline left out."""
     buf = io.BytesIO()
     meta = {"Title": f"tls-planner field booklet: {p.site.name}", "CreationDate": None}
+    order = list(_route(p)["station_id"]) if len(_route(p)) else []
+    left: list[str] = []
     with plt.rc_context({"pdf.fonttype": 42}), PdfPages(buf, metadata=meta) as pdf:
         pdf.savefig(_overview(p))
         sectors = view_sectors(p.stations, p.coverage, p.targets)  # once, not per page
-        for n in range(len(_route(p))):  # figures outside pyplot: nothing to close
+        for n in range(len(order)):  # figures outside pyplot: nothing to close
+            if time.monotonic() > deadline:
+                left = order[n:]
+                pdf.savefig(_left_out_page(left))
+                break
             pdf.savefig(_station_page(p, n, sectors))
-    return buf.getvalue()
+    return buf.getvalue(), left
+
+
+def _left_out_page(left: list[str]) -> Figure:
+    fig = Figure(figsize=A4_PORTRAIT)
+    fig.text(
+        0.06,
+        0.94,
+        f"Pages not drawn: {len(left)} station(s)",
+        fontsize=14,
+        weight="bold",
+        va="top",
+    )
+    text = (
+        "The plan's time budget ran out while the booklet was drawn. These stations have no "
+        "page here (their positions and targets are in stations.csv, targets.csv and "
+        "stakeout.csv): " + ", ".join(left) + ". Plan again with a larger --time-limit-s for "
+        "the whole booklet."
+    )
+    fig.text(0.06, 0.88, _wrap(text, 95), fontsize=9, va="top")
+    return fig
 
 
 def _route(p: Plan) -> pd.DataFrame:
@@ -98,9 +140,8 @@ def _station_page(p: Plan, n: int, sectors: dict[str, tuple[float, float, float]
     r = _route(p).iloc[n]
     sid = r["station_id"]
     st = p.stations.set_index("station_id").loc[sid]
-    fig = Figure(figsize=A4_PORTRAIT, layout="constrained")
-    grid = fig.add_gridspec(3, 1, height_ratios=[1.25, 2.2, 1.6])
-    head = fig.add_subplot(grid[0])
+    fig = Figure(figsize=A4_PORTRAIT)  # a fixed layout: no layout engine per page
+    head = fig.add_axes(HEAD_BOX)
     head.axis("off")
     total = len(_route(p))
     head.set_title(
@@ -143,9 +184,9 @@ def _station_page(p: Plan, n: int, sectors: dict[str, tuple[float, float, float]
         y = 0.92 - k * 0.095
         head.text(0.0, y, label, fontsize=8.5, weight="bold", va="top")
         head.text(0.33, y, _wrap(value, 80), fontsize=8.5, va="top")
-    ax = fig.add_subplot(grid[1])
+    ax = fig.add_axes(MAP_BOX)
     _station_map(p, sid, ax, sectors.get(sid, (0.0, 0.0, 20.0)))
-    table_ax = fig.add_subplot(grid[2])
+    table_ax = fig.add_axes(TABLE_BOX)
     table_ax.axis("off")
     _targets_table(p, sid, r, table_ax)
     return fig
@@ -157,7 +198,8 @@ def _station_map(p: Plan, sid: str, ax, sector: tuple[float, float, float]) -> N
     x, y = st.at[sid, "x"], st.at[sid, "y"]
     start, end, radius = sector
     half = max(15.0, min(radius, 60.0)) * 1.1
-    plot_site(p.site, ax)
+    window = box(x - half, y - half, x + half, y + half)
+    plot_site(p.site, ax, window=window)
     ax.add_patch(
         Wedge(
             (x, y),
@@ -190,7 +232,11 @@ def _station_map(p: Plan, sid: str, ax, sector: tuple[float, float, float]) -> N
             ax.plot(
                 [], [], color=COLOURS["route"], ls=(0, (4, 2)), label=f"walk from {order[k - 1]}"
             )
-    others = p.stations[p.stations["station_id"] != sid]
+    others = p.stations[
+        (p.stations["station_id"] != sid)
+        & (p.stations["x"].sub(x).abs() <= half)
+        & (p.stations["y"].sub(y).abs() <= half)
+    ]
     ax.plot(others["x"], others["y"], "^", color="0.55", ms=7, mec="k", ls="none", zorder=5)
     labels += [
         (o.x, o.y, o.station_id, {"fontsize": 7, "color": "0.3"}) for o in others.itertuples()

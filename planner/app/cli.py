@@ -275,11 +275,33 @@ def _district(args: argparse.Namespace, site) -> bool:
     return args.district == "on" or bool(args.scheduler) or len(partition(site, args.block_m)) > 1
 
 
+#: The share of ``--time-limit-s`` kept for the plan's documents (its files, the booklet):
+#: planning ends before it.
+DOCUMENT_SHARE = 0.15
+#: Writing a plan's files takes about this long per coverage row and per station or
+#: target [s] (the KML and DXF of a 144-building district: about 5 s); the booklet ends in
+#: time for them.
+SAVE_S_PER_ROW = 2e-5
+SAVE_S_PER_POINT = 4e-3
+#: The booklet is drawn only when this long is left before the files are written: its
+#: overview page takes about that (a station's page about 0.5 s) [s].
+BOOKLET_OVERVIEW_S = 2.0
+
+
 def run_plan(args: argparse.Namespace) -> int:
+    """Plan, draw the booklet and write the files, all within ``--time-limit-s`` from the
+    command's start (reading the site included): planning ends with
+    :data:`DOCUMENT_SHARE` of the budget left, and the booklet leaves out the pages there is
+    no time for (said in the summary and on its last page)."""
+    import time
+
     from planner.pipeline.planning import plan
 
+    started = time.monotonic()
     progress = _StderrProgress(args.quiet)
     site, scanner, req, settings = plan_inputs(args)
+    deadline = started + settings.time_limit_s
+    planned_by = deadline - DOCUMENT_SHARE * settings.time_limit_s
     if _district(args, site):
         from planner.pipeline.district import plan_district
 
@@ -293,15 +315,31 @@ def run_plan(args: argparse.Namespace) -> int:
             workers=args.workers,
             memory_limit=args.worker_memory,
             progress=progress,
+            deadline=planned_by,
         )
     else:
-        result = plan(site, scanner, req, settings, progress=progress)
+        result = plan(site, scanner, req, settings, progress=progress, deadline=planned_by)
     extra = {}
-    if args.booklet:
-        from planner.app.booklet import booklet_pdf
+    saving = SAVE_S_PER_ROW * len(result.coverage) + SAVE_S_PER_POINT * (
+        len(result.stations) + len(result.targets)
+    )
+    if args.booklet and time.monotonic() + BOOKLET_OVERVIEW_S > deadline - saving:
+        result.messages.append(
+            "Time budget: no field booklet was drawn (no time was left for it); raise "
+            "--time-limit-s, or make it from the dashboard."
+        )
+    elif args.booklet:
+        from planner.app.booklet import booklet
 
         progress(1.0, "field booklet (booklet.pdf)")
-        extra["booklet.pdf"] = booklet_pdf(result)
+        extra["booklet.pdf"], left = booklet(result, deadline - saving)
+        if left:
+            result.messages.append(
+                f"Time budget: the booklet has no page for {len(left)} of "
+                f"{len(result.stations)} station(s) ({', '.join(left[:8])}"
+                + (" …" if len(left) > 8 else "")
+                + "): its last page lists them; raise --time-limit-s for the whole booklet."
+            )
     written = result.save(args.out, extra)
     print(result.summary())
     unmet = result.unmet

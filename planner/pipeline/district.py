@@ -49,6 +49,7 @@ from shapely.geometry import box
 
 from planner.errors import InputError
 from planner.pipeline.facades import estimate_samples
+from planner.pipeline.planning import budget_message
 from planner.pipeline.requirements import (
     DEFAULT_BLOCK_M,
     MAX_BLOCK_BUILDINGS,
@@ -182,16 +183,21 @@ def _plan_block(
     req: Requirements,
     settings: PlanSettings,
     region: shapely.Geometry | None = None,
+    share_s: float = math.inf,
+    until_epoch: float = math.inf,
 ) -> tuple[Plan, pd.DataFrame, BlockCover]:
     """One block's plan (a Dask task), its :func:`meeting_table` (within ``region``, the
     block's box grown by its halo) and its :func:`block_cover`; its network and workbench
     stay on the worker. Its timings say the worker process's peak memory so far [MB]
-    (``worker_peak_mb``)."""
+    (``worker_peak_mb``). The plan takes at most ``share_s`` seconds and ends by
+    ``until_epoch`` (a :func:`time.time` time: the worker may be another machine)."""
     import resource
 
     from planner.pipeline.planning import plan
 
-    p = plan(site, scanner, req, settings)
+    now = time.monotonic()
+    deadline = min(now + share_s, now + (until_epoch - time.time()))
+    p = plan(site, scanner, req, settings, deadline=deadline)
     table = meeting_table(p, region)
     p.solver["meeting_reach_m"] = meeting_reach(p)
     cover = block_cover(p)
@@ -252,12 +258,37 @@ def _cover(planned: tuple[Plan, pd.DataFrame, BlockCover]) -> BlockCover:
     return planned[2]
 
 
-def _shared_bound(cover: BlockCover, price: np.ndarray) -> float:
+#: The share of a district's time budget kept for stitching the blocks, the bound and the
+#: route after the blocks are planned.
+STITCH_SHARE = 0.15
+
+
+def _shared_bound(cover: BlockCover, price: np.ndarray, time_limit_s: float) -> float:
     """The LP relaxation of a block's cover with its candidates at ``price`` (a Dask task,
-    on the worker holding the cover)."""
+    on the worker holding the cover); 0 (still a bound) when not solved in time."""
     from planner.pipeline.optimise import lp_bound
 
-    return lp_bound(cover.a, cover.demand, price, SHARED_BOUND_S)
+    return lp_bound(cover.a, cover.demand, price, time_limit_s)
+
+
+def _gather_bound(bounds: list, deadline: float) -> tuple[float, str]:
+    """The sum of the blocks' bounds, waited for until ``deadline``; 0 and why when a
+    worker died or the time ran out."""
+    from dask.distributed import wait
+    from distributed.scheduler import KilledWorker
+
+    try:
+        done = wait(bounds, timeout=max(0.1, deadline - time.monotonic()))
+    except TimeoutError:
+        for f in bounds:
+            f.cancel()
+        return 0.0, "the time budget ran out"
+    if len(done.not_done):
+        return 0.0, "the time budget ran out"
+    try:
+        return float(sum(f.result() for f in bounds)), ""
+    except KilledWorker:
+        return 0.0, "a worker died while solving it"
 
 
 def meeting_reach(p: Plan, rows_per_chunk: int = 2000) -> float:
@@ -346,6 +377,7 @@ def plan_district(
     workers: int = 2,
     memory_limit: str = WORKER_MEMORY,
     progress: Progress | None = None,
+    deadline: float | None = None,
 ) -> Plan:
     """Plan a district block by block on Dask (see the module's text) and stitch one plan.
 
@@ -356,6 +388,12 @@ def plan_district(
     scheduler : str, optional
         Address of an existing Dask scheduler (``tcp://host:8786``); default: a
         ``LocalCluster`` of ``workers`` processes with ``memory_limit`` each, closed after.
+    deadline : float, optional
+        When the whole plan must be done (a :func:`time.monotonic` time; default: now plus
+        the settings' ``time_limit_s``). The blocks share the time before
+        :data:`STITCH_SHARE` of it is left, each by its size; a block whose share runs out
+        is planned in part (its plan says what was cut), the bound is given up when the
+        time is out, and the plan says what the budget cut short.
     """
     from planner.pipeline.planning import reach_m
 
@@ -363,6 +401,8 @@ def plan_district(
     st = settings or PlanSettings()
     say = progress or (lambda _f, _m: None)
     t0 = time.perf_counter()
+    if deadline is None:
+        deadline = time.monotonic() + st.time_limit_s
     blocks = partition(site, block_m)
     halo = reach_m(scanner, req, st.station_rms_pair, st.model)
     if workers < 1:
@@ -388,25 +428,54 @@ def plan_district(
     # the largest blocks first (by their samples), so that the last ones to finish are small
     # and no worker idles long while another plans a large block at the end
     work = [estimate_samples(s, st.sample_spacing_m, st.sample_height_step_m) for s in sites]
-    try:
-        planned = [
-            client.submit(
-                _plan_block, s, scanner, req, st, block_region(b, halo), priority=w, pure=False
-            )
-            for b, s, w in zip(blocks, sites, work, strict=True)
-        ]
+    # the time budget: the blocks share what is left before the stitch's share; a block is
+    # given its share when a worker takes it (as many in flight as the cluster has threads),
+    # so that a block finishing early leaves its time to the ones after it
+    until = time.monotonic() + (1.0 - STITCH_SHARE) * max(0.0, deadline - time.monotonic())
+    slots = max(1, sum(client.nthreads().values()))
+    queue = sorted(range(len(blocks)), key=lambda k: -work[k])
+    in_flight: dict[int, float] = {}  # block → when its share ends
+    covers: list = [None] * len(blocks)
+    futures: dict = {}
+    pending = as_completed()
+
+    def submit_next() -> None:
+        k = queue.pop(0)
+        now = time.monotonic()
+        busy = sum(max(0.0, end - now) for end in in_flight.values())  # the others' time
+        pool = slots * max(0.0, until - now) - busy
+        share = max(0.0, pool) * work[k] / max(1, sum(work[j] for j in [k, *queue]))
+        share = min(share, max(0.0, until - now))
+        in_flight[k] = now + share
+        f = client.submit(
+            _plan_block,
+            sites[k],
+            scanner,
+            req,
+            st,
+            block_region(blocks[k], halo),
+            share,
+            time.time() + (until - now),
+            priority=work[k],
+            pure=False,
+        )
         # the plans and tables come here; the covers stay on the workers for the bound
-        covers = [client.submit(_cover, f, priority=w) for f, w in zip(planned, work, strict=True)]
-        futures = {
-            client.submit(_shown, f, priority=w): k
-            for k, (f, w) in enumerate(zip(planned, work, strict=True))
-        }
-        del planned
+        covers[k] = client.submit(_cover, f, priority=work[k])
+        shown = client.submit(_shown, f, priority=work[k])
+        futures[shown] = k
+        pending.add(shown)
+
+    try:
+        while queue and len(in_flight) < slots:
+            submit_next()
         plans: list[Plan | None] = [None] * len(blocks)
         tables: list[pd.DataFrame | None] = [None] * len(blocks)
         xys: list[np.ndarray] = [np.empty((0, 2))] * len(blocks)
-        for done, fut in enumerate(as_completed(futures), start=1):
+        for done, fut in enumerate(pending, start=1):
             k = futures[fut]
+            in_flight.pop(k, None)
+            if queue:
+                submit_next()
             try:
                 plans[k], tables[k], xys[k] = fut.result()
             except KilledWorker:
@@ -424,17 +493,18 @@ def plan_district(
         say(0.93, "stitching the blocks (and bounding the fewest stations)")
         t = time.perf_counter()
         prices = shared_prices(xys)
-        bounds = [client.submit(_shared_bound, c, q) for c, q in zip(covers, prices, strict=True)]
-        del covers
+        lp_s = min(SHARED_BOUND_S, max(0.0, deadline - time.monotonic()))
+        bounds = [
+            client.submit(_shared_bound, c, q, lp_s) for c, q in zip(covers, prices, strict=True)
+        ]
+        covers.clear()  # the bounds hold them now
         out = stitch(site, scanner, req, st, blocks, plans, halo, tables)
         stitched = time.perf_counter()
-        try:
-            shared = float(sum(client.gather(bounds)))
-        except KilledWorker:  # the plan stands; its bound is the far-apart blocks' alone
-            shared = 0.0
+        shared, why = _gather_bound(bounds, deadline)
+        if why:  # the plan stands; its bound is the far-apart blocks' alone
             out.messages.append(
-                "The bound on shared stations was not computed (a worker died while solving "
-                "it); the bound given is that of the blocks far apart."
+                f"The bound on shared stations was not computed ({why}); the bound given is "
+                "that of the blocks far apart."
             )
         out.solver.update(_bound_fields(out.solver["objective"], out.solver["far_bound"], shared))
         out.timings_s["stitch_s"] = stitched - t
@@ -589,6 +659,9 @@ def stitch(
                 "they met is met from another station, some of a neighbouring block (those "
                 "samples are in that block's frame)."
             )
+    cut = _cut_short(blocks, plans)
+    if cut:
+        messages.append(budget_message(st.time_limit_s, cut))
     far = _honest_bound(blocks, plans, reach)
     statuses = {p.solver["status"] for p in plans}
     solver = {
@@ -610,6 +683,7 @@ def stitch(
         "blocks": len(blocks),
         "block_bound_sum": float(sum(p.solver.get("lower_bound") or 0 for p in plans)),
         "redundant_removed": len(removed),
+        "cut_short": cut,
     }
     route = field_route(site, scanner, st, stations_df, targets_df, coverage_df, links_df)
     messages.insert(0, f"Accuracy model: {st.model_description()}.")
@@ -634,6 +708,24 @@ def stitch(
             "worker_peak_mb": max(p.timings_s.get("worker_peak_mb", 0.0) for p in plans),
         },
     )
+
+
+def _cut_short(blocks: list[Block], plans: list[Plan]) -> list[str]:
+    """What the time budget cut short in the blocks, each kind once with the blocks it
+    happened in (the evaluation with the samples left out over all blocks)."""
+    kinds: dict[str, list[str]] = {}
+    for b, p in zip(blocks, plans, strict=True):
+        for what in p.solver.get("cut_short", []):
+            kinds.setdefault(what.split(" (")[0], []).append(b.key)
+    out = []
+    for what, keys in kinds.items():
+        shown = ", ".join(keys[:6]) + (f" and {len(keys) - 6} more" if len(keys) > 6 else "")
+        if what == "the evaluation":
+            total = sum(int(p.solver.get("samples_total", 0)) for p in plans)
+            done = sum(int(p.solver.get("samples_evaluated", 0)) for p in plans)
+            what = f"the evaluation ({done} of {total} samples; the plan covers those)"
+        out.append(f"{what} in {len(keys)} of {len(blocks)} blocks ({shown})")
+    return out
 
 
 def redundant_stations(
@@ -703,9 +795,9 @@ def _without(
     moved = cov["station_id"].isin(gone).to_numpy()
     take = best.reindex(idx[moved])
     cov.loc[moved, "station_id"] = take["station_id"].to_numpy()
-    for k in METRIC_KEYS:
+    for k in METRIC_KEYS:  # as floats: an empty block's table makes the concatenation objects
         if k in cov.columns:
-            cov.loc[moved, k] = take[k].to_numpy()
+            cov.loc[moved, k] = pd.to_numeric(take[k], errors="coerce").to_numpy(dtype=float)
     met = cov["meets"].to_numpy()
     cov.loc[met, "stations_meeting"] = counts.reindex(idx[met]).fillna(0).astype(int).to_numpy()
     links = links[~links["station_b"].isin(gone)].reset_index(drop=True)

@@ -402,7 +402,7 @@ def solve_cover(
     deadline = time.monotonic() + max(0.0, time_limit_s)
     ok = sp.csr_matrix(ok)
     demand = np.asarray(demand, dtype=np.int64)
-    red = reduce_cover(ok, demand)
+    red = reduce_cover(ok, demand, deadline)
     details: dict = {"reductions": red.describe()}
     chosen, parts = [red.forced], []
     if red.a.shape[0]:

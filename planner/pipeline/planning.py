@@ -10,6 +10,7 @@ summary and unmet samples with the reason. The result type is
 
 from __future__ import annotations
 
+import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
@@ -70,10 +71,14 @@ MIN_SEARCH_RADIUS_M = 25.0
 PAIRS_PER_S = 20e6
 #: The optimiser always gets at least this long, even when the evaluation used the budget
 #: (greedy set cover takes well under it) [s].
-MIN_SOLVER_S = 2.0
+MIN_SOLVER_S = 0.5
 #: The share of the time left that the optimiser may take when the registration network is
 #: still to be built and judged after it (its rounds need the rest of the budget).
 SOLVER_SHARE = 0.5
+#: The share of the plan's budget the first evaluation of every candidate may take: a site
+#: too large for its budget is evaluated in part, and the optimiser and the registration
+#: still get their time.
+EVALUATION_SHARE = 0.6
 
 
 def reach_m(
@@ -103,6 +108,7 @@ def plan(
     *,
     progress: Progress | None = None,
     locked: np.ndarray | None = None,
+    deadline: float | None = None,
 ) -> Plan:
     """Plan the fewest stations meeting ``requirements`` around the planned buildings.
 
@@ -113,6 +119,10 @@ def plan(
     candidate can satisfy come back with ``meets`` False and the reason (see
     :attr:`Plan.unmet`). The plan keeps what it was made from (:attr:`Plan.workbench`) for
     what-if edits (:mod:`planner.pipeline.whatif`).
+
+    The plan ends by ``deadline`` (a :func:`time.monotonic` time; default: now plus the
+    settings' ``time_limit_s``): when it comes, the best plan so far is made, and its
+    messages say what the budget cut short (``solver["cut_short"]``).
     """
     from planner.siteio import default_site
 
@@ -126,7 +136,8 @@ def plan(
             f"{type(scanner).__name__}"
         )
     st = settings or PlanSettings()
-    deadline = time.monotonic() + st.time_limit_s
+    if deadline is None:
+        deadline = time.monotonic() + st.time_limit_s
     wb = _prepare(
         site or default_site(),
         load_scanner(scanner or DEFAULT_SCANNER),
@@ -274,19 +285,35 @@ def choose_stations(
     # registration error they would have (estimated from the network) and the network is
     # built and judged again; once none is short, the fewest stations are chosen again with
     # every candidate's estimated registration error, the network's backbone kept
-    ev, sol = _choose(ctx, cand, say, deadline, timings, forced=forced)
+    cut: list[str] = []  # what the time budget cut short, in words
+    now = time.monotonic()
+    evaluated_by = now + EVALUATION_SHARE * max(0.0, deadline - now)
+    ev, sol = _choose(ctx, cand, say, deadline, timings, forced=forced, evaluated_by=evaluated_by)
+    if not ev.evaluated.all():
+        cut.append(
+            f"the evaluation ({int(ev.evaluated.sum())} of {len(fac.z)} samples; the plan "
+            "covers those)"
+        )
     wb.evaluation = ev
     wb.diagnosis = _diagnose(ctx, cand, ev, deadline, timings)
+    if len(wb.diagnosis.samples) and not np.all(wb.diagnosis.best["done"]):
+        cut.append("the diagnosis of the samples no position meets")
+    if len(wb.diagnosis.samples) and time.monotonic() > deadline:
+        cut.append("the best-effort stations for the samples no position meets")
     best_effort, relaxed_by = _best_effort(ctx, cand, sol.chosen, wb.diagnosis, deadline)
     if len(best_effort):
         sol.chosen = np.union1d(sol.chosen, best_effort)
         forced = np.union1d(forced, best_effort)
         say(0.8, f"best effort: {len(best_effort)} station(s) for what no position meets")
-    r = _Round(cover=sol.chosen, net=_network(ctx, cand, seen, sol.chosen, timings))
+    r = _Round(cover=sol.chosen, net=_network(ctx, cand, seen, sol.chosen, timings, deadline))
     r.judged = _judge(ctx, cand, r)
     best, rounds, adds, resolved = r, 0, 0, False
     while st.computes_registration and rounds < MAX_REGISTRATION_ROUNDS:
-        if time.monotonic() > deadline or r.net is None:
+        if r.net is None:
+            break
+        if time.monotonic() > deadline:
+            if r.judged.short_by_registration.any() or not resolved:
+                cut.append(f"the registration rounds (after {rounds})")
             break
         short = r.judged.short_by_registration
         more = np.empty(0, dtype=np.int64)
@@ -312,20 +339,18 @@ def choose_stations(
             break
         rounds += 1
         keep = grown_from.datum_station if len(more) else None
-        r.net = _network(ctx, cand, seen, chosen, timings, keep)
+        r.net = _network(ctx, cand, seen, chosen, timings, deadline, keep)
         r.judged = _judge(ctx, cand, r)
         if r.judged.better_than(best.judged):
             best = r
     r = best
     if st.computes_registration and r.net is not None:
         r = _prune(ctx, cand, seen, r, deadline, timings, keep=forced)
+    if any(n.cut_short for n in (r.net,) if n is not None):
+        cut.append("the search for linking stations")
     messages = list(wb.messages)
-    if not ev.evaluated.all():
-        messages.append(
-            f"The time limit of {st.time_limit_s:g} s ran out during the evaluation: "
-            f"{int(ev.evaluated.sum())} of {len(fac.z)} samples were evaluated; the plan covers "
-            "those. Raise --time-limit-s for the whole site."
-        )
+    if cut:
+        messages.append(budget_message(st.time_limit_s, cut))
     n_locked = len(forced) - len(best_effort)
     if n_locked:
         messages.append(f"{n_locked} station(s) locked by hand; the others chosen around them.")
@@ -346,6 +371,9 @@ def choose_stations(
         "reductions": sol.details.get("reductions", ""),
         "parts": sol.details.get("parts", 0),
         "registration_rounds": rounds,
+        "cut_short": cut,
+        "samples_total": len(fac.z),
+        "samples_evaluated": int(ev.evaluated.sum()),
     }
     if r.net is not None and len(r.net.stations) != sol.objective and st.computes_registration:
         messages.append(
@@ -603,6 +631,7 @@ def _choose(
     estimate: Registration | None = None,
     forced: np.ndarray | None = None,
     scanner_ok: sp.csr_matrix | None = None,
+    evaluated_by: float | None = None,
 ) -> tuple[CandidateEvaluation, CoverSolution]:
     """Evaluate every candidate on the scanner's error (plus the ``estimate`` of its
     registration error) and choose the fewest stations (with the redundant views spread);
@@ -610,14 +639,15 @@ def _choose(
     estimate leaves fewer candidates than the ``scanner_ok`` (the evaluation on the
     scanner's error alone) would give it is covered on ``scanner_ok``: by stations it
     is met from by the scanner's error, where the exact network may still meet it — not
-    by whichever station happens to be nearest."""
+    by whichever station happens to be nearest. The evaluation stops at ``evaluated_by``
+    (default ``deadline``)."""
     fac, req, st = ctx.facades, ctx.req, ctx.settings
     t = time.perf_counter()
     ev = evaluate_candidates(
         ctx,
         cand,
         progress=lambda f, m: say(0.05 + 0.6 * f, m),
-        deadline=deadline,
+        deadline=deadline if evaluated_by is None else min(deadline, evaluated_by),
         registration=estimate,
     )
     timings["evaluate"] = timings.get("evaluate", 0.0) + time.perf_counter() - t
@@ -674,10 +704,12 @@ def _network(
     seen: SightCache,
     chosen: np.ndarray,
     timings: dict[str, float],
+    deadline: float = math.inf,
     datum: int | None = None,
 ) -> Network | None:
     """The registration network of the stations ``chosen`` (candidate indices), each
-    probed at the facade points it serves best by the scanner's error."""
+    probed at the facade points it serves best by the scanner's error; after ``deadline``
+    without looking for linking stations."""
     if not len(chosen):
         return None
     t = time.perf_counter()
@@ -696,6 +728,7 @@ def _network(
         weak_mm=WEAK_LINK * tightest,
         cache=seen,
         datum=datum,
+        deadline=deadline,
     )
     timings["registration"] = timings.get("registration", 0.0) + time.perf_counter() - t
     if net.datum is not None and seen.tc.is_control.any():
@@ -703,7 +736,7 @@ def _network(
         # nearest the others, ties the network to the site's control (else it is said)
         tie = _control_station(seen, cand, chosen)
         if tie is not None and tie not in chosen:
-            return _network(ctx, cand, seen, np.append(chosen, tie), timings)
+            return _network(ctx, cand, seen, np.append(chosen, tie), timings, deadline)
     return net
 
 
@@ -752,7 +785,7 @@ def _prune(
         for k in idle:
             chosen = np.delete(r.net.stations, k)
             trial = _Round(cover=np.setdiff1d(r.cover, r.net.stations[k]), added=r.added)
-            trial.net = _network(ctx, cand, seen, chosen, timings, r.net.datum_station)
+            trial.net = _network(ctx, cand, seen, chosen, timings, deadline, r.net.datum_station)
             if trial.net is None:
                 continue
             trial.judged = _judge(ctx, cand, trial)
@@ -817,6 +850,14 @@ def _judge(ctx: Context, cand: np.ndarray, r: _Round) -> _Judged:
         v = a.metrics[f"scanner_m_{c}_mm"]
         scanner_ok &= np.isfinite(v) & (v <= ctx.limits[f"m_{c}"] * (1 + 1e-9))
     return _Judged(a, int(met.sum()), len(station_xy), demanded & ~met & scanner_ok)
+
+
+def budget_message(time_limit_s: float, cut: list[str]) -> str:
+    """What the time budget cut short, as the plan says it."""
+    return (
+        f"Time budget: the {time_limit_s:g} s ran out; cut short: {'; '.join(cut)}. The plan "
+        "is the best found in the time; raise --time-limit-s for the whole of it."
+    )
 
 
 def _expect(value: object, kind: type, name: str, hint: str) -> None:
@@ -919,9 +960,7 @@ def _coverage(
         reason[i] = _reason(ctx, int(i), n_view, best, int(n_ok_cand[i]), roof)
         if n_view == 0 or roof:
             elevated[i] = f"roof of {roof}" if roof else "above the ground"
-    reason[~meets & demanded & ~ev.evaluated] = (
-        f"not evaluated: the time limit of {ctx.settings.time_limit_s:g} s ran out"
-    )
+    reason[~meets & demanded & ~ev.evaluated] = "not evaluated: the time budget ran out"
     reason[fac.party_wall] = "party wall (against a neighbour): not scanned"
     extra = {}
     if class_family:  # the class each sample achieves, beside pass/fail
@@ -1195,14 +1234,29 @@ def _registration_messages(
     return out
 
 
+#: Facades the summary lists with their unmet samples (the rest: coverage.csv).
+UNMET_FACADES_SHOWN = 12
+
+
 def _unmet_messages(unmet: pd.DataFrame) -> list[str]:
+    """The unmet samples by facade, the most unmet first (at most
+    :data:`UNMET_FACADES_SHOWN`), each with its most frequent reason."""
     out = [f"{len(unmet)} sample(s) do not meet the requirements:"]
-    for (bid, fid), g in unmet.groupby(["building_id", "facade_id"], sort=True):
+    groups = sorted(
+        unmet.groupby(["building_id", "facade_id"], sort=True), key=lambda kv: -len(kv[1])
+    )
+    for (bid, fid), g in groups[:UNMET_FACADES_SHOWN]:
         reasons = g["reason"].value_counts()
         out.append(
             f"  facade {fid} (building {bid}): {len(g)} sample(s), "
             f"z {g['z'].min():.1f}–{g['z'].max():.1f} m"
             f" — {reasons.index[0]}"
             + (f" (and {len(reasons) - 1} other reason(s))" if len(reasons) > 1 else "")
+        )
+    if len(groups) > UNMET_FACADES_SHOWN:
+        rest = sum(len(g) for _, g in groups[UNMET_FACADES_SHOWN:])
+        out.append(
+            f"  … and {rest} sample(s) on {len(groups) - UNMET_FACADES_SHOWN} other facade(s) "
+            "(coverage.csv)"
         )
     return out

@@ -20,6 +20,8 @@ are checked word by word.
 
 from __future__ import annotations
 
+import math
+import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -52,9 +54,11 @@ def subset_pairs(
     allowed: Callable[[np.ndarray, np.ndarray], np.ndarray] | None = None,
     witness: str | None = None,
     among: np.ndarray | None = None,
+    deadline: float = math.inf,
 ) -> tuple[np.ndarray, np.ndarray] | None:
     """Pairs ``(x, y)``, ``x != y``, with items(x) ⊆ items(y), for the rows of ``sets`` (a
-    sparse 0/1 matrix, one row per set); ``None`` when the bit sets would be too large.
+    sparse 0/1 matrix, one row per set); ``None`` when the bit sets would be too large, or
+    ``deadline`` (a :func:`time.monotonic` time) passes before every pair is checked.
 
     ``allowed(x, y)``: a mask of the pairs wanted, applied before any set is compared.
     ``witness``: ``None`` for every pair; ``"x"`` (``"y"``) for one pair per subset
@@ -85,9 +89,13 @@ def subset_pairs(
     if allowed is not None:
         keep &= allowed(x, y)
     x, y, rank = x[keep], y[keep], rank[keep]
+    if time.monotonic() > deadline:
+        return None
     bits = _bitsets(sets)
     rng = np.random.default_rng(seed)
     for _ in range(_PROBES):  # a true superset holds every member: only non-pairs drop out
+        if time.monotonic() > deadline:
+            return None
         item = sets.indices[sets.indptr[x] + (rng.random(len(x)) * size[x]).astype(np.int64)]
         word = bits[y, item >> 6] >> (item & 63).astype(np.uint64)
         held = (word & np.uint64(1)).astype(bool)
@@ -99,6 +107,8 @@ def subset_pairs(
     found = np.zeros(n, dtype=bool)
     exact = np.zeros(len(x), dtype=bool)
     for lo in range(0, len(x), chunk):
+        if time.monotonic() > deadline:
+            return None
         at = np.arange(lo, min(lo + chunk, len(x)))
         if side is not None:
             at = at[~found[side[at]]]
@@ -133,11 +143,14 @@ class Reduced:
         )
         if c.get("skipped"):
             text += " (dominance skipped: too large)"
+        if c.get("stopped"):
+            text += " (stopped by the time budget)"
         return text
 
 
-def reduce_cover(a: sp.csr_matrix, demand: np.ndarray) -> Reduced:
-    """Apply the reductions (module docstring) to a fixed point.
+def reduce_cover(a: sp.csr_matrix, demand: np.ndarray, deadline: float = math.inf) -> Reduced:
+    """Apply the reductions (module docstring) to a fixed point, or until ``deadline`` (a
+    :func:`time.monotonic` time; every pass leaves an exact reduction of the problem).
 
     ``a``: samples × candidates, nonzero where the candidate meets the sample; ``demand``:
     stations each sample needs, already capped at its number of candidates.
@@ -163,6 +176,9 @@ def reduce_cover(a: sp.csr_matrix, demand: np.ndarray) -> Reduced:
             rows_new, cols_new = rows_new[live], cols_new[used]
         if a.shape[0] == 0:
             break
+        if time.monotonic() > deadline:
+            counts["stopped"] = 1
+            break
         # forced: every column of a row that needs all of them
         tight = np.diff(a.indptr) <= demand
         if tight.any():
@@ -183,9 +199,10 @@ def reduce_cover(a: sp.csr_matrix, demand: np.ndarray) -> Reduced:
             ),
             witness="y",
             among=rows_new,
+            deadline=deadline,
         )
         if pairs is None:
-            counts["skipped"] = 1
+            counts["stopped" if time.monotonic() > deadline else "skipped"] = 1
             break
         drop = np.unique(pairs[1])
         if cols_new is not None:
@@ -204,9 +221,10 @@ def reduce_cover(a: sp.csr_matrix, demand: np.ndarray) -> Reduced:
             allowed=lambda x, y, one=single, n=size: one[x] & ((n[x] < n[y]) | (x > y)),
             witness="x",
             among=cols_new,
+            deadline=deadline,
         )
         if pairs is None:
-            counts["skipped"] = 1
+            counts["stopped" if time.monotonic() > deadline else "skipped"] = 1
             break
         drop = np.unique(pairs[0])
         rows_new[cols[drop].indices] = True

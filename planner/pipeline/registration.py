@@ -27,6 +27,8 @@ registrations, and its error at every facade sample.
 from __future__ import annotations
 
 import heapq
+import math
+import time
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
@@ -470,6 +472,8 @@ class Network:
     station_xyz: np.ndarray  # (K, 3) scanner centres [m]
     #: every observation adjusted: (station, target) → centre RMS [mm] per axis
     centre_rms: dict[tuple[int, int], float] = field(default_factory=dict)
+    #: the time budget ran out before linking stations were looked for
+    cut_short: bool = False
 
     @property
     def tied(self) -> np.ndarray:
@@ -575,12 +579,14 @@ def _bridges(
     stations: list[int],
     sight: Sight,
     groups: np.ndarray,
-) -> list[int]:
+    deadline: float = math.inf,
+) -> tuple[list[int], bool]:
     """The fewest linking candidates that chain every group of stations into one: a
     breadth-first search over a coarse grid of candidates, from one group to the nearest
-    other, repeated until one group is left or none can be reached. Hops are pairs with
-    three common targets; a chain found is checked hop by hop (the targets must not lie on
-    one line) and a hop that fails is struck off before searching again."""
+    other, repeated until one group is left, none can be reached or ``deadline`` passes.
+    Hops are pairs with three common targets; a chain found is checked hop by hop (the
+    targets must not lie on one line) and a hop that fails is struck off before searching
+    again. Also whether the deadline cut the search short."""
     tc = seen.tc
     pool = _coarse(cand_xy, max(LINK_GRID_M, ctx.settings.grid_m))
     pool = pool[~np.isin(pool, stations)]
@@ -588,8 +594,17 @@ def _bridges(
     near = np.hypot(*(cand_xy[pool, None, :] - cand_xy[None, stations, :]).transpose(2, 0, 1))
     pool = pool[near.min(axis=1) <= BRIDGE_RADIUS_M]
     if not len(pool):
-        return []
-    u_pool = (seen.usable(pool) & ~tc.is_control[:, None]).astype(np.float32)
+        return [], False
+    parts = []  # the pool's sights, a chunk at a time while the time lasts
+    for k in range(0, len(pool), BRIDGE_CHUNK):
+        if time.monotonic() > deadline:
+            break
+        parts.append(seen.usable(pool[k : k + BRIDGE_CHUNK]))
+    cut = sum(p.shape[1] for p in parts) < len(pool)
+    if not parts:
+        return [], cut
+    pool = pool[: sum(p.shape[1] for p in parts)]
+    u_pool = (np.hstack(parts) & ~tc.is_control[:, None]).astype(np.float32)
     u_st = (sight.usable & ~tc.is_control[:, None]).astype(np.float32)
     common_pp = u_pool.T @ u_pool  # (P, P) common targets, exact in float32 below 2**24
     common_ps = u_pool.T @ u_st  # (P, K)
@@ -604,6 +619,9 @@ def _bridges(
     groups = groups.copy()
     for _ in range(MAX_BRIDGE_SEARCHES):
         if groups.max() == 0:
+            break
+        if time.monotonic() > deadline:
+            cut = True
             break
         chain = _bfs_chain(common_pp, common_ps, groups)
         if chain is None:
@@ -626,11 +644,14 @@ def _bridges(
         hit = {int(g) for i in chain for g in groups[(common_ps[i] >= 3) & (groups > 0)]}
         groups = np.where(np.isin(groups, list(hit)), 0, groups)
         groups = np.unique(groups, return_inverse=True)[1]
-    return added
+    return added, cut
 
 
 #: Linking stations are searched this close to the stations they link [m].
 BRIDGE_RADIUS_M = 60.0
+#: The bridge search computes its candidates' sights this many at a time (the time budget
+#: is checked between chunks).
+BRIDGE_CHUNK = 512
 #: How many chains the bridge search tries (each failing hop struck off) before giving up.
 MAX_BRIDGE_SEARCHES = 200
 
@@ -791,6 +812,7 @@ def build_network(
     weak_mm: float = np.inf,
     cache: SightCache | None = None,
     datum: int | None = None,
+    deadline: float = math.inf,
 ) -> Network:
     """Link the chosen stations into one registration network (module docstring).
 
@@ -799,7 +821,8 @@ def build_network(
     error exceeds ``weak_mm`` is strengthened, where linking stations can, by a detour
     that makes the worst station's error smaller. ``cache`` keeps the candidates' sights
     between calls. ``datum`` (a candidate index) keeps the datum of the network this one
-    grows from, when it is among the stations.
+    grows from, when it is among the stations. After ``deadline`` (a
+    :func:`time.monotonic` time) no linking stations are looked for (``cut_short``).
     """
     levelled = ctx.scanner.is_levelled
     seen = cache if cache is not None else SightCache(ctx, tc, cand_xy)
@@ -807,13 +830,14 @@ def build_network(
     n_cover = len(stations)
     lay = _Layout(ctx, seen, cand_xy, stations, probes, goal_mm, datum)
     groups = _components(lay.k, lay.pairs)
+    cut_short = False
     if groups.max() > 0:  # stations no common targets tie: linking stations
-        extra = _bridges(ctx, seen, cand_xy, stations, lay.sight, groups)
+        extra, cut_short = _bridges(ctx, seen, cand_xy, stations, lay.sight, groups, deadline)
         if extra:
             lay = _Layout(ctx, seen, cand_xy, stations + extra, probes, goal_mm, datum)
     weak = lay.weak_groups(weak_mm) if np.isfinite(weak_mm) and lay.k > 1 else np.zeros(1)
-    if weak.max() > 0:  # links too weak for the requirement: a detour, if it helps
-        extra = _bridges(ctx, seen, cand_xy, lay.stations, lay.sight, weak)
+    if weak.max() > 0 and time.monotonic() <= deadline:  # too weak: a detour, if it helps
+        extra, _ = _bridges(ctx, seen, cand_xy, lay.stations, lay.sight, weak, deadline)
         if extra:
             trial = _Layout(ctx, seen, cand_xy, lay.stations + extra, probes, goal_mm, datum)
             if len(trial.cost) >= len(lay.cost) and trial.worst_var < 0.8 * lay.worst_var:
@@ -909,6 +933,7 @@ def build_network(
         candidates=tc,
         station_xyz=station_xyz,
         centre_rms=observed,
+        cut_short=cut_short,
     )
 
 

@@ -1,0 +1,68 @@
+"""One time budget for the whole plan: a site that needs far more than ``--time-limit-s``
+ends within the budget + 10 % + 5 s — reading, evaluation, optimisation, registration,
+district blocks, route, booklet and files — and the plan it writes says what the budget cut
+short. (The clock is the subject here; the bound is wide for a loaded machine.)"""
+
+from __future__ import annotations
+
+import json
+import time
+
+import pandas as pd
+import pytest
+import shapely
+from sites import run_cli
+
+from planner.synthetic import town
+
+
+def _write_town(path, n: int) -> None:
+    site = town(n, seed=0)
+    feats = [
+        {
+            "type": "Feature",
+            "properties": {"id": b.id, "height": b.height_m},
+            "geometry": json.loads(shapely.to_geojson(b.footprint)),
+        }
+        for b in site.buildings
+    ]
+    crs = {"type": "name", "properties": {"name": "EPSG:32633"}}
+    path.write_text(json.dumps({"type": "FeatureCollection", "crs": crs, "features": feats}))
+
+
+def _allowed_s(budget_s: float) -> float:
+    return 1.1 * budget_s + 5.0
+
+
+@pytest.mark.parametrize(
+    ("n", "budget_s", "mode"),
+    [(50, 12.0, ["--district", "off"]), (40, 20.0, ["--district", "on", "--block-m", "80"])],
+    ids=["one process", "district"],
+)
+def test_a_site_far_beyond_its_budget_ends_in_time_and_says_what_was_cut(
+    tmp_path, n, budget_s, mode
+):
+    """50 buildings take about 45 s in one process (benchmarks/RESULTS.md, town-50), 40 in
+    blocks of 80 m on Dask about as long: given a fraction of that they stop in time, with
+    a plan that says what it left out."""
+    site = tmp_path / "town.geojson"
+    _write_town(site, n)
+    out = tmp_path / "plan"
+    t0 = time.monotonic()
+    code, _stdout, err = run_cli(
+        "plan", str(site), "--time-limit-s", f"{budget_s:g}", *mode, "--out", str(out), "-q"
+    )
+    wall = time.monotonic() - t0
+    assert code in (0, 1), err
+    assert wall <= _allowed_s(budget_s), f"{wall:.1f} s for a budget of {budget_s:g} s"
+    summary = (out / "summary.txt").read_text()
+    assert f"Time budget: the {budget_s:g} s ran out; cut short: " in summary
+    assert "the evaluation (" in summary
+    cov = pd.read_csv(out / "coverage.csv", keep_default_na=False)
+    assert (cov["reason"] == "not evaluated: the time budget ran out").any()
+    assert cov["meets"].astype(str).eq("True").any()  # a plan, not an empty shell
+    for name in ("stations.csv", "targets.csv", "plan.geojson", "plan.dxf"):
+        assert (out / name).stat().st_size > 0
+    # the booklet: whole, cut short (its last page lists the stations left out), or not drawn
+    booklet = (out / "booklet.pdf").exists()
+    assert booklet != ("no field booklet was drawn" in summary)
