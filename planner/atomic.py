@@ -321,9 +321,16 @@ def replace_folder_files(
             shutil.rmtree(new, ignore_errors=True)
         raise
     # the new set is in place: tidying up is best effort (what it leaves, the next write
-    # into this folder recovers — the user's entries back in, the rest removed)
-    with contextlib.suppress(OSError):
-        _carry_over(new, target, owned_names)  # what the user changed meanwhile
-        fault_point("remove the old folder")
-        shutil.rmtree(new)
+    # into this folder recovers — the user's entries back in, the rest removed); a signal
+    # arriving meanwhile still finds it done before the process ends
+    try:
+        with contextlib.suppress(OSError):
+            _carry_over(new, target, owned_names)  # what the user changed meanwhile
+            fault_point("remove the old folder")
+            shutil.rmtree(new)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            _carry_over(new, target, owned_names)
+        shutil.rmtree(new, ignore_errors=True)
+        raise
     return [target / name for name in files]

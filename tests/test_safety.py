@@ -13,6 +13,7 @@ from __future__ import annotations
 import datetime
 import json
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -78,28 +79,55 @@ def _leftovers(parent: Path) -> list[str]:
     )
 
 
-@pytest.fixture()
-def site_file(tmp_path) -> Path:
-    path = tmp_path / "hut.geojson"
-    path.write_text(json.dumps(SQUARE))
-    return path
+@pytest.fixture(scope="module")
+def two_plans(tmp_path_factory):
+    """The files of an old plan and of a new one (a stricter requirement), made once by the
+    command line; the tests below exchange them at every write point."""
+    base = tmp_path_factory.mktemp("plans")
+    site = base / "hut.geojson"
+    site.write_text(json.dumps(SQUARE))
+    new_args = ["plan", str(site), "--max-xy-mm", "3", *FAST]
+    assert _cli("plan", str(site), "--out", str(base / "old"), *FAST).returncode == 0
+    assert _cli(*new_args, "--out", str(base / "new")).returncode in (0, 1)
+    old, new = _plan_files(base / "old"), _plan_files(base / "new")
+    assert old != new and set(old) == set(new)
+    return base, old, new, new_args
 
 
 @pytest.fixture()
-def old_and_new(tmp_path, site_file):
-    """A plan folder holding an old plan and files of the user's own, and the contents the
-    new plan (a stricter requirement) will have."""
+def old_and_new(tmp_path, two_plans):
+    """A plan folder holding the old plan and files of the user's own; the new plan's
+    folder; their contents."""
+    base, old, new, new_args = two_plans
     out = tmp_path / "plan"
-    assert _cli("plan", str(site_file), "--out", str(out), *FAST).returncode == 0
+    shutil.copytree(base / "old", out)
     (out / "notes.txt").write_text("my notes")
     (out / "photos").mkdir()
     (out / "photos" / "north.jpg").write_bytes(b"\xff\xd8 jpeg")
-    reference = tmp_path / "reference"
-    new_args = ["plan", str(site_file), "--max-xy-mm", "3", *FAST]
-    assert _cli(*new_args, "--out", str(reference)).returncode in (0, 1)
-    old, new = _plan_files(out), _plan_files(reference)
-    assert old != new and set(old) == set(new)
-    return out, old, new, new_args
+    return out, base / "new", old, new, new_args
+
+
+#: Writes the plan files of folder argv[1] into folder argv[2] as the command line does
+#: (:func:`planner.atomic.replace_folder_files`), SIGTERM ending it as the command line's
+#: handler does: a small process, so every write point is cheap to reach.
+_SWITCH = f"""
+import signal, sys
+from pathlib import Path
+from planner.atomic import replace_folder_files
+signal.signal(signal.SIGTERM, lambda s, _f: sys.exit(128 + s))
+data = {{p.name: p.read_bytes() for p in Path(sys.argv[1]).iterdir()}}
+replace_folder_files(sys.argv[2], data, owned={tuple(OWNED_FILES)!r})
+"""
+
+
+def _switch(new_dir: Path, out: Path, fault: str) -> subprocess.CompletedProcess:
+    return subprocess.run(
+        [sys.executable, "-c", _SWITCH, str(new_dir), str(out)],
+        capture_output=True,
+        text=True,
+        env={**os.environ, FAULT_ENV: fault},
+        timeout=60,
+    )
 
 
 def _user_files_intact(out: Path) -> None:
@@ -107,57 +135,93 @@ def _user_files_intact(out: Path) -> None:
     assert (out / "photos" / "north.jpg").read_bytes() == b"\xff\xd8 jpeg"
 
 
+def _put_back(out: Path, old: dict[str, bytes]) -> None:
+    for name in OWNED_FILES:
+        (out / name).unlink(missing_ok=True)
+    for name, data in old.items():
+        (out / name).write_bytes(data)
+
+
 def test_kill_at_every_write_point_leaves_the_old_plan_or_the_new(old_and_new, tmp_path):
-    """Fault injection: SIGKILL at the 1st, 2nd, … write point of ``plan`` until a run gets
-    through; after every kill the folder is all old or all new (and the next run tidies)."""
-    out, old, new, args = old_and_new
+    """Fault injection: SIGKILL at the 1st, 2nd, … write point of the folder switch until
+    one gets through; after every kill the folder is all old or all new (and the next write
+    tidies what the kill left)."""
+    out, new_dir, old, new, _ = old_and_new
     tally = {"old": 0, "new": 0}
-    for n in range(1, 40):
-        done = _cli(*args, "--out", str(out), env={FAULT_ENV: str(n)})
+    for n in range(1, 60):
+        done = _switch(new_dir, out, str(n))
         files = _plan_files(out)
         _user_files_intact(out)
         if done.returncode != -signal.SIGKILL:
-            assert done.returncode in (0, 1), done.stderr
+            assert done.returncode == 0, done.stderr
             assert files == new
             break
         assert files in (old, new), f"a mix after a kill at write point {n}"
         tally["old" if files == old else "new"] += 1
-        # put the old plan back for the next point (a clean save: no injection)
-        if files == new:
-            for name, data in old.items():
-                (out / name).write_bytes(data)
+        if files == new:  # the old plan back for the next point (a clean save)
+            _put_back(out, old)
     else:
-        pytest.fail("the plan never completed")
+        pytest.fail("the switch never completed")
     assert tally["old"] >= 5 and tally["new"] >= 1, tally  # the switch really happens in one step
     assert _leftovers(tmp_path) == []  # the last run recovered what the kills left
 
 
-def test_full_disk_at_every_write_point_is_exit_2_and_the_old_plan_stays(old_and_new, tmp_path):
-    out, old, new, args = old_and_new
+def test_full_disk_at_every_write_point_is_an_error_and_the_old_plan_stays(old_and_new, tmp_path):
+    out, new_dir, old, new, _ = old_and_new
     failures = 0
-    for n in range(1, 40):
-        done = _cli(*args, "--out", str(out), env={FAULT_ENV: f"{n}:ENOSPC"})
-        if done.returncode in (0, 1):  # past the switch: tidying up never fails the save
+    for n in range(1, 60):
+        done = _switch(new_dir, out, f"{n}:ENOSPC")
+        if done.returncode == 0:  # past the switch: tidying up never fails the save
             assert _plan_files(out) == new
             _user_files_intact(out)
             break
         failures += 1
-        assert done.returncode == 2, done.stderr
-        assert "No space left on device" in done.stderr and "Traceback" not in done.stderr
+        assert "No space left on device" in done.stderr
         assert _plan_files(out) == old
         _user_files_intact(out)
         assert _leftovers(tmp_path) == []
     assert failures >= 8
 
 
-def test_sigterm_at_a_write_point_stops_cleanly(old_and_new, tmp_path):
-    out, old, _, args = old_and_new
-    for n in (2, 5, 8):
-        done = _cli(*args, "--out", str(out), env={FAULT_ENV: f"{n}:TERM"})
-        assert done.returncode == 128 + signal.SIGTERM
-        assert _plan_files(out) == old
+def test_sigterm_at_every_write_point_before_the_switch_stops_cleanly(old_and_new, tmp_path):
+    out, new_dir, old, _, _ = old_and_new
+    stopped = 0
+    for n in range(1, 60):
+        done = _switch(new_dir, out, f"{n}:TERM")
+        if done.returncode == 0:
+            break
+        assert done.returncode == 128 + signal.SIGTERM, done.stderr
+        files = _plan_files(out)
         _user_files_intact(out)
         assert _leftovers(tmp_path) == []
+        if files != old:  # stopped after the switch: the new plan, whole
+            _put_back(out, old)
+        stopped += 1
+    assert stopped >= 5
+
+
+@pytest.mark.parametrize(
+    ("fault", "exit_code"),
+    [("6", -signal.SIGKILL), ("6:TERM", 128 + signal.SIGTERM), ("6:ENOSPC", 2)],
+    ids=["kill", "sigterm", "full disk"],
+)
+def test_the_command_line_stopped_at_a_write_point(old_and_new, tmp_path, fault, exit_code):
+    """End to end: ``planner plan`` stopped in the middle of writing its folder exits as
+    it should, says why without a traceback, and leaves the old plan and the user's files
+    (a kill's temporaries are tidied by the next write)."""
+    out, _, old, new, args = old_and_new
+    done = _cli(*args, "--out", str(out), env={FAULT_ENV: fault})
+    assert done.returncode == exit_code, done.stderr
+    assert "Traceback" not in done.stderr
+    assert _plan_files(out) == old
+    _user_files_intact(out)
+    if exit_code == 2:
+        assert "No space left on device" in done.stderr
+    done = _cli(*args, "--out", str(out))
+    assert done.returncode in (0, 1)
+    assert _plan_files(out) == new
+    _user_files_intact(out)
+    assert _leftovers(tmp_path) == []
 
 
 def test_single_files_are_atomic(tmp_path, monkeypatch):
