@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import os
 
 import pytest
@@ -17,6 +18,28 @@ def _own_profile_folder(tmp_path_factory):
     mp.setenv("TLS_PLANNER_PROFILES", str(folder))
     yield folder
     mp.undo()
+
+
+#: A one-page PDF standing in for the field booklet.
+_STAND_IN_PDF = (
+    b"%PDF-1.4\n1 0 obj<</Type/Catalog/Pages 2 0 R>>endobj\n"
+    b"2 0 obj<</Type/Pages/Kids[3 0 R]/Count 1>>endobj\n"
+    b"3 0 obj<</Type/Page/Parent 2 0 R/MediaBox[0 0 595 842]>>endobj\n"
+    b"trailer<</Root 1 0 R>>\n%%EOF\n"
+)
+
+
+@pytest.fixture(autouse=True)
+def _quick_booklet(request, monkeypatch):
+    """The field booklet costs about half a second a page (matplotlib), and ``planner
+    plan`` draws it by default: tests in this process that are not about it get a one-page
+    stand-in. Tests about the booklet (or timing the whole command) are marked
+    ``booklet``."""
+    if request.node.get_closest_marker("booklet"):
+        return
+    import planner.app.booklet as booklet
+
+    monkeypatch.setattr(booklet, "booklet", lambda _p, deadline=math.inf: (_STAND_IN_PDF, []))
 
 
 @pytest.fixture(scope="session")

@@ -435,3 +435,18 @@ def test_blocks_farther_apart_than_their_meeting_reaches_add_their_bounds():
     assert _honest_bound(blocks, plans(60.0), 80.0) == 7
     assert _honest_bound(blocks, plans(np.inf), 80.0) == 7  # never beyond the reach
     assert _honest_bound(blocks, plans(30.0), 40.0) == 12
+
+
+def test_auto_plans_block_by_block_only_when_one_process_is_not_enough():
+    """The work estimate decides, not a block line: the default site (about 1 000 samples)
+    and a 10-building city block in one process, the 50-building town on Dask."""
+    from planner.pipeline.district import needs_district
+    from planner.siteio import default_site
+
+    st = PlanSettings()
+    assert not needs_district(default_site(), st)
+    small = town(10, seed=0)
+    assert not needs_district(small, st)
+    assert needs_district(town(50, seed=0), st)
+    # a block line through the middle of a small site does not make it a district
+    assert len(partition(small, 20.0)) > 1 and not needs_district(small, st)

@@ -147,6 +147,7 @@ def test_sessions_split_the_day():
     assert list(t["session"]) == sorted(t["session"])
 
 
+@pytest.mark.booklet
 def test_booklet_has_the_overview_and_a_page_per_station(default_plan):
     pdf = booklet_pdf(default_plan)
     assert pdf.startswith(b"%PDF")

@@ -263,16 +263,16 @@ def _read_text(path: str, what: str) -> str:
         raise InputError(f"{what} {path!r} is not UTF-8 text") from None
 
 
-def _district(args: argparse.Namespace, site) -> bool:
-    """Whether to plan block by block on Dask: asked for, or (auto) the planned buildings
-    span more than one block."""
-    from planner.pipeline.district import partition
+def _district(args: argparse.Namespace, site, settings) -> bool:
+    """Whether to plan block by block on Dask: asked for, or (auto) the site is more work
+    than one process does well (:func:`planner.pipeline.district.needs_district`)."""
+    from planner.pipeline.district import needs_district
 
     if args.district == "off":
         if args.scheduler:
             raise InputError("--scheduler needs the district mode; leave out --district off")
         return False
-    return args.district == "on" or bool(args.scheduler) or len(partition(site, args.block_m)) > 1
+    return args.district == "on" or bool(args.scheduler) or needs_district(site, settings)
 
 
 #: The share of ``--time-limit-s`` kept for the plan's documents (its files, the booklet):
@@ -302,7 +302,7 @@ def run_plan(args: argparse.Namespace) -> int:
     site, scanner, req, settings = plan_inputs(args)
     deadline = started + settings.time_limit_s
     planned_by = deadline - DOCUMENT_SHARE * settings.time_limit_s
-    if _district(args, site):
+    if _district(args, site, settings):
         from planner.pipeline.district import plan_district
 
         result = plan_district(
@@ -720,14 +720,14 @@ def build_parser() -> argparse.ArgumentParser:
     )
     _plan_arguments(pl)
     pl.add_argument("--out", required=True, metavar="DIR", help="folder for the plan's files")
-    from planner.pipeline.requirements import DEFAULT_BLOCK_M, WORKER_MEMORY
+    from planner.pipeline.requirements import DEFAULT_BLOCK_M, DISTRICT_SAMPLES, WORKER_MEMORY
 
     pl.add_argument(
         "--district",
         choices=["auto", "on", "off"],
         default="auto",
-        help="plan block by block on Dask (auto: when the planned buildings span more than "
-        "one block)",
+        help="plan block by block on Dask (auto: when the facades need more than "
+        f"{DISTRICT_SAMPLES:,} samples)",
     )
     pl.add_argument(
         "--block-m",

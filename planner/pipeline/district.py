@@ -52,6 +52,7 @@ from planner.pipeline.facades import estimate_samples
 from planner.pipeline.planning import budget_message
 from planner.pipeline.requirements import (
     DEFAULT_BLOCK_M,
+    DISTRICT_SAMPLES,
     MAX_BLOCK_BUILDINGS,
     WORKER_MEMORY,
     PlanSettings,
@@ -71,6 +72,7 @@ __all__ = [
     "block_region",
     "block_site",
     "meeting_table",
+    "needs_district",
     "partition",
     "plan_district",
     "redundant_stations",
@@ -141,6 +143,13 @@ def partition(
             )
         )
     return out
+
+
+def needs_district(site: Site, settings: PlanSettings) -> bool:
+    """Whether the site is too much work for one process (more samples than
+    :data:`~planner.pipeline.requirements.DISTRICT_SAMPLES`)."""
+    n = estimate_samples(site, settings.sample_spacing_m, settings.sample_height_step_m)
+    return n > DISTRICT_SAMPLES
 
 
 def block_region(block: Block, halo_m: float) -> shapely.Geometry:

@@ -389,6 +389,12 @@ DEFAULT_BLOCK_M = 250.0
 #: the registration of 85 stations, whose chain then carried 5.8 mm of m_z); blocks of 10–11
 #: take 20–26 s and keep their registration chains short.
 MAX_BLOCK_BUILDINGS = 12
+#: ``--district auto`` plans block by block when the facades need more samples than this
+#: (a work estimate, :func:`planner.pipeline.facades.estimate_samples`), not because the
+#: buildings happen to straddle a block line: the 50-building town (11 201 samples) takes
+#: about 45 s in one process and 16 s on two workers (benchmarks/RESULTS.md), while a city
+#: block of 10 buildings (about 2 000 samples) plans as one registration network best.
+DISTRICT_SAMPLES = 8000
 #: Memory of each local Dask worker: blocks of up to MAX_BLOCK_BUILDINGS planned buildings
 #: peaked at 551 MB per worker on the 1000-building town with 2 workers, 727 MB with one
 #: (each worker also holds its blocks' covers until the district's bound is computed;
