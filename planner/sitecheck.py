@@ -192,6 +192,10 @@ NOTE_WORDS = {
         "obstacle overlapping a building, far from the planned ones, left",
         "obstacles overlapping buildings, far from the planned ones, left",
     ),
+    ("part", "dropped"): (
+        "building part inside its building's outline, left out",
+        "building parts inside their buildings' outlines, left out",
+    ),
     ("id", "renamed"): (
         "duplicate id, far from the planned buildings, renamed",
         "duplicate ids, far from the planned buildings, renamed",

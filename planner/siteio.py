@@ -258,6 +258,7 @@ def site_from_features(
             )
         )
         raise SiteProblems(problems, origin)
+    blds = _without_parts(blds, [f for f in features if f.props.get("building:part")], notes)
     blds = with_planned(blds, buildings)
     if heightless:  # far from the planned buildings a height is immaterial: noted, not asked
         planned = [b.footprint for b in blds if b.planned and _polygonal(b.footprint)]
@@ -302,6 +303,39 @@ def site_from_features(
     if problems:
         raise SiteProblems(problems, origin)
     return site
+
+
+#: A building part (OpenStreetMap's ``building:part``) this much inside a building's outline
+#: is a piece of that building, not a building of its own.
+PART_INSIDE = 0.9
+
+
+def _without_parts(
+    blds: list[Building], parts: list[Feature], notes: list[SiteNote]
+) -> list[Building]:
+    """The buildings without the OpenStreetMap building parts (``building:part`` and no
+    ``building`` tag) that lie inside another building's outline: the outline already
+    blocks the beam and carries the facades (each part left out is noted)."""
+    ids = {f.ident for f in parts if not f.props.get("building")}
+    if not ids:
+        return blds
+    whole = [b for b in blds if b.id not in ids and _polygonal(b.footprint)]
+    tree = shapely.STRtree([b.footprint for b in whole])
+    out = []
+    for b in blds:
+        if b.id in ids and _polygonal(b.footprint) and b.footprint.is_valid:
+            hosts = [
+                whole[j]
+                for j in tree.query(b.footprint, predicate="intersects")
+                if whole[j].footprint.is_valid
+                and shapely.intersection(whole[j].footprint, b.footprint).area
+                >= PART_INSIDE * b.footprint.area
+            ]
+            if hosts:
+                notes.append(SiteNote("part", (b.id,), "dropped", f"a part of {hosts[0].id}"))
+                continue
+        out.append(b)
+    return out
 
 
 def _polygonal(geom: Any) -> bool:
@@ -358,6 +392,39 @@ def _no_height(role: str, f: Feature) -> SiteProblem:
         "add a 'height' (or 'building:levels') property in metres, or give a default height "
         "(--height H)",
     )
+
+
+#: A building part (OpenStreetMap's ``building:part``) this much inside a building's outline
+#: is a piece of that building, not a building of its own.
+PART_INSIDE = 0.9
+
+
+def _without_parts(
+    blds: list[Building], parts: list[Feature], notes: list[SiteNote]
+) -> list[Building]:
+    """The buildings without the OpenStreetMap building parts (``building:part`` and no
+    ``building`` tag) that lie inside another building's outline: the outline already
+    blocks the beam and carries the facades (each part left out is noted)."""
+    ids = {f.ident for f in parts if not f.props.get("building")}
+    if not ids:
+        return blds
+    whole = [b for b in blds if b.id not in ids and _polygonal(b.footprint)]
+    tree = shapely.STRtree([b.footprint for b in whole])
+    out = []
+    for b in blds:
+        if b.id in ids and _polygonal(b.footprint) and b.footprint.is_valid:
+            hosts = [
+                whole[j]
+                for j in tree.query(b.footprint, predicate="intersects")
+                if whole[j].footprint.is_valid
+                and shapely.intersection(whole[j].footprint, b.footprint).area
+                >= PART_INSIDE * b.footprint.area
+            ]
+            if hosts:
+                notes.append(SiteNote("part", (b.id,), "dropped", f"a part of {hosts[0].id}"))
+                continue
+        out.append(b)
+    return out
 
 
 def _polygonal(geom: Any) -> bool:

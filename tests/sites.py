@@ -81,7 +81,7 @@ def osm_like_export() -> dict:
     ``way/1001`` only ``building:levels`` 4; ``way/1002`` ``height`` "14 m", its shared
     wall with 1001 digitised twice (a 0.3 m overlap); ``way/1003`` no height at all;
     ``way/1004`` overlapping 1003's corner by 8 m² (8 % of it); ``way/1005`` a
-    self-intersecting outline. Far away (400 m and more east): 30 buildings, 20 without a
+    self-intersecting outline; ``way/1006`` a ``building:part`` (a tower) inside 1001. Far away (400 m and more east): 30 buildings, 20 without a
     height, 5 by levels only, 3 self-intersecting, 3 overlapping pairs (one drawn twice) and
     an unclosed way tagged as a building.
     """
@@ -150,6 +150,11 @@ def osm_like_export() -> dict:
     feats.append(building("way/3001", box_(400 + 13, 0, 400 + 25, 12), height="10"))
     feats.append(building("way/3002", box_(430, 40, 445, 52), height="10"))  # = way/2007
     feats.append(building("way/3003", box_(460 + 12, 80 + 9, 460 + 20, 80 + 16), height="8"))
+    # a building part inside its building near the plan (a tower on way/1001's roof)
+    part = building("way/1006", box_(2, 52, 8, 58), height="20")
+    del part["properties"]["building"]
+    part["properties"]["building:part"] = "yes"
+    feats.append(part)
     feats.append(
         {
             "type": "Feature",

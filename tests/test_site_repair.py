@@ -69,6 +69,8 @@ def test_the_repair_and_a_default_height_read_it_and_say_what_they_did(export):
     assert ("overlap", "way/2007;way/3002", "left") in row.index  # drawn twice
     assert ("geometry", "way/3004", "dropped") in row.index
     assert "way/3004" not in by_id
+    # a building part inside its building: the outline stands for it
+    assert ("part", "way/1006", "dropped") in row.index and "way/1006" not in by_id
     assert notes["x"].notna().sum() >= 6  # the pairs and outlines are located
 
 
