@@ -25,6 +25,7 @@ __all__ = [
     "Building",
     "ControlPoint",
     "Obstacle",
+    "Passage",
     "Site",
     "SiteLimits",
     "repair_geometry",
@@ -114,6 +115,25 @@ class Area:
     geometry: Polygonal
 
 
+#: Clear height of a passage whose file gives none [m]: a gateway for carts and cars.
+DEFAULT_PASSAGE_HEIGHT_M = 3.0
+#: Width of a passage drawn as a line [m].
+DEFAULT_PASSAGE_WIDTH_M = 3.0
+
+
+@dataclass(frozen=True)
+class Passage:
+    """A way through a building at ground level — a gateway into a courtyard, which
+    footprints alone do not show (OpenStreetMap: ``tunnel=building_passage``). Below
+    ``clear_height_m`` the building is open there: sight lines pass under the floors above,
+    stations and targets may stand in it (clear of its walls), the walk goes through, and
+    the openings are not facade to scan."""
+
+    id: str
+    geometry: Polygonal
+    clear_height_m: float = DEFAULT_PASSAGE_HEIGHT_M
+
+
 #: A control point farther than this from every building is not on the site [m].
 MAX_CONTROL_DISTANCE_M = 1000.0
 #: The RMS of a control point's coordinates when the file does not give one [mm].
@@ -171,6 +191,14 @@ def _where(what: str, ident: str) -> str:
 
 def _usable(geom: Any) -> bool:
     return isinstance(geom, Polygon | MultiPolygon) and not geom.is_empty
+
+
+def _polygonal_part(geom: BaseGeometry) -> Polygonal:
+    """The polygons of an overlay's result (lines and points where outlines touch go)."""
+    polys = [g for g in shapely.get_parts(geom) if isinstance(g, Polygon) and not g.is_empty]
+    if not polys:
+        return Polygon()
+    return polys[0] if len(polys) == 1 else MultiPolygon(polys)
 
 
 def _free_id(ident: str, taken: dict[str, bool]) -> str:
@@ -334,6 +362,7 @@ class Site:
     zones: list[Zone] = field(default_factory=list)
     notes: list[SiteNote] = field(default_factory=list)
     near_m: float = DEFAULT_NEAR_M
+    passages: list[Passage] = field(default_factory=list)
 
     def __post_init__(self) -> None:
         for name, kind in (
@@ -343,6 +372,7 @@ class Site:
             ("control", ControlPoint),
             ("zones", Zone),
             ("notes", SiteNote),
+            ("passages", Passage),
         ):
             items = getattr(self, name)
             if isinstance(items, str | bytes) or not hasattr(items, "__iter__"):
@@ -362,6 +392,7 @@ class Site:
         self.obstacles = list(self.obstacles)
         self.no_go = list(self.no_go)
         self.notes = list(self.notes)
+        self.passages = list(self.passages)
         problems: list[SiteProblem] = []
         any_planned = any(b.planned for b in self.buildings)
         self._check_features(problems)
@@ -380,6 +411,7 @@ class Site:
         self._check_overlaps(problems)
         problems += self._check_control()
         problems += self._check_zones()
+        problems += self._check_passages()
         if problems:
             raise SiteProblems(problems)
 
@@ -586,6 +618,44 @@ class Site:
                     )
                 )
 
+    def _check_passages(self) -> list[SiteProblem]:
+        """A passage is a valid polygon through a building, lower than the building."""
+        out = []
+        lim = self.limits
+        for p in self.passages:
+            who = _where("passage", p.id)
+            bad = _kind_problem(p.geometry, who, p.id) or _shape_problem(p.geometry, who, p.id)
+            if bad is not None:
+                out.append(replace(bad, kind="passage"))
+                continue
+            h = _height_problem(p.clear_height_m, who, p.id, 0.0, lim.max_building_height_m)
+            if isinstance(h, SiteProblem):
+                out.append(replace(h, kind="passage"))
+                continue
+            object.__setattr__(p, "clear_height_m", h)
+            through = [b for b in self.buildings if b.footprint.intersects(p.geometry)]
+            if not through:
+                out.append(
+                    SiteProblem(
+                        "passage",
+                        (p.id,),
+                        f"{who} does not pass through any building",
+                        "draw it through the building whose ground floor it crosses",
+                    )
+                )
+            for b in through:
+                if h >= b.height_m:
+                    out.append(
+                        SiteProblem(
+                            "passage",
+                            (p.id, b.id),
+                            f"{who} is {h:g} m high, as high as building {b.id!r} "
+                            f"({b.height_m:g} m)",
+                            "give its clear height (the gateway's, not the building's)",
+                        )
+                    )
+        return out
+
     def _check_zones(self) -> list[SiteProblem]:
         """Zone ids unique; each on a building of the site (a facade id names its building:
         ``<building>-f<NN>``)."""
@@ -740,10 +810,30 @@ class Site:
 
     @property
     def blockers(self) -> list[tuple[str, Polygonal, float]]:
-        """Everything that blocks the beam: ``(id, polygon, height_m)`` of every building
-        (planned or not) and every obstacle."""
-        out = [(b.id, b.footprint, b.height_m) for b in self.buildings]
+        """Everything that blocks the beam from the ground up: ``(id, polygon, height_m)``
+        of every building (planned or not; without its passages) and every obstacle."""
+        cut = shapely.union_all([p.geometry for p in self.passages]) if self.passages else None
+        out = []
+        for b in self.buildings:
+            g = b.footprint
+            if cut is not None and g.intersects(cut):
+                g = _polygonal_part(g.difference(cut))
+            out.append((b.id, g, b.height_m))
         out += [(o.id, o.geometry, o.height_m) for o in self.obstacles]
+        return out
+
+    @property
+    def bridges(self) -> list[tuple[str, Polygonal, float, float]]:
+        """The floors above the passages: ``(building id, polygon, bottom, top)`` [m] — a
+        sight line crossing one between its bottom (the passage's clear height) and top
+        (the building's height) is blocked."""
+        out = []
+        for p in self.passages:
+            for b in self.buildings:
+                if b.footprint.intersects(p.geometry):
+                    part = _polygonal_part(b.footprint.intersection(p.geometry))
+                    if not part.is_empty:
+                        out.append((b.id, part, p.clear_height_m, b.height_m))
         return out
 
     def select(self, building_ids: Sequence[str] | None) -> Site:

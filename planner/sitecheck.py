@@ -70,6 +70,7 @@ PROBLEM_KINDS = {
     "site": ("problem with the site as a whole", "problems with the site as a whole"),
     "control": ("control point problem", "control point problems"),
     "zone": ("zone problem", "zone problems"),
+    "passage": ("passage problem", "passage problems"),
 }
 
 
@@ -195,6 +196,10 @@ NOTE_WORDS = {
     ("part", "dropped"): (
         "building part inside its building's outline, left out",
         "building parts inside their buildings' outlines, left out",
+    ),
+    ("other", "dropped"): (
+        "feature that is not a building (a road, a path), left out",
+        "features that are not buildings (roads, paths), left out",
     ),
     ("id", "renamed"): (
         "duplicate id, far from the planned buildings, renamed",

@@ -53,12 +53,15 @@ from planner.errors import InputError
 from planner.site import (
     DEFAULT_CONTROL_RMS_MM,
     DEFAULT_NEAR_M,
+    DEFAULT_PASSAGE_HEIGHT_M,
+    DEFAULT_PASSAGE_WIDTH_M,
     FAR_HEIGHT_M,
     OVERLAP_TOLERANCE_M2,
     Area,
     Building,
     ControlPoint,
     Obstacle,
+    Passage,
     Site,
     SiteLimits,
     repair_geometry,
@@ -69,8 +72,18 @@ from planner.zones import ALIASES, ZONE_KEYS, Zone, zone_from_row
 
 __all__ = ["default_site", "read_control", "read_site", "site_from_features", "site_from_geojson"]
 
-ROLES = ("building", "obstacle", "no-go", "boundary", "control")
-_ROLE_ALIASES = {"nogo": "no-go", "no_go": "no-go", "nogo-area": "no-go", "obstruction": "obstacle"}
+ROLES = ("building", "obstacle", "no-go", "boundary", "control", "passage")
+_ROLE_ALIASES = {
+    "nogo": "no-go",
+    "no_go": "no-go",
+    "nogo-area": "no-go",
+    "obstruction": "obstacle",
+    "gateway": "passage",
+    "building_passage": "passage",
+    "building-passage": "passage",
+}
+#: OpenStreetMap keys of features that are not buildings (a way in an area's export).
+_NOT_BUILDINGS = ("highway", "railway", "waterway", "barrier", "landuse", "natural", "amenity")
 SUFFIXES = {
     ".geojson": "geojson",
     ".json": "geojson",
@@ -100,6 +113,8 @@ LAYER_ROLES = {
     "site-boundary": "boundary",
     "control": "control",
     "control-point": "control",
+    "passage": "passage",
+    "gateway": "passage",
 }
 #: Storey height for a building known only by its number of storeys (``building:levels``,
 #: as OpenStreetMap gives it) [m].
@@ -166,9 +181,12 @@ def site_from_features(
     boundaries: list[BaseGeometry] = []
     control: list[ControlPoint] = []
     zones: list[Zone] = []
+    passages: list[Passage] = []
     for f, (height, source) in zip(features, heights, strict=True):
-        role = str(f.props.get("role", "building")).strip().lower()
-        role = _ROLE_ALIASES.get(role, role)
+        role = _role_of(f.props)
+        if role is None:  # a road or a path of an area's export: not part of the site
+            notes.append(SiteNote("other", (f.ident,), "dropped", _osm_kind(f.props)))
+            continue
         if role not in ROLES:
             problems.append(
                 SiteProblem(
@@ -194,6 +212,9 @@ def site_from_features(
             control.append(_control_point(f))
             continue
         geom = shapely.force_2d(geom)
+        if role == "passage":
+            passages.append(_passage(f, geom))
+            continue
         polygonal = _polygonal(geom)  # anything else is the site's to refuse or leave out
         if repair and polygonal:
             repaired = repair_geometry(geom)
@@ -297,6 +318,7 @@ def site_from_features(
             zones=zones,
             notes=notes,
             near_m=near_m,
+            passages=passages,
         )
     except SiteProblems as exc:
         problems += exc.problems
@@ -382,6 +404,54 @@ def _check_storey_height(storey_height_m: float) -> None:
         and 0 < storey_height_m <= 20
     ):
         raise InputError(f"the storey height must be > 0 and <= 20 m; got {storey_height_m!r}")
+
+
+def _role_of(props: dict[str, Any]) -> str | None:
+    """A feature's role: its ``role``; else, for OpenStreetMap tags, ``passage`` for a way
+    through a building (``tunnel=building_passage``, a ``covered=yes`` highway) and None
+    for a road, path or other feature that is not a building; else ``building``."""
+    if "role" in props:
+        role = str(props["role"]).strip().lower()
+        return _ROLE_ALIASES.get(role, role)
+    tags = {str(k).lower(): str(v).strip().lower() for k, v in props.items()}
+    if tags.get("tunnel") == "building_passage" or (
+        tags.get("covered") == "yes" and "highway" in tags
+    ):
+        return "passage"
+    if (
+        "building" not in tags
+        and "building:part" not in tags
+        and any(k in tags for k in _NOT_BUILDINGS)
+    ):
+        return None
+    return "building"
+
+
+def _osm_kind(props: dict[str, Any]) -> str:
+    """What an OpenStreetMap feature left out is (``highway=footway``)."""
+    for k in _NOT_BUILDINGS:
+        if k in props:
+            return f"{k}={props[k]}: not a building"
+    return "not a building"
+
+
+def _passage(f: Feature, geom: BaseGeometry) -> Passage:
+    """A passage from its feature: a polygon as drawn, a line widened to its ``width``
+    (default :data:`~planner.site.DEFAULT_PASSAGE_WIDTH_M`); its clear height from
+    ``clear_height_m``, OpenStreetMap's ``maxheight`` or ``height`` (default
+    :data:`~planner.site.DEFAULT_PASSAGE_HEIGHT_M`)."""
+    low = {k.lower(): k for k in f.props}
+    if geom.geom_type in ("LineString", "MultiLineString"):
+        width = _number_in(f.props[low["width"]]) if "width" in low else None
+        width = width if width and width > 0 else DEFAULT_PASSAGE_WIDTH_M
+        geom = geom.buffer(width / 2.0, cap_style="flat", join_style="mitre")
+    clear = DEFAULT_PASSAGE_HEIGHT_M
+    for key in ("clear_height_m", "maxheight", "height"):
+        v = _number_in(f.props[low[key]]) if key in low else None
+        if v is not None:
+            clear = v
+            break
+    return Passage(f.ident, geom, clear)
 
 
 def _no_height(role: str, f: Feature) -> SiteProblem:
@@ -471,6 +541,54 @@ def _check_storey_height(storey_height_m: float) -> None:
         and 0 < storey_height_m <= 20
     ):
         raise InputError(f"the storey height must be > 0 and <= 20 m; got {storey_height_m!r}")
+
+
+def _role_of(props: dict[str, Any]) -> str | None:
+    """A feature's role: its ``role``; else, for OpenStreetMap tags, ``passage`` for a way
+    through a building (``tunnel=building_passage``, a ``covered=yes`` highway) and None
+    for a road, path or other feature that is not a building; else ``building``."""
+    if "role" in props:
+        role = str(props["role"]).strip().lower()
+        return _ROLE_ALIASES.get(role, role)
+    tags = {str(k).lower(): str(v).strip().lower() for k, v in props.items()}
+    if tags.get("tunnel") == "building_passage" or (
+        tags.get("covered") == "yes" and "highway" in tags
+    ):
+        return "passage"
+    if (
+        "building" not in tags
+        and "building:part" not in tags
+        and any(k in tags for k in _NOT_BUILDINGS)
+    ):
+        return None
+    return "building"
+
+
+def _osm_kind(props: dict[str, Any]) -> str:
+    """What an OpenStreetMap feature left out is (``highway=footway``)."""
+    for k in _NOT_BUILDINGS:
+        if k in props:
+            return f"{k}={props[k]}: not a building"
+    return "not a building"
+
+
+def _passage(f: Feature, geom: BaseGeometry) -> Passage:
+    """A passage from its feature: a polygon as drawn, a line widened to its ``width``
+    (default :data:`~planner.site.DEFAULT_PASSAGE_WIDTH_M`); its clear height from
+    ``clear_height_m``, OpenStreetMap's ``maxheight`` or ``height`` (default
+    :data:`~planner.site.DEFAULT_PASSAGE_HEIGHT_M`)."""
+    low = {k.lower(): k for k in f.props}
+    if geom.geom_type in ("LineString", "MultiLineString"):
+        width = _number_in(f.props[low["width"]]) if "width" in low else None
+        width = width if width and width > 0 else DEFAULT_PASSAGE_WIDTH_M
+        geom = geom.buffer(width / 2.0, cap_style="flat", join_style="mitre")
+    clear = DEFAULT_PASSAGE_HEIGHT_M
+    for key in ("clear_height_m", "maxheight", "height"):
+        v = _number_in(f.props[low[key]]) if key in low else None
+        if v is not None:
+            clear = v
+            break
+    return Passage(f.ident, geom, clear)
 
 
 def _no_height(role: str, f: Feature) -> SiteProblem:

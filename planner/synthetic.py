@@ -22,9 +22,17 @@ import shapely
 from shapely.affinity import rotate, translate
 from shapely.geometry import Polygon, box
 
-from planner.site import Building, Site
+from planner.site import Building, Passage, Site
 
-__all__ = ["town"]
+__all__ = ["GATEWAYS", "town"]
+
+#: How a block's courtyard opens to the street: ``open`` — a gap between the buildings
+#: (the footprints show it); ``passage`` — a gateway through a building's ground floor, as
+#: real perimeter blocks have (the footprints close the ring; a :class:`~planner.site.Passage`
+#: marks it); ``closed`` — no way in (the gateway not marked).
+GATEWAYS = ("open", "passage", "closed")
+#: Clear height of the generated gateways [m].
+GATEWAY_HEIGHT_M = 3.5
 
 #: Where the generated towns lie (a UTM-like projected frame) [m].
 ORIGIN_EN = (400_000.0, 5_600_000.0)
@@ -42,14 +50,18 @@ def town(
     gateway_m: float = 5.0,
     jitter_m: float = 0.3,
     max_turn_deg: float = 4.0,
+    gateways: str = "open",
+    gateways_per_block: int = 1,
 ) -> Site:
     """A town of ``n_buildings`` terraced buildings in perimeter blocks.
 
     Blocks of ``block_m`` (width, depth) [m] stand on a square grid of streets
     ``street_m`` wide. Each block is a ring of buildings ``depth_m`` deep around its
     courtyard, cut into lots of ``frontage_m`` along the street; neighbouring lots share
-    their party wall exactly. One side of each block leaves a gateway of ``gateway_m`` into
-    the courtyard. Heights are ``storeys`` × 3.2 m plus up to a metre. The block's corners
+    their party wall exactly. ``gateways_per_block`` sides (one, or two opposite) of each
+    block have a gateway of ``gateway_m`` into the courtyard, as ``gateways`` says
+    (:data:`GATEWAYS`: a gap, a passage under a building, or none). Heights are ``storeys``
+    × 3.2 m plus up to a metre. The block's corners
     are moved by up to ``jitter_m`` and the block turned by up to ``max_turn_deg`` (real
     footprints are never a perfect grid); party walls stay shared.
 
@@ -58,8 +70,11 @@ def town(
     """
     if n_buildings < 1:
         raise ValueError("n_buildings must be at least 1")
+    if gateways not in GATEWAYS or gateways_per_block not in (1, 2):
+        raise ValueError(f"gateways is one of {GATEWAYS}, gateways_per_block 1 or 2")
     rng = np.random.default_rng(seed)
     buildings: list[Building] = []
+    passages: list[Passage] = []
     n_side = 1
     while n_side * n_side * 10 < n_buildings:  # a block holds about 10 buildings
         n_side += 1
@@ -68,17 +83,35 @@ def town(
     while len(buildings) < n_buildings:
         row, col = divmod(block, n_side)
         x0, y0 = ORIGIN_EN[0] + col * pitch[0], ORIGIN_EN[1] + row * pitch[1]
-        lots = _block_lots(rng, x0, y0, block_m, depth_m, frontage_m, gateway_m, jitter_m)
+        lots, gates = _block_lots(
+            rng,
+            x0,
+            y0,
+            block_m,
+            depth_m,
+            frontage_m,
+            gateway_m,
+            jitter_m,
+            cut=gateways == "open",
+            n_gates=gateways_per_block,
+        )
         centre = (x0 + block_m[0] / 2, y0 + block_m[1] / 2)
         turn = float(rng.uniform(-max_turn_deg, max_turn_deg))
+        mine = []
         for k, lot in enumerate(lots):
             if len(buildings) == n_buildings:
                 break
             lot = rotate(lot, turn, origin=centre)
             height = int(rng.integers(storeys[0], storeys[1] + 1)) * 3.2 + rng.uniform(0, 1)
-            buildings.append(Building(f"b{block:03d}-{k:02d}", lot, round(float(height), 2)))
+            mine.append(Building(f"b{block:03d}-{k:02d}", lot, round(float(height), 2)))
+        buildings += mine
+        if gateways == "passage":
+            for g, gate in enumerate(gates):
+                gate = rotate(gate, turn, origin=centre)
+                if any(b.footprint.intersects(gate) for b in mine):
+                    passages.append(Passage(f"g{block:03d}-{g}", gate, GATEWAY_HEIGHT_M))
         block += 1
-    return Site(buildings, name=f"town-{n_buildings}-seed{seed}")
+    return Site(buildings, name=f"town-{n_buildings}-seed{seed}", passages=passages)
 
 
 #: Slivers narrower than this (left by the gateway) are not buildings [m].
@@ -100,10 +133,15 @@ def _block_lots(
     frontage_m: tuple[float, float],
     gateway_m: float,
     jitter_m: float,
-) -> list[Polygon]:
+    *,
+    cut: bool = True,
+    n_gates: int = 1,
+) -> tuple[list[Polygon], list[Polygon]]:
     """The lots of one block: four strips along the streets (each taking one corner, turning
-    counter-clockwise), cut square to the street into lots, a gateway through the middle of
-    one strip, trimmed to the block's jittered outline. Neighbouring lots share their cut."""
+    counter-clockwise), cut square to the street into lots, trimmed to the block's jittered
+    outline; a gateway through the middle of one strip (or two opposite ones), cut out of
+    the lots when ``cut``. Neighbouring lots share their cut. The lots and the gateways
+    (reaching a metre past the block on both sides)."""
     w, d = block_m
     depth = float(rng.uniform(*depth_m))
     corners = np.array([(0, 0), (w, 0), (w, d), (0, d)], dtype=float)
@@ -118,7 +156,8 @@ def _block_lots(
         (depth, d, lambda a, b: (-m, a, depth, b)),  # west, NW corner
     ]
     gate_side = int(rng.integers(0, 4))
-    lots = []
+    gate_sides = {gate_side, (gate_side + 2) % 4} if n_gates == 2 else {gate_side}
+    lots, gates = [], []
     for side, (lo, hi, strip) in enumerate(strips):
         cuts = [lo]
         while hi - cuts[-1] > frontage_m[1]:
@@ -127,15 +166,24 @@ def _block_lots(
         if len(cuts) > 2 and cuts[-1] - cuts[-2] < frontage_m[0]:
             del cuts[-2]
         gate = None
-        if side == gate_side:
+        if side in gate_sides:
             mid = (lo + hi) / 2
-            gate = box(*strip(mid - gateway_m / 2, mid + gateway_m / 2))
+            gate = translate(box(*strip(mid - gateway_m / 2, mid + gateway_m / 2)), x0, y0)
+            gates.append(_through(gate, side))
         for a, b in pairwise(cuts):
             x_a, y_a, x_b, y_b = strip(a, b)
             lot = box(x0 + x_a, y0 + y_a, x0 + x_b, y0 + y_b).intersection(outer)
-            if gate is not None:
-                lot = lot.difference(translate(gate, x0, y0))
+            if gate is not None and cut:
+                lot = lot.difference(gate)
             for part in getattr(lot, "geoms", [lot]):
                 if isinstance(part, Polygon) and _narrowest_m(part) >= MIN_LOT_WIDTH_M:
                     lots.append(shapely.set_precision(part, 0.01))
-    return lots
+    return lots, gates
+
+
+def _through(gate: Polygon, side: int) -> Polygon:
+    """A gateway's box made to reach a metre into the courtyard (its strip's box ends at the
+    courtyard side; a passage drawn through the whole building is what a map shows)."""
+    x0, y0, x1, y1 = gate.bounds
+    grow = {0: (0, 0, 0, 1), 1: (-1, 0, 0, 0), 2: (0, -1, 0, 0), 3: (0, 0, 1, 0)}[side]
+    return box(x0 + grow[0], y0 + grow[1], x1 + grow[2], y1 + grow[3])

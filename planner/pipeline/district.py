@@ -171,6 +171,7 @@ def block_site(site: Site, block: Block, halo_m: float) -> Site:
         buildings,
         obstacles=[o for o in site.obstacles if o.geometry.intersects(region)],
         no_go=[a for a in site.no_go if a.geometry.intersects(region)],
+        passages=[p for p in site.passages if p.geometry.intersects(region)],
         boundary=site.boundary,
         crs=site.crs,
         name=f"{site.name} {block.key}",

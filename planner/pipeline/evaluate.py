@@ -24,9 +24,16 @@ import scipy.sparse as sp
 
 from planner.accuracy import eq2_variances, eq4_variance
 from planner.accuracy3d import footprint_mm, incidence_ranging_rms_mm, variances_3d
-from planner.pipeline.facades import SIGHT_OFFSET_M, FacadeSet, footprint_edges
+from planner.pipeline.candidates import GroundRegions
+from planner.pipeline.facades import SIGHT_OFFSET_M, FacadeSet, bridge_edges, footprint_edges
 from planner.pipeline.requirements import CHECKS, Check, PlanSettings, Requirements
-from planner.pipeline.visibility import clear_height, edges_in_box, edges_in_front
+from planner.pipeline.visibility import (
+    bridge_interval,
+    clear_height,
+    edges_in_box,
+    edges_in_front,
+    visible,
+)
 from planner.pipeline.zones import SampleRequirements
 from planner.polar import separated_directions
 from planner.registration_error import pair_registration_variances
@@ -87,6 +94,9 @@ class Context:
     reach_m: float
     edges: np.ndarray  # (M, 4) every blocking footprint edge
     edge_heights: np.ndarray  # (M,)
+    bridges: tuple[
+        np.ndarray, np.ndarray, np.ndarray
+    ]  # the floors over passages: edges, bottoms, tops
     edge_mask: list[np.ndarray]  # per facade: edges that can block its sight lines
     cols_of: list[np.ndarray]  # per facade: its columns
     samples_of: list[np.ndarray]  # per facade: its samples
@@ -95,7 +105,7 @@ class Context:
     stations_needed: np.ndarray  # (N,) stations (separate views) each sample needs
     #: clear heights of the candidate chunks evaluated on every sample of a facade, kept for
     #: the plan's next evaluation of all candidates (:meth:`clear_heights`)
-    _clear: dict[tuple[int, bytes], np.ndarray] = field(default_factory=dict, repr=False)
+    _clear: dict[tuple[int, bytes], Clearance] = field(default_factory=dict, repr=False)
     _kept: int = field(default=0, repr=False)  # values in ``_clear``
 
     @classmethod
@@ -112,6 +122,7 @@ class Context:
         """Everything the evaluation needs; ``sample_req`` the requirement of every sample
         (:func:`planner.pipeline.zones.apply_zones`; default: ``req`` everywhere)."""
         edges, heights = footprint_edges(site)
+        bridges = bridge_edges(site)
         masks, cols_of, samples_of = [], [], []
         col_order = np.argsort(facades.col_facade, kind="stable")
         smp_order = np.argsort(facades.facade, kind="stable")
@@ -140,6 +151,7 @@ class Context:
             reach_m=reach,
             edges=edges,
             edge_heights=heights,
+            bridges=bridges,
             edge_mask=masks,
             cols_of=cols_of,
             samples_of=samples_of,
@@ -147,6 +159,11 @@ class Context:
             limits=sample_req.limits,
             stations_needed=sample_req.stations,
         )
+
+    @cached_property
+    def regions(self) -> GroundRegions:
+        """The site's open ground in connected regions (closed courtyards apart)."""
+        return GroundRegions(self.site)
 
     def front_candidates(self, f: int, cand_xy: np.ndarray) -> np.ndarray:
         """Indices of candidates in front of facade ``f`` and within reach of it."""
@@ -158,10 +175,12 @@ class Context:
         dist = np.hypot(*(rel - t[:, None] * v).T)
         return np.flatnonzero(ahead & (dist <= self.reach_m))
 
-    def clear_heights(self, f: int, cand_xy: np.ndarray, keep: bool = False) -> np.ndarray:
-        """(c, k) lowest visible height [m] above facade ``f``'s columns from ``cand_xy``
-        (:func:`~planner.pipeline.visibility.clear_height`); ``keep`` keeps it for the same
-        facade and candidates again (while :data:`MAX_KEPT_CLEAR` values are kept)."""
+    def clear_heights(self, f: int, cand_xy: np.ndarray, keep: bool = False) -> Clearance:
+        """Line of sight from ``cand_xy`` to facade ``f``'s columns: the (c, k) lowest
+        visible height [m] (:func:`~planner.pipeline.visibility.clear_height`) and, where
+        a passage's floors can be crossed, the heights they hide
+        (:func:`~planner.pipeline.visibility.bridge_interval`). ``keep`` keeps it for the
+        same facade and candidates again (while :data:`MAX_KEPT_CLEAR` values are kept)."""
         key = (f, cand_xy.tobytes())
         if key in self._clear:
             return self._clear[key]
@@ -173,17 +192,22 @@ class Context:
             em = em[edges_in_box(self.edges[em], (*lo_xy, *hi_xy))]
         target = fac.col_xy[cols] + SIGHT_OFFSET_M * fac.normal[f]
         c, k = len(cand_xy), len(cols)
-        zc = clear_height(
-            np.repeat(cand_xy, k, axis=0),
-            self.settings.instrument_height_m,
-            np.tile(target, (c, 1)),
-            self.edges[em],
-            self.edge_heights[em],
-        ).reshape(c, k)
+        src, dst = np.repeat(cand_xy, k, axis=0), np.tile(target, (c, 1))
+        hi = self.settings.instrument_height_m
+        zc = clear_height(src, hi, dst, self.edges[em], self.edge_heights[em]).reshape(c, k)
+        out = Clearance(zc)
+        b_edges, bottoms, tops = self.bridges
+        if len(b_edges):
+            lo_xy = np.minimum(cand_xy.min(axis=0), np.minimum(fac.start[f], fac.end[f]))
+            hi_xy = np.maximum(cand_xy.max(axis=0), np.maximum(fac.start[f], fac.end[f]))
+            near = edges_in_box(b_edges, (*lo_xy, *hi_xy))
+            if near.any():
+                lo, up = bridge_interval(src, hi, dst, b_edges[near], bottoms[near], tops[near])
+                out = Clearance(zc, lo.reshape(c, k), up.reshape(c, k))
         if keep and self._kept + zc.size <= MAX_KEPT_CLEAR:
-            self._clear[key] = zc
+            self._clear[key] = out
             self._kept += zc.size
-        return zc
+        return out
 
     def pair_count(self, cand_xy: np.ndarray) -> int:
         """How many candidate × sample pairs the evaluation will compute (the work)."""
@@ -202,6 +226,23 @@ class Context:
             if np.isfinite(lim).any():
                 out.append((c, lim[None, :]))
         return out
+
+
+@dataclass(frozen=True)
+class Clearance:
+    """Line of sight from c stations to the k columns of a facade: the lowest height seen
+    (c, k) and, where a passage's floors can be crossed, the heights they hide ``[lo, up)``
+    (:mod:`planner.pipeline.visibility`)."""
+
+    zc: np.ndarray
+    lo: np.ndarray | None = None
+    up: np.ndarray | None = None
+
+    def sees(self, z: np.ndarray, col: np.ndarray) -> np.ndarray:
+        """(c, n): which of the samples at heights ``z`` in columns ``col`` are seen."""
+        if self.lo is None:
+            return visible(z, self.zc[:, col])
+        return visible(z, self.zc[:, col], self.lo[:, col], self.up[:, col])
 
 
 class PairMetrics:
@@ -347,7 +388,7 @@ def facade_pairs(
     smp = ctx.samples_of[f] if smp is None else smp
     n = fac.normal[f]
     # line of sight, once per (candidate, column), against the edges that can lie between
-    zc = ctx.clear_heights(f, cand_xy, keep)
+    clear = ctx.clear_heights(f, cand_xy, keep)
     col_local = np.searchsorted(cols, fac.column[smp])
     # sight geometry (station minus point horizontally; point minus scanner vertically)
     dx = cand_xy[:, 0:1] - fac.xy[smp, 0]
@@ -363,7 +404,7 @@ def facade_pairs(
     lo, up = np.sin(np.radians(sc.vertical_fov_deg))
     view = (
         (cdot > 0)
-        & (fac.z[smp] >= zc[:, col_local] - 1e-9)
+        & clear.sees(fac.z[smp], col_local)
         & (s >= sc.min_range_m)
         & (s <= sc.max_range_m)
         & (sin_nu >= lo - 1e-12)

@@ -17,9 +17,11 @@ from planner.site import Site
 
 __all__ = [
     "FacadeSet",
+    "bridge_edges",
     "build_facades",
     "estimate_samples",
     "footprint_edges",
+    "in_opening",
     "lower_roof_in_front",
     "party_wall_mask",
 ]
@@ -30,6 +32,8 @@ PARTY_WALL_GAP_M = 0.10
 #: A sample whose point, moved this far outward, lies over a lower building faces that
 #: building's roof: ground stations see it only over the roof's edge [m].
 ROOF_PROBE_M = 0.5
+#: A facade point moved this far into its building tells a passage's opening from wall [m].
+OPENING_PROBE_M = 0.05
 #: Sight lines end this far in front of the facade, so the wall itself is not crossed [m].
 SIGHT_OFFSET_M = 0.02
 
@@ -162,7 +166,7 @@ def build_facades(
     k_in_f = np.arange(col_f.size) - first_col[col_f]
     frac = (k_in_f + 0.5) / n_cols[col_f]
     col_xy = start[col_f] + frac[:, None] * (end - start)[col_f]
-    # samples: every column × its facade's rows
+    # samples: every column × its facade's rows, but none in a passage's opening
     rows_per_col = n_rows[col_f]
     s_col = np.repeat(np.arange(col_f.size), rows_per_col)
     first_row = np.concatenate([[0], np.cumsum(rows_per_col)[:-1]])
@@ -170,6 +174,8 @@ def build_facades(
     s_f = col_f[s_col]
     s_z = (r_in_c + 0.5) / n_rows[s_f] * height[s_f]
     s_xy = col_xy[s_col]
+    wall = ~in_opening(site, s_xy - OPENING_PROBE_M * normal[s_f], s_z)
+    s_col, r_in_c, s_f, s_z, s_xy = s_col[wall], r_in_c[wall], s_f[wall], s_z[wall], s_xy[wall]
     fid = np.array(f_id, dtype=object)
     sample_id = np.array(
         [f"{fid[f]}-{c:03d}-{r:02d}" for f, c, r in zip(s_f, k_in_f[s_col], r_in_c, strict=True)],
@@ -236,13 +242,47 @@ def lower_roof_in_front(site: Site, fac: FacadeSet, samples: np.ndarray) -> np.n
     return out
 
 
+def in_opening(site: Site, probe_xy: np.ndarray, z: np.ndarray) -> np.ndarray:
+    """Points (a wall's point moved :data:`OPENING_PROBE_M` into the building) in a
+    passage below its clear height: the opening of a gateway, where there is no wall."""
+    out = np.zeros(len(z), dtype=bool)
+    if not site.passages or not len(z):
+        return out
+    geoms = [p.geometry for p in site.passages]
+    tree = shapely.STRtree(geoms)
+    for k, j in tree.query(shapely.points(probe_xy), predicate="intersects").T:
+        if z[k] < site.passages[j].clear_height_m:
+            out[k] = True
+    return out
+
+
+def bridge_edges(site: Site) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Every ring edge of the floors above the passages (:attr:`Site.bridges`): ``(M, 4)``
+    as x0, y0, x1, y1, with the bottom and top of the floors [m]."""
+    segs, bottoms, tops = [np.empty((0, 4))], [np.empty(0)], [np.empty(0)]
+    for _, geom, bottom, top in site.bridges:
+        e = _ring_edges(geom)
+        segs.append(e)
+        bottoms.append(np.full(len(e), bottom))
+        tops.append(np.full(len(e), top))
+    return np.vstack(segs), np.concatenate(bottoms), np.concatenate(tops)
+
+
+def _ring_edges(geom) -> np.ndarray:
+    """Every ring edge of a polygon or multipolygon, ``(M, 4)`` as x0, y0, x1, y1."""
+    segs = [np.empty((0, 4))]
+    for poly in shapely.get_parts(geom):
+        for ring in [poly.exterior, *poly.interiors]:
+            xy = np.asarray(ring.coords)[:, :2]
+            segs.append(np.hstack([xy[:-1], xy[1:]]))
+    return np.vstack(segs)
+
+
 def footprint_edges(site: Site) -> tuple[np.ndarray, np.ndarray]:
     """Every ring edge of every blocker: ``(M, 4)`` as x0, y0, x1, y1, and its height."""
-    segs, heights = [], []
+    segs, heights = [np.empty((0, 4))], [np.empty(0)]
     for _, geom, h in site.blockers:
-        for poly in shapely.get_parts(geom):
-            for ring in [poly.exterior, *poly.interiors]:
-                xy = np.asarray(ring.coords)[:, :2]
-                segs.append(np.hstack([xy[:-1], xy[1:]]))
-                heights.append(np.full(len(xy) - 1, h))
+        e = _ring_edges(geom)
+        segs.append(e)
+        heights.append(np.full(len(e), h))
     return np.vstack(segs), np.concatenate(heights)

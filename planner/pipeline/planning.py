@@ -329,7 +329,7 @@ def choose_stations(
             say(0.9, "registration: choosing the fewest stations again")
             resolved = True
             backbone = np.union1d(r.net.backbone, forced)
-            estimate = r.net.estimate(cand, st.instrument_height_m)
+            estimate = _estimate(ctx, r.net, cand)
             _, again = _choose(
                 ctx, cand, say, deadline, timings, estimate, forced=backbone, scanner_ok=ev.ok
             )
@@ -548,6 +548,7 @@ def assemble(
     timings["route"] = time.perf_counter() - t
     if net is not None:
         messages.append(f"Registration: {net.message}.")
+        messages.extend(_enclosed_messages(untied_places(ctx, net), ids))
         messages.extend(_registration_messages(coverage, links, st))
     unmet = coverage[~coverage["meets"] & ~coverage["party_wall"]]
     if len(unmet):
@@ -809,7 +810,7 @@ def _stations_for(
     with the registration error it would have in ``net`` (:meth:`Network.estimate`), the
     one meeting the most short samples first (greedy), until all are met or none helps."""
     t = time.perf_counter()
-    estimate = net.estimate(cand, ctx.settings.instrument_height_m)
+    estimate = _estimate(ctx, net, cand)
     if estimate is None:
         return np.empty(0, dtype=np.int64)
     ev = evaluate_candidates(ctx, cand, deadline=deadline, registration=estimate, only=short)
@@ -820,6 +821,20 @@ def _stations_for(
     sol = solve_cover(ok, demand, 0.0, "greedy")
     timings["evaluate"] += time.perf_counter() - t
     return np.asarray(sol.chosen, dtype=np.int64)
+
+
+def _estimate(ctx: Context, net: Network, cand: np.ndarray) -> Registration | None:
+    """The registration error every candidate would have in ``net``
+    (:meth:`Network.estimate`), none for a candidate that could not be tied: one standing
+    in open ground no tied station stands in (a closed courtyard) — no station is chosen
+    for the registration error where it cannot be tied."""
+    est = net.estimate(cand, ctx.settings.instrument_height_m)
+    if est is None:
+        return None
+    region = ctx.regions.label(cand)
+    tied_regions = np.unique(region[net.stations[net.tied]])
+    est.tied = est.tied & np.isin(region, tied_regions[tied_regions >= 0])
+    return est
 
 
 #: A link's own error is brought below this share of the tightest limit (where targets can):
@@ -945,11 +960,15 @@ def _coverage(
     reason = np.full(n, "", dtype=object)
     candidates_meet = ~meets & demanded & (n_ok_cand >= k_req)
     untied = np.zeros(n, dtype=bool)
+    places = untied_places(ctx, net)
     if net is not None and net.error is not None and len(ids) > 1:
         has = assignment.station >= 0
         untied[has] = ~net.error.tied[assignment.station[has]]
     for i in np.flatnonzero(candidates_meet):
-        reason[i] = _short_reason(ctx, i, picked, station[i], untied[i], n_meeting[i], k_req[i])
+        place = places.get(int(assignment.station[i]), "") if untied[i] else ""
+        reason[i] = _short_reason(
+            ctx, i, picked, station[i], untied[i], n_meeting[i], k_req[i], place
+        )
     elevated = np.full(n, "", dtype=object)
     for i in np.flatnonzero(~meets & demanded & (n_ok_cand < k_req) & ev.evaluated):
         found = diagnosis.at(int(i))
@@ -1002,8 +1021,15 @@ def _short_reason(
     untied: bool,
     n_meeting: int,
     k_req: int,
+    place: str = "",
 ) -> str:
-    """Why a sample some candidate could meet is not met by the chosen stations."""
+    """Why a sample some candidate could meet is not met by the chosen stations (``place``:
+    where an untied station stands, :func:`untied_places`)."""
+    if untied and place:
+        return (
+            f"its station {station} stands in {place}, which no registration reaches: "
+            f"{ENCLOSED_FIX}"
+        )
     if untied:
         return f"its station {station} cannot be tied to the registration network"
     worst = None
@@ -1026,6 +1052,42 @@ def _short_reason(
             f"{ctx.req.min_view_angle_deg:g}° apart in direction)"
         )
     return "the chosen stations do not cover this sample"
+
+
+#: What ties a closed courtyard's stations to the others.
+ENCLOSED_FIX = (
+    "mark its gateway (a feature with role passage, or OpenStreetMap's "
+    "tunnel=building_passage) or give control points (--control)"
+)
+
+
+def untied_places(ctx: Context, net: Network | None) -> dict[int, str]:
+    """Where the stations not tied to the network stand, in words, by their position in
+    ``net``: "the courtyard enclosed by A, B, C" for a closed courtyard (open ground no
+    other station's region reaches, :class:`~planner.pipeline.candidates.GroundRegions`)."""
+    if net is None or net.error is None or len(net.stations) <= 1:
+        return {}
+    untied = np.flatnonzero(~net.error.tied)
+    out = {}
+    for k, r in zip(untied, ctx.regions.label(net.station_xyz[untied, :2]), strict=True):
+        if ctx.regions.enclosed(int(r)):
+            blds = ctx.regions.enclosing(int(r))
+            more = f" and {len(blds) - 6} more" if len(blds) > 6 else ""
+            out[int(k)] = f"the courtyard enclosed by {', '.join(blds[:6])}{more}"
+    return out
+
+
+def _enclosed_messages(places: dict[int, str], ids: list[str]) -> list[str]:
+    """One line per closed courtyard whose stations cannot be tied."""
+    by_place: dict[str, list[str]] = {}
+    for k, place in places.items():
+        by_place.setdefault(place, []).append(ids[k])
+    return [
+        f"Registration: {place[0].upper()}{place[1:]} (station(s) {', '.join(sorted(st))}) "
+        f"cannot be tied to the others — no station outside sees its targets: {ENCLOSED_FIX}. "
+        "No station is added there for the registration error."
+        for place, st in by_place.items()
+    ]
 
 
 def _tightest_mm(ctx: Context) -> float:

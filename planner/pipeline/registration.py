@@ -36,8 +36,14 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from planner.pipeline.evaluate import Context, Registration
-from planner.pipeline.facades import PARTY_WALL_GAP_M, SIGHT_OFFSET_M, party_wall_mask
-from planner.pipeline.visibility import clear_height, edges_in_box
+from planner.pipeline.facades import (
+    OPENING_PROBE_M,
+    PARTY_WALL_GAP_M,
+    SIGHT_OFFSET_M,
+    in_opening,
+    party_wall_mask,
+)
+from planner.pipeline.visibility import bridge_interval, clear_height, edges_in_box, visible
 from planner.registration_error import (
     CONTROL,
     MAX_CONDITION,
@@ -109,6 +115,8 @@ def target_candidates(ctx: Context, stand_xy: np.ndarray) -> TargetCandidates:
             walls = np.array(xyz)
             probe = walls[:, :2] + PARTY_WALL_GAP_M * np.array(nrm)
             keep = ~party_wall_mask(ctx.site, np.array(owner, dtype=object), probe, walls[:, 2])
+            inward = walls[:, :2] - OPENING_PROBE_M * np.array(nrm)
+            keep &= ~in_opening(ctx.site, inward, walls[:, 2])  # no wall in a gateway
             xyz = [p for p, k in zip(xyz, keep, strict=True) if k]
             nrm = [p for p, k in zip(nrm, keep, strict=True) if k]
             kind = [p for p, k in zip(kind, keep, strict=True) if k]
@@ -218,10 +226,13 @@ def sights(ctx: Context, tc: TargetCandidates, station_xy: np.ndarray) -> Sight:
         e = ctx.edges
         near = edges_in_box(e, (sxy[0] - reach, sxy[1] - reach, sxy[0] + reach, sxy[1] + reach))
         end = tc.xyz[idx, :2] + SIGHT_OFFSET_M * tc.normal[idx]
-        zc = clear_height(
-            np.broadcast_to(sxy, (len(idx), 2)), hi, end, e[near], ctx.edge_heights[near]
-        )
-        idx = idx[tc.xyz[idx, 2] >= zc - 1e-9]
+        src = np.broadcast_to(sxy, (len(idx), 2))
+        zc = clear_height(src, hi, end, e[near], ctx.edge_heights[near])
+        lo = up = None
+        b_edges, bottoms, tops = ctx.bridges
+        if len(b_edges):
+            lo, up = bridge_interval(src, hi, end, b_edges, bottoms, tops)
+        idx = idx[visible(tc.xyz[idx, 2], zc, lo, up)]
         sp = point_spacing_mm(s[idx], step_mm_at_10m=ctx.step_mm_at_10m)
         ci = np.where(is_flat[idx], cdot[idx] / s[idx], 1.0)
         slope[idx, j], cos_inc[idx, j], spacing[idx, j] = s[idx], ci, sp

@@ -167,7 +167,7 @@ class _WalkGraph:
 
 def _walk_graph(site: Site, points: np.ndarray, clearance_m: float) -> _WalkGraph:
     c = min(WALK_CLEARANCE_M, max(0.05, clearance_m / 2.0))
-    hard = [b.footprint for b in site.buildings] + [o.geometry for o in site.obstacles]
+    hard = [g for _, g, _ in site.blockers]  # buildings without their passages, obstacles
     soft = [a.geometry for a in site.no_go]
     hard_b = [g.buffer(c, quad_segs=2) for g in hard]
     soft_b = [g.buffer(c, quad_segs=2) for g in soft]

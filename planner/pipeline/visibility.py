@@ -11,6 +11,14 @@ from the height
 
 upwards — one number per (station, facade column), valid for every sample up the column.
 
+A passage under a building (a gateway) leaves the floors above it as a *bridge*: a footprint
+blocking only between its bottom (the passage's clear height) and its top. A crossing at
+fraction t hides the heights ``z_s + (B − z_s)/t <= z < z_s + (H − z_s)/t``; a line through
+a gateway crosses its two openings, and the heights hidden are those between the exit's
+lower bound and the entry's upper one — below, the line passes under the floors; above,
+over the roof. :func:`bridge_interval` gives that interval, the hull of every bridge
+crossed (exact for one gateway, on the safe side for several).
+
 The (sight line, edge) pairs are tested in a loop compiled with Numba (Lam, Pitrou &
 Seibert, "Numba: a LLVM-based Python JIT compiler", LLVM-HPC 2015,
 https://doi.org/10.1145/2833157.2833162): a plan tests millions of sight lines against a few
@@ -23,7 +31,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-__all__ = ["clear_height", "edges_in_box", "edges_in_front"]
+__all__ = ["bridge_interval", "clear_height", "edges_in_box", "edges_in_front", "visible"]
 
 
 def clear_height(
@@ -89,6 +97,66 @@ def _clear_height_kernel(src, zs, dst, edges, heights, out):  # pragma: no cover
             u = (wx * ry - wy * rx) / den
             if 1e-9 < t < 1.0 - 1e-9 and 0.0 <= u <= 1.0:
                 out[i] = max(out[i], z0 + (heights[e] - z0) / t)
+
+
+def bridge_interval(
+    src_xy: np.ndarray,
+    src_z: np.ndarray | float,
+    dst_xy: np.ndarray,
+    edges: np.ndarray,
+    bottoms: np.ndarray,
+    tops: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray]:
+    """The heights ``[lo, up)`` [m] above ``dst_xy`` that the floors over passages hide
+    from each source (the module's text); ``lo = inf, up = -inf`` where none is crossed.
+    ``edges`` are the bridges' ring edges, ``bottoms`` and ``tops`` their heights."""
+    p = len(src_xy)
+    lo, up = np.full(p, np.inf), np.full(p, -np.inf)
+    if p == 0 or len(edges) == 0:
+        return lo, up
+    _bridge_kernel(
+        np.ascontiguousarray(src_xy, dtype=np.float64),
+        np.ascontiguousarray(np.broadcast_to(np.asarray(src_z, dtype=np.float64), (p,))),
+        np.ascontiguousarray(dst_xy, dtype=np.float64),
+        np.ascontiguousarray(edges, dtype=np.float64),
+        np.ascontiguousarray(bottoms, dtype=np.float64),
+        np.ascontiguousarray(tops, dtype=np.float64),
+        lo,
+        up,
+    )
+    return lo, up
+
+
+@njit(cache=True, nogil=True)
+def _bridge_kernel(src, zs, dst, edges, bottoms, tops, lo, up):  # pragma: no cover - compiled
+    """Every (sight line, bridge edge) crossing, as in :func:`_clear_height_kernel`: the
+    interval it hides widens ``[lo, up)``."""
+    for i in range(src.shape[0]):
+        sx, sy, z0 = src[i, 0], src[i, 1], zs[i]
+        rx, ry = dst[i, 0] - sx, dst[i, 1] - sy
+        for e in range(edges.shape[0]):
+            qx, qy = edges[e, 2] - edges[e, 0], edges[e, 3] - edges[e, 1]
+            wx, wy = edges[e, 0] - sx, edges[e, 1] - sy
+            den = rx * qy - ry * qx
+            if den == 0.0:
+                continue
+            t = (wx * qy - wy * qx) / den
+            u = (wx * ry - wy * rx) / den
+            if 1e-9 < t < 1.0 - 1e-9 and 0.0 <= u <= 1.0:
+                lo[i] = min(lo[i], z0 + (bottoms[e] - z0) / t)
+                up[i] = max(up[i], z0 + (tops[e] - z0) / t)
+
+
+def visible(
+    z: np.ndarray, zc: np.ndarray, lo: np.ndarray | None = None, up: np.ndarray | None = None
+) -> np.ndarray:
+    """Whether heights ``z`` are seen: at or above the clear height ``zc``
+    (:func:`clear_height`) and not in a bridge's hidden interval ``[lo, up)``
+    (:func:`bridge_interval`; none when not given). Broadcasts."""
+    out = z >= zc - 1e-9
+    if lo is not None:
+        out &= ~((z >= lo) & (z < up))
+    return out
 
 
 def edges_in_box(edges: np.ndarray, bbox: tuple[float, float, float, float]) -> np.ndarray:

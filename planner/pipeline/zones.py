@@ -18,7 +18,13 @@ import numpy as np
 import shapely
 
 from planner.errors import InputError
-from planner.pipeline.facades import PARTY_WALL_GAP_M, FacadeSet, party_wall_mask
+from planner.pipeline.facades import (
+    OPENING_PROBE_M,
+    PARTY_WALL_GAP_M,
+    FacadeSet,
+    in_opening,
+    party_wall_mask,
+)
 from planner.pipeline.requirements import CHECKS, Requirements
 from planner.site import Site
 from planner.zones import Zone
@@ -236,6 +242,9 @@ def _refine(site: Site, fac: FacadeSet, z: Zone, facades: np.ndarray, number: in
     s_z = np.array([s[2] for s in new_s], dtype=float)
     col_xy = np.vstack([fac.col_xy, np.array(new_cols_xy)])
     s_xy = col_xy[s_c]
+    wall = ~in_opening(site, s_xy - OPENING_PROBE_M * fac.normal[s_f], s_z)  # no samples there
+    s_f, s_c, s_z, s_xy = s_f[wall], s_c[wall], s_z[wall], s_xy[wall]
+    new_ids = np.array([s[3] for s in new_s], dtype=object)[wall]
     party = party_wall_mask(
         site, fac.building_id[s_f], s_xy + PARTY_WALL_GAP_M * fac.normal[s_f], s_z
     )
@@ -247,9 +256,7 @@ def _refine(site: Site, fac: FacadeSet, z: Zone, facades: np.ndarray, number: in
         column=np.concatenate([fac.column[keep], s_c]),
         xy=np.vstack([fac.xy[keep], s_xy]),
         z=np.concatenate([fac.z[keep], s_z]),
-        sample_id=np.concatenate(
-            [fac.sample_id[keep], np.array([s[3] for s in new_s], dtype=object)]
-        ),
+        sample_id=np.concatenate([fac.sample_id[keep], new_ids]),
         party_wall=np.concatenate([fac.party_wall[keep], party]),
     )
 
