@@ -81,7 +81,8 @@ def osm_like_export() -> dict:
     ``way/1001`` only ``building:levels`` 4; ``way/1002`` ``height`` "14 m", its shared
     wall with 1001 digitised twice (a 0.3 m overlap); ``way/1003`` no height at all;
     ``way/1004`` overlapping 1003's corner by 8 m² (8 % of it); ``way/1005`` a
-    self-intersecting outline; ``way/1006`` a ``building:part`` (a tower) inside 1001. Far away (400 m and more east): 30 buildings, 20 without a
+    self-intersecting outline; ``way/1006`` a ``building:part`` (a tower) inside 1001.
+    Far away (400 m and more east): 30 buildings, 20 without a
     height, 5 by levels only, 3 self-intersecting, 3 overlapping pairs (one drawn twice) and
     an unclosed way tagged as a building.
     """

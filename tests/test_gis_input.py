@@ -23,7 +23,7 @@ def write(path, geoms, fields: dict, *, layer, crs=DEFAULT_CRS, driver="GPKG", a
         np.asarray(fields[n], dtype=object if isinstance(fields[n][0], str) else None)
         for n in names
     ]
-    gtype = "Polygon Z" if shapely.has_z(geoms[0]) else "Polygon"
+    gtype = geoms[0].geom_type + (" Z" if shapely.has_z(geoms[0]) else "")
     pyogrio.raw.write(
         str(path),
         shapely.to_wkb(geoms),

@@ -110,10 +110,14 @@ def test_a_closed_courtyard_is_scanned_from_inside_but_cannot_be_tied_without_co
     assert not p.meets_all
     inner = p.coverage[p.coverage["facade_id"].isin(court["facade_id"])]
     assert (~inner["meets"]).all()
-    assert inner["reason"].str.contains(
-        r"stands in the courtyard enclosed by court, which no registration reaches: mark its "
-        "gateway"
-    ).all()
+    assert (
+        inner["reason"]
+        .str.contains(
+            r"stands in the courtyard enclosed by court, which no registration reaches: mark its "
+            "gateway"
+        )
+        .all()
+    )
     assert inner["reg_m_x_mm"].isna().all()
     assert any("cannot be tied" in m and "--control" in m for m in p.messages)
     # no station is added inside for the registration error: none could be tied there

@@ -70,6 +70,7 @@ COLOURS = {
     "target": "#8e44ad",
     "route": "#117a65",
     "sector": "#f5b041",
+    "passage": "#d4ac0d",
 }
 
 
@@ -121,6 +122,18 @@ def plot_site(site: Site, ax: Axes | None = None, window: BaseGeometry | None = 
             va="center",
             fontsize=7,
             color="w" if b.planned else "k",
+        )
+    for n, g in enumerate(shown(site.passages, lambda g: g.geometry)):
+        ax.add_patch(
+            _patch(
+                g.geometry,
+                fill=False,
+                ec=COLOURS["passage"],
+                ls="--",
+                lw=1.4,
+                zorder=3,
+                label="passage (gateway)" if n == 0 else None,
+            )
         )
     for ob in shown(site.obstacles, lambda o: o.geometry):
         kind = "tree" if ob.kind == "tree" else "obstacle"

@@ -79,6 +79,14 @@ class WhatIfMap:
         self.others = bq.Lines(
             x=np.zeros((1, 2)), y=np.zeros((1, 2)), fill="inside", colors=["#bbb"], scales=scales
         )
+        self.passages = bq.Lines(  # gateways through buildings: dashed, on top of them
+            x=np.zeros((1, 2)),
+            y=np.zeros((1, 2)),
+            colors=[COLOURS["passage"]],
+            line_style="dashed",
+            stroke_width=2,
+            scales=scales,
+        )
         self.samples = bq.Scatter(
             x=[],
             y=[],
@@ -122,7 +130,14 @@ class WhatIfMap:
             ),
         ]
         self.figure = bq.Figure(
-            marks=[self.others, self.buildings, self.samples, self.targets, self.stations],
+            marks=[
+                self.others,
+                self.buildings,
+                self.passages,
+                self.samples,
+                self.targets,
+                self.stations,
+            ],
             axes=ax,
             padding_x=0,
             padding_y=0,
@@ -178,6 +193,8 @@ class WhatIfMap:
         others += [o.geometry for o in site.obstacles]
         xs, ys = _rings(others)
         self.others.x, self.others.y = xs, ys
+        xs, ys = _rings(a.geometry for a in site.passages)
+        self.passages.x, self.passages.y = xs, ys
         cov = p.scanned
         self.samples.x, self.samples.y = cov["x"].to_numpy(), cov["y"].to_numpy()
         self.samples.color = (~cov["meets"].to_numpy()).astype(float)

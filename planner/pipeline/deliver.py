@@ -26,6 +26,7 @@ DXF_LAYERS = {
     "building": ("BUILDINGS", 7),
     "obstacle": ("OBSTACLES", 3),
     "no-go": ("NO-GO", 1),
+    "passage": ("PASSAGES", 2),
     "boundary": ("BOUNDARY", 8),
     "facade": ("FACADES", 9),
     "station": ("STATIONS", 5),
@@ -199,7 +200,16 @@ def kml_text(p: Plan) -> str | None:
     for f in _features(p):
         props, geom = f["properties"], f["geometry"]
         layer = props["layer"]
-        if layer not in ("building", "obstacle", "no-go", "station", "target", "link", "route"):
+        if layer not in (
+            "building",
+            "obstacle",
+            "no-go",
+            "passage",
+            "station",
+            "target",
+            "link",
+            "route",
+        ):
             continue
         if layer not in folders:
             folders[layer] = ET.SubElement(doc, "Folder")

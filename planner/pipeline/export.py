@@ -194,6 +194,13 @@ def geojson(p: Plan) -> dict:
         )
     for a in p.site.no_go:
         add(_to_geojson(a.geometry), layer="no-go", area_id=a.id)
+    for g in p.site.passages:
+        add(
+            _to_geojson(g.geometry),
+            layer="passage",
+            passage_id=g.id,
+            clear_height_m=g.clear_height_m,
+        )
     for r in p.facades.itertuples():
         add(
             {"type": "LineString", "coordinates": [[r.x0, r.y0], [r.x1, r.y1]]},
