@@ -71,6 +71,7 @@ COLOURS = {
     "route": "#117a65",
     "sector": "#f5b041",
     "passage": "#d4ac0d",
+    "traverse": "#17202a",
 }
 
 
@@ -226,6 +227,7 @@ def plot_plan_map(
             label=f"walking route ({p.route.table['walk_m'].sum():.0f} m)",
         )
     labels: list[tuple[float, float, str, dict]] = []
+    _draw_traverses(p, ax)
     _draw_links(p, ax, labels)
     target_labels: list[tuple[float, float, str, dict]] = []
     draw_targets(ax, p.targets, target_labels)
@@ -445,6 +447,22 @@ def place_labels(ax: Axes, items: list[tuple[float, float, str, dict]]) -> None:
             zorder=7,
             bbox=dict(boxstyle="square,pad=0.05", fc="w", ec="none", alpha=0.6),
             **style,
+        )
+
+
+def _draw_traverses(p: Plan, ax: Axes) -> None:
+    """The total-station traverses of planned control: their legs, set-up to set-up."""
+    tr = p.stations[p.stations["purpose"] == "traverse"]
+    for n, (_, legs) in enumerate(tr.groupby(tr["station_id"].str.split("-").str[0])):
+        legs = legs.sort_values("station_id")
+        ax.plot(
+            legs["x"],
+            legs["y"],
+            color=COLOURS["traverse"],
+            lw=1.2,
+            ls="-.",
+            zorder=4,
+            label="traverse (planned control)" if n == 0 else None,
         )
 
 

@@ -268,7 +268,13 @@ def stakeout_csv(p: Plan) -> str:
     from planner.pipeline.export import to_csv
 
     rows: list[dict[str, Any]] = [
-        {"point_id": r.station_id, "easting": r.x, "northing": r.y, "height": 0.0, "code": "STN"}
+        {
+            "point_id": r.station_id,
+            "easting": r.x,
+            "northing": r.y,
+            "height": 0.0,
+            "code": "TRV" if r.purpose == "traverse" else "STN",
+        }
         for r in p.stations.itertuples()
     ]
     rows += [

@@ -26,6 +26,7 @@ from planner.accuracy import reach_bound_m
 from planner.accuracy3d import reach_bound_3d_m
 from planner.errors import InputError
 from planner.pipeline.candidates import blocked_ground, candidate_grid
+from planner.pipeline.control import tie_groups, tie_messages, traverse_setups
 from planner.pipeline.evaluate import (
     METRIC_KEYS,
     Assignment,
@@ -540,7 +541,12 @@ def assemble(
             "samples_met": assignment.met_by_station,
         }
     )
-    targets, links = _targets_and_links(ctx, wb.tc, net, ids, coverage)
+    ties = net.ties if net is not None else []
+    setups = traverse_setups(ties, st)
+    if len(setups):
+        stations = pd.concat([stations, setups], ignore_index=True)
+    tc = net.candidates if net is not None else wb.tc  # with any planned control points
+    targets, links = _targets_and_links(ctx, tc, net, ids, coverage)
     timings["coverage"] = time.perf_counter() - t
     say(0.97, "visiting order and field time")
     t = time.perf_counter()
@@ -549,6 +555,7 @@ def assemble(
     if net is not None:
         messages.append(f"Registration: {net.message}.")
         messages.extend(_enclosed_messages(untied_places(ctx, net), ids))
+        messages.extend(tie_messages(ties, ids, tc, st))
         messages.extend(_registration_messages(coverage, links, st))
     unmet = coverage[~coverage["meets"] & ~coverage["party_wall"]]
     if len(unmet):
@@ -731,8 +738,10 @@ def _network(
         datum=datum,
         deadline=deadline,
     )
+    if not net.tied.all() and net.tied.any():  # groups no target reaches: planned control
+        net = tie_groups(ctx, cand, seen, net, REGISTRATION_GOAL * tightest, deadline)
     timings["registration"] = timings.get("registration", 0.0) + time.perf_counter() - t
-    if net.datum is not None and seen.tc.is_control.any():
+    if net.datum is not None and seen.tc.is_control.any() and not net.ties:
         # control points given but no station sees three of them: a station that does,
         # nearest the others, ties the network to the site's control (else it is said)
         tie = _control_station(seen, cand, chosen)

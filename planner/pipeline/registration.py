@@ -59,7 +59,15 @@ from planner.registration_error import (
 from planner.spacing import point_spacing_mm
 from planner.targets import choose_target, size_rules
 
-__all__ = ["Network", "Sight", "TargetCandidates", "build_network", "sights", "target_candidates"]
+__all__ = [
+    "Network",
+    "Sight",
+    "TargetCandidates",
+    "build_network",
+    "control_messages",
+    "sights",
+    "target_candidates",
+]
 
 #: Linking stations are searched on a grid this coarse (a subset of the candidates) [m].
 LINK_GRID_M = 4.0
@@ -278,6 +286,17 @@ class SightCache:
             self._memo_key, self._memo = key, {}
         return self._memo
 
+    def fork(self, keep: Sequence[int] | np.ndarray) -> SightCache:
+        """A cache of its own holding these sights of candidates ``keep`` (others computed
+        when asked): targets added to it (planned control) stay out of this one."""
+        keep = [int(i) for i in dict.fromkeys(keep)]
+        out = SightCache(self.ctx, self.tc, self.cand_xy)
+        cols = self._columns(keep)
+        out.sight = self.sight.take(cols) if self.sight is not None else None
+        out.column = {i: n for n, i in enumerate(keep)}
+        out.barred, out.by_hand = self.barred.copy(), self.by_hand.copy()
+        return out
+
     def add_targets(self, more: TargetCandidates) -> np.ndarray:
         """Append target candidates (placed by hand); the sights of every station seen so
         far are extended to them. Their indices."""
@@ -485,6 +504,8 @@ class Network:
     centre_rms: dict[tuple[int, int], float] = field(default_factory=dict)
     #: the time budget ran out before linking stations were looked for
     cut_short: bool = False
+    #: groups tied by planned control (:mod:`planner.pipeline.control`)
+    ties: list = field(default_factory=list)
 
     @property
     def tied(self) -> np.ndarray:
@@ -977,6 +998,21 @@ def _tree(root: int, k: int, pairs: Sequence[tuple[int, int]], link) -> tuple[li
                 if np.isfinite(err):
                     heapq.heappush(heap, (c + err**2, nb, node))
     return tree, cost
+
+
+def control_messages(net: Network) -> str:
+    """The network's message again, after planned control tied some of its groups."""
+    k = len(net.stations)
+    untied = int((~net.tied).sum())
+    tied_by = sum(len(t.stations) for t in net.ties)
+    head = _message(
+        k, net.n_link_stations, net.datum, untied, net.n_groups, net.candidates, net.links
+    )
+    if tied_by and untied == 0:
+        head = f"the {k} stations form one registration network"
+    if tied_by:
+        head += f" ({tied_by} of them through planned control)"
+    return head
 
 
 def _message(k, n_link, datum, untied, n_groups, tc, links) -> str:

@@ -427,6 +427,9 @@ class PlanSettings:
         Spacing of candidate target positions along facades and on free ground [m].
     max_target_incidence_deg : float, default 60
         Beyond this incidence a flat target is not used.
+    traverse_mm, gnss_mm : float, default 2 and 15
+        The accuracy of planned control (:mod:`planner.pipeline.control`), per coordinate
+        [mm]: what one leg of a total-station traverse adds, and a GNSS (network RTK) point.
     setup_min, target_setup_min : float, default 5 and 2
         Field time to set up a station and to place a target [min].
     walk_speed_m_s : float, default 0.8
@@ -436,10 +439,9 @@ class PlanSettings:
     scan_rate_hz : float, default 500 000
         Measurement rate [points/s] for scan times when the scanner's profile gives none.
     time_limit_s : float, default 60
-        Time budget of the whole plan: evaluation, optimiser and registration share it (the
-        optimiser takes at most half of what is left when it starts, so that the
-        registration's rounds get the rest); when it runs out, the best plan found so far is
-        kept and says so.
+        Time budget of the whole plan: reading, evaluation (at most 60 %), optimiser (at
+        most half of what is left when it starts), registration rounds and documents share
+        it; when it runs out, the best plan found so far is kept and says what was cut.
     max_samples, max_pairs : float, default 1 000 000 and 10⁹
         The work the planner accepts before it starts: facade samples, and candidate ×
         sample evaluations (about 20 million a second). Beyond them the plan is refused with
@@ -571,6 +573,21 @@ class PlanSettings:
         step=1,
         help="the most common targets a registration of two stations takes",
     )
+    traverse_mm: float = _spec(
+        2.0,
+        "mm",
+        "traverse, per leg",
+        step=0.5,
+        help="RMS per coordinate that one leg of a total-station traverse adds to planned "
+        "control (a 1\u2033 instrument over legs up to 80 m)",
+    )
+    gnss_mm: float = _spec(
+        15.0,
+        "mm",
+        "GNSS point",
+        step=1.0,
+        help="RMS per coordinate of a planned control point fixed by GNSS (network RTK)",
+    )
     setup_min: float = _spec(
         5.0,
         "min",
@@ -608,8 +625,8 @@ class PlanSettings:
         "s",
         "time limit",
         step=5.0,
-        help="time budget of the whole plan (evaluation, optimiser, registration); when it "
-        "runs out the best plan so far is kept, and says so",
+        help="time budget of the whole plan (reading, evaluation, optimiser, registration, "
+        "documents); when it runs out the best plan so far is kept, and says so",
     )
     max_samples: float = _spec(
         1_000_000,

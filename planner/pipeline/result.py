@@ -27,6 +27,7 @@ STATION_PURPOSES = {
     "cover": "to cover",
     "link": "to link the network",
     "registration": "for the registration error",
+    "traverse": "a total-station set-up of a traverse (planned control)",
 }
 
 #: The zones as planned: where, the requirement inside, the sample spacing there [m], and

@@ -322,6 +322,9 @@ def field_route(
         return route
     xy = stations[["x", "y"]].to_numpy(float)
     ids = stations["station_id"].astype(str).tolist()
+    purposes = (
+        stations["purpose"].astype(str).tolist() if "purpose" in stations else [""] * len(ids)
+    )
     g = _walk_graph(site, xy, settings.clearance_m)
     exact = len(xy) <= EXACT_MAX_STATIONS
     if exact:
@@ -373,6 +376,8 @@ def field_route(
         else:
             start = (start - SECTOR_MARGIN_DEG) % 360.0
         points = float(scan_points(width, hi - lo, step))
+        if purposes[k] == "traverse":  # a total station's set-up: no scan
+            points = 0.0
         scan_min = float(scan_time_s(points, rate)) / 60.0
         to_set = first_visit.get(n, [])
         walk_min = walk_m[n] / settings.walk_speed_m_s / 60.0
