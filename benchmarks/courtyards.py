@@ -59,12 +59,12 @@ def write_site(path: Path, n: int, gateways: str) -> None:
     path.write_text(json.dumps({"type": "FeatureCollection", "crs": crs, "features": feats}))
 
 
-def run(site: Path, out: Path) -> dict:
+def run(site: Path, out: Path, district: str = "off") -> dict:
     env = dict(os.environ)
     if os.environ.get("PLANNER_SRC"):
         env["PYTHONPATH"] = os.environ["PLANNER_SRC"]
     cmd = [sys.executable, "-m", "planner", "plan", str(site), "--max-xy-mm", "6"]
-    cmd += ["--max-z-mm", "8", "--no-booklet", "--district", "off", "--time-limit-s", "600"]
+    cmd += ["--max-z-mm", "8", "--no-booklet", "--district", district, "--time-limit-s", "600"]
     cmd += ["--out", str(out), "-q"]
     t0 = time.monotonic()
     # run outside the checkout: ``python -m`` puts the working folder first on the path
@@ -76,6 +76,7 @@ def run(site: Path, out: Path) -> dict:
     stations = int(re.search(r"^Stations: (\d+)", summary, re.M)[1])
     found = re.search(r"requirement.*?: (\d+) of (\d+)", summary)
     untied = re.search(r"(\d+) of the \d+ stations cannot be tied", summary)
+    blocks = re.search(r"District network: (\d+) of (\d+) blocks tied", summary)
     return {
         "stations": stations,
         "met": int(found[1]),
@@ -83,6 +84,7 @@ def run(site: Path, out: Path) -> dict:
         "untied": int(untied[1]) if untied else 0,
         "wall_s": wall,
         "courtyard_named": "The courtyard enclosed by" in summary,
+        "blocks_tied": f"{blocks[1]} of {blocks[2]}" if blocks else "",
     }
 
 
@@ -91,14 +93,16 @@ def main() -> None:
     ap.add_argument("--sizes", type=int, nargs="+", default=[10, 50])
     ap.add_argument("--label", default="after")
     args = ap.parse_args()
-    variants = ["closed"] if os.environ.get("PLANNER_SRC") else ["closed", "passage"]
+    variants = ["closed"] if os.environ.get("PLANNER_SRC") else ["closed", "passage", "district"]
     runs = json.loads(RUNS.read_text()) if RUNS.exists() else {}
     with tempfile.TemporaryDirectory() as tmp:
         for n in args.sizes:
             for g in variants:
+                if g == "district" and n < 50:
+                    continue
                 site = Path(tmp) / f"block{n}-{g}.geojson"
-                write_site(site, n, g)
-                r = run(site, Path(tmp) / f"out{n}{g}")
+                write_site(site, n, "passage" if g == "district" else g)
+                r = run(site, Path(tmp) / f"out{n}{g}", "on" if g == "district" else "off")
                 r.update(buildings=n, gateways=g, label=args.label)
                 print(r, flush=True)
                 runs[f"{n}-{g}-{args.label}"] = r
@@ -110,18 +114,20 @@ def main() -> None:
         "`planner plan site.geojson --max-xy-mm 6 --max-z-mm 8 --no-booklet --district off` "
         "(default scanner) on synthetic perimeter blocks (seed 1) whose courtyards are entered "
         "through gateways under a building: `closed` — the footprints alone; `passage` — the "
-        "gateways marked (role passage). `before`: the code before passages and ground "
-        "regions, on the same files.",
+        "gateways marked (role passage); `district` — the same, block by block on Dask "
+        "(`--district on`), the blocks' networks tied across their seams. `before`: the code "
+        "before passages and ground regions, on the same files.",
         "",
         "| buildings | gateways | code | stations | samples met | stations untied | "
-        "courtyard named | wall |",
-        "|---|---|---|---|---|---|---|---|",
+        "courtyard named | blocks tied | wall |",
+        "|---|---|---|---|---|---|---|---|---|",
     ]
     for r in sorted(runs.values(), key=lambda r: (r["buildings"], r["gateways"], r["label"])):
         lines.append(
             f"| {r['buildings']} | {r['gateways']} | {r['label']} | {r['stations']} | "
             f"{r['met']} of {r['samples']} | {r['untied']} | "
-            f"{'yes' if r['courtyard_named'] else 'no'} | {r['wall_s']:.1f} s |"
+            f"{'yes' if r['courtyard_named'] else 'no'} | {r.get('blocks_tied', '')} | "
+            f"{r['wall_s']:.1f} s |"
         )
     write_section("courtyards", lines)
 

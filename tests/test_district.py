@@ -450,3 +450,39 @@ def test_auto_plans_block_by_block_only_when_one_process_is_not_enough():
     assert needs_district(town(50, seed=0), st)
     # a block line through the middle of a small site does not make it a district
     assert len(partition(small, 20.0)) > 1 and not needs_district(small, st)
+
+
+def test_the_blocks_networks_are_tied_into_one_across_their_seams(blockwise):
+    """Each block keeps its network's frame (keep_frame); the stitch ties the blocks where a
+    station of each sees three common targets, and every sample of a block tied through a
+    seam carries the seam's error on top of its own: larger registration errors, never
+    smaller; the seams are links of the plan. Negative control: without the frames kept,
+    the blocks stay apart and nothing changes."""
+    import copy
+
+    from planner.pipeline.district import keep_frame
+
+    site, blocks, plans, _tables, halo = blockwise
+    req = Requirements()
+    apart = stitch(site, SCANNER, req, SETTINGS, blocks, plans, halo)
+    kept = []
+    for p in plans:
+        q = copy.copy(p)
+        q.coverage, q.solver = p.coverage.copy(), dict(p.solver)
+        keep_frame(q)
+        kept.append(q)
+    one = stitch(site, SCANNER, req, SETTINGS, blocks, kept, halo)
+    note = next(m for m in one.messages if m.startswith("District network:"))
+    assert f"{len(blocks)} of {len(blocks)} blocks tied into one frame" in note
+    assert not any(m.startswith("District network:") for m in apart.messages)
+    seams = one.links[one.links["station_a"].str[:3] != one.links["station_b"].str[:3]]
+    assert len(seams) == len(blocks) - 1 and (seams["common_targets"] >= 3).all()
+    assert (seams["link_rms_mm"] > 0).all()
+    a, b = apart.scanned.set_index("sample_id"), one.scanned.set_index("sample_id")
+    for c in "xyz":
+        grown = b[f"reg_m_{c}_mm"] - a.loc[b.index, f"reg_m_{c}_mm"]
+        assert (grown.dropna() >= -1e-9).all()  # mm: the seams only add
+        assert (grown.dropna() > 1e-3).any()
+    assert "_lim_m_x" not in one.coverage.columns
+    lost = a["meets"] & ~b.loc[a.index, "meets"]
+    assert b.loc[a.index[lost], "reason"].str.contains("once its block is tied").all()

@@ -211,9 +211,27 @@ def _plan_block(
     table = meeting_table(p, region)
     p.solver["meeting_reach_m"] = meeting_reach(p)
     cover = block_cover(p)
+    keep_frame(p)
     p.network = p.workbench = None
     p.timings_s["worker_peak_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
     return p, table, cover
+
+
+def keep_frame(p: Plan) -> None:
+    """What the stitch ties a block's network to its neighbours' with
+    (:mod:`planner.pipeline.seams`), kept in the block's plan before its network and
+    workbench are dropped: every station's scanner centre, pose covariance and whether it
+    is tied (``solver["frame"]``), and every sample's m limits (hidden coverage columns)."""
+    net = p.network
+    k = len(net.stations) if net is not None else 0
+    p.solver["frame"] = (
+        net.station_xyz.copy() if k else np.empty((0, 3)),
+        net.error.pose_cov.copy() if k and net.error is not None else np.zeros((k, 6, 6)),
+        net.tied.copy() if k else np.zeros(0, dtype=bool),
+    )
+    limits = p.workbench.ctx.limits
+    for c in "xyz":  # for judging each sample again in the district's frame
+        p.coverage[f"_lim_m_{c}"] = limits[f"m_{c}"]
 
 
 def _shown(planned: tuple[Plan, pd.DataFrame, BlockCover]) -> tuple:
@@ -695,6 +713,11 @@ def stitch(
         "redundant_removed": len(removed),
         "cut_short": cut,
     }
+    coverage_df, links_df, seam_notes = _tie_seams(
+        site, scanner, req, st, blocks, plans, reach, coverage_df, links_df, facades, removed
+    )
+    messages += seam_notes
+    coverage_df = coverage_df.drop(columns=[f"_lim_m_{c}" for c in "xyz"], errors="ignore")
     route = field_route(site, scanner, st, stations_df, targets_df, coverage_df, links_df)
     messages.insert(0, f"Accuracy model: {st.model_description()}.")
     return Plan(
@@ -718,6 +741,91 @@ def stitch(
             "worker_peak_mb": max(p.timings_s.get("worker_peak_mb", 0.0) for p in plans),
         },
     )
+
+
+def _tie_seams(
+    site: Site,
+    scanner: Scanner,
+    req: Requirements,
+    st: PlanSettings,
+    blocks: list[Block],
+    plans: list[Plan],
+    reach: float,
+    coverage: pd.DataFrame,
+    links: pd.DataFrame,
+    facades: list[pd.DataFrame],
+    removed: list[str],
+) -> tuple[pd.DataFrame, pd.DataFrame, list[str]]:
+    """The blocks' networks tied into one across their seams (:mod:`planner.pipeline.seams`):
+    every sample judged again with its block's frame error; the seams as links; what was
+    tied and what could not be, said."""
+    from planner.pipeline import seams
+
+    if len(blocks) < 2 or not st.computes_registration or "_lim_m_x" not in coverage:
+        return coverage, links, []
+    frames, targets = [], []
+    gone = set(removed)
+    for b, p in zip(blocks, plans, strict=True):
+        xyz, pose, tied = p.solver["frame"]
+        ids = [f"{b.key}-{s}" for s in p.stations["station_id"][: len(xyz)]]
+        keep = np.array([i not in gone for i in ids], dtype=bool)
+        frames.append(
+            seams.BlockFrame(
+                [i for i, k in zip(ids, keep, strict=True) if k],
+                np.asarray(xyz)[keep],
+                np.asarray(pose)[keep],
+                np.asarray(tied, dtype=bool)[keep],
+            )
+        )
+        t = p.targets.copy()
+        t["target_id"] = [f"{b.key}-{x}" for x in t["target_id"]]
+        targets.append(t)
+    ctx_of = seams.context_of(site, scanner, req, st, reach)
+    found = seams.seam_links(site, ctx_of, frames, targets)
+    extra, used = seams.tie_blocks(frames, found)
+    per_station, xyz = {}, {}
+    for f, e in zip(frames, extra, strict=True):
+        if e is not None:
+            per_station |= dict(zip(f.ids, e, strict=True))
+        xyz |= dict(zip(f.ids, f.xyz, strict=True))
+    limits = coverage[[f"_lim_m_{c}" for c in "xyz"]].to_numpy(dtype=float)
+    facade_df = pd.concat(facades, ignore_index=True)
+    coverage = seams.add_frame_errors(coverage, facade_df, per_station, xyz, limits)
+    notes = []
+    lost = [b.key for b, e, f in zip(blocks, extra, frames, strict=True) if e is None and f.ids]
+    for b, e, f in zip(blocks, extra, frames, strict=True):
+        if e is None and f.ids:
+            coverage = seams.untied_blocks(coverage, set(f.ids), b.key)
+    rows = [
+        {
+            "station_a": frames[s.block_a].ids[s.a],
+            "station_b": frames[s.block_b].ids[s.b],
+            "common_targets": len(s.target_ids),
+            "targets_placed": len(s.target_ids),
+            "target_ids": ";".join(s.target_ids),
+            "link_rms_mm": s.rms_mm,
+            "dilution": np.nan,
+            "station_b_rms_mm": np.nan,
+        }
+        for s in used
+    ]
+    if rows:
+        links = pd.concat([links, pd.DataFrame(rows, columns=links.columns)], ignore_index=True)
+    tied = len(blocks) - len(lost)
+    worst = max((s.rms_mm for s in used), default=0.0)
+    notes.append(
+        f"District network: {tied} of {len(blocks)} blocks tied into one frame across "
+        f"{len(used)} seam(s) (common targets of neighbouring blocks' stations; worst seam "
+        f"{worst:.1f} mm), every sample judged with its block's frame error"
+        + (
+            f"; {', '.join(lost)} could not be tied (no station shares three targets with a "
+            "neighbouring block's): their samples are not in the common frame"
+            if lost
+            else ""
+        )
+        + "."
+    )
+    return coverage, links, notes
 
 
 def _cut_short(blocks: list[Block], plans: list[Plan]) -> list[str]:
