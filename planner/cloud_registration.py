@@ -1,0 +1,274 @@
+r"""Cloud-to-cloud registration: the error of registering two scans by their common surfaces.
+
+Most crews register scans cloud to cloud (Leica Cyclone REGISTER 360, FARO SCENE, Trimble
+RealWorks, Autodesk ReCap) rather than by targets. Voroshilov & Karachentsev count "the
+overlap zones of neighbouring scans" among what a station choice must weigh, without a
+model of it; this module is the planner's model, beyond the paper, checked by a Monte
+Carlo of simulated scans registered by an independent point-to-plane ICP in
+``tests/test_cloud_registration.py``.
+
+**Patches.** The surfaces two stations both see are cut into small patches (a facade
+sample's cell, a ground cell), each a plane through ``p`` with unit normal ``n``. Station j
+puts ``n_j`` points on it (:func:`patch_points`), each with RMS ``σ_j`` along the normal
+(the accuracy model's error across the surface), so the patch's position along its normal
+in scan j is known to
+
+.. math::
+
+    v_j = \sigma_j^2 / n_j + \sigma_\mathrm{floor}^2 ,
+
+the floor being what a plane fit does not see (roughness, edges, the range's calibration
+at that incidence): 1 mm unless given (:func:`patch_variance_mm2`).
+
+**Point-to-plane normal equations.** Registering scan j to scan i moves j's points by
+``δs + δω × r`` (r = p − s_j); a patch's point-to-plane residual changes by
+``a·(δs, δω)`` with ``a = (n, r × n)`` (:func:`plane_rows`). Near convergence the
+point-to-plane estimate (Chen & Medioni 1992; Rusinkiewicz & Levoy, "Efficient variants of
+the ICP algorithm", 3DIM 2001, https://doi.org/10.1109/IM.2001.924423) has the
+information matrix
+
+.. math::
+
+    J = \sum_k \frac{a_k a_k^\top}{v_{i,k} + v_{j,k}}
+
+and covariance ``J⁻¹`` — the closed form of Censi, "An accurate closed-form estimate of
+ICP's covariance", ICRA 2007 (https://doi.org/10.1109/ROBOT.2007.363961) for
+point-to-plane residuals with independent noise (:func:`link_information`,
+:func:`link_covariance`). Its eigenvectors are the directions the surfaces fix; a
+direction no surface constrains (along a straight street with one facade and the ground)
+has an eigenvalue near zero (Gelfand, Ikemoto, Rusinkiewicz & Levoy, "Geometrically stable
+sampling for the ICP algorithm", 3DIM 2003, https://doi.org/10.1109/IM.2003.1240258):
+:func:`link_strength`.
+
+A levelled scanner (a compensator) estimates 4 parameters, the shift and the rotation about
+the vertical; the two stations' residual tilts ζ (σ_τ per axis each) are not estimated,
+so the relative tilt ``Δζ`` is an error of the link and biases the 4 estimated parameters
+by ``−J₄₄⁻¹ J₄τ Δζ`` (the same treatment as the target registrations of
+:mod:`planner.registration_error`).
+
+**Overlap.** Registration software reports a link's overlap as the share of a scan's points
+that lie on surfaces the other scan also holds; :func:`overlap_pct` takes the smaller of
+the two shares (points counted on the modelled surfaces: the planned facades and the
+ground near the stations).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from planner.units import RHO_ARCSEC
+
+__all__ = [
+    "DEFAULT_CLOUD_FLOOR_MM",
+    "DEFAULT_MIN_OVERLAP_PCT",
+    "link_covariance",
+    "link_information",
+    "link_strength",
+    "overlap_pct",
+    "patch_points",
+    "patch_variance_mm2",
+    "plane_rows",
+    "weakest_direction",
+]
+
+#: What a patch's plane fit does not see (roughness, edges, calibration) [mm].
+DEFAULT_CLOUD_FLOOR_MM = 1.0
+#: The overlap registration software asks of a cloud-to-cloud link [%] (Autodesk ReCap's
+#: registration report: balance above 20 %).
+DEFAULT_MIN_OVERLAP_PCT = 20.0
+#: Lever at which a rotation's error is compared with a shift's [m] (weakest direction).
+LEVER_M = 10.0
+
+
+def plane_rows(point_xyz: np.ndarray, normal_xyz: np.ndarray, centre_xyz: np.ndarray) -> np.ndarray:
+    """Rows ``a = (n, r × n)`` (P, 6) of patches through ``point_xyz`` (P, 3) [m] with unit
+    normals ``normal_xyz`` (P, 3), for a scan centred at ``centre_xyz`` (3,) [m]: the
+    point-to-plane residual's change with the scan's shift [mm] and rotation [rad]
+    (r in mm).
+
+    Examples
+    --------
+    A wall facing the scanner 10 m north, its normal pointing back south:
+
+    >>> a = plane_rows(np.array([[0.0, 10.0, 1.5]]), np.array([[0.0, -1.0, 0.0]]), np.zeros(3))
+    >>> [round(float(v), 1) + 0.0 for v in a[0]]  # a shift north, a tilt about x (1.5 m)
+    [0.0, -1.0, 0.0, 1500.0, 0.0, 0.0]
+    """
+    n = np.asarray(normal_xyz, dtype=float)
+    r = (np.asarray(point_xyz, dtype=float) - np.asarray(centre_xyz, dtype=float)) * 1000.0
+    return np.concatenate([n, np.cross(r, n)], axis=-1)
+
+
+def patch_points(
+    area_m2: np.ndarray, cos_incidence: np.ndarray, spacing_mm: np.ndarray
+) -> np.ndarray:
+    """Scan points on a patch of ``area_m2`` seen at incidence θ with point spacing
+    ``spacing_mm`` square to the beam: ``A·cos θ / d²``, at least 1.
+
+    Examples
+    --------
+    >>> float(patch_points(4.0, 1.0, 10.0))  # 2 m × 2 m at 10 mm spacing
+    40000.0
+    """
+    a = np.asarray(area_m2, dtype=float) * 1e6
+    cos = np.clip(np.asarray(cos_incidence, dtype=float), 0.0, 1.0)
+    return np.maximum(a * cos / np.square(np.asarray(spacing_mm, dtype=float)), 1.0)
+
+
+def patch_variance_mm2(
+    normal_rms_mm: np.ndarray, n_points: np.ndarray, floor_mm: float = DEFAULT_CLOUD_FLOOR_MM
+) -> np.ndarray:
+    """Variance [mm²] of a patch's position along its normal in one scan: ``σ²/n + floor²``.
+
+    Examples
+    --------
+    >>> float(patch_variance_mm2(3.0, 9.0, 1.0))
+    2.0
+    """
+    sigma = np.asarray(normal_rms_mm, dtype=float)
+    return np.square(sigma) / np.asarray(n_points, dtype=float) + floor_mm**2
+
+
+def link_information(
+    rows: np.ndarray, var_parent_mm2: np.ndarray, var_child_mm2: np.ndarray
+) -> np.ndarray:
+    """The point-to-plane information matrix J (6, 6) of a link over its common patches:
+    ``Σ a aᵀ / (v_i + v_j)`` (module docstring); rows from :func:`plane_rows` at the child.
+
+    Examples
+    --------
+    One wall (normal y) and the ground: the shift along the wall (x) is not fixed.
+
+    >>> pts = np.array([[-5.0, 10, 1], [5, 10, 1], [0, 10, 4], [-3, 3, 0], [3, 3, 0], [0, 6, 0]])
+    >>> nrm = np.array([[0, -1.0, 0]] * 3 + [[0, 0, 1.0]] * 3)
+    >>> j = link_information(plane_rows(pts, nrm, np.array([0, 0, 1.5])), 1.0, 1.0)
+    >>> float(j[0, 0])  # nothing constrains x
+    0.0
+    """
+    a = np.asarray(rows, dtype=float)
+    w = 1.0 / (np.broadcast_to(var_parent_mm2, len(a)) + np.broadcast_to(var_child_mm2, len(a)))
+    return (a * w[:, None]).T @ a
+
+
+#: Estimated pose parameters: all six, or (levelled) the shift and the rotation about z.
+_LEVELLED = [0, 1, 2, 5]
+_TILT = [3, 4]
+
+
+def link_covariance(
+    info: np.ndarray, *, levelled: bool = False, tilt_rms_arcsec: float = 0.0
+) -> np.ndarray:
+    """The child's pose covariance relative to the parent (6, 6; shift in mm, rotation in
+    rad) from the link's information matrix; inf on the diagonal where the surfaces leave
+    a parameter free. Levelled: the 4 parameters estimated, the relative tilt of the two
+    stations (σ_τ each, per axis) an error of the link (module docstring).
+
+    Examples
+    --------
+    >>> c = link_covariance(np.diag([1.0, 1, 1, 1e6, 1e6, 1e6]))
+    >>> round(float(np.sqrt(c[0, 0])), 3)
+    1.0
+    """
+    info = np.asarray(info, dtype=float)
+    par = _LEVELLED if levelled else list(range(6))
+    sub = info[np.ix_(par, par)]
+    cov = np.zeros((6, 6))
+    if not np.isfinite(_condition(sub)):
+        cov[par, par] = np.inf
+        return cov
+    inv = np.linalg.pinv(sub, hermitian=True)
+    cov[np.ix_(par, par)] = inv
+    if levelled:
+        tau2 = 2.0 * (tilt_rms_arcsec / RHO_ARCSEC) ** 2  # two stations' tilts
+        m = -inv @ info[np.ix_(par, _TILT)]  # the estimate's response to Δζ
+        cov[np.ix_(par, par)] += tau2 * m @ m.T
+        cov[np.ix_(par, _TILT)] = tau2 * m
+        cov[np.ix_(_TILT, par)] = tau2 * m.T
+        cov[np.ix_(_TILT, _TILT)] = tau2 * np.eye(2)
+    return cov
+
+
+#: A scaled information matrix this ill-conditioned leaves a direction free.
+MAX_LINK_CONDITION = 1e8
+
+
+def _condition(info: np.ndarray) -> float:
+    diag = np.diag(info)
+    if (diag <= 0).any() or not np.isfinite(info).all():
+        return np.inf
+    d = 1.0 / np.sqrt(diag)
+    w = np.abs(np.linalg.eigvalsh(info * d[:, None] * d[None, :]))
+    return float(w.max() / w.min()) if w.min() > 0 else np.inf
+
+
+def link_strength(info: np.ndarray, *, levelled: bool = False) -> tuple[float, float]:
+    """The condition number of the estimated parameters' information (diagonal scaled to
+    one, so that mm and rad compare; inf when a parameter is free) and its smallest
+    eigenvalue [1/mm², a rotation taken at :data:`LEVER_M`].
+
+    Examples
+    --------
+    >>> link_strength(np.diag([1.0, 1, 1, 1e8, 1e8, 0]))[0]
+    inf
+    """
+    info = np.asarray(info, dtype=float)
+    par = _LEVELLED if levelled else list(range(6))
+    sub = info[np.ix_(par, par)]
+    scale = np.array([1.0 if p < 3 else 1.0 / (LEVER_M * 1000.0) for p in par])
+    smallest = float(np.linalg.eigvalsh(sub * scale[:, None] * scale[None, :]).min())
+    return _condition(sub), max(smallest, 0.0)
+
+
+def weakest_direction(cov: np.ndarray) -> str:
+    """The direction a link's error is largest in, in words: a shift (bearing from grid
+    north, or up/down) or a rotation (about the vertical, or a tilt), comparing a rotation
+    at :data:`LEVER_M`.
+
+    Examples
+    --------
+    >>> weakest_direction(np.diag([1.0, 9.0, 1.0, 0, 0, 0]))
+    'shift 000°/180° (north-south), 3.0 mm'
+    >>> weakest_direction(np.diag([np.inf, 1.0, 1.0, 0, 0, 0]))
+    'free: shift 090°/270° (east-west)'
+    """
+    cov = np.asarray(cov, dtype=float)
+    diag = np.diag(cov)
+    if not np.isfinite(diag).all():
+        free = int(np.flatnonzero(~np.isfinite(diag))[0])
+        return "free: " + _name(free, np.eye(3)[free] if free < 3 else None)
+    shift = cov[:3, :3]
+    w, v = np.linalg.eigh(shift)
+    rot = np.sqrt(np.maximum(diag[3:], 0.0)) * LEVER_M * 1000.0  # mm at the lever
+    if rot.max() > np.sqrt(max(w[-1], 0.0)):
+        k = 3 + int(np.argmax(rot))
+        return f"{_name(k, None)}, {rot.max():.1f} mm at {LEVER_M:g} m"
+    return f"{_name(0, v[:, -1])}, {np.sqrt(w[-1]):.1f} mm"
+
+
+def _name(k: int, vec: np.ndarray | None) -> str:
+    if k >= 3:
+        return "rotation about the vertical" if k == 5 else "tilt"
+    if abs(vec[2]) > np.hypot(vec[0], vec[1]):
+        return "shift up-down"
+    bearing = float(np.degrees(np.arctan2(vec[0], vec[1]))) % 180.0
+    names = ["north-south", "northeast-southwest", "east-west", "southeast-northwest"]
+    name = names[int(((bearing + 22.5) % 180) // 45)]
+    return f"shift {bearing:03.0f}°/{bearing + 180:03.0f}° ({name})"
+
+
+def overlap_pct(
+    common_parent: float, total_parent: float, common_child: float, total_child: float
+) -> float:
+    """A link's overlap [%]: the smaller share of either scan's points on surfaces both
+    hold (module docstring).
+
+    Examples
+    --------
+    >>> overlap_pct(300, 1000, 300, 600)
+    30.0
+    """
+    shares = [
+        c / t if t > 0 else 0.0
+        for c, t in ((common_parent, total_parent), (common_child, total_child))
+    ]
+    return 100.0 * min(shares)
