@@ -46,9 +46,10 @@ so the relative tilt ``Δζ`` is an error of the link and biases the 4 estimated
 by ``−J₄₄⁻¹ J₄τ Δζ`` (the same treatment as the target registrations of
 :mod:`planner.registration_error`).
 
-**Overlap.** Registration software reports a link's overlap as the share of a scan's points
-that lie on surfaces the other scan also holds; :func:`overlap_pct` takes the smaller of
-the two shares (points counted on the modelled surfaces: the planned facades and the
+**Overlap.** Registration software reports a link's overlap as the share of a scan that
+lies on surfaces the other scan also holds, counted on clouds thinned to an even spacing —
+by surface area, not by raw points (which crowd near the scanner); :func:`overlap_pct`
+takes the smaller of the two shares (on the modelled surfaces: the planned facades and the
 ground near the stations).
 """
 
@@ -259,8 +260,8 @@ def _name(k: int, vec: np.ndarray | None) -> str:
 def overlap_pct(
     common_parent: float, total_parent: float, common_child: float, total_child: float
 ) -> float:
-    """A link's overlap [%]: the smaller share of either scan's points on surfaces both
-    hold (module docstring).
+    """A link's overlap [%]: the smaller share of either scan's surface (area, or points on
+    an even spacing) that both hold (module docstring).
 
     Examples
     --------

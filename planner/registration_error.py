@@ -136,14 +136,21 @@ def target_centre_rms_mm(
     return np.sqrt(floor_mm**2 + FIT_PARAMETERS[target_type] * point_var / n)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Link:
     """A registration of ``child`` to ``parent`` (a station index, or :data:`CONTROL`) over
-    the common targets ``targets``."""
+    the common targets ``targets`` — or, cloud to cloud, over the surfaces both scans see:
+    ``info`` is then the link's point-to-plane information matrix at the child's centre
+    (6 × 6, :func:`planner.cloud_registration.link_information`)."""
 
     parent: int
     child: int
     targets: tuple[int, ...]
+    info: np.ndarray | None = None
+
+    @property
+    def kind(self) -> str:
+        return "targets" if self.info is None else "cloud"
 
 
 @dataclass
@@ -212,16 +219,24 @@ def propagate(
     if levelled:
         for st in range(k):
             source(("tilt", st), tau, 2)
+    params = 4 if levelled else 6
+    for link in links:
+        if link.info is not None:
+            source(("cloud", link.parent, link.child), 1.0, params)
     m = len(sigma)
     pose = {} if datum is None else {datum: np.zeros((6, m))}
     if levelled and datum is not None:  # the datum's own tilt still moves its points
         pose[datum][3:5, index[("tilt", datum)] : index[("tilt", datum)] + 2] = np.eye(2)
     link_only: dict[tuple[int, int], np.ndarray] = {}
-    params = 4 if levelled else 6
     for link in links:
         if link.parent != CONTROL and link.parent not in pose:
             raise InputError(f"link {link}: station {link.parent} is not tied yet; order links")
         j = link.child
+        if link.info is not None:
+            pose[j], link_only[(link.parent, j)] = _cloud_pose(
+                link, pose[link.parent], station_xyz, index, m, levelled
+            )
+            continue
         sj = station_xyz[j]
         n_mat = np.zeros((params, params))
         rhs = np.zeros((params, m))
@@ -285,10 +300,18 @@ def adjust(
     control_rms_mm: dict[int, float] | None = None,
     levelled: bool = False,
     tilt_rms_arcsec: float = 0.0,
+    planes: tuple[np.ndarray, np.ndarray, dict[tuple[int, int], float]] | None = None,
 ) -> np.ndarray:
     """Pose covariance (K, 6, 6) of every station after one simultaneous least-squares
     adjustment of all the target observations: what registration software does with every
     target each scan sees, rather than registering pair after pair.
+
+    ``planes`` adds the cloud-to-cloud observations: surface patches (centres (P, 3) [m],
+    unit normals (P, 3)) and, per (station, patch), the variance [mm²] of the patch's
+    position along its normal in that scan (:mod:`planner.cloud_registration`). Each patch
+    seen by two or more of the stations is an unknown offset along its normal observed by
+    every scan that sees it — a one-dimensional target — and is eliminated (the Schur
+    complement) before the poses are solved.
 
     Unknowns: the pose error q_j of each station in ``tied`` (6 parameters; 4 — shift and the
     rotation about the vertical — for a levelled scanner) and the error x_t of every target
@@ -340,6 +363,8 @@ def adjust(
     for t, rms in control_rms_mm.items():
         tc = t_col[t]
         n_mat[tc : tc + 3, tc : tc + 3] += np.eye(3) / rms**2
+    if planes is not None and n_unk:
+        _eliminate_planes(n_mat, tilt_rhs, planes, station_xyz, tied, s_col, par, levelled)
     pose_cov = np.zeros((k, 6, 6))
     if not n_unk:
         return pose_cov
@@ -365,6 +390,55 @@ def adjust(
             c[3:5, 3:5] += tau2 * np.eye(2)
         pose_cov[j] = c
     return pose_cov
+
+
+def _eliminate_planes(n_mat, tilt_rhs, planes, station_xyz, tied, s_col, par, levelled) -> None:
+    """Add the patches' observations to the poses' normal equations (and, levelled, to the
+    tilts' right-hand side), their offsets eliminated: :func:`adjust`. In place."""
+    from scipy import sparse
+
+    xyz, normal, var = planes
+    obs = [(j, p, v) for (j, p), v in var.items() if tied[j] and np.isfinite(v)]
+    if not obs:
+        return
+    jj, pp, vv = (np.array(c) for c in zip(*obs, strict=True))
+    jj, pp = jj.astype(int), pp.astype(int)
+    keep = np.bincount(pp, minlength=len(xyz))[pp] >= 2  # a patch one scan sees ties nothing
+    jj, pp, w = jj[keep], pp[keep], 1.0 / vv[keep]
+    if not len(jj):
+        return
+    lever = (xyz[pp] - station_xyz[jj]) * 1000.0
+    a = np.concatenate([normal[pp], np.cross(lever, normal[pp])], axis=1)  # (O, 6)
+    a_par = a[:, par]
+    n_par = len(par)
+    npp = np.bincount(pp, weights=w, minlength=len(xyz))
+    d_inv = sparse.diags(np.where(npp > 0, 1.0 / np.where(npp > 0, npp, 1.0), 0.0))
+    est = np.array([j in s_col for j in jj])
+    cols = np.array([s_col.get(j, 0) for j in jj])
+    rows_b = (cols[est, None] + np.arange(n_par)).ravel()
+    b = sparse.csr_matrix(
+        ((-w[est, None] * a_par[est]).ravel(), (rows_b, np.repeat(pp[est], n_par))),
+        shape=(n_mat.shape[0], len(xyz)),
+    )
+    for j in np.unique(jj[est]):  # the poses' own terms
+        sel = jj == j
+        sc = s_col[int(j)]
+        n_mat[sc : sc + n_par, sc : sc + n_par] += (a_par[sel] * w[sel, None]).T @ a_par[sel]
+    n_mat -= (b @ d_inv @ b.T).toarray()
+    if levelled:
+        k = tilt_rhs.shape[1] // 2
+        a_tilt = a[:, 3:5]
+        t_p = sparse.csr_matrix(
+            ((w[:, None] * a_tilt).ravel(), (np.repeat(pp, 2), (2 * jj[:, None] + [0, 1]).ravel())),
+            shape=(len(xyz), 2 * k),
+        )
+        tilt_rhs -= np.asarray((b @ d_inv @ t_p).todense())
+        for j in np.unique(jj[est]):
+            sel = jj == j
+            sc = s_col[int(j)]
+            tilt_rhs[sc : sc + n_par, 2 * j : 2 * j + 2] -= (a_par[sel] * w[sel, None]).T @ a_tilt[
+                sel
+            ]
 
 
 #: A normal matrix this ill-conditioned (its diagonal scaled to one, so that shifts in mm and
@@ -413,6 +487,42 @@ def transport_pose_cov(
     jac[..., :, :] = np.eye(6)
     jac[..., :3, 3:] = -_skew(delta)
     return jac @ pose_cov @ np.swapaxes(jac, -1, -2)
+
+
+def _cloud_pose(
+    link: Link, parent: np.ndarray, station_xyz: np.ndarray, index: dict, m: int, levelled: bool
+) -> tuple[np.ndarray, np.ndarray]:
+    """A cloud link's child pose as a combination of the noise sources, and the link's own
+    part: the parent's pose carried to the child, plus the link's error (its covariance the
+    inverse of its information, one source per parameter); levelled, plus the estimate's
+    response to the relative tilt (ζ_j minus the parent's tilt), the tilt itself ζ_j
+    (:func:`planner.cloud_registration.link_covariance`)."""
+    i, j = link.parent, link.child
+    par = [0, 1, 2, 5] if levelled else list(range(6))
+    sub = link.info[np.ix_(par, par)]
+    inv = np.linalg.inv(sub)
+    chol = np.linalg.cholesky(0.5 * (inv + inv.T))
+    jac = np.eye(6)
+    jac[:3, 3:] = -_skew((station_xyz[j] - station_xyz[i]) * 1000.0)
+    moved = jac @ parent
+    c = index[("cloud", i, j)]
+    noise = np.zeros((6, m))
+    noise[np.ix_(par, range(c, c + len(par)))] = chol
+    if not levelled:
+        return moved + noise, noise
+    tilt_j = np.zeros((2, m))
+    tj = index[("tilt", j)]
+    tilt_j[:, tj : tj + 2] = np.eye(2)
+    tilt_i = np.zeros((2, m))
+    ti = index[("tilt", i)]
+    tilt_i[:, ti : ti + 2] = np.eye(2)
+    resp = -inv @ link.info[np.ix_(par, [3, 4])]
+    out, own = moved.copy(), np.zeros((6, m))
+    out[par] += noise[par] + resp @ (tilt_j - moved[3:5])
+    out[3:5] = tilt_j
+    own[par] = noise[par] + resp @ (tilt_j - tilt_i)
+    own[3:5] = tilt_j - tilt_i
+    return out, own
 
 
 def _expand(theta: np.ndarray, levelled: bool, index: dict, j: int, m: int) -> np.ndarray:

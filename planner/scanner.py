@@ -77,6 +77,10 @@ class Scanner:
         Full-angle beam divergence [mrad] (the beam's growth with distance).
     beam_exit_mm : float or None
         Beam diameter at the exit window [mm].
+    registration : "targets", "cloud", "hybrid" or None
+        How scans of this scanner are usually registered (e.g. cloud to cloud for a
+        scanner whose software registers by its own tracking and the clouds); None:
+        targets.
     label, source, notes : str
         Display name; where the figures come from; which values are assumptions.
     """
@@ -94,6 +98,7 @@ class Scanner:
     levelling_rms_arcsec: float | None = None
     beam_divergence_mrad: float | None = None
     beam_exit_mm: float | None = None
+    registration: str | None = None
     label: str = ""
     source: str = "user-defined"
     notes: str = ""
@@ -144,6 +149,10 @@ class Scanner:
                 f"got ({lo:g}, {hi:g})"
             )
         self._set("vertical_fov_deg", (lo, hi))
+        if self.registration not in (None, "targets", "cloud", "hybrid"):
+            raise InputError(
+                f"{who}: registration must be targets, cloud or hybrid; got {self.registration!r}"
+            )
         if not self.label:
             self._set("label", self.name)
 

@@ -218,3 +218,29 @@ def _corner_rows():
 def test_overlap_is_the_smaller_share():
     assert overlap_pct(50, 100, 50, 400) == pytest.approx(12.5, abs=1e-9)  # %
     assert overlap_pct(0, 0, 10, 10) == pytest.approx(0.0, abs=1e-9)  # %
+
+
+@pytest.mark.parametrize("levelled", [False, True])
+def test_one_link_adjusted_with_its_patches_is_the_link(levelled):
+    """The network's simultaneous adjustment of the patches two scans see equals the
+    pairwise link (the child's pose covariance, the datum its parent), levelled or not."""
+    from planner.registration_error import Link, adjust, propagate
+
+    c, n, _, _ = _patches()
+    tau = 3.0 if levelled else 0.0
+    vp = patch_variance_mm2(_normal_rms(c, n, PARENT), GRID * GRID, FLOOR_MM)
+    vc = patch_variance_mm2(_normal_rms(c, n, CHILD), GRID * GRID, FLOOR_MM)
+    info = link_information(plane_rows(c, n, CHILD), vp, vc)
+    xyz = np.array([PARENT, CHILD])
+    kw = {"levelled": levelled, "tilt_rms_arcsec": tau}
+    chain = propagate(xyz, np.empty((0, 3)), {}, [Link(0, 1, (), info)], datum=0, **kw)
+    var = {(0, p): vp[p] for p in range(len(c))} | {(1, p): vc[p] for p in range(len(c))}
+    adjusted = adjust(xyz, np.empty((0, 3)), {}, chain.tied, datum=0, planes=(c, n, var), **kw)
+    sd_adj, sd_chain = np.sqrt(np.diag(adjusted[1])), np.sqrt(np.diag(chain.pose_cov[1]))
+    assert sd_adj == pytest.approx(sd_chain, rel=1e-6)
+    sd_link = np.sqrt(np.diag(link_covariance(info, levelled=levelled, tilt_rms_arcsec=tau)))
+    if not levelled:  # the datum is the parent: the child's pose is the link's
+        assert sd_chain == pytest.approx(sd_link, rel=1e-6)
+    else:  # its tilt is its own (τ), the link's the two stations' (τ√2)
+        assert sd_chain[3:5] == pytest.approx(sd_link[3:5] / np.sqrt(2), rel=1e-6)
+        assert sd_chain[5] == pytest.approx(sd_link[5], rel=1e-6)

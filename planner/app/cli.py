@@ -508,6 +508,7 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
     from planner.pipeline.requirements import (
         METHODS,
         MODELS,
+        REGISTRATION_MODES,
         PlanSettings,
         Requirements,
         field_specs,
@@ -599,6 +600,14 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         default=None,
         help="accuracy model: 3d, the full 3-D propagation (default), or paper, eq. 2 and 4 "
         "of Voroshilov & Karachentsev",
+    )
+    pl.add_argument(
+        "--registration",
+        choices=REGISTRATION_MODES,
+        default=None,
+        help="how the scans are registered: targets, cloud (cloud to cloud on the surfaces "
+        "the scans share), hybrid (cloud links, targets where a link is weak), or auto: the "
+        "scanner profile's usual workflow, else targets (default)",
     )
     pl.add_argument(
         "--no-incidence-noise",

@@ -302,7 +302,7 @@ def _merge(net: Network, sub: Network, tie: ControlTie, seen: SightCache) -> Non
         return s if s == CONTROL else pos[s]
 
     for lk in sub.links:
-        net.links.append(Link(at(lk.parent), at(lk.child), lk.targets))
+        net.links.append(Link(at(lk.parent), at(lk.child), lk.targets, lk.info))
         key = (lk.parent, lk.child)
         new = (at(lk.parent), at(lk.child))
         net.link_error_mm[new] = sub.link_error_mm.get(key, np.nan)

@@ -1259,12 +1259,25 @@ def _targets_and_links(
                 "station_b_rms_mm": float(worst_at.loc[ids[lk.child]].max())
                 if ids[lk.child] in worst_at.index
                 else np.nan,
+                **_link_kind(net, lk),
             }
             for lk in net.links
         ],
         columns=LINK_COLUMNS,
     )
     return targets, links
+
+
+def _link_kind(net: Network, lk: Link) -> dict:
+    """How a link registers (targets or cloud), the overlap of its two scans [%] (where the
+    surfaces were modelled) and the direction its own error is largest in."""
+    ov = net.overlap
+    overlap = float(ov[lk.parent, lk.child]) if ov is not None and lk.parent != CONTROL else np.nan
+    return {
+        "kind": lk.kind,
+        "overlap_pct": overlap,
+        "weakest_direction": net.weakest.get((lk.parent, lk.child), ""),
+    }
 
 
 def _common_count(net: Network, tc: TargetCandidates, lk: Link) -> int:
@@ -1297,10 +1310,15 @@ def _registration_messages(
     ]
     if len(links):
         weak = links.loc[links["link_rms_mm"].idxmax()]
+        how = (
+            f"cloud to cloud, {weak['overlap_pct']:.0f} % overlap"
+            if weak["kind"] == "cloud"
+            else f"{weak['targets_placed']} targets of {weak['common_targets']} in common"
+        )
+        dilution = f", dilution {weak['dilution']:.1f}" if weak["kind"] != "cloud" else ""
         out.append(
-            f"Weakest link: {weak['station_a']} → {weak['station_b']}, "
-            f"{weak['targets_placed']} targets of {weak['common_targets']} in common, "
-            f"{weak['link_rms_mm']:.1f} mm on its own (dilution {weak['dilution']:.1f})."
+            f"Weakest link: {weak['station_a']} → {weak['station_b']}, {how}, "
+            f"{weak['link_rms_mm']:.1f} mm on its own ({weak['weakest_direction']}{dilution})."
         )
     return out
 

@@ -35,6 +35,9 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.spatial import cKDTree
 
+from planner.cloud_registration import weakest_direction
+from planner.pipeline import clouds
+from planner.pipeline.clouds import CloudLink
 from planner.pipeline.evaluate import Context, Registration
 from planner.pipeline.facades import (
     OPENING_PROBE_M,
@@ -506,6 +509,14 @@ class Network:
     cut_short: bool = False
     #: groups tied by planned control (:mod:`planner.pipeline.control`)
     ties: list = field(default_factory=list)
+    #: how the scans are registered: targets, cloud or hybrid
+    mode: str = "targets"
+    #: the cloud links used, by (parent, child)
+    clouds: dict = field(default_factory=dict)
+    #: each link's weakest direction, in words, at its child's facade points
+    weakest: dict = field(default_factory=dict)
+    #: (K, K) overlap of the stations' scans [%] (None: targets only)
+    overlap: np.ndarray | None = None
 
     @property
     def tied(self) -> np.ndarray:
@@ -742,12 +753,28 @@ class _Layout:
         self.sight = seen(stations)
         k = self.k = len(stations)
         self.station_xyz = np.column_stack([cand_xy[stations], np.full(k, st.instrument_height_m)])
-        self.pairs = [
-            (a, b)
-            for a in range(k)
-            for b in range(a + 1, k)
-            if _strong(self.sight, tc, a, b, tc.xyz)
-        ]
+        self.mode = st.registration_for(ctx.scanner)
+        self.clouds: dict[tuple[int, int], CloudLink] = {}
+        self.surf = self.overlap = None
+        pairs = set()
+        if self.mode != "cloud":
+            pairs |= {
+                (a, b)
+                for a in range(k)
+                for b in range(a + 1, k)
+                if _strong(self.sight, tc, a, b, tc.xyz)
+            }
+        if self.mode != "targets" and k > 1:
+            self.surf = clouds.surfaces(ctx, cand_xy[stations])
+            self.overlap = clouds.overlap_matrix(self.surf)
+            pairs |= {
+                (a, b)
+                for a, b in zip(
+                    *np.nonzero(np.triu(self.overlap >= st.min_overlap_pct, 1)), strict=True
+                )
+                if self.cloud(int(a), int(b)) is not None
+            }
+        self.pairs = sorted((int(a), int(b)) for a, b in pairs)
         # by candidate index (CONTROL for the control network), shared by the layouts of a
         # plan: a link depends on its two stations and the child's facade points only
         self._memo = seen.memo_for(goal_mm)
@@ -789,9 +816,42 @@ class _Layout:
             pts = self.tc.xyz[seen]
         return pts
 
+    def cloud(self, i: int, j: int) -> CloudLink | None:
+        """The cloud-to-cloud registration of j to i, if their scans overlap enough and their
+        common surfaces fix it (None otherwise)."""
+        if self.surf is None or i == CONTROL:
+            return None
+        if (i, j) not in self.clouds:
+            self.clouds[(i, j)] = clouds.cloud_link(self.ctx, self.surf, i, j)
+        cl = self.clouds[(i, j)]
+        ok = cl.fixed and cl.overlap_pct >= self.ctx.settings.min_overlap_pct
+        return cl if ok else None
+
     def link(self, i: int, j: int, placed: set[int] | None = None) -> tuple[list[int], float]:
         """Targets and error of registering j to i (i may be CONTROL); cached unless
-        ``placed`` (targets already set up, preferred) is given."""
+        ``placed`` (targets already set up, preferred) is given. Cloud to cloud (no
+        targets): the cloud link; hybrid: the cloud link unless it is weaker than the goal
+        and the targets do better."""
+        cl = self.cloud(i, j)
+        if cl is not None or self.mode == "cloud":
+            err = self._cloud_error(cl, j) if cl is not None else np.inf
+            if self.mode == "cloud" or err <= self.goal_mm:
+                return [], err
+            by_targets = self._target_link(i, j, placed)
+            return by_targets if by_targets[1] < err else ([], err)
+        return self._target_link(i, j, placed)
+
+    def _cloud_error(self, cl: CloudLink, j: int) -> float:
+        """A cloud link's own error at the child's facade points [mm] (the largest RMS)."""
+        if not np.isfinite(np.diag(cl.cov)).all():
+            return np.inf
+        pts = _probes(self.probe(j), self.station_xyz[j])
+        g = _a_matrix((pts - self.station_xyz[j]) * 1000.0, levelled=False)
+        return float(np.sqrt(np.einsum("nij,jk,nik->ni", g, cl.cov, g).max()))
+
+    def _target_link(
+        self, i: int, j: int, placed: set[int] | None = None
+    ) -> tuple[list[int], float]:
         key = (i, j)
         if placed is None and key in self._links:
             return self._links[key]
@@ -883,6 +943,11 @@ def build_network(
     link_error: dict[tuple[int, int], float] = {}
     for parent, child in lay.tree:
         targets, err = lay.link(parent, child, placed)
+        cl = lay.cloud(parent, child)
+        if not targets and cl is not None:  # cloud to cloud
+            links.append(Link(parent, child, (), cl.info))
+            link_error[(parent, child)] = err
+            continue
         if not targets:  # cannot happen for a tree edge; keep the cached choice
             targets, err = lay.link(parent, child)
         links.append(Link(parent, child, tuple(targets)))
@@ -931,10 +996,13 @@ def build_network(
             control_rms_mm={t: r for t, r in control_rms.items() if t in users},
             levelled=levelled,
             tilt_rms_arcsec=ctx.scanner.initial_tilt_rms_arcsec if levelled else 0.0,
+            planes=_planes(lay.surf),
         )
         # each link's own error with the final sizes, at the facade points of its child; and
         # the RMS of one target's centre difference in it (its dilution's denominator)
         for lk in links:
+            if lk.info is not None:
+                continue  # a cloud link's own error is known (Layout.link)
             pts = _probes(lay.probe(lk.child), station_xyz[lk.child])
             g = _a_matrix((pts - station_xyz[lk.child]) * 1000.0, levelled=False)
             var = np.einsum("nij,jk,nik->ni", g, error.link_cov[(lk.parent, lk.child)], g)
@@ -945,9 +1013,19 @@ def build_network(
                 for t in lk.targets
             ]
             link_sigma[(lk.parent, lk.child)] = float(np.sqrt(np.mean(s2)))
+    weakest = {}  # each link's weakest direction at the middle of its child's facade points
+    for lk in links:
+        key = (lk.parent, lk.child)
+        cov = lay.clouds[key].cov if lk.info is not None else None
+        if cov is None and error is not None and key in error.link_cov:
+            cov = error.link_cov[key]
+        if cov is not None and np.isfinite(np.diag(cov)).all():
+            mid = lay.probe(lk.child).mean(axis=0)
+            cov = transport_pose_cov(cov, station_xyz[lk.child], mid)
+        weakest[key] = weakest_direction(cov) if cov is not None else ""
     n_groups = int(_components(k, lay.pairs).max() + 1) if k else 0
     untied = int((~error.tied).sum()) if error is not None else k
-    message = _message(k, k - n_cover, datum, untied, n_groups, tc, links)
+    message = _message(k, k - n_cover, datum, untied, n_groups, tc, links, lay.mode)
     linkable = [(a, b, len(_linkable(sight, tc, a, b))) for a, b in lay.pairs]
     return Network(
         stations=np.array(stations, dtype=np.int64),
@@ -966,7 +1044,26 @@ def build_network(
         station_xyz=station_xyz,
         centre_rms=observed,
         cut_short=cut_short,
+        mode=lay.mode,
+        weakest=weakest,
+        clouds={
+            (lk.parent, lk.child): lay.clouds[(lk.parent, lk.child)]
+            for lk in links
+            if lk.info is not None
+        },
+        overlap=lay.overlap,
     )
+
+
+def _planes(surf: clouds.Surfaces | None) -> tuple | None:
+    """The patches as the adjustment takes them (:func:`planner.registration_error.adjust`)."""
+    if surf is None:
+        return None
+    p, j = np.nonzero(surf.seen)
+    var = dict(
+        zip(zip(j.tolist(), p.tolist(), strict=True), surf.var_mm2[p, j].tolist(), strict=True)
+    )
+    return surf.xyz, surf.normal, var
 
 
 def _tree(root: int, k: int, pairs: Sequence[tuple[int, int]], link) -> tuple[list, dict]:
@@ -1006,16 +1103,37 @@ def control_messages(net: Network) -> str:
     untied = int((~net.tied).sum())
     tied_by = sum(len(t.stations) for t in net.ties)
     head = _message(
-        k, net.n_link_stations, net.datum, untied, net.n_groups, net.candidates, net.links
+        k, net.n_link_stations, net.datum, untied, net.n_groups, net.candidates, net.links, net.mode
     )
     if tied_by and untied == 0:
-        head = f"the {k} stations form one registration network"
+        head = f"{MODE_WORDS[net.mode]} — the {k} stations form one registration network"
     if tied_by:
         head += f" ({tied_by} of them through planned control)"
     return head
 
 
-def _message(k, n_link, datum, untied, n_groups, tc, links) -> str:
+#: How each registration mode is said in the summary.
+MODE_WORDS = {
+    "targets": "by targets",
+    "cloud": "cloud to cloud",
+    "hybrid": "hybrid (cloud to cloud, targets where a link is weak)",
+}
+
+
+def _message(k, n_link, datum, untied, n_groups, tc, links, mode="targets") -> str:
+    return f"{MODE_WORDS[mode]}{_counts(links, mode)} — " + _network_words(
+        k, n_link, datum, untied, n_groups, tc, links, mode
+    )
+
+
+def _counts(links, mode) -> str:
+    if mode == "targets" or not links:
+        return ""
+    n_cloud = sum(lk.info is not None for lk in links)
+    return f": {n_cloud} cloud link(s), {len(links) - n_cloud} by targets"
+
+
+def _network_words(k, n_link, datum, untied, n_groups, tc, links, mode) -> str:
     if k <= 1 and not tc.is_control.any():
         return "one station: no registration needed"
     added = f" after adding {n_link} linking station{'s' if n_link != 1 else ''}" if n_link else ""
@@ -1026,8 +1144,17 @@ def _message(k, n_link, datum, untied, n_groups, tc, links) -> str:
         head = f"the {k} stations form one registration network"
     if untied == 0:
         return head + added
+    if mode == "cloud":
+        return (
+            f"{untied} of the {k} stations cannot be tied to the others cloud to cloud (in "
+            f"{n_groups} groups: the surfaces they share with the others overlap too little or "
+            "leave a direction free, as one straight wall and the ground leave the shift along "
+            "the wall); add targets where the clouds are weak (--registration hybrid), move "
+            "or add a station that sees a cross wall or a corner, or tie them by control"
+        )
+    by = "common targets or surfaces" if mode == "hybrid" else "common targets"
     return (
-        f"{untied} of the {k} stations cannot be tied to the others by common targets "
+        f"{untied} of the {k} stations cannot be tied to the others by {by} "
         f"(even{added or ' without linking stations'}, in {n_groups} groups); tie them by a "
         "traverse, by control points coordinated with a total station (--control), or add "
         "a station by hand"

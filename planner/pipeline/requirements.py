@@ -18,13 +18,17 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 
 from planner.accuracy import station_rms_pair
+from planner.cloud_registration import DEFAULT_CLOUD_FLOOR_MM, DEFAULT_MIN_OVERLAP_PCT
 from planner.errors import InputError
 from planner.targets import DEFAULT_INVENTORY, TargetItem, as_inventory
+
+if TYPE_CHECKING:
+    from planner.scanner import Scanner
 
 __all__ = [
     "CHECKS",
@@ -378,6 +382,9 @@ CHECKS: tuple[Check, ...] = (
 METHODS = ("auto", "milp", "greedy")
 #: The accuracy models: eq. 2 and 4 of Voroshilov & Karachentsev, or the full 3-D propagation.
 MODELS = ("3d", "paper")
+#: How the scans are registered: ``auto`` takes the scanner profile's usual workflow
+#: (targets when it names none).
+REGISTRATION_MODES = ("auto", "targets", "cloud", "hybrid")
 
 
 #: Side of a district block [m] (:mod:`planner.pipeline.district`): a few city blocks, a
@@ -457,6 +464,14 @@ class PlanSettings:
     incidence_noise, beam_footprint : bool, default True
         The 3-D model's optional terms: ranging noise growing with the 3-D incidence, and
         the beam's footprint bounding the detail a scan resolves (in the spacing check).
+    registration : "auto", "targets", "cloud" or "hybrid", default "auto"
+        How the scans are registered: by common targets; cloud to cloud (ICP on the
+        surfaces two scans share, :mod:`planner.cloud_registration`); or hybrid (cloud links,
+        targets only where a link is weak). ``auto``: the scanner profile's workflow, else
+        targets.
+    min_overlap_pct, cloud_floor_mm : float, default 20 and 1
+        A cloud link needs this overlap (as registration software counts it); what a patch's
+        plane fit does not see.
     registration_error : bool, default True
         Judge every sample by the scanner's error plus the registration's, propagated from
         the targets (:mod:`planner.registration_error`). A ``station_rms_mm`` given
@@ -643,8 +658,27 @@ class PlanSettings:
         help="refuse a plan that needs more station × sample evaluations than this (about "
         "20 million a second)",
     )
+    min_overlap_pct: float = _spec(
+        DEFAULT_MIN_OVERLAP_PCT,
+        "%",
+        "least cloud overlap",
+        hi=100.0,
+        step=5.0,
+        help="the overlap a cloud-to-cloud link needs, as registration software counts it "
+        "(Autodesk ReCap asks more than 20 %%)",
+    )
+    cloud_floor_mm: float = _spec(
+        DEFAULT_CLOUD_FLOOR_MM,
+        "mm",
+        "cloud patch floor",
+        open_lo=False,
+        step=0.5,
+        help="what the plane fit of a 2 m surface patch does not see (roughness, edges, "
+        "calibration), per scan",
+    )
     method: str = "auto"
     model: str = "3d"
+    registration: str = "auto"
     incidence_noise: bool = True
     beam_footprint: bool = True
     registration_error: bool = True
@@ -657,6 +691,11 @@ class PlanSettings:
             raise InputError(f"method must be one of {', '.join(METHODS)}; got {self.method!r}")
         if self.model not in MODELS:
             raise InputError(f"model must be one of {', '.join(MODELS)}; got {self.model!r}")
+        if self.registration not in REGISTRATION_MODES:
+            raise InputError(
+                f"registration must be one of {', '.join(REGISTRATION_MODES)}; "
+                f"got {self.registration!r}"
+            )
         for name in ("incidence_noise", "beam_footprint", "registration_error"):
             if not isinstance(getattr(self, name), bool):
                 raise InputError(f"{name} must be True or False; got {getattr(self, name)!r}")
@@ -674,6 +713,13 @@ class PlanSettings:
             if on
         ]
         return "full 3-D propagation" + (f" with {' and '.join(terms)}" if terms else "")
+
+    def registration_for(self, scanner: Scanner) -> str:
+        """How the scans are registered with ``scanner``: the setting, or (``auto``) the
+        profile's usual workflow, else targets. The one place this default is decided."""
+        if self.registration != "auto":
+            return self.registration
+        return scanner.registration or "targets"
 
     @property
     def station_rms_pair(self) -> tuple[float, float]:

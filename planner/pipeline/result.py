@@ -67,6 +67,9 @@ LINK_COLUMNS = [
     "link_rms_mm",
     "dilution",
     "station_b_rms_mm",
+    "kind",
+    "overlap_pct",
+    "weakest_direction",
 ]
 
 #: The per-facade summary as a surveyor reads it (dashboard, report).
