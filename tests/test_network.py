@@ -175,8 +175,13 @@ def test_links_csv_and_geojson_carry_the_per_link_report(default_plan, tmp_path)
         "link_rms_mm",
         "dilution",
         "station_b_rms_mm",
+        "kind",
+        "overlap_pct",
+        "weakest_direction",
     ]
     assert (links["dilution"] > 0.3).all() and (links["targets_placed"] >= 3).all()
+    assert (links["kind"] == "targets").all() and links["overlap_pct"].isna().all()
+    assert links["weakest_direction"].str.contains("mm").all()
     import json
 
     gj = json.loads((tmp_path / "plan" / "plan.geojson").read_text())

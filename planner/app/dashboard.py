@@ -386,6 +386,23 @@ class StationPlanner:
             description="accuracy model",
             style=_STYLE,
         )
+        self.registration = w.ToggleButtons(
+            options=[
+                ("scanner's usual", "auto"),
+                ("targets", "targets"),
+                ("cloud to cloud", "cloud"),
+                ("hybrid", "hybrid"),
+            ],
+            value=PlanSettings().registration,
+            description="registration",
+            tooltips=[
+                "the scanner profile's workflow (targets when it names none)",
+                "common targets tie the scans",
+                "the surfaces two scans share tie them (ICP)",
+                "cloud to cloud, targets only where a link is weak",
+            ],
+            style=_STYLE,
+        )
         self.accuracy_class.observe(lambda _c: self._show_class(), "value")
         self.plan_button = w.Button(description="Plan", button_style="primary")
         self.cancel_button = w.Button(description="Cancel", icon="stop", disabled=True)
@@ -465,6 +482,7 @@ class StationPlanner:
             self.per_sample,
             self.accuracy_class,
             self.model,
+            self.registration,
             self.grid,
             self.registration_error,
             self.inventory,
@@ -492,6 +510,7 @@ class StationPlanner:
                 self.accuracy_class,
                 self.class_note,
                 self.model,
+                self.registration,
                 self.grid,
                 more,
                 self.zone_editor.widget,
@@ -620,6 +639,7 @@ class StationPlanner:
                 "max_xy_mm": None if cls else (self.max_x.value, self.max_y.value),
                 "max_z_mm": None if cls else self.max_z.value,
                 "model": self.model.value,
+                "registration": self.registration.value,
                 "max_gamma_deg": self.max_gamma.value,
                 "max_spacing_mm": _field_value(self._specs["max_spacing_mm"], self.max_spacing),
                 "stations_per_sample": int(self.per_sample.value),

@@ -29,6 +29,7 @@ SITE_LABELS = {
     "--scanner": "Scanner",
     "--class": "accuracy class",
     "--model": "accuracy model",
+    "--registration": "registration",
     "--registration-error": "count the registration error",
     "--no-registration-error": "count the registration error",
     "--inventory": "targets you own (name, type, size mm)",

@@ -1,0 +1,103 @@
+"""Cloud-to-cloud and hybrid registration in the plan: the surfaces stations share, the
+straight street the model must show free, and the plans of the default site in each mode."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+from sites import E0, N0, rect
+from sites import run_cli as _cli
+
+from planner.pipeline import clouds
+from planner.pipeline.evaluate import Context
+from planner.pipeline.facades import build_facades
+from planner.pipeline.planning import plan
+from planner.pipeline.requirements import PlanSettings, Requirements
+from planner.scanner import Scanner, catalogue
+from planner.site import Building, Site
+
+SCANNER = Scanner.from_name("leica-4mm-60urad")
+
+
+def _surfaces(site: Site, station_xy: np.ndarray):
+    st = PlanSettings(registration="cloud")
+    fac = build_facades(site, st.sample_spacing_m, st.sample_height_step_m)
+    ctx = Context.build(site, fac, SCANNER, Requirements(), st, 120.0)
+    return ctx, clouds.surfaces(ctx, np.asarray(station_xy, dtype=float) + np.array([E0, N0]))
+
+
+def test_a_straight_street_leaves_the_shift_along_it_free_and_a_corner_fixes_it():
+    """Two stations 20 m apart in front of a 120 m terrace (its south wall and the street):
+    the link overlaps well but is free east-west; two stations at its end that both see the
+    end wall too are fixed."""
+    site = Site([Building("row", rect(0, 0, 120, 12), 15.0)])
+    ctx, surf = _surfaces(site, [[40, -8], [60, -8], [125, -6], [132, -12]])
+    along = clouds.cloud_link(ctx, surf, 0, 1)
+    assert along.overlap_pct > 40.0  # %
+    assert not along.fixed and along.weakest == "free: shift 090°/270° (east-west)"
+    corner = clouds.cloud_link(ctx, surf, 2, 3)
+    assert corner.fixed
+    sd = np.sqrt(np.diag(corner.cov))
+    assert sd[:3] == pytest.approx([0.21, 0.16, 0.08], abs=0.02)  # mm
+
+
+def test_the_overlap_counts_surface_not_points():
+    """A station's ground next to it holds most of its points but not most of its surface:
+    two stations 10 m apart along a wall overlap by more than half."""
+    site = Site([Building("row", rect(0, 0, 120, 12), 15.0)])
+    _, surf = _surfaces(site, [[40, -8], [50, -8]])
+    ov = clouds.overlap_matrix(surf)
+    assert ov[0, 1] == pytest.approx(ov[1, 0], abs=1e-9)  # % symmetric
+    assert 50.0 < ov[0, 1] < 100.0  # %
+
+
+@pytest.fixture(scope="module")
+def modes():
+    return {m: plan(settings=PlanSettings(registration=m)) for m in ("targets", "cloud", "hybrid")}
+
+
+def test_hybrid_meets_the_default_site_with_fewer_targets(modes):
+    t, h = modes["targets"], modes["hybrid"]
+    assert t.meets_all and h.meets_all
+    assert len(h.targets) < len(t.targets)
+    cloud = h.links[h.links["kind"] == "cloud"]
+    assert len(cloud) >= 1
+    assert (cloud["overlap_pct"] >= PlanSettings().min_overlap_pct).all()
+    assert (cloud["targets_placed"] == 0).all() and (cloud["link_rms_mm"] < 1.0).all()  # mm
+    assert any(m.startswith("Registration: hybrid") for m in h.messages)
+
+
+def test_cloud_alone_says_which_stations_it_cannot_tie_and_why(modes):
+    """The default building's walls are straight: most pairs of stations share one wall and
+    the ground, which leave the shift along the wall free; the plan says so and how to fix
+    it (no targets are placed)."""
+    c = modes["cloud"]
+    assert len(c.targets) == 0
+    assert (c.links["kind"] == "cloud").all()
+    msg = next(m for m in c.messages if m.startswith("Registration: cloud to cloud"))
+    assert "leave a direction free" in msg and "--registration hybrid" in msg
+    assert not c.meets_all
+
+
+def test_the_scanner_profile_names_its_workflow():
+    assert catalogue()["leica-rtc360"].registration == "hybrid"
+    st = PlanSettings()
+    assert st.registration_for(catalogue()["leica-rtc360"]) == "hybrid"
+    assert st.registration_for(SCANNER) == "targets"
+    assert (
+        PlanSettings(registration="cloud").registration_for(catalogue()["leica-rtc360"]) == "cloud"
+    )
+
+
+def test_the_command_line_takes_the_mode_and_refuses_a_wrong_one(tmp_path):
+    code, _, err = _cli("plan", "--registration", "icp", "--out", str(tmp_path / "x"), "-q")
+    assert code == 2 and "--registration" in err
+    fast = ["--grid-m", "4", "--sample-spacing-m", "4", "--sample-height-step-m", "4", "-q"]
+    code, _, _ = _cli(
+        "plan", "--registration", "hybrid", "--out", str(tmp_path / "p"), "--no-booklet", *fast
+    )
+    assert code in (0, 1)
+    links = pd.read_csv(tmp_path / "p" / "links.csv")
+    assert set(links["kind"]) <= {"cloud", "targets"}
+    assert "hybrid" in (tmp_path / "p" / "summary.txt").read_text()
