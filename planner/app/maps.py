@@ -467,10 +467,11 @@ def _draw_traverses(p: Plan, ax: Axes) -> None:
 
 
 def _draw_links(p: Plan, ax: Axes, labels: list) -> None:
-    """The registrations as curved dotted arcs between stations (to each control point
-    used, for a station tied to the control network) — a relation, not a way: curved so it
-    does not read as a line through a building — coloured and labelled by the link's own
-    predicted error; the control points as black triangles."""
+    """The registrations as curved arcs between stations, dotted by targets, dashed cloud to
+    cloud (to each control point used, for a station tied to the control network) — a
+    relation, not a way: curved so it does not read as a line through a building —
+    coloured and labelled by the link's own predicted error; the control points as black
+    triangles."""
     from matplotlib.patches import FancyArrowPatch
 
     st = p.stations.set_index("station_id")
@@ -492,7 +493,9 @@ def _draw_links(p: Plan, ax: Axes, labels: list) -> None:
         else:
             ends = [st.loc[r.station_a]]
             share = r.link_rms_mm / worst if np.isfinite(r.link_rms_mm) else 1.0
-            style = dict(color=cmap(share), lw=1.0 + 1.5 * share, ls=":")
+            # cloud to cloud: dashed (the scans' overlap ties them); by targets: dotted
+            ls = "--" if getattr(r, "kind", "targets") == "cloud" else ":"
+            style = dict(color=cmap(share), lw=1.0 + 1.5 * share, ls=ls)
         for a in ends:
             ax.add_patch(
                 FancyArrowPatch(
