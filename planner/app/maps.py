@@ -516,14 +516,11 @@ def _draw_links(p: Plan, ax: Axes, labels: list) -> None:
             labels.append(
                 (mx + nx, my + ny, f"{r.link_rms_mm:.1f}", {"fontsize": 6, "color": "#1b4f72"})
             )
-    ax.plot(
-        [],
-        [],
-        color=cmap(1.0),
-        lw=2.5,
-        ls=":",
-        label="registration link (its RMS, mm)",
-    )
+    kinds = set(p.links["kind"]) if "kind" in p.links else {"targets"}
+    if "targets" in kinds:
+        ax.plot([], [], color=cmap(1.0), lw=2.5, ls=":", label="registration link (its RMS, mm)")
+    if "cloud" in kinds:
+        ax.plot([], [], color=cmap(1.0), lw=2.5, ls="--", label="cloud-to-cloud link (RMS, mm)")
 
 
 def _draw_zones(p: Plan, ax: Axes, off: dict, f) -> None:
