@@ -71,9 +71,8 @@ def clear_height(
 
 @njit(cache=True, nogil=True)
 def _clear_height_kernel(src, zs, dst, edges, heights, out):  # pragma: no cover - compiled
-    """Every (sight line, edge) pair whose boxes overlap, compiled: a line crosses an edge
-    at fraction ``t`` of the way when ``0 < t < 1`` and the crossing lies on the edge
-    (``0 <= u <= 1``); parallel pairs do not cross. ``out`` holds ``-inf`` on entry."""
+    """Every (sight line, edge) pair whose boxes overlap, compiled (:func:`_crossing`);
+    ``out`` holds ``-inf`` on entry."""
     m = edges.shape[0]
     lo_x, hi_x = np.empty(m), np.empty(m)
     lo_y, hi_y = np.empty(m), np.empty(m)
@@ -88,15 +87,26 @@ def _clear_height_kernel(src, zs, dst, edges, heights, out):  # pragma: no cover
         for e in range(m):
             if hi_x[e] < x_lo or lo_x[e] > x_hi or hi_y[e] < y_lo or lo_y[e] > y_hi:
                 continue
-            qx, qy = edges[e, 2] - edges[e, 0], edges[e, 3] - edges[e, 1]
-            wx, wy = edges[e, 0] - sx, edges[e, 1] - sy
-            den = rx * qy - ry * qx
-            if den == 0.0:
-                continue
-            t = (wx * qy - wy * qx) / den
-            u = (wx * ry - wy * rx) / den
-            if 1e-9 < t < 1.0 - 1e-9 and 0.0 <= u <= 1.0:
+            t = _crossing(sx, sy, rx, ry, edges[e])
+            if t > 0.0:
                 out[i] = max(out[i], z0 + (heights[e] - z0) / t)
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _crossing(sx, sy, rx, ry, edge):  # pragma: no cover - compiled
+    """Where the sight line from (sx, sy) along (rx, ry) crosses ``edge`` (x0, y0, x1, y1):
+    the fraction ``t`` of the way when ``0 < t < 1`` and the crossing lies on the edge
+    (``0 <= u <= 1``); ``-1`` when it does not cross (parallel pairs do not)."""
+    qx, qy = edge[2] - edge[0], edge[3] - edge[1]
+    wx, wy = edge[0] - sx, edge[1] - sy
+    den = rx * qy - ry * qx
+    if den == 0.0:
+        return -1.0
+    t = (wx * qy - wy * qx) / den
+    u = (wx * ry - wy * rx) / den
+    if 1e-9 < t < 1.0 - 1e-9 and 0.0 <= u <= 1.0:
+        return t
+    return -1.0
 
 
 def bridge_interval(
@@ -135,14 +145,8 @@ def _bridge_kernel(src, zs, dst, edges, bottoms, tops, lo, up):  # pragma: no co
         sx, sy, z0 = src[i, 0], src[i, 1], zs[i]
         rx, ry = dst[i, 0] - sx, dst[i, 1] - sy
         for e in range(edges.shape[0]):
-            qx, qy = edges[e, 2] - edges[e, 0], edges[e, 3] - edges[e, 1]
-            wx, wy = edges[e, 0] - sx, edges[e, 1] - sy
-            den = rx * qy - ry * qx
-            if den == 0.0:
-                continue
-            t = (wx * qy - wy * qx) / den
-            u = (wx * ry - wy * rx) / den
-            if 1e-9 < t < 1.0 - 1e-9 and 0.0 <= u <= 1.0:
+            t = _crossing(sx, sy, rx, ry, edges[e])
+            if t > 0.0:
                 lo[i] = min(lo[i], z0 + (bottoms[e] - z0) / t)
                 up[i] = max(up[i], z0 + (tops[e] - z0) / t)
 
