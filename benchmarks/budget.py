@@ -34,21 +34,9 @@ N_BUILDINGS = 144
 
 
 def write_town(path: Path, n: int) -> None:
-    import shapely
+    from planner.synthetic import town, town_geojson
 
-    from planner.synthetic import town
-
-    site = town(n, seed=0)
-    feats = [
-        {
-            "type": "Feature",
-            "properties": {"id": b.id, "height": b.height_m},
-            "geometry": json.loads(shapely.to_geojson(b.footprint)),
-        }
-        for b in site.buildings
-    ]
-    crs = {"type": "name", "properties": {"name": "EPSG:32633"}}
-    path.write_text(json.dumps({"type": "FeatureCollection", "crs": crs, "features": feats}))
+    path.write_text(json.dumps(town_geojson(town(n, seed=0))))
 
 
 def run(site: Path, out: Path, budget: float) -> dict:

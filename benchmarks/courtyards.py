@@ -34,29 +34,9 @@ RUNS = HERE / "courtyard_runs.json"
 
 
 def write_site(path: Path, n: int, gateways: str) -> None:
-    import shapely
+    from planner.synthetic import town, town_geojson
 
-    from planner.synthetic import town
-
-    site = town(n, seed=1, gateways=gateways)
-    feats = [
-        {
-            "type": "Feature",
-            "properties": {"id": b.id, "height": b.height_m},
-            "geometry": json.loads(shapely.to_geojson(b.footprint)),
-        }
-        for b in site.buildings
-    ]
-    feats += [
-        {
-            "type": "Feature",
-            "properties": {"id": g.id, "role": "passage", "height": g.clear_height_m},
-            "geometry": json.loads(shapely.to_geojson(g.geometry)),
-        }
-        for g in site.passages
-    ]
-    crs = {"type": "name", "properties": {"name": "EPSG:32633"}}
-    path.write_text(json.dumps({"type": "FeatureCollection", "crs": crs, "features": feats}))
+    path.write_text(json.dumps(town_geojson(town(n, seed=1, gateways=gateways))))
 
 
 def run(site: Path, out: Path, district: str = "off") -> dict:

@@ -24,7 +24,7 @@ from shapely.geometry import Polygon, box
 
 from planner.site import Building, Passage, Site
 
-__all__ = ["GATEWAYS", "town"]
+__all__ = ["GATEWAYS", "TOWN_CRS", "town", "town_geojson"]
 
 #: How a block's courtyard opens to the street: ``open`` — a gap between the buildings
 #: (the footprints show it); ``passage`` — a gateway through a building's ground floor, as
@@ -34,8 +34,10 @@ GATEWAYS = ("open", "passage", "closed")
 #: Clear height of the generated gateways [m].
 GATEWAY_HEIGHT_M = 3.5
 
-#: Where the generated towns lie (a UTM-like projected frame) [m].
+#: Where the generated towns lie (a UTM-like projected frame) [m], and the CRS their files
+#: are written in.
 ORIGIN_EN = (400_000.0, 5_600_000.0)
+TOWN_CRS = "EPSG:32633"
 
 
 def town(
@@ -187,3 +189,25 @@ def _through(gate: Polygon, side: int) -> Polygon:
     x0, y0, x1, y1 = gate.bounds
     grow = {0: (0, 0, 0, 1), 1: (-1, 0, 0, 0), 2: (0, -1, 0, 0), 3: (0, 0, 1, 0)}[side]
     return box(x0 + grow[0], y0 + grow[1], x1 + grow[2], y1 + grow[3])
+
+
+def town_geojson(site: Site) -> dict:
+    """A generated town as a GeoJSON FeatureCollection the site readers take (in
+    :data:`TOWN_CRS`): its buildings with their heights and its passages (role passage,
+    their clear height) — for tests and benchmarks that plan it from a file."""
+    import json
+
+    def feature(props: dict, geom) -> dict:
+        return {
+            "type": "Feature",
+            "properties": props,
+            "geometry": json.loads(shapely.to_geojson(geom)),
+        }
+
+    feats = [feature({"id": b.id, "height": b.height_m}, b.footprint) for b in site.buildings]
+    feats += [
+        feature({"id": g.id, "role": "passage", "height": g.clear_height_m}, g.geometry)
+        for g in site.passages
+    ]
+    crs = {"type": "name", "properties": {"name": TOWN_CRS}}
+    return {"type": "FeatureCollection", "crs": crs, "features": feats}

@@ -10,24 +10,13 @@ import time
 
 import pandas as pd
 import pytest
-import shapely
 from sites import run_cli
 
-from planner.synthetic import town
+from planner.synthetic import town, town_geojson
 
 
 def _write_town(path, n: int) -> None:
-    site = town(n, seed=0)
-    feats = [
-        {
-            "type": "Feature",
-            "properties": {"id": b.id, "height": b.height_m},
-            "geometry": json.loads(shapely.to_geojson(b.footprint)),
-        }
-        for b in site.buildings
-    ]
-    crs = {"type": "name", "properties": {"name": "EPSG:32633"}}
-    path.write_text(json.dumps({"type": "FeatureCollection", "crs": crs, "features": feats}))
+    path.write_text(json.dumps(town_geojson(town(n, seed=0))))
 
 
 def _allowed_s(budget_s: float) -> float:
