@@ -464,21 +464,6 @@ def _no_height(role: str, f: Feature) -> SiteProblem:
     )
 
 
-def _select(blds: list[Building], ids: Sequence[str] | None) -> list[Building]:
-    """The buildings with ``ids`` planned (all as the file says when None); an unknown id
-    is refused, naming the known ones."""
-    if ids is None:
-        return blds
-    wanted = [str(i) for i in ids]
-    known = {b.id for b in blds}
-    missing = [i for i in wanted if i not in known]
-    if missing:
-        shown = ", ".join(sorted(known)[:20]) + (" …" if len(known) > 20 else "")
-        raise InputError(f"no building with id {', '.join(map(repr, missing))}; ids are: {shown}")
-    chosen = set(wanted)
-    return [replace(b, planned=b.id in chosen) for b in blds]
-
-
 def _building_zone(f: Feature) -> Zone | None:
     """A building's own requirement from its properties (``max_xy_mm``, ``max_z_mm``,
     ``class``, ``sample_spacing_m``…), as a zone covering the building; None if it has none."""
