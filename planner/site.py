@@ -420,6 +420,20 @@ class Site:
         if all(n.key != note.key for n in self.notes):
             self.notes.append(note)
 
+    def _height(
+        self, h: float | SiteProblem, ident: str, is_near: bool, problems: list[SiteProblem]
+    ) -> float | None:
+        """A checked height (:func:`_height_problem`); a problem of a feature near the
+        planned buildings is collected (None), a far one's noted and
+        :data:`FAR_HEIGHT_M` taken."""
+        if not isinstance(h, SiteProblem):
+            return h
+        if is_near:
+            problems.append(h)
+            return None
+        self._note(SiteNote("height", (ident,), "far", f"{h.text}; {FAR_HEIGHT_M:g} m taken"))
+        return FAR_HEIGHT_M
+
     def _near(self, geoms: Sequence[BaseGeometry | None]) -> np.ndarray:
         planned = [b.footprint for b in self.buildings if b.planned and _usable(b.footprint)]
         return near_mask(planned, geoms, self.near_m)
@@ -538,37 +552,35 @@ class Site:
                 self._note(SiteNote("id", (b.id,), "renamed", f"the second {b.id!r} is {new_id!r}"))
                 b = replace(b, id=new_id)
             seen[b.id] = bool(is_near)
-            h = _height_problem(
-                b.height_m,
-                _where("building", b.id),
+            h = self._height(
+                _height_problem(
+                    b.height_m,
+                    _where("building", b.id),
+                    b.id,
+                    lim.min_building_height_m,
+                    lim.max_building_height_m,
+                ),
                 b.id,
-                lim.min_building_height_m,
-                lim.max_building_height_m,
+                is_near,
+                problems,
             )
-            if isinstance(h, SiteProblem):
-                if is_near:
-                    problems.append(h)
-                    continue
-                self._note(
-                    SiteNote("height", (b.id,), "far", f"{h.text}; {FAR_HEIGHT_M:g} m taken")
-                )
-                h = FAR_HEIGHT_M
+            if h is None:
+                continue
             object.__setattr__(b, "height_m", h)
             kept.append(b)
             near_kept.append(is_near)
         self.buildings = kept
         for o, is_near in zip(self.obstacles, o_near, strict=True):
-            h = _height_problem(
-                o.height_m, _where(o.kind, o.id), o.id, 0.0, lim.max_building_height_m
+            h = self._height(
+                _height_problem(
+                    o.height_m, _where(o.kind, o.id), o.id, 0.0, lim.max_building_height_m
+                ),
+                o.id,
+                is_near,
+                problems,
             )
-            if isinstance(h, SiteProblem):
-                if is_near:
-                    problems.append(h)
-                    continue
-                self._note(
-                    SiteNote("height", (o.id,), "far", f"{h.text}; {FAR_HEIGHT_M:g} m taken")
-                )
-                h = FAR_HEIGHT_M
+            if h is None:
+                continue
             object.__setattr__(o, "height_m", h)
         # outlines: far ones repaired
         for items, near, attr, label in (
