@@ -56,6 +56,7 @@ ground near the stations).
 from __future__ import annotations
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from planner.units import RHO_ARCSEC
 
@@ -258,18 +259,25 @@ def _name(k: int, vec: np.ndarray | None) -> str:
 
 
 def overlap_pct(
-    common_parent: float, total_parent: float, common_child: float, total_child: float
-) -> float:
+    common_parent: ArrayLike,
+    total_parent: ArrayLike,
+    common_child: ArrayLike,
+    total_child: ArrayLike,
+) -> np.ndarray:
     """A link's overlap [%]: the smaller share of either scan's surface (area, or points on
-    an even spacing) that both hold (module docstring).
+    an even spacing) that both hold (module docstring); 0 for a scan that holds nothing.
+    Broadcasts (every pair of stations at once).
 
     Examples
     --------
-    >>> overlap_pct(300, 1000, 300, 600)
+    >>> float(overlap_pct(300, 1000, 300, 600))
     30.0
     """
     shares = [
-        c / t if t > 0 else 0.0
-        for c, t in ((common_parent, total_parent), (common_child, total_child))
+        np.where(t > 0, np.asarray(c, dtype=float) / np.where(t > 0, t, 1.0), 0.0)
+        for c, t in (
+            (common_parent, np.asarray(total_parent, dtype=float)),
+            (common_child, np.asarray(total_child, dtype=float)),
+        )
     ]
-    return 100.0 * min(shares)
+    return 100.0 * np.minimum(*shares)

@@ -167,10 +167,8 @@ def overlap_matrix(surf: Surfaces) -> np.ndarray:
     seen = surf.seen.astype(float)
     area = seen * surf.area_m2[:, None]
     total = area.sum(axis=0)
-    common = area.T @ seen  # [a, b]: a's surface on patches b sees
-    with np.errstate(divide="ignore", invalid="ignore"):
-        share = np.where(total[:, None] > 0, common / total[:, None], 0.0)
-    return 100.0 * np.minimum(share, share.T)
+    common = area.T @ seen  # [a, b]: the surface both a and b see
+    return overlap_pct(common, total[:, None], common.T, total[None, :])
 
 
 def cloud_link(ctx: Context, surf: Surfaces, parent: int, child: int) -> CloudLink:
@@ -193,7 +191,7 @@ def cloud_link(ctx: Context, surf: Surfaces, parent: int, child: int) -> CloudLi
         child=child,
         info=info,
         cov=cov,
-        overlap_pct=ov,
+        overlap_pct=float(ov),
         condition=link_strength(info, levelled=levelled)[0],
         patches=len(both),
     )
