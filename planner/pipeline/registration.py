@@ -755,6 +755,7 @@ class _Layout:
         self.station_xyz = np.column_stack([cand_xy[stations], np.full(k, st.instrument_height_m)])
         self.mode = st.registration_for(ctx.scanner)
         self.clouds: dict[tuple[int, int], CloudLink] = {}
+        self._cloud_errors: dict[tuple[int, int], float] = {}
         self.surf = self.overlap = None
         pairs = set()
         if self.mode != "cloud":
@@ -842,12 +843,20 @@ class _Layout:
         return self._target_link(i, j, placed)
 
     def _cloud_error(self, cl: CloudLink, j: int) -> float:
-        """A cloud link's own error at the child's facade points [mm] (the largest RMS)."""
-        if not np.isfinite(np.diag(cl.cov)).all():
+        """A cloud link's own error at the child's facade points [mm] (kept per link)."""
+        key = (cl.parent, j)
+        if key not in self._cloud_errors:
+            self._cloud_errors[key] = self.error_at_probes(cl.cov, j)
+        return self._cloud_errors[key]
+
+    def error_at_probes(self, cov: np.ndarray, j: int) -> float:
+        """The largest RMS [mm] a pose covariance ``cov`` (at station j) gives the facade
+        points j serves, along any axis; inf where the covariance leaves a direction free."""
+        if not np.isfinite(np.diag(cov)).all():
             return np.inf
         pts = _probes(self.probe(j), self.station_xyz[j])
         g = _a_matrix((pts - self.station_xyz[j]) * 1000.0, levelled=False)
-        return float(np.sqrt(np.einsum("nij,jk,nik->ni", g, cl.cov, g).max()))
+        return float(np.sqrt(np.einsum("nij,jk,nik->ni", g, cov, g).max()))
 
     def _target_link(
         self, i: int, j: int, placed: set[int] | None = None
@@ -1003,10 +1012,8 @@ def build_network(
         for lk in links:
             if lk.info is not None:
                 continue  # a cloud link's own error is known (Layout.link)
-            pts = _probes(lay.probe(lk.child), station_xyz[lk.child])
-            g = _a_matrix((pts - station_xyz[lk.child]) * 1000.0, levelled=False)
-            var = np.einsum("nij,jk,nik->ni", g, error.link_cov[(lk.parent, lk.child)], g)
-            link_error[(lk.parent, lk.child)] = float(np.sqrt(var.max()))
+            key = (lk.parent, lk.child)
+            link_error[key] = lay.error_at_probes(error.link_cov[key], lk.child)
             s2 = [
                 (control_rms[t] if lk.parent == CONTROL else final_rms[(lk.parent, t)]) ** 2
                 + final_rms[(lk.child, t)] ** 2
