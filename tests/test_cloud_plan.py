@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import pytest
-from sites import E0, N0, rect
+from sites import E0, N0, rect, square_site
 from sites import run_cli as _cli
 
 from planner.pipeline import clouds
@@ -50,6 +50,15 @@ def test_the_overlap_counts_surface_not_points():
     ov = clouds.overlap_matrix(surf)
     assert ov[0, 1] == pytest.approx(ov[1, 0], abs=1e-9)  # % symmetric
     assert 50.0 < ov[0, 1] < 100.0  # %
+    # the sparse overlap of the search for linking stations is the same number
+    ctx, _ = _surfaces(site, [[40, -8]])
+    xy = np.array([[40, -8], [50, -8], [70, -20], [130, -5]], dtype=float) + np.array([E0, N0])
+    cache = clouds.SurfaceCache(ctx)
+    np.testing.assert_allclose(
+        cache.overlap(np.arange(4), xy),
+        clouds.overlap_matrix(cache.take(np.arange(4), xy)),
+        atol=1e-9,
+    )  # %
 
 
 @pytest.fixture(scope="module")
@@ -101,3 +110,61 @@ def test_the_command_line_takes_the_mode_and_refuses_a_wrong_one(tmp_path):
     links = pd.read_csv(tmp_path / "p" / "links.csv")
     assert set(links["kind"]) <= {"cloud", "targets"}
     assert "hybrid" in (tmp_path / "p" / "summary.txt").read_text()
+
+
+def _corner_network(min_overlap_pct: float):
+    """The cloud-to-cloud network of two stations 6 m and 62 m out along the diagonal off
+    one corner of a 40 m square building: both see its two walls there, but their scans
+    overlap by a third only (the ground near each is the other's blind spot)."""
+    from planner.pipeline.planning import _network, _prepare
+
+    st = PlanSettings(registration="cloud", min_overlap_pct=min_overlap_pct)
+    wb = _prepare(square_site(40.0, 12.0), SCANNER, Requirements(), st, lambda *_: None)
+    cand = wb.pool
+    ends = [
+        int(np.argmin(np.hypot(*(cand - np.array([E0 + x, N0 + y])).T)))
+        for x, y in ((-6.0, -6.0), (-62.0, -62.0))
+    ]
+    return _network(wb.ctx, cand, wb.seen, np.array(ends), {}), wb
+
+
+def test_scans_that_overlap_too_little_are_chained_by_linking_stations_cloud_to_cloud():
+    """Linking stations are found by overlap and strength (not by targets) where scans are
+    registered cloud to cloud; the negative control asks an overlap no pair of scans has
+    (100 %): then nothing links, and the plan says the stations cannot be tied."""
+    net, wb = _corner_network(50.0)
+    assert net.overlap[0, 1] < 50.0  # % the two alone cannot be linked
+    assert net.error.tied.all()
+    assert net.n_link_stations >= 1 and not net.targets
+    assert all(lk.info is not None for lk in net.links)  # every link cloud to cloud
+    ov = net.overlap
+    for lk in net.links:
+        assert ov[lk.parent, lk.child] >= 50.0  # %
+        assert net.clouds[(lk.parent, lk.child)].fixed
+    never, _ = _corner_network(100.0)
+    assert never.n_link_stations == 0 and not never.links
+    assert "cannot be tied" in never.message
+
+
+def test_a_cloud_to_cloud_plan_scans_in_an_order_that_registers_each_scan_on_arrival(modes):
+    """Every scan after the first comes after one it is linked to (a group's first scan
+    excepted), and the route and booklet name it."""
+    h = modes["hybrid"]
+    t = h.route.table
+    assert t["registers_to"].iloc[0] == ""
+    assert (t["registers_to"].iloc[1:] != "").all()
+    order = {s: n for n, s in enumerate(t["station_id"])}
+    for sid, earlier in zip(t["station_id"], t["registers_to"], strict=True):
+        for o in earlier.split():
+            assert order[o] < order[sid]
+    assert "Scan order: every scan is registered to one scanned before it." in h.route.summary()
+
+
+def test_the_registered_order_moves_only_what_it_must():
+    from planner.pipeline.route import _registered_order
+
+    # a chain 0-1-2-3 visited 0, 2, 1, 3: station 2 waits for 1; 4 stands alone
+    nb = [{1}, {0, 2}, {1, 3}, {2}, set()]
+    order = _registered_order(np.array([0, 2, 4, 1, 3]), nb, None)
+    assert order.tolist() == [0, 4, 1, 2, 3]
+    assert _registered_order(np.array([0, 1, 2, 3, 4]), nb, None).tolist() == [0, 1, 2, 3, 4]

@@ -177,7 +177,7 @@ def _station_page(p: Plan, n: int, sectors: dict[str, tuple[float, float, float]
             f"{r['station_min']:.0f} min with set-up ({r['setup_min']:g} min) and targets; "
             f"{r['elapsed_min']:.0f} min since the start",
         ),
-        ("Registered with", r["links_to"] or "—"),
+        ("Register to", _register_to(p, sid, r)),
         ("Facade samples it serves", f"{int(st.get('samples_met', 0))}"),
     ]
     for k, (label, value) in enumerate(facts):
@@ -190,6 +190,26 @@ def _station_page(p: Plan, n: int, sectors: dict[str, tuple[float, float, float]
     table_ax.axis("off")
     _targets_table(p, sid, r, table_ax)
     return fig
+
+
+def _register_to(p: Plan, sid: str, r: pd.Series) -> str:
+    """The scans scanned before this one that it is registered to, and how."""
+    if not r["registers_to"]:
+        return "first scan" if r["order"] == 1 else "— (not linked to an earlier scan)"
+    words = []
+    lk = p.links
+    for other in str(r["registers_to"]).split():
+        pair = lk[
+            ((lk["station_a"] == other) & (lk["station_b"] == sid))
+            | ((lk["station_a"] == sid) & (lk["station_b"] == other))
+        ]
+        if not len(pair):
+            words.append(other)
+        elif pair["kind"].iloc[0] == "cloud":
+            words.append(f"{other} (cloud to cloud, {pair['overlap_pct'].iloc[0]:.0f} % overlap)")
+        else:
+            words.append(f"{other} ({pair['targets_placed'].iloc[0]} targets)")
+    return "; ".join(words)
 
 
 def _station_map(p: Plan, sid: str, ax, sector: tuple[float, float, float]) -> None:

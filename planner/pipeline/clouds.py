@@ -19,6 +19,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.sparse as sp
 import shapely
 
 from planner.cloud_registration import (
@@ -37,7 +38,7 @@ from planner.pipeline.visibility import clear_height, edges_in_box
 from planner.spacing import point_spacing_mm
 from planner.units import RHO_ARCSEC
 
-__all__ = ["CloudLink", "Surfaces", "cloud_link", "overlap_matrix", "surfaces"]
+__all__ = ["CloudLink", "SurfaceCache", "Surfaces", "cloud_link", "overlap_matrix", "surfaces"]
 
 #: Ground cells [m] and how far from a station its ground counts [m].
 GROUND_CELL_M = 2.0
@@ -84,80 +85,181 @@ class CloudLink:
 def surfaces(ctx: Context, station_xy: np.ndarray) -> Surfaces:
     """The facade and ground patches the stations at ``station_xy`` (K, 2) see (module
     docstring)."""
-    sc, st, fac = ctx.scanner, ctx.settings, ctx.facades
-    k = len(station_xy)
-    hi = st.instrument_height_m
+    return SurfaceCache(ctx).take(np.arange(len(station_xy)), np.asarray(station_xy, float))
+
+
+class SurfaceCache:
+    """What each candidate position sees of the patches, computed once per candidate for a
+    plan, and the cloud links between candidates (by candidate index). Ground cells lie on
+    one grid for the whole plan, so a candidate's patches do not depend on the others."""
+
+    def __init__(self, ctx: Context) -> None:
+        self.ctx = ctx
+        fac = ctx.facades
+        self._xyz = [np.column_stack([fac.xy, fac.z])]
+        self._normal = [np.column_stack([fac.normal[fac.facade], np.zeros(len(fac.z))])]
+        self._area = [
+            np.full(len(fac.z), ctx.settings.sample_spacing_m * ctx.settings.sample_height_step_m)
+        ]
+        self._n = len(fac.z)
+        self._cell: dict[tuple[int, int], int] = {}  # ground cell → patch index
+        self._solid = shapely.union_all([g for _, g, _ in ctx.site.blockers])
+        self.columns: dict[int, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
+        self.links: dict[tuple[int, int], CloudLink] = {}
+        # the surface every pair of candidates seen by :meth:`overlap` holds in common [m²]
+        self._row: dict[int, int] = {}
+        self._common = np.zeros((0, 0), dtype=np.float32)
+        self._total = np.zeros(0)
+
+    def take(self, idx: np.ndarray, cand_xy: np.ndarray) -> Surfaces:
+        """The patches candidates ``idx`` (positions ``cand_xy[idx]``) see, as :class:`Surfaces`
+        over the patches any of them sees."""
+        idx = np.asarray(idx, dtype=np.int64)
+        self._compute(
+            [int(i) for i in dict.fromkeys(idx.tolist()) if i not in self.columns], cand_xy
+        )
+        cols = [self.columns[int(i)] for i in idx]
+        used = np.unique(np.concatenate([c[0] for c in cols])) if cols else np.empty(0, int)
+        xyz, normal, area = (a[used] for a in self._table())
+        points = np.zeros((len(used), len(idx)))
+        var = np.full((len(used), len(idx)), np.inf)
+        for j, (ids, pts, v) in enumerate(cols):
+            rows = np.searchsorted(used, ids)
+            points[rows, j], var[rows, j] = pts, v
+        hi = self.ctx.settings.instrument_height_m
+        return Surfaces(
+            xyz=xyz,
+            normal=normal,
+            points=points,
+            var_mm2=var,
+            area_m2=area,
+            station_xyz=np.column_stack([cand_xy[idx], np.full(len(idx), hi)]),
+        )
+
+    def link(self, parent: int, child: int, cand_xy: np.ndarray) -> CloudLink:
+        """The cloud-to-cloud registration of candidate ``child`` to candidate ``parent``."""
+        if (parent, child) not in self.links:
+            pair = self.take(np.array([parent, child]), cand_xy)
+            self.links[(parent, child)] = cloud_link(self.ctx, pair, 0, 1)
+        return self.links[(parent, child)]
+
+    def overlap(self, idx: np.ndarray, cand_xy: np.ndarray) -> np.ndarray:
+        """(K, K) :func:`overlap_matrix` of candidates ``idx``: the surface every pair holds
+        in common is kept for the plan (sparse products for the candidates not seen yet), for
+        the searches for linking stations over many candidates."""
+        idx = np.asarray(idx, dtype=np.int64)
+        self._compute(
+            [int(i) for i in dict.fromkeys(idx.tolist()) if i not in self.columns], cand_xy
+        )
+        new = [int(i) for i in dict.fromkeys(idx.tolist()) if i not in self._row]
+        if new:
+            area = self._table()[2]
+            every = [*self._row, *new]
+            seen = self._seen_matrix(every)  # (N, P)
+            fresh = (seen[len(self._row) :] @ sp.diags(area) @ seen.T).toarray()
+            n = len(self._row)
+            common = np.zeros((len(every), len(every)), dtype=np.float32)
+            common[:n, :n] = self._common
+            common[n:, :] = fresh
+            common[:n, n:] = fresh[:, :n].T
+            self._common = common
+            self._total = np.concatenate([self._total, seen[n:] @ area])
+            self._row.update({c: n + k for k, c in enumerate(new)})
+        rows = np.array([self._row[int(i)] for i in idx], dtype=np.int64)
+        common = self._common[np.ix_(rows, rows)].astype(float)
+        total = self._total[rows]
+        return overlap_pct(common, total[:, None], common.T, total[None, :])
+
+    def _seen_matrix(self, idx: list[int]) -> sp.csr_matrix:
+        """(len(idx), P) which patches candidates ``idx`` see."""
+        cols = [self.columns[i][0] for i in idx]
+        which = np.repeat(np.arange(len(idx)), [len(c) for c in cols])
+        rows = np.concatenate(cols) if cols else np.empty(0, np.int64)
+        return sp.csr_matrix((np.ones(len(rows)), (which, rows)), shape=(len(idx), self._n))
+
+    def _table(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Every patch's centre, normal and area, joined once after new ones came."""
+        if len(self._xyz) > 1:
+            self._xyz, self._normal, self._area = (
+                [np.concatenate(a)] for a in (self._xyz, self._normal, self._area)
+            )
+        return self._xyz[0], self._normal[0], self._area[0]
+
+    def _compute(self, new: list[int], cand_xy: np.ndarray) -> None:
+        if not new:
+            return
+        ctx, sc, st = self.ctx, self.ctx.scanner, self.ctx.settings
+        hi = st.instrument_height_m
+        station_xy = cand_xy[new]
+        f_points, f_var = _facade_patches(ctx, station_xy)
+        e = ctx.edges
+        for j, (c, sxy) in enumerate(zip(new, station_xy, strict=True)):
+            f_ids = np.flatnonzero(f_points[:, j] > 0)
+            g_xy = self._cells_near(sxy)
+            d = np.hypot(*(g_xy - sxy).T)
+            s = np.hypot(d, hi)
+            g_xy, s = g_xy[s >= sc.min_range_m], s[s >= sc.min_range_m]
+            box = edges_in_box(e, (*(sxy - GROUND_REACH_M), *(sxy + GROUND_REACH_M)))
+            zc = clear_height(
+                np.broadcast_to(sxy, (len(g_xy), 2)), hi, g_xy, e[box], ctx.edge_heights[box]
+            )
+            g_xy, s = g_xy[zc <= 0.0], s[zc <= 0.0]
+            sin_e = hi / s
+            sigma2 = (sc.range_rms_at(s) * sin_e) ** 2 + (
+                s * 1000.0 * sc.tilt_rms_arcsec / RHO_ARCSEC * np.sqrt(1.0 - sin_e**2)
+            ) ** 2
+            g_pts = patch_points(
+                GROUND_CELL_M**2, sin_e, point_spacing_mm(s, step_mm_at_10m=ctx.step_mm_at_10m)
+            )
+            g_ids = self._ground_ids(g_xy)
+            self.columns[c] = (
+                np.concatenate([f_ids, g_ids]),
+                np.concatenate([f_points[f_ids, j], g_pts]),
+                np.concatenate(
+                    [f_var[f_ids, j], patch_variance_mm2(np.sqrt(sigma2), g_pts, st.cloud_floor_mm)]
+                ),
+            )
+
+    def _cells_near(self, sxy: np.ndarray) -> np.ndarray:
+        """Centres of the grid's ground cells within reach of ``sxy`` outside buildings."""
+        lo = np.floor((sxy - GROUND_REACH_M) / GROUND_CELL_M)
+        hi = np.ceil((sxy + GROUND_REACH_M) / GROUND_CELL_M)
+        gx, gy = np.meshgrid(np.arange(lo[0], hi[0]), np.arange(lo[1], hi[1]))
+        xy = (np.column_stack([gx.ravel(), gy.ravel()]) + 0.5) * GROUND_CELL_M
+        xy = xy[np.hypot(*(xy - sxy).T) <= GROUND_REACH_M]
+        if not self._solid.is_empty and len(xy):
+            xy = xy[~shapely.contains_xy(self._solid, xy[:, 0], xy[:, 1])]
+        return xy
+
+    def _ground_ids(self, g_xy: np.ndarray) -> np.ndarray:
+        """Patch indices of ground cells (centres ``g_xy``), new cells appended."""
+        keys = [tuple(k) for k in np.floor(g_xy / GROUND_CELL_M).astype(np.int64).tolist()]
+        fresh = [k for k in dict.fromkeys(keys) if k not in self._cell]
+        if fresh:
+            centres = (np.array(fresh, dtype=float) + 0.5) * GROUND_CELL_M
+            self._xyz.append(np.column_stack([centres, np.zeros(len(fresh))]))
+            self._normal.append(np.tile([0.0, 0.0, 1.0], (len(fresh), 1)))
+            self._area.append(np.full(len(fresh), GROUND_CELL_M**2))
+            self._cell.update({k: self._n + n for n, k in enumerate(fresh)})
+            self._n += len(fresh)
+        return np.array([self._cell[k] for k in keys], dtype=np.int64)
+
+
+def _facade_patches(ctx: Context, station_xy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(N, K) scan points on every facade patch from each station (0: not seen) and the
+    variance of the patch's position across its wall [mm²] (infinite where not seen)."""
+    st = ctx.settings
     dense = evaluate_stations(ctx, station_xy)
     view = dense["view"] & np.isfinite(dense["scanner_m_y_mm"])
-    area = st.sample_spacing_m * st.sample_height_step_m
     slope = np.where(view, dense["slope_distance_m"], 1.0)
     cos_inc = np.where(view, np.cos(np.radians(np.nan_to_num(dense["incidence_deg"]))), 0.0)
-    f_points = np.where(
-        view,
-        patch_points(area, cos_inc, point_spacing_mm(slope, step_mm_at_10m=ctx.step_mm_at_10m)),
-        0.0,
+    area = st.sample_spacing_m * st.sample_height_step_m
+    spacing = point_spacing_mm(slope, step_mm_at_10m=ctx.step_mm_at_10m)
+    points = np.where(view, patch_points(area, cos_inc, spacing), 0.0)
+    var = patch_variance_mm2(
+        np.nan_to_num(dense["scanner_m_y_mm"], nan=1.0), np.maximum(points, 1.0), st.cloud_floor_mm
     )
-    f_var = patch_variance_mm2(
-        np.nan_to_num(dense["scanner_m_y_mm"], nan=1.0),
-        np.maximum(f_points, 1.0),
-        st.cloud_floor_mm,
-    )
-    f_xyz = np.column_stack([fac.xy, fac.z])
-    f_normal = np.column_stack([fac.normal[fac.facade], np.zeros(len(fac.z))])
-    g_xy = _ground_cells(ctx, station_xy)
-    g_points = np.zeros((len(g_xy), k))
-    g_var = np.full((len(g_xy), k), np.inf)
-    for j, sxy in enumerate(station_xy):
-        d = np.hypot(*(g_xy - sxy).T)
-        s = np.hypot(d, hi)
-        near = np.flatnonzero((d <= GROUND_REACH_M) & (s >= sc.min_range_m))
-        if not len(near):
-            continue
-        e = ctx.edges
-        box = edges_in_box(e, (*(sxy - GROUND_REACH_M), *(sxy + GROUND_REACH_M)))
-        zc = clear_height(
-            np.broadcast_to(sxy, (len(near), 2)), hi, g_xy[near], e[box], ctx.edge_heights[box]
-        )
-        near = near[zc <= 0.0]
-        s_n = s[near]
-        sin_e = hi / s_n
-        sigma2 = (sc.range_rms_at(s_n) * sin_e) ** 2 + (
-            s_n * 1000.0 * sc.tilt_rms_arcsec / RHO_ARCSEC * np.sqrt(1.0 - sin_e**2)
-        ) ** 2
-        pts = patch_points(
-            GROUND_CELL_M**2, sin_e, point_spacing_mm(s_n, step_mm_at_10m=ctx.step_mm_at_10m)
-        )
-        g_points[near, j] = pts
-        g_var[near, j] = patch_variance_mm2(np.sqrt(sigma2), pts, st.cloud_floor_mm)
-    keep = (g_points > 0).any(axis=1)
-    return Surfaces(
-        xyz=np.vstack([f_xyz, np.column_stack([g_xy[keep], np.zeros(keep.sum())])]),
-        normal=np.vstack([f_normal, np.tile([0.0, 0.0, 1.0], (keep.sum(), 1))]),
-        points=np.vstack([f_points, g_points[keep]]),
-        var_mm2=np.vstack([np.where(view, f_var, np.inf), g_var[keep]]),
-        area_m2=np.concatenate([np.full(len(f_xyz), area), np.full(keep.sum(), GROUND_CELL_M**2)]),
-        station_xyz=np.column_stack([station_xy, np.full(k, hi)]),
-    )
-
-
-def _ground_cells(ctx: Context, station_xy: np.ndarray) -> np.ndarray:
-    """Centres of ground cells within reach of a station and outside the buildings."""
-    if not len(station_xy):
-        return np.empty((0, 2))
-    lo = station_xy.min(axis=0) - GROUND_REACH_M
-    hi = station_xy.max(axis=0) + GROUND_REACH_M
-    xs = np.arange(lo[0], hi[0], GROUND_CELL_M) + GROUND_CELL_M / 2
-    ys = np.arange(lo[1], hi[1], GROUND_CELL_M) + GROUND_CELL_M / 2
-    gx, gy = np.meshgrid(xs, ys)
-    xy = np.column_stack([gx.ravel(), gy.ravel()])
-    near = np.zeros(len(xy), dtype=bool)
-    for sxy in station_xy:
-        near |= np.hypot(*(xy - sxy).T) <= GROUND_REACH_M
-    xy = xy[near]
-    solid = [g for _, g, _ in ctx.site.blockers]
-    if solid and len(xy):
-        xy = xy[~shapely.contains_xy(shapely.union_all(solid), xy[:, 0], xy[:, 1])]
-    return xy
+    return points, np.where(points > 0, var, np.inf)
 
 
 def overlap_matrix(surf: Surfaces) -> np.ndarray:
@@ -173,7 +275,8 @@ def overlap_matrix(surf: Surfaces) -> np.ndarray:
 
 def cloud_link(ctx: Context, surf: Surfaces, parent: int, child: int) -> CloudLink:
     """The cloud-to-cloud registration of scan ``child`` to scan ``parent``."""
-    both = np.flatnonzero(surf.seen[:, parent] & surf.seen[:, child])
+    seen_p, seen_c = surf.points[:, parent] > 0, surf.points[:, child] > 0
+    both = np.flatnonzero(seen_p & seen_c)
     rows = plane_rows(surf.xyz[both], surf.normal[both], surf.station_xyz[child])
     info = link_information(rows, surf.var_mm2[both, parent], surf.var_mm2[both, child])
     sc = ctx.scanner
@@ -183,9 +286,7 @@ def cloud_link(ctx: Context, surf: Surfaces, parent: int, child: int) -> CloudLi
     )
     area = surf.area_m2
     common = area[both].sum()
-    ov = overlap_pct(
-        common, area[surf.seen[:, parent]].sum(), common, area[surf.seen[:, child]].sum()
-    )
+    ov = overlap_pct(common, area[seen_p].sum(), common, area[seen_c].sum())
     return CloudLink(
         parent=parent,
         child=child,

@@ -29,7 +29,7 @@ from __future__ import annotations
 import heapq
 import math
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -276,6 +276,7 @@ class SightCache:
         #: (preferred by every link that can use them)
         self.barred = np.zeros(len(tc.xyz), dtype=bool)
         self.by_hand = np.zeros(len(tc.xyz), dtype=bool)
+        self._clouds: clouds.SurfaceCache | None = None
         #: link choices and centre RMS by candidate index, kept between the rounds of a plan
         #: (for one goal and state of the targets: see :meth:`memo_for`)
         self._memo_key: tuple | None = None
@@ -289,6 +290,14 @@ class SightCache:
             self._memo_key, self._memo = key, {}
         return self._memo
 
+    @property
+    def clouds(self) -> clouds.SurfaceCache:
+        """The patches each candidate sees and the cloud links between candidates (made
+        when first asked: only cloud-to-cloud and hybrid registration use them)."""
+        if self._clouds is None:
+            self._clouds = clouds.SurfaceCache(self.ctx)
+        return self._clouds
+
     def fork(self, keep: Sequence[int] | np.ndarray) -> SightCache:
         """A cache of its own holding these sights of candidates ``keep`` (others computed
         when asked): targets added to it (planned control) stay out of this one."""
@@ -298,6 +307,7 @@ class SightCache:
         out.sight = self.sight.take(cols) if self.sight is not None else None
         out.column = {i: n for n, i in enumerate(keep)}
         out.barred, out.by_hand = self.barred.copy(), self.by_hand.copy()
+        out._clouds = self._clouds  # the patches do not depend on the targets
         return out
 
     def add_targets(self, more: TargetCandidates) -> np.ndarray:
@@ -615,29 +625,31 @@ def _strong(sight: Sight, tc: TargetCandidates, a: int, b: int, xyz: np.ndarray)
     return _spread(xyz[_linkable(sight, tc, a, b)])
 
 
-def _bridges(
-    ctx: Context,
-    seen: SightCache,
-    cand_xy: np.ndarray,
-    stations: list[int],
-    sight: Sight,
-    groups: np.ndarray,
-    deadline: float = math.inf,
-) -> tuple[list[int], bool]:
-    """The fewest linking candidates that chain every group of stations into one: a
-    breadth-first search over a coarse grid of candidates, from one group to the nearest
-    other, repeated until one group is left, none can be reached or ``deadline`` passes.
-    Hops are pairs with three common targets; a chain found is checked hop by hop (the
-    targets must not lie on one line) and a hop that fails is struck off before searching
-    again. Also whether the deadline cut the search short."""
-    tc = seen.tc
+def _bridge_pool(ctx: Context, cand_xy: np.ndarray, stations: list[int]) -> np.ndarray:
+    """Candidates a linking station is looked for among: a coarse grid of them (not the
+    stations themselves) within :data:`BRIDGE_RADIUS_M` of a station."""
     pool = _coarse(cand_xy, max(LINK_GRID_M, ctx.settings.grid_m))
     pool = pool[~np.isin(pool, stations)]
-    # a bridge stands near the stations it links
     near = np.hypot(*(cand_xy[pool, None, :] - cand_xy[None, stations, :]).transpose(2, 0, 1))
-    pool = pool[near.min(axis=1) <= BRIDGE_RADIUS_M]
-    if not len(pool):
-        return [], False
+    return pool[near.min(axis=1) <= BRIDGE_RADIUS_M]
+
+
+@dataclass
+class _Hops:
+    """Which pool candidates could register to which (``adj``, P × P) and to which stations
+    (``to_st``, P × K) — a necessary condition, cheap for every pair — and ``ok(i, j,
+    to_station)``, the full check of one hop. ``cut``: the deadline left pool out."""
+
+    pool: np.ndarray
+    adj: np.ndarray
+    to_st: np.ndarray
+    ok: Callable[[int, int, bool], bool]
+    cut: bool = False
+
+
+def _target_hops(seen: SightCache, pool: np.ndarray, sight: Sight, deadline: float) -> _Hops | None:
+    """Hops by targets: three common targets, checked not to lie on one line."""
+    tc = seen.tc
     parts = []  # the pool's sights, a chunk at a time while the time lasts
     for k in range(0, len(pool), BRIDGE_CHUNK):
         if time.monotonic() > deadline:
@@ -645,19 +657,75 @@ def _bridges(
         parts.append(seen.usable(pool[k : k + BRIDGE_CHUNK]))
     cut = sum(p.shape[1] for p in parts) < len(pool)
     if not parts:
-        return [], cut
+        return None
     pool = pool[: sum(p.shape[1] for p in parts)]
     u_pool = (np.hstack(parts) & ~tc.is_control[:, None]).astype(np.float32)
     u_st = (sight.usable & ~tc.is_control[:, None]).astype(np.float32)
-    common_pp = u_pool.T @ u_pool  # (P, P) common targets, exact in float32 below 2**24
-    common_ps = u_pool.T @ u_st  # (P, K)
+    adj = (u_pool.T @ u_pool) >= 3  # common targets, exact in float32 below 2**24
+    to_st = (u_pool.T @ u_st) >= 3
     u_pool, u_st = u_pool.astype(bool), u_st.astype(bool)
-    xyz = tc.xyz
 
-    def hop_ok(i: int, j: int, to_station: bool) -> bool:
+    def ok(i: int, j: int, to_station: bool) -> bool:
         other = u_st[:, j] if to_station else u_pool[:, j]
-        return _spread(xyz[u_pool[:, i] & other])
+        return _spread(tc.xyz[u_pool[:, i] & other])
 
+    return _Hops(pool, adj, to_st, ok, cut)
+
+
+def _cloud_hops(
+    ctx: Context, seen: SightCache, stations: list[int], pool: np.ndarray
+) -> _Hops | None:
+    """Hops cloud to cloud: scans overlapping by the settings' minimum, checked to fix
+    every direction (:attr:`~planner.pipeline.clouds.CloudLink.fixed`)."""
+    k = len(stations)
+    every = np.concatenate([stations, pool]).astype(np.int64)
+    over = seen.clouds.overlap(every, seen.cand_xy) >= ctx.settings.min_overlap_pct
+    np.fill_diagonal(over, False)
+
+    def ok(i: int, j: int, to_station: bool) -> bool:
+        parent = stations[j] if to_station else int(pool[j])
+        return seen.clouds.link(parent, int(pool[i]), seen.cand_xy).fixed
+
+    return _Hops(pool, over[k:, k:], over[k:, :k], ok)
+
+
+def _hops(
+    ctx: Context,
+    seen: SightCache,
+    cand_xy: np.ndarray,
+    stations: list[int],
+    lay: _Layout,
+    deadline: float,
+) -> _Hops | None:
+    """The hops a linking station can make in the layout's registration mode: by targets,
+    cloud to cloud, or (hybrid) either. None: no pool, or the deadline left none of it."""
+    pool = _bridge_pool(ctx, cand_xy, stations)
+    if not len(pool):
+        return None
+    by_targets = None if lay.mode == "cloud" else _target_hops(seen, pool, lay.sight, deadline)
+    if lay.mode == "targets" or (by_targets is None and lay.mode == "hybrid"):
+        return by_targets
+    pool = pool if by_targets is None else by_targets.pool
+    by_clouds = _cloud_hops(ctx, seen, stations, pool)
+    if by_targets is None:
+        return by_clouds
+    t_ok, c_ok = by_targets.ok, by_clouds.ok
+    return _Hops(
+        pool,
+        by_targets.adj | by_clouds.adj,
+        by_targets.to_st | by_clouds.to_st,
+        lambda i, j, to_station: t_ok(i, j, to_station) or c_ok(i, j, to_station),
+        by_targets.cut,
+    )
+
+
+def _bridges(hops: _Hops, groups: np.ndarray, deadline: float = math.inf) -> tuple[list[int], bool]:
+    """The fewest linking candidates that chain every group of stations into one: a
+    breadth-first search over the pool's hops, from one group to the nearest other,
+    repeated until one group is left, none can be reached or ``deadline`` passes. A chain
+    found is checked hop by hop (:attr:`_Hops.ok`) and a hop that fails is struck off
+    before searching again. Also whether the deadline cut the search short."""
+    adj, to_st, cut = hops.adj.copy(), hops.to_st.copy(), hops.cut
     added: list[int] = []
     groups = groups.copy()
     for _ in range(MAX_BRIDGE_SEARCHES):
@@ -666,25 +734,25 @@ def _bridges(
         if time.monotonic() > deadline:
             cut = True
             break
-        chain = _bfs_chain(common_pp, common_ps, groups)
+        chain = _bfs_chain(adj, to_st, groups)
         if chain is None:
             break
         # check the chain's hops: group 0 → chain[-1] → … → chain[0] → another group
         bad = False
         for a, b in zip(chain[1:], chain[:-1], strict=True):
-            if not hop_ok(a, b, False):
-                common_pp[a, b] = common_pp[b, a] = 0
+            if not hops.ok(a, b, False):
+                adj[a, b] = adj[b, a] = False
                 bad = True
         for end, mine in ((chain[-1], groups == 0), (chain[0], groups > 0)):
-            for s in np.flatnonzero((common_ps[end] >= 3) & mine):
-                if not hop_ok(end, int(s), True):
-                    common_ps[end, s] = 0
+            for s in np.flatnonzero(to_st[end] & mine):
+                if not hops.ok(end, int(s), True):
+                    to_st[end, s] = False
                     bad = True
         if bad:
             continue
-        added += [int(pool[i]) for i in chain]
+        added += [int(hops.pool[i]) for i in chain]
         # the reached group joins group 0
-        hit = {int(g) for i in chain for g in groups[(common_ps[i] >= 3) & (groups > 0)]}
+        hit = {int(g) for i in chain for g in groups[to_st[i] & (groups > 0)]}
         groups = np.where(np.isin(groups, list(hit)), 0, groups)
         groups = np.unique(groups, return_inverse=True)[1]
     return added, cut
@@ -699,16 +767,13 @@ BRIDGE_CHUNK = 512
 MAX_BRIDGE_SEARCHES = 200
 
 
-def _bfs_chain(
-    common_pp: np.ndarray, common_ps: np.ndarray, groups: np.ndarray
-) -> list[int] | None:
+def _bfs_chain(adj: np.ndarray, hop: np.ndarray, groups: np.ndarray) -> list[int] | None:
     """Shortest chain of pool candidates from group 0 to any other group (pool indices,
-    the one touching the other group first), or None.
+    the one touching the other group first), or None; ``adj`` (P, P) and ``hop`` (P, K):
+    the hops among the pool and from the pool to the stations.
 
     Breadth-first, a level at a time on the boolean hop matrix; within a level the order is
     that of a plain queue (by parent, then index), so the chain found is the queue's."""
-    hop = common_ps >= 3
-    adj = common_pp >= 3
     frontier = np.flatnonzero(hop[:, groups == 0].any(axis=1))
     goal = hop[:, groups > 0].any(axis=1)
     prev = np.full(len(adj), -2)  # -2: not reached; -1: a start
@@ -746,7 +811,7 @@ class _Layout:
         datum: int | None = None,
     ) -> None:
         tc, st = seen.tc, ctx.settings
-        self.ctx, self.tc, self.goal_mm = ctx, tc, goal_mm
+        self.ctx, self.tc, self.goal_mm, self.seen = ctx, tc, goal_mm, seen
         self.by_hand = seen.by_hand if seen.by_hand.any() else None
         self.stations = stations
         self.probes = probes
@@ -766,7 +831,7 @@ class _Layout:
                 if _strong(self.sight, tc, a, b, tc.xyz)
             }
         if self.mode != "targets" and k > 1:
-            self.surf = clouds.surfaces(ctx, cand_xy[stations])
+            self.surf = seen.clouds.take(np.array(stations), cand_xy)
             self.overlap = clouds.overlap_matrix(self.surf)
             pairs |= {
                 (a, b)
@@ -823,7 +888,8 @@ class _Layout:
         if self.surf is None or i == CONTROL:
             return None
         if (i, j) not in self.clouds:
-            self.clouds[(i, j)] = clouds.cloud_link(self.ctx, self.surf, i, j)
+            a, b = self.stations[i], self.stations[j]
+            self.clouds[(i, j)] = self.seen.clouds.link(a, b, self.seen.cand_xy)
         cl = self.clouds[(i, j)]
         ok = cl.fixed and cl.overlap_pct >= self.ctx.settings.min_overlap_pct
         return cl if ok else None
@@ -932,13 +998,15 @@ def build_network(
     lay = _Layout(ctx, seen, cand_xy, stations, probes, goal_mm, datum)
     groups = _components(lay.k, lay.pairs)
     cut_short = False
-    if groups.max() > 0:  # stations no common targets tie: linking stations
-        extra, cut_short = _bridges(ctx, seen, cand_xy, stations, lay.sight, groups, deadline)
+    if groups.max() > 0:  # stations neither targets nor clouds tie: linking stations
+        hops = _hops(ctx, seen, cand_xy, stations, lay, deadline)
+        extra, cut_short = _bridges(hops, groups, deadline) if hops else ([], True)
         if extra:
             lay = _Layout(ctx, seen, cand_xy, stations + extra, probes, goal_mm, datum)
     weak = lay.weak_groups(weak_mm) if np.isfinite(weak_mm) and lay.k > 1 else np.zeros(1)
     if weak.max() > 0 and time.monotonic() <= deadline:  # too weak: a detour, if it helps
-        extra, _ = _bridges(ctx, seen, cand_xy, lay.stations, lay.sight, weak, deadline)
+        hops = _hops(ctx, seen, cand_xy, lay.stations, lay, deadline)
+        extra, _ = _bridges(hops, weak, deadline) if hops else ([], True)
         if extra:
             trial = _Layout(ctx, seen, cand_xy, lay.stations + extra, probes, goal_mm, datum)
             if len(trial.cost) >= len(lay.cost) and trial.worst_var < 0.8 * lay.worst_var:

@@ -6,7 +6,12 @@
   (buffered) and the stations, joined wherever the straight line between two of them is
   free; shortest walks by Dijkstra (``scipy.sparse.csgraph``).
 * **Visiting order**: the shortest open path through the stations on those walking
-  distances — nearest neighbour from every start, then 2-opt (Croes 1958) to a local optimum.
+  distances — nearest neighbour from every start, then 2-opt (Croes 1958) to a local optimum
+  — and, where scans are registered cloud to cloud, put in the order that keeps every scan
+  registered to one scanned before it (its link in the plan's network: overlapping clouds
+  or common targets), so that they can be registered on site as they come (Cyclone FIELD
+  360, SCENE's on-site registration); a station waits only as long as none of the stations
+  it is linked to has been scanned. ``registers_to`` names the earlier scans it is linked to.
 * **Time per station**: walk from the previous station, the targets set up before its
   scan (a target is placed before the first station that scans it), the set-up, and the scan:
   the station's sector (its facade samples and targets, with a margin) over the scanner's
@@ -74,6 +79,7 @@ ROUTE_COLUMNS = [
     "elapsed_min",
     "max_spacing_mm",
     "links_to",
+    "registers_to",
     "walk_note",
 ]
 
@@ -301,6 +307,48 @@ def _two_opt(order: np.ndarray, d: np.ndarray, max_passes: int = 50) -> np.ndarr
     return order
 
 
+def _registered_order(
+    order: np.ndarray, neighbours: list[set[int]], d: np.ndarray | None
+) -> np.ndarray:
+    """``order`` changed as little as it takes for every station to come after one it is
+    linked to (``neighbours``), but the first of each group of linked stations: each step
+    takes the first station in ``order`` not yet visited that is linked to a visited one or
+    starts a group none of whose stations is visited. Tried on ``order`` and its reverse, the
+    shorter on walking distances ``d`` kept."""
+    n = len(order)
+    group = np.full(n, -1)
+    for g, start in enumerate(order):  # the groups of linked stations
+        if group[start] >= 0:
+            continue
+        stack = [int(start)]
+        while stack:
+            k = stack.pop()
+            if group[k] < 0:
+                group[k] = g
+                stack.extend(neighbours[k])
+
+    def repair(seq: np.ndarray) -> np.ndarray:
+        left, out = list(seq), []
+        visited, started = np.zeros(n, dtype=bool), set()
+        while left:
+            pos = next(
+                p
+                for p, k in enumerate(left)
+                if group[k] not in started or any(visited[o] for o in neighbours[k])
+            )
+            k = left.pop(pos)
+            out.append(k)
+            visited[k] = True
+            started.add(group[k])
+        return np.array(out, dtype=order.dtype)
+
+    tries = [repair(order), repair(order[::-1])]
+    if d is None:
+        return tries[0]
+    length = [float(np.nan_to_num(d[t[:-1], t[1:]], posinf=1e9).sum()) for t in tries]
+    return tries[int(np.argmin(length))]
+
+
 # -- the route ----------------------------------------------------------------------------
 def field_route(
     site: Site,
@@ -332,6 +380,14 @@ def field_route(
         order = _open_path_order(w[:, : len(xy)])
     else:  # a district: ordered on straight lines, each leg then walked
         order = _open_path_order(np.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1)))
+    linked: dict[str, set[str]] = {}
+    for a, b in zip(links["station_a"].astype(str), links["station_b"].astype(str), strict=True):
+        linked.setdefault(a, set()).add(b)
+        linked.setdefault(b, set()).add(a)
+    at = {sid: k for k, sid in enumerate(ids)}
+    neighbours = [{at[o] for o in linked.get(i, ()) if o in at} for i in ids]
+    if "kind" in links and (links["kind"] == "cloud").any():  # registered on site as scanned
+        order = _registered_order(order, neighbours, w[:, : len(xy)] if exact else None)
     legs: list[np.ndarray] = [np.empty((0, 2))]
     walk_m, notes = [0.0], [""]
     for a, b in itertools.pairwise(order):
@@ -361,10 +417,6 @@ def field_route(
         if seen_by:
             first_visit.setdefault(min(seen_by), []).append(str(tid))
     spacing = coverage.groupby("station_id")["spacing_mm"].max()
-    linked: dict[str, list[str]] = {}
-    for a, b in zip(links["station_a"], links["station_b"], strict=True):
-        linked.setdefault(str(a), []).append(str(b))
-        linked.setdefault(str(b), []).append(str(a))
     rows, session, used, elapsed = [], 1, 0.0, 0.0
     limit = settings.session_h * 60.0
     for n, k in enumerate(order):
@@ -408,11 +460,22 @@ def field_route(
                 "station_min": round(total, 1),
                 "elapsed_min": round(elapsed, 1),
                 "max_spacing_mm": round(sp, 1) if np.isfinite(sp) else np.nan,
-                "links_to": " ".join(sorted(set(linked.get(sid, [])))),
+                "links_to": " ".join(sorted(linked.get(sid, ()))),
+                "registers_to": " ".join(
+                    o for o in sorted(linked.get(sid, ())) if o == "control" or visit.get(o, n) < n
+                ),
                 "walk_note": notes[n],
             }
         )
     route.table = pd.DataFrame(rows, columns=ROUTE_COLUMNS)
+    if "kind" in links and (links["kind"] == "cloud").any():
+        alone = route.table["station_id"][route.table["registers_to"] == ""].iloc[1:]
+        route.notes.append(
+            "Scan order: every scan is registered to one scanned before it."
+            if not len(alone)
+            else "Scan order: every scan is registered to one scanned before it, but "
+            f"{', '.join(alone)} (linked to no scan before)."
+        )
     route.legs = legs
     if any(notes):
         crossing = [ids[k] for n, k in enumerate(order) if notes[n]]
