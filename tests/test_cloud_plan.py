@@ -125,14 +125,14 @@ def _corner_network(min_overlap_pct: float):
         int(np.argmin(np.hypot(*(cand - np.array([E0 + x, N0 + y])).T)))
         for x, y in ((-6.0, -6.0), (-62.0, -62.0))
     ]
-    return _network(wb.ctx, cand, wb.seen, np.array(ends), {}), wb
+    return _network(wb.ctx, cand, wb.seen, np.array(ends), {})
 
 
 def test_scans_that_overlap_too_little_are_chained_by_linking_stations_cloud_to_cloud():
     """Linking stations are found by overlap and strength (not by targets) where scans are
     registered cloud to cloud; the negative control asks an overlap no pair of scans has
     (100 %): then nothing links, and the plan says the stations cannot be tied."""
-    net, wb = _corner_network(50.0)
+    net = _corner_network(50.0)
     assert net.overlap[0, 1] < 50.0  # % the two alone cannot be linked
     assert net.error.tied.all()
     assert net.n_link_stations >= 1 and not net.targets
@@ -141,7 +141,7 @@ def test_scans_that_overlap_too_little_are_chained_by_linking_stations_cloud_to_
     for lk in net.links:
         assert ov[lk.parent, lk.child] >= 50.0  # %
         assert net.clouds[(lk.parent, lk.child)].fixed
-    never, _ = _corner_network(100.0)
+    never = _corner_network(100.0)
     assert never.n_link_stations == 0 and not never.links
     assert "cannot be tied" in never.message
 

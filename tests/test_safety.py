@@ -48,7 +48,16 @@ SQUARE = {
         }
     ],
 }
-FAST = ["--sample-spacing-m", "4", "--sample-height-step-m", "3", "--grid-m", "3", "-q"]
+FAST = [
+    "--sample-spacing-m",
+    "4",
+    "--sample-height-step-m",
+    "3",
+    "--grid-m",
+    "3",
+    "--no-booklet",
+    "-q",
+]  # the booklet is tested in test_fieldwork
 
 
 def _cli(

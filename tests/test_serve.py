@@ -31,12 +31,13 @@ def _listening(port: int) -> bool:
         return s.connect_ex(("127.0.0.1", port)) == 0
 
 
-def _start(port: int, *extra: str) -> tuple[subprocess.Popen, str]:
+def _start(port: int, *extra: str, tmp: Path | None = None) -> tuple[subprocess.Popen, str]:
     proc = subprocess.Popen(
         [sys.executable, "-m", "planner", "serve", "--port", str(port), *extra],
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
+        env={**os.environ, "TMPDIR": str(tmp)} if tmp else None,
     )
     line = proc.stdout.readline()  # blocks until the server says it is ready
     return proc, line
@@ -106,11 +107,12 @@ def test_serve_refuses_other_host_names_and_a_taken_port():
         proc.wait(60)
 
 
-def test_kernels_of_pages_nobody_holds_are_shut_down():
+def test_kernels_of_pages_nobody_holds_are_shut_down(tmp_path):
     """Page loads leave kernels; with nobody connected they are culled after the idle time,
-    and the upload folder goes with the server."""
+    and the upload folder goes with the server (the server gets a temporary folder of its
+    own: other servers, of other tests, may be running)."""
     port = _free_port()
-    proc, line = _start(port, "--kernel-idle-s", "4")
+    proc, line = _start(port, "--kernel-idle-s", "4", tmp=tmp_path)
     try:
         assert "ready" in line
         for _ in range(3):
@@ -120,11 +122,7 @@ def test_kernels_of_pages_nobody_holds_are_shut_down():
         while _kernels(proc.pid) and time.time() < deadline:
             time.sleep(1)
         assert _kernels(proc.pid) == []
-        uploads = [
-            Path(os.environ.get("TMPDIR", "/tmp"), p)
-            for p in os.listdir(os.environ.get("TMPDIR", "/tmp"))
-            if p.startswith("tls-planner-serve-")
-        ]
+        uploads = [p for p in tmp_path.iterdir() if p.name.startswith("tls-planner-serve-")]
         assert uploads  # the server's upload folder exists while it runs …
     finally:
         proc.send_signal(signal.SIGTERM)
