@@ -25,9 +25,15 @@ The names below are imported lazily (on first use), so ``import planner`` stays 
 from __future__ import annotations
 
 import importlib
+from importlib.metadata import PackageNotFoundError
+from importlib.metadata import version as _version
 from typing import Any
 
-__version__ = "0.2.0"
+try:  # one source: pyproject.toml's version, as installed
+    __version__ = _version("tls-planner")
+except PackageNotFoundError:  # run from a source tree that was never installed
+    __version__ = "0.0.0+unknown"
+
 
 #: Public name → the module that defines it (one place; ``__all__`` is derived from it).
 _EXPORTS: dict[str, str] = {

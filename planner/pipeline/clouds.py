@@ -170,6 +170,26 @@ class SurfaceCache:
         total = self._total[rows]
         return overlap_pct(common, total[:, None], common.T, total[None, :])
 
+    def wall_axes(self, idx: np.ndarray, cand_xy: np.ndarray) -> np.ndarray:
+        """(K,) which of four 45° classes of wall direction (normals modulo 180°) each
+        candidate sees, as bits: two scans whose common walls fall in one class share no two
+        walls that are not parallel — with the ground they leave a shift free."""
+        idx = np.asarray(idx, dtype=np.int64)
+        self._compute(
+            [int(i) for i in dict.fromkeys(idx.tolist()) if i not in self.columns], cand_xy
+        )
+        fac = self.ctx.facades
+        n = fac.normal[fac.facade]
+        axis = (
+            np.floor((np.degrees(np.arctan2(n[:, 1], n[:, 0])) % 180.0 + 22.5) / 45.0) % 4
+        ).astype(int)
+        out = np.zeros(len(idx), dtype=np.int64)
+        for k, i in enumerate(idx):
+            ids = self.columns[int(i)][0]
+            walls = ids[ids < len(fac.z)]
+            out[k] = np.bitwise_or.reduce(1 << np.unique(axis[walls])) if len(walls) else 0
+        return out
+
     def _seen_matrix(self, idx: list[int]) -> sp.csr_matrix:
         """(len(idx), P) which patches candidates ``idx`` see."""
         cols = [self.columns[i][0] for i in idx]

@@ -53,7 +53,6 @@ from planner.registration_error import (
     Link,
     NetworkError,
     adjust,
-    point_registration_variances,
     propagate,
     scaled_condition,
     target_centre_rms_mm,
@@ -672,6 +671,10 @@ def _target_hops(seen: SightCache, pool: np.ndarray, sight: Sight, deadline: flo
     return _Hops(pool, adj, to_st, ok, cut)
 
 
+#: The number of bits set in each 4-bit number.
+_BITS = np.array([bin(v).count("1") for v in range(16)])
+
+
 def _cloud_hops(
     ctx: Context, seen: SightCache, stations: list[int], pool: np.ndarray
 ) -> _Hops | None:
@@ -680,6 +683,8 @@ def _cloud_hops(
     k = len(stations)
     every = np.concatenate([stations, pool]).astype(np.int64)
     over = seen.clouds.overlap(every, seen.cand_xy) >= ctx.settings.min_overlap_pct
+    axes = seen.clouds.wall_axes(every, seen.cand_xy)
+    over &= _BITS[axes[:, None] & axes[None, :]] >= 2  # two walls in common, not parallel
     np.fill_diagonal(over, False)
 
     def ok(i: int, j: int, to_station: bool) -> bool:
@@ -1234,24 +1239,3 @@ def _network_words(k, n_link, datum, untied, n_groups, tc, links, mode) -> str:
         "traverse, by control points coordinated with a total station (--control), or add "
         "a station by hand"
     )
-
-
-def registration_variances(
-    net: Network,
-    station_pos: np.ndarray,
-    point_xyz: np.ndarray,
-    along_xy: np.ndarray,
-    normal_xy: np.ndarray,
-    station_xyz: np.ndarray,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Registration variance [mm²] of points scanned from the network's stations at
-    positions ``station_pos``; NaN where the station is not tied to the datum."""
-    if net.error is None or not len(station_pos):
-        nan = np.full(len(station_pos), np.nan)
-        return nan, nan, nan
-    cov = net.error.pose_cov[station_pos]
-    out = point_registration_variances(
-        cov, station_xyz[station_pos], point_xyz, along_xy, normal_xy
-    )
-    tied = net.error.tied[station_pos]
-    return tuple(np.where(tied, v, np.nan) for v in out)
