@@ -293,3 +293,41 @@ def test_highs_prints_nothing_on_the_standard_output(capfd):
     out, err = capfd.readouterr()
     assert "HiGHS" not in out + err
     assert out == ""
+
+
+def test_copied_columns_go_first_and_the_optimum_stays():
+    """A grid of candidates over few rows is mostly copies (the same samples met): the
+    first of each stays, a copy goes only where its rows need one station, and the reduced
+    problem keeps the optimum of the whole (an integer program on both)."""
+    from scipy.optimize import Bounds, LinearConstraint, milp
+
+    from planner.pipeline.reduce import _copies
+
+    cols = sp.csr_matrix(np.array([[1, 0, 1], [0, 1, 0], [1, 0, 1], [1, 0, 1], [0, 0, 0]]))
+    assert _copies(cols).tolist() == [False, False, True, True, False]
+
+    def optimum(a, d):
+        if a.shape[0] == 0:
+            return 0
+        m = a.shape[1]
+        res = milp(
+            np.ones(m),
+            constraints=LinearConstraint(a.toarray(), lb=d),
+            integrality=np.ones(m),
+            bounds=Bounds(0, 1),
+        )
+        assert res.status == 0
+        return round(res.fun)
+
+    rng = np.random.default_rng(5)
+    for trial in range(20):
+        patterns = rng.random((6, 12)) < 0.4
+        a = sp.csr_matrix(patterns[:, rng.integers(0, 12, 400)].astype(np.int8))
+        need = 1 if trial % 2 else rng.integers(1, 3, 6)  # every row one station, or some two
+        d = np.minimum(need, np.diff(a.indptr))
+        live = d > 0
+        a, d = sp.csr_matrix(a[live]), d[live]
+        red = reduce_cover(a, d)
+        if trial % 2:
+            assert red.counts["dominated columns"] > 300  # 400 columns, 12 patterns
+        assert len(red.forced) + optimum(red.a, red.demand) == optimum(a, d)

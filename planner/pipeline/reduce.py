@@ -47,6 +47,18 @@ def _bitsets(sets: sp.csr_matrix) -> np.ndarray:
     return out
 
 
+def _copies(sets: sp.csr_matrix) -> np.ndarray:
+    """(n,) bool: the rows of ``sets`` equal to a row before them (none where the bit sets
+    would be too large)."""
+    n, m = sets.shape
+    if n == 0 or n * ((m + 63) // 64) * 8 > MAX_BITSET_BYTES:
+        return np.zeros(n, dtype=bool)
+    sets = sp.csr_matrix(sets)
+    sets.sort_indices()
+    _, first, inverse = np.unique(_bitsets(sets), axis=0, return_index=True, return_inverse=True)
+    return np.arange(n) != first[inverse.ravel()]
+
+
 def subset_pairs(
     sets: sp.csr_matrix,
     seed: int = 0,
@@ -216,17 +228,21 @@ def reduce_cover(a: sp.csr_matrix, demand: np.ndarray, deadline: float = math.in
         cols = a.T.tocsr()
         single = np.asarray(cols @ (demand > 1).astype(np.int64)).ravel() == 0
         size = np.diff(cols.indptr)
+        # first the copies (the same rows as a column before them): most of a large grid
+        # where few rows are left; then the subsets among the columns left
+        copy = _copies(cols) & single
+        rest = np.flatnonzero(~copy)
         pairs = subset_pairs(
-            cols,
-            allowed=lambda x, y, one=single, n=size: one[x] & ((n[x] < n[y]) | (x > y)),
+            cols[rest],
+            allowed=lambda x, y, one=single[rest], n=size[rest]: one[x] & ((n[x] < n[y]) | (x > y)),
             witness="x",
-            among=cols_new,
+            among=None if cols_new is None else cols_new[rest],
             deadline=deadline,
         )
         if pairs is None:
             counts["stopped" if time.monotonic() > deadline else "skipped"] = 1
             break
-        drop = np.unique(pairs[0])
+        drop = np.union1d(np.flatnonzero(copy), rest[np.unique(pairs[0])])
         rows_new[cols[drop].indices] = True
         cols_new = np.zeros(a.shape[1] - len(drop), dtype=bool)
         if len(drop):
