@@ -105,6 +105,11 @@ class SurfaceCache:
         self._cell: dict[tuple[int, int], int] = {}  # ground cell → patch index
         self._solid = shapely.union_all([g for _, g, _ in ctx.site.blockers])
         self.columns: dict[int, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
+        # each facade sample's wall class (:meth:`wall_axes`), and each candidate's as bits
+        n = fac.normal[fac.facade]
+        deg = np.degrees(np.arctan2(n[:, 1], n[:, 0])) % 180.0
+        self._axis = (np.floor((deg + 22.5) / 45.0) % 4).astype(np.int64)
+        self._axes: dict[int, int] = {}
         self.links: dict[tuple[int, int], CloudLink] = {}
         # the surface every pair of candidates seen by :meth:`overlap` holds in common [m²]
         self._row: dict[int, int] = {}
@@ -115,9 +120,7 @@ class SurfaceCache:
         """The patches candidates ``idx`` (positions ``cand_xy[idx]``) see, as :class:`Surfaces`
         over the patches any of them sees."""
         idx = np.asarray(idx, dtype=np.int64)
-        self._compute(
-            [int(i) for i in dict.fromkeys(idx.tolist()) if i not in self.columns], cand_xy
-        )
+        self._compute(idx, cand_xy)
         cols = [self.columns[int(i)] for i in idx]
         used = np.unique(np.concatenate([c[0] for c in cols])) if cols else np.empty(0, int)
         xyz, normal, area = (a[used] for a in self._table())
@@ -148,9 +151,7 @@ class SurfaceCache:
         in common is kept for the plan (sparse products for the candidates not seen yet), for
         the searches for linking stations over many candidates."""
         idx = np.asarray(idx, dtype=np.int64)
-        self._compute(
-            [int(i) for i in dict.fromkeys(idx.tolist()) if i not in self.columns], cand_xy
-        )
+        self._compute(idx, cand_xy)
         new = [int(i) for i in dict.fromkeys(idx.tolist()) if i not in self._row]
         if new:
             area = self._table()[2]
@@ -175,20 +176,8 @@ class SurfaceCache:
         candidate sees, as bits: two scans whose common walls fall in one class share no two
         walls that are not parallel — with the ground they leave a shift free."""
         idx = np.asarray(idx, dtype=np.int64)
-        self._compute(
-            [int(i) for i in dict.fromkeys(idx.tolist()) if i not in self.columns], cand_xy
-        )
-        fac = self.ctx.facades
-        n = fac.normal[fac.facade]
-        axis = (
-            np.floor((np.degrees(np.arctan2(n[:, 1], n[:, 0])) % 180.0 + 22.5) / 45.0) % 4
-        ).astype(int)
-        out = np.zeros(len(idx), dtype=np.int64)
-        for k, i in enumerate(idx):
-            ids = self.columns[int(i)][0]
-            walls = ids[ids < len(fac.z)]
-            out[k] = np.bitwise_or.reduce(1 << np.unique(axis[walls])) if len(walls) else 0
-        return out
+        self._compute(idx, cand_xy)
+        return np.array([self._axes[int(i)] for i in idx], dtype=np.int64)
 
     def _seen_matrix(self, idx: list[int]) -> sp.csr_matrix:
         """(len(idx), P) which patches candidates ``idx`` see."""
@@ -205,7 +194,9 @@ class SurfaceCache:
             )
         return self._xyz[0], self._normal[0], self._area[0]
 
-    def _compute(self, new: list[int], cand_xy: np.ndarray) -> None:
+    def _compute(self, idx: np.ndarray, cand_xy: np.ndarray) -> None:
+        """The patches of the candidates ``idx`` not seen yet."""
+        new = [int(i) for i in dict.fromkeys(np.asarray(idx).tolist()) if i not in self.columns]
         if not new:
             return
         ctx, sc, st = self.ctx, self.ctx.scanner, self.ctx.settings
@@ -232,6 +223,7 @@ class SurfaceCache:
                 GROUND_CELL_M**2, sin_e, point_spacing_mm(s, step_mm_at_10m=ctx.step_mm_at_10m)
             )
             g_ids = self._ground_ids(g_xy)
+            self._axes[c] = int(np.bitwise_or.reduce(1 << np.unique(self._axis[f_ids]), initial=0))
             self.columns[c] = (
                 np.concatenate([f_ids, g_ids]),
                 np.concatenate([f_points[f_ids, j], g_pts]),

@@ -824,7 +824,6 @@ class _Layout:
         k = self.k = len(stations)
         self.station_xyz = np.column_stack([cand_xy[stations], np.full(k, st.instrument_height_m)])
         self.mode = st.registration_for(ctx.scanner)
-        self.clouds: dict[tuple[int, int], CloudLink] = {}
         self._cloud_errors: dict[tuple[int, int], float] = {}
         self.surf = self.overlap = None
         pairs = set()
@@ -892,10 +891,7 @@ class _Layout:
         common surfaces fix it (None otherwise)."""
         if self.surf is None or i == CONTROL:
             return None
-        if (i, j) not in self.clouds:
-            a, b = self.stations[i], self.stations[j]
-            self.clouds[(i, j)] = self.seen.clouds.link(a, b, self.seen.cand_xy)
-        cl = self.clouds[(i, j)]
+        cl = self.seen.clouds.link(self.stations[i], self.stations[j], self.seen.cand_xy)
         ok = cl.fixed and cl.overlap_pct >= self.ctx.settings.min_overlap_pct
         return cl if ok else None
 
@@ -1096,7 +1092,7 @@ def build_network(
     weakest = {}  # each link's weakest direction at the middle of its child's facade points
     for lk in links:
         key = (lk.parent, lk.child)
-        cov = lay.clouds[key].cov if lk.info is not None else None
+        cov = lay.cloud(*key).cov if lk.info is not None else None
         if cov is None and error is not None and key in error.link_cov:
             cov = error.link_cov[key]
         if cov is not None and np.isfinite(np.diag(cov)).all():
@@ -1127,7 +1123,7 @@ def build_network(
         mode=lay.mode,
         weakest=weakest,
         clouds={
-            (lk.parent, lk.child): lay.clouds[(lk.parent, lk.child)]
+            (lk.parent, lk.child): lay.cloud(lk.parent, lk.child)
             for lk in links
             if lk.info is not None
         },

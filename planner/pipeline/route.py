@@ -386,7 +386,9 @@ def field_route(
         linked.setdefault(b, set()).add(a)
     at = {sid: k for k, sid in enumerate(ids)}
     neighbours = [{at[o] for o in linked.get(i, ()) if o in at} for i in ids]
-    if "kind" in links and (links["kind"] == "cloud").any():  # registered on site as scanned
+    # scans registered cloud to cloud are registered on site as they come
+    on_site = "kind" in links and bool((links["kind"] == "cloud").any())
+    if on_site:
         order = _registered_order(order, neighbours, w[:, : len(xy)] if exact else None)
     legs: list[np.ndarray] = [np.empty((0, 2))]
     walk_m, notes = [0.0], [""]
@@ -468,7 +470,7 @@ def field_route(
             }
         )
     route.table = pd.DataFrame(rows, columns=ROUTE_COLUMNS)
-    if "kind" in links and (links["kind"] == "cloud").any():
+    if on_site:
         alone = route.table["station_id"][route.table["registers_to"] == ""].iloc[1:]
         route.notes.append(
             "Scan order: every scan is registered to one scanned before it."
