@@ -109,3 +109,18 @@ def test_python_dash_m_and_default_job():
     )
     assert proc.returncode == 0, proc.stderr
     assert "0.6" in proc.stdout
+
+
+def test_every_command_prints_its_help():
+    """``planner CMD --help`` for every command: exit 0 and the options with their units
+    (a unit such as "%" in a data class's help once made argparse raise instead)."""
+    from planner.app.cli import build_parser
+
+    commands = build_parser()._subparsers._group_actions[0].choices
+    assert {"plan", "report", "serve"} <= set(commands)
+    for name in commands:
+        code, out, err = run(name, "--help")
+        assert code == 0 and "Traceback" not in err, (name, err[-500:])
+        assert out.startswith("usage: planner " + name), name
+    code, out, _ = run("plan", "--help")
+    assert "Autodesk ReCap asks more than 20 %) [%] (default 20)" in " ".join(out.split())

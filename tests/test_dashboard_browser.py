@@ -18,8 +18,10 @@ import pytest
 
 from planner.app.notebooks import notebook_path
 from planner.app.serve import voila_command
+from planner.app.voila_server import INSTANCE_PATH, POOL_HEADER
 
-pytestmark = pytest.mark.browser
+# one worker holds this module's servers (one dashboard server per module, not per worker)
+pytestmark = [pytest.mark.browser, pytest.mark.xdist_group("browser")]
 
 CHROMIUM = "/usr/bin/chromium"
 ARTIFACTS = Path(__file__).resolve().parent.parent / "test-artifacts"
@@ -51,7 +53,8 @@ def _need_browser():
 
 
 def _serve(notebook: str, **env_extra: str):
-    """Serve one shipped dashboard as ``planner serve --notebook`` does; yield its URL."""
+    """Serve one shipped dashboard as ``planner serve --notebook`` does; yield its URL once
+    its pre-started kernel has run the dashboard (as ``planner serve`` says "ready")."""
     _need_browser()
     port = free_port()
     cmd, env = voila_command(notebook_path(notebook), port)
@@ -63,10 +66,12 @@ def _serve(notebook: str, **env_extra: str):
         if proc.poll() is not None:
             pytest.fail(f"voila exited: {proc.stdout.read().decode(errors='replace')[-2000:]}")
         try:
-            with urllib.request.urlopen(url, timeout=5):
-                break
+            with urllib.request.urlopen(url + INSTANCE_PATH.lstrip("/"), timeout=5) as r:
+                if r.headers.get(POOL_HEADER) == "warm":
+                    break
         except OSError:
-            time.sleep(0.5)
+            pass
+        time.sleep(0.5)
     else:
         proc.kill()
         pytest.fail("voila did not answer within 90 s")

@@ -573,7 +573,7 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
                 type=kind,
                 default=None,
                 metavar=pairs.get(name, name.rsplit("_", 1)[-1].upper()),
-                help=f"{spec.help} [{spec.unit}] (default {default})",
+                help=_argparse_text(f"{spec.help} [{spec.unit}] (default {default})"),
             )
     from planner.site import SiteLimits
 
@@ -661,6 +661,11 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         help="the targets you own, one per line: name, type (flat/sphere/cylinder), size in mm",
     )
     pl.add_argument("-q", "--quiet", action="store_true", help="no progress messages")
+
+
+def _argparse_text(text: str) -> str:
+    """Plain text (a data class's help, unit "%") as argparse help, which formats ``%``."""
+    return text.replace("%", "%%")
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -1,7 +1,10 @@
 """``planner serve``: a dashboard served by Voilà on 127.0.0.1, supervised.
 
 * The port is checked first: a taken port is an error, not a silent move to another.
-* The URL is printed when the page really answers, not when the process starts.
+* The URL is printed when the page really answers, not when the process starts: the
+  dashboard's kernel is started and its notebook run (the default plan made) before anyone
+  asks — Voilà's preheated kernel pool, one kernel ahead — so a page opens at once; the
+  pool is refilled in the background after each page load.
 * Voilà runs in a session of its own (:mod:`planner.app.voila_server`, loopback ``Host``
   names only); any ordinary stop signal (Ctrl+C, SIGTERM, SIGHUP) stops it, its kernels and
   everything they started — nothing keeps listening.
@@ -12,6 +15,7 @@
 
 from __future__ import annotations
 
+import collections
 import contextlib
 import os
 import secrets
@@ -21,12 +25,13 @@ import socket
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 import urllib.request
 from collections.abc import Callable
 from pathlib import Path
 
-from planner.app.voila_server import INSTANCE_ENV, INSTANCE_PATH
+from planner.app.voila_server import INSTANCE_ENV, INSTANCE_PATH, POOL_HEADER
 from planner.errors import InputError
 
 __all__ = ["UPLOAD_ROOT_ENV", "port_is_free", "serve", "voila_command"]
@@ -45,10 +50,16 @@ def port_is_free(port: int) -> bool:
 
 
 def voila_command(
-    notebook: Path, port: int, *, kernel_idle_s: float = 600.0, upload_root: str | None = None
+    notebook: Path,
+    port: int,
+    *,
+    kernel_idle_s: float = 600.0,
+    upload_root: str | None = None,
+    preheat: bool = True,
 ) -> tuple[list[str], dict[str, str]]:
     """The command line and environment of the Voilà server for ``notebook`` on
-    127.0.0.1:``port`` (the package's offline template, found through ``JUPYTER_PATH``)."""
+    127.0.0.1:``port`` (the package's offline template, found through ``JUPYTER_PATH``;
+    with ``preheat`` one kernel runs the notebook before a page asks for it)."""
     jupyter_dir = Path(__file__).resolve().parent / "jupyter"
     env = dict(os.environ)
     env["JUPYTER_PATH"] = os.pathsep.join(
@@ -67,6 +78,8 @@ def voila_command(
         "--no-browser",
         "--show_tracebacks=False",
         "--template=planner-offline",
+        f"--preheat_kernel={bool(preheat)}",
+        "--pool_size=1",
         f"--MappingKernelManager.cull_idle_timeout={int(kernel_idle_s)}",
         f"--MappingKernelManager.cull_interval={max(1, int(kernel_idle_s) // 4)}",
         "--MappingKernelManager.cull_connected=False",
@@ -112,14 +125,17 @@ def _stop(proc: subprocess.Popen, grace_s: float = 10.0) -> None:
             os.kill(pid, signal.SIGKILL)
 
 
-def _answers(port: int, instance: str) -> bool:
-    """Whether this server (not another one on the port) answers; no page is loaded, so no
-    kernel is started by asking."""
+def _answers(port: int, instance: str) -> str:
+    """``""`` until this server (not another one on the port) answers, then ``"warming"``
+    while its pre-started kernel runs the dashboard and ``"warm"`` when a page opens at
+    once; no page is loaded, so no kernel is started by asking."""
     try:
         with urllib.request.urlopen(f"http://127.0.0.1:{port}{INSTANCE_PATH}", timeout=5) as r:
-            return r.status == 200 and r.read().decode() == instance
+            if r.status != 200 or r.read().decode() != instance:
+                return ""
+            return r.headers.get(POOL_HEADER, "warm")
     except OSError:
-        return False
+        return ""
 
 
 def serve(
@@ -151,12 +167,22 @@ def serve(
     proc = subprocess.Popen(
         cmd, env=env, start_new_session=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE
     )
+    # Voilà logs to stderr all day: read it as it comes (an unread pipe fills and stalls the
+    # server) and keep the last lines for the message if it stops
+    log: collections.deque[bytes] = collections.deque(maxlen=20)
+    threading.Thread(target=log.extend, args=(proc.stderr,), daemon=True).start()
     try:
         url = f"http://127.0.0.1:{port}/"
         deadline = time.monotonic() + ready_timeout_s
-        while not stop_requested and not _answers(port, instance):
+        said_warming = False
+        while not stop_requested and (state := _answers(port, instance)) != "warm":
+            if state == "warming" and not said_warming:
+                say(f"Starting the dashboard at {url}: running it once so that it opens at once")
+                said_warming = True
             if proc.poll() is not None:
-                message = proc.stderr.read().decode(errors="replace").strip().splitlines()
+                time.sleep(0.2)  # the last lines read
+                message = [line.decode(errors="replace").strip() for line in log]
+                message = [line for line in message if line]
                 raise InputError(
                     f"the dashboard server stopped while starting (exit code {proc.returncode}"
                     + (f": {message[-1]}" if message else "")

@@ -16,7 +16,7 @@ import sys
 
 import tornado.web
 
-__all__ = ["is_loopback_host"]
+__all__ = ["POOL_HEADER", "is_loopback_host", "pool_is_warm"]
 
 #: Host names that mean this machine.
 LOOPBACK_NAMES = ("localhost", "localhost.localdomain")
@@ -49,9 +49,30 @@ INSTANCE_PATH = "/tls-planner/instance"
 INSTANCE_ENV = "TLS_PLANNER_INSTANCE"
 
 
+#: The header of the instance answer saying whether a page would open at once: ``warm``
+#: when the pre-started kernel (Voilà's preheat pool) has run the dashboard, else
+#: ``warming``.
+POOL_HEADER = "X-TLS-Planner-Pool"
+
+
+def pool_is_warm(kernel_manager: object) -> bool:
+    """Whether every pre-started kernel of Voilà's pool has finished running its notebook
+    (True when there is no pool: nothing to wait for)."""
+    pools = getattr(kernel_manager, "_pools", None) or {}
+    for pool in pools.values():
+        for started in pool:  # a kernel started, then its notebook rendered
+            if not started.done():
+                return False
+            if started.exception() is None and not started.result()["task"].done():
+                return False
+    return True
+
+
 class _InstanceHandler(tornado.web.RequestHandler):
     def get(self) -> None:
         self.set_header("Content-Type", "text/plain")
+        warm = pool_is_warm(self.application.settings.get("kernel_manager"))
+        self.set_header(POOL_HEADER, "warm" if warm else "warming")
         self.write(os.environ.get(INSTANCE_ENV, ""))
 
 

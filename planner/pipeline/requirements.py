@@ -665,7 +665,7 @@ class PlanSettings:
         hi=100.0,
         step=5.0,
         help="the overlap a cloud-to-cloud link needs, as registration software counts it "
-        "(Autodesk ReCap asks more than 20 %%)",
+        "(Autodesk ReCap asks more than 20 %)",
     )
     cloud_floor_mm: float = _spec(
         DEFAULT_CLOUD_FLOOR_MM,
