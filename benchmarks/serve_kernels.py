@@ -73,7 +73,10 @@ def main() -> None:
         stdout=subprocess.PIPE,
         text=True,
     )
-    print(proc.stdout.readline().strip())
+    line = ""
+    while "ready" not in line:  # "Starting …" while its kernel runs the dashboard, then ready
+        line = proc.stdout.readline()
+        print(line.strip())
     url = f"http://127.0.0.1:{port}/"
     try:
         with sync_playwright() as pw:

@@ -108,9 +108,10 @@ def test_plan_then_bad_upload_in_a_real_browser(dashboard_url, tmp_path):
         count.wait_for(timeout=120_000)
         first = count.inner_text()
         assert first.endswith("stations")
-        # a stricter requirement needs more stations
-        _set_number(page, "largest m_x [mm]", "3")
-        _set_number(page, "largest m_y [mm]", "3")
+        # a stricter requirement needs more stations (4 mm: 13 stations, 2 samples unmet in
+        # 4 s; 3 mm would take 40 s to plan 184 stations)
+        _set_number(page, "largest m_x [mm]", "4")
+        _set_number(page, "largest m_y [mm]", "4")
         page.get_by_role("button", name="Plan", exact=True).click()
         page.wait_for_function(
             "(old) => { const e = document.querySelector('.station-count');"
