@@ -68,10 +68,18 @@ def _get(port: int, path: str = "/", host: str | None = None) -> int:
         return exc.code
 
 
-@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGHUP, signal.SIGINT])
-def test_serve_is_ready_when_it_says_so_and_stops_whole_on_a_signal(sig):
+@pytest.mark.parametrize(
+    ("sig", "notebook"),
+    [
+        (signal.SIGTERM, []),  # the station planner, served by default
+        (signal.SIGHUP, ["--notebook", "targets.ipynb"]),  # a lighter dashboard: the same
+        (signal.SIGINT, ["--notebook", "targets.ipynb"]),  # server, a shorter warm-up
+    ],
+    ids=["SIGTERM", "SIGHUP", "SIGINT"],
+)
+def test_serve_is_ready_when_it_says_so_and_stops_whole_on_a_signal(sig, notebook):
     port = _free_port()
-    proc, line = _start(port)
+    proc, line = _start(port, *notebook)
     try:
         assert re.search(rf"ready at http://127\.0\.0\.1:{port}/", line), line
         assert _get(port, "/tls-planner/instance") == 200  # answers at once: no race
@@ -96,7 +104,7 @@ def test_serve_is_ready_when_it_says_so_and_stops_whole_on_a_signal(sig):
 
 def test_serve_refuses_other_host_names_and_a_taken_port():
     port = _free_port()
-    proc, line = _start(port)
+    proc, line = _start(port, "--notebook", "targets.ipynb")
     try:
         assert "ready" in line
         assert _get(port, "/", host="evil.example") == 403  # DNS rebinding
@@ -120,7 +128,7 @@ def test_kernels_of_pages_nobody_holds_are_shut_down(tmp_path):
     server (the server gets a temporary folder of its own: other servers, of other tests,
     may be running)."""
     port = _free_port()
-    proc, line = _start(port, "--kernel-idle-s", "4", tmp=tmp_path)
+    proc, line = _start(port, "--notebook", "targets.ipynb", "--kernel-idle-s", "4", tmp=tmp_path)
     try:
         assert "ready" in line
         for _ in range(2):
