@@ -24,8 +24,9 @@ from planner.app.notebooks import notebook_path
 from planner.app.serve import voila_command
 from planner.app.voila_server import INSTANCE_PATH, POOL_HEADER
 
-# one worker holds this module's servers (one dashboard server per module, not per worker)
-pytestmark = [pytest.mark.browser, pytest.mark.xdist_group("browser")]
+# one worker runs this module (scripts/test distributes by file): one dashboard server and
+# one page for all of its tests
+pytestmark = pytest.mark.browser
 
 CHROMIUM = "/usr/bin/chromium"
 ARTIFACTS = Path(__file__).resolve().parent.parent / "test-artifacts"
