@@ -26,7 +26,7 @@ from planner.pipeline.export import coverage_csv
 from planner.pipeline.facades import build_facades
 from planner.pipeline.planning import plan, reach_m
 from planner.pipeline.requirements import PlanSettings, Requirements
-from planner.pipeline.visibility import clear_height
+from planner.pipeline.visibility import SIGHT_CLEARANCE_M, clear_height
 from planner.polar import incidence_deg
 from planner.site import Building, ControlPoint, Obstacle, Site
 
@@ -76,7 +76,8 @@ def test_occlusion_by_an_obstacle_tall_and_low():
         ],
     )
     # the low wall halfway to the facade hides only the foot of the facade:
-    # crossing its far edge at t = 10.1/20 ... z_clear = 1.5 + (1.0 - 1.5) / t
+    # crossing its far edge at t = 10.1/20 ... z_clear = 1.5 + (1.0 + c - 1.5) / t, the wall
+    # raised by the sight-line clearance c
     z = clear_height(
         np.array([[E0 + 10, N0 - 20]]),
         1.5,
@@ -84,10 +85,11 @@ def test_occlusion_by_an_obstacle_tall_and_low():
         np.array([[E0 + 5, N0 - 9.9, E0 + 15, N0 - 9.9]]),
         np.array([1.0]),
     )
-    assert z[0] == pytest.approx(1.5 - 0.5 / ((20 - 9.9) / 20.02), abs=1e-9)  # m, about 0.51
+    c = SIGHT_CLEARANCE_M
+    assert z[0] == pytest.approx(1.5 - (0.5 - c) / ((20 - 9.9) / 20.02), abs=1e-9)  # m, 0.55
     fac, m = views(site, [(10.0, -20.0), (-6.0, -25.0)])
     col = (np.abs(fac.xy[:, 0] - (E0 + 10.5)) < 1e-6) & (np.abs(fac.xy[:, 1] - N0) < 1e-6)
-    assert m["view"][col & (fac.z < 0.5), 0].sum() == 0  # z = 0.5 is hidden (0.51 clears)
+    assert m["view"][col & (fac.z < 0.5), 0].sum() == 0  # z = 0.5 is hidden (0.55 clears)
     assert m["view"][col & (fac.z > 0.6), 0].all()
     # the 20 m shed hides the south-west corner from a station behind it, up to the top
     behind = (np.abs(fac.xy[:, 1] - N0) < 1e-6) & (fac.xy[:, 0] < E0 + 1.5)

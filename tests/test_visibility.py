@@ -1,4 +1,6 @@
-"""Line of sight: the compiled crossing test against shapely's segment intersections."""
+"""Line of sight: the compiled crossing test against shapely's segment intersections (the
+exact geometry, ``clearance_m=0``), and the clearance a sight line keeps from footprint
+corners and roof edges."""
 
 from __future__ import annotations
 
@@ -6,7 +8,12 @@ import numpy as np
 import pytest
 import shapely
 
-from planner.pipeline.visibility import clear_height
+from planner.pipeline.visibility import (
+    SIGHT_CLEARANCE_M,
+    bridge_interval,
+    clear_height,
+    visible,
+)
 
 
 def _reference(src, zs, dst, edges, heights):
@@ -36,7 +43,7 @@ def test_clear_height_matches_shapely_on_random_walls(seed):
     edges[:10, 3] = edges[:10, 1]  # some walls along the axes, as footprints often are
     edges[10:20, 2] = edges[10:20, 0]
     heights = rng.uniform(3.0, 30.0, n_edges)
-    got = clear_height(src, zs, dst, edges, heights)
+    got = clear_height(src, zs, dst, edges, heights, clearance_m=0.0)
     want = _reference(src, zs, dst, edges, heights)
     blocked = np.isfinite(want)
     assert 30 < blocked.sum() < n_lines  # the random walls block some lines, not all
@@ -53,8 +60,70 @@ def test_clear_height_ignores_walls_the_line_only_touches_or_runs_along():
             [25.0, -1.0, 25.0, 1.0],  # beyond the facade end: t > 1
         ]
     )
-    z = clear_height(np.array([[0.0, 0.0]]), 1.5, np.array([[20.0, 0.0]]), edges, np.full(4, 9.0))
+    z = clear_height(
+        np.array([[0.0, 0.0]]), 1.5, np.array([[20.0, 0.0]]), edges, np.full(4, 9.0), 0.0
+    )
     assert z[0] == pytest.approx(1.5 + (9.0 - 1.5) / 0.5, abs=1e-9)  # m: 16.5 from the halfway wall
     # and a scanner and facade point with nothing between: -inf
-    z = clear_height(np.array([[0.0, 0.0]]), 1.5, np.array([[5.0, 0.0]]), edges[:1], np.ones(1))
+    z = clear_height(
+        np.array([[0.0, 0.0]]), 1.5, np.array([[5.0, 0.0]]), edges[:1], np.ones(1), clearance_m=0.0
+    )
     assert z[0] == -np.inf
+
+
+#: A 10 m square building, 8 m high, with its north-west corner at (10, 10).
+BOX = np.array([[10.0, 0.0, 10.0, 10.0], [10.0, 10.0, 20.0, 10.0], [20.0, 10.0, 20.0, 0.0]])
+
+
+def _past_the_corner(miss_m: float) -> np.ndarray:
+    """Clear height of a point 10 m beyond the corner (10, 10), seen from (0, 10 + 2·miss)
+    low at 1.5 m: the sight line passes the corner ``miss_m`` outside the footprint."""
+    src = np.array([[0.0, 10.0 + 2 * miss_m]])
+    dst = np.array([[20.0, 10.0]])  # the line passes x = 10 at y = 10 + miss
+    return clear_height(src, 1.5, dst, BOX, np.full(3, 8.0))
+
+
+def test_a_sight_line_grazing_a_corner_is_blocked_one_passing_clear_is_not():
+    """The 2.5-D test is exact at float precision, so a line passing a building corner by
+    1 mm counted as seen — in 3-D (ray casting on the extruded footprints; the beam has a
+    width) such samples were hidden. A sight line keeps SIGHT_CLEARANCE_M from every
+    footprint edge: 1 mm past the corner is blocked, 0.1 m past it is seen (the control)."""
+    assert SIGHT_CLEARANCE_M == pytest.approx(0.02, abs=1e-12)  # m
+    grazing = _past_the_corner(0.001)
+    assert visible(np.array([3.0]), grazing)[0] == False  # noqa: E712 — hidden at 3 m
+    assert grazing[0] > 8.0  # m: only over the roof
+    clear = _past_the_corner(0.1)
+    assert clear[0] == -np.inf  # nothing crossed
+    # the exact geometry (no clearance) passes the grazing line: today's knife edge
+    exact = clear_height(
+        np.array([[0.0, 10.002]]), 1.5, np.array([[20.0, 10.0]]), BOX, np.full(3, 8.0), 0.0
+    )
+    assert exact[0] == -np.inf
+
+
+def test_a_sight_line_grazing_a_roof_edge_is_blocked_one_passing_clear_is_not():
+    """Over a lower building's roof: a point whose sight line passes the roof edge 1 mm
+    above it is hidden; 0.1 m above it, seen. The clearance adds SIGHT_CLEARANCE_M / t at
+    the point (t: where along the line the edge is crossed)."""
+    wall = np.array([[10.0, -5.0, 10.0, 5.0]])  # a 6 m wall halfway to a facade at x = 20
+    src, dst = np.array([[0.0, 0.0]]), np.array([[20.0, 0.0]])
+    exact = clear_height(src, 1.5, dst, wall, np.array([6.0]), clearance_m=0.0)[0]
+    padded = clear_height(src, 1.5, dst, wall, np.array([6.0]))[0]
+    assert exact == pytest.approx(10.5, abs=1e-9)  # m: 1.5 + (6 − 1.5) / 0.5
+    assert padded == pytest.approx(10.5 + SIGHT_CLEARANCE_M / 0.5, abs=1e-9)  # m
+    just_over = exact + 2 * 0.001  # the line passes the edge 1 mm above it
+    assert visible(np.array([just_over]), exact)[0]  # the knife edge: seen without clearance
+    assert not visible(np.array([just_over]), padded)[0]
+    assert visible(np.array([exact + 2 * 0.1]), padded)[0]  # 0.1 m above the edge: seen
+
+
+def test_the_floors_over_a_passage_keep_the_clearance_too():
+    """A line under a gateway's floors (bottom 4 m, top 12 m) hides a wider band by the
+    clearance at both ends."""
+    bridge = np.array([[10.0, -5.0, 10.0, 5.0]])
+    src, dst = np.array([[0.0, 0.0]]), np.array([[20.0, 0.0]])
+    lo0, up0 = bridge_interval(src, 1.5, dst, bridge, np.array([4.0]), np.array([12.0]), 0.0)
+    lo, up = bridge_interval(src, 1.5, dst, bridge, np.array([4.0]), np.array([12.0]))
+    assert lo0[0] == pytest.approx(6.5, abs=1e-9) and up0[0] == pytest.approx(22.5, abs=1e-9)
+    assert lo[0] == pytest.approx(6.5 - SIGHT_CLEARANCE_M / 0.5, abs=1e-9)  # m
+    assert up[0] == pytest.approx(22.5 + SIGHT_CLEARANCE_M / 0.5, abs=1e-9)  # m
