@@ -144,3 +144,18 @@ def test_bad_target_edits_say_what_is_wrong(own_plan):
     b = p.site.planned[0].footprint.representative_point()
     with pytest.raises(InputError, match="stands inside a building"):
         edit_targets(p, add_xy=np.array([[b.x, b.y]]))
+
+
+def test_the_plan_says_which_registration_processing_its_promise_assumes(default_plan):
+    """The registration error is that of one adjustment of every scan; the summary (and so
+    the booklet and the report, which print it) says so, and that pairwise registration
+    along the links can do worse."""
+    from planner.app.report import ReportContent
+    from planner.pipeline.planning import REGISTRATION_PROCESSING
+
+    summary = default_plan.summary()
+    line = next(m for m in summary.splitlines() if m.startswith("Registration error: worst"))
+    assert line.endswith(REGISTRATION_PROCESSING)
+    assert "one adjustment" in line and "pair by pair" in line
+    text = str(ReportContent(default_plan).assumptions().data)
+    assert "pair by pair along the links" in text and "20 mm from their edges" in text

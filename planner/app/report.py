@@ -21,8 +21,10 @@ from IPython.display import HTML
 
 from planner.atomic import write_text_atomic
 from planner.errors import PlannerError
+from planner.pipeline.planning import REGISTRATION_PROCESSING
 from planner.pipeline.requirements import PlanSettings, field_specs
 from planner.pipeline.result import Plan
+from planner.pipeline.visibility import SIGHT_CLEARANCE_M
 from planner.reference import REFERENCES
 
 __all__ = ["ReportContent", "make_report"]
@@ -214,8 +216,11 @@ class ReportContent:
         items = [
             f"Accuracy model: {html.escape(st.model_description())}, the ranging RMS at "
             "the slope distance (docs/science.md of tls-planner).",
-            f"Registration error: {reg}.",
-            "Visibility: 2.5-D — footprints extruded to their heights block the beam; flat ground.",
+            f"Registration error: {reg}."
+            + (f" {REGISTRATION_PROCESSING}" if st.computes_registration else ""),
+            "Visibility: 2.5-D — footprints extruded to their heights block the beam, every "
+            f"sight line keeping {SIGHT_CLEARANCE_M * 1000:.0f} mm from their edges, corners "
+            "and roof edges; flat ground.",
             "Target sizes: the larger of Sossa's 2d (flat) / 4d (sphere, cylinder) rule (2d / "
             "cos θ on a wall seen at incidence θ) and practice "
             f"({st.min_points_per_quadrant:g} points per checkerboard quadrant, "

@@ -1287,6 +1287,16 @@ def _common_count(net: Network, tc: TargetCandidates, lk: Link) -> int:
     return int((usable[:, lk.parent] & usable[:, lk.child] & ~tc.is_control).sum())
 
 
+#: What the predicted registration error assumes of the registration software (said in
+#: the summary, the report and the booklet through the summary's message).
+REGISTRATION_PROCESSING = (
+    "It assumes the scans are registered together in one adjustment (every scan's targets "
+    "and surfaces at once, as a registration program's network or bundle adjustment does); "
+    "registered pair by pair along the links instead, the errors add up along the chain "
+    "and can exceed it."
+)
+
+
 def _registration_messages(
     coverage: pd.DataFrame, links: pd.DataFrame, st: PlanSettings
 ) -> list[str]:
@@ -1306,7 +1316,8 @@ def _registration_messages(
     row = cov.loc[i]
     out = [
         f"Registration error: worst {worst[i]:.1f} mm (m_{parts.loc[i].idxmax().split('_')[2]}) at "
-        f"{row['sample_id']} scanned from {row['station_id']}; median {worst.median():.1f} mm."
+        f"{row['sample_id']} scanned from {row['station_id']}; median {worst.median():.1f} mm. "
+        + REGISTRATION_PROCESSING
     ]
     if len(links):
         weak = links.loc[links["link_rms_mm"].idxmax()]
