@@ -426,6 +426,7 @@ def test_stricter_plan_then_bad_upload(page, tmp_path):
     second = count.inner_text()
     assert int(second.split()[0]) > int(first.split()[0])
     assert "samples unmet" in page.locator("h3:has(.station-count)").inner_text()
+    count.scroll_into_view_if_needed()  # the page is scrolled down to the Plan button
     page.screenshot(path=str(ARTIFACTS / "dashboard-plan.png"), full_page=True)
     # a bad footprint: a self-intersecting polygon
     bad = tmp_path / "bowtie.geojson"
