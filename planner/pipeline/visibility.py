@@ -102,6 +102,7 @@ def _clear_height_kernel(src, zs, dst, edges, heights, pad, out):  # pragma: no 
     m = edges.shape[0]
     lo_x, hi_x = np.empty(m), np.empty(m)
     lo_y, hi_y = np.empty(m), np.empty(m)
+    reach = _reach(edges, pad)
     for e in range(m):
         lo_x[e] = min(edges[e, 0], edges[e, 2]) - pad
         hi_x[e] = max(edges[e, 0], edges[e, 2]) + pad
@@ -115,17 +116,30 @@ def _clear_height_kernel(src, zs, dst, edges, heights, pad, out):  # pragma: no 
         for e in range(m):
             if hi_x[e] < x_lo or lo_x[e] > x_hi or hi_y[e] < y_lo or lo_y[e] > y_hi:
                 continue
-            t = _crossing(sx, sy, rx, ry, edges[e], pad)
+            t = _crossing(sx, sy, rx, ry, edges[e], reach[e])
             if t > 0.0:
                 out[i] = max(out[i], z0 + (heights[e] + pad - z0) / t)
 
 
+@njit(cache=True, nogil=True)
+def _reach(edges, pad):  # pragma: no cover - compiled
+    """How far past its ends each edge reaches when lengthened by ``pad`` at both ends, as
+    a fraction of its length (once per edge, not per sight line)."""
+    out = np.zeros(edges.shape[0])
+    if pad > 0.0:
+        for e in range(edges.shape[0]):
+            length = np.hypot(edges[e, 2] - edges[e, 0], edges[e, 3] - edges[e, 1])
+            if length > 0.0:
+                out[e] = pad / length
+    return out
+
+
 @njit(cache=True, nogil=True, inline="always")
-def _crossing(sx, sy, rx, ry, edge, pad):  # pragma: no cover - compiled
+def _crossing(sx, sy, rx, ry, edge, reach):  # pragma: no cover - compiled
     """Where the sight line from (sx, sy) along (rx, ry) crosses ``edge`` (x0, y0, x1, y1)
-    lengthened by ``pad`` at both ends: the fraction ``t`` of the way when ``0 < t < 1``
-    and the crossing lies on it (``-pad/|q| <= u <= 1 + pad/|q|``); ``-1`` when it does
-    not cross (parallel pairs do not)."""
+    lengthened at both ends by ``reach`` of its length (:func:`_reach`): the fraction
+    ``t`` of the way when ``0 < t < 1`` and the crossing lies on it
+    (``-reach <= u <= 1 + reach``); ``-1`` when it does not cross (parallel pairs do not)."""
     qx, qy = edge[2] - edge[0], edge[3] - edge[1]
     wx, wy = edge[0] - sx, edge[1] - sy
     den = rx * qy - ry * qx
@@ -133,7 +147,6 @@ def _crossing(sx, sy, rx, ry, edge, pad):  # pragma: no cover - compiled
         return -1.0
     t = (wx * qy - wy * qx) / den
     u = (wx * ry - wy * rx) / den
-    reach = pad / np.sqrt(qx * qx + qy * qy) if pad > 0.0 else 0.0
     if 1e-9 < t < 1.0 - 1e-9 and -reach <= u <= 1.0 + reach:
         return t
     return -1.0
@@ -174,11 +187,12 @@ def bridge_interval(
 def _bridge_kernel(src, zs, dst, edges, bottoms, tops, pad, lo, up):  # pragma: no cover
     """Every (sight line, bridge edge) crossing, as in :func:`_clear_height_kernel`: the
     interval it hides widens ``[lo, up)``."""
+    reach = _reach(edges, pad)
     for i in range(src.shape[0]):
         sx, sy, z0 = src[i, 0], src[i, 1], zs[i]
         rx, ry = dst[i, 0] - sx, dst[i, 1] - sy
         for e in range(edges.shape[0]):
-            t = _crossing(sx, sy, rx, ry, edges[e], pad)
+            t = _crossing(sx, sy, rx, ry, edges[e], reach[e])
             if t > 0.0:
                 lo[i] = min(lo[i], z0 + (bottoms[e] - pad - z0) / t)
                 up[i] = max(up[i], z0 + (tops[e] + pad - z0) / t)
