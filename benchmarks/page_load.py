@@ -18,15 +18,13 @@ import statistics
 import subprocess
 import sys
 import time
-import urllib.request
 from pathlib import Path
 
 from _results import machine, write_section
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 from planner.app.notebooks import notebook_path
-from planner.app.serve import port_is_free, voila_command
-from planner.app.voila_server import INSTANCE_PATH, POOL_HEADER
+from planner.app.serve import port_is_free, server_state, voila_command
 
 FLAGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking", "--no-first-run"]
 
@@ -35,15 +33,11 @@ def _port() -> int:
     return next(p for p in range(18800, 18900) if port_is_free(p))
 
 
-def _warm(url: str, timeout_s: float = 180.0) -> float:
+def _warm(port: int, timeout_s: float = 180.0) -> float:
     t0 = time.perf_counter()
     while time.perf_counter() - t0 < timeout_s:
-        try:
-            with urllib.request.urlopen(url + INSTANCE_PATH.lstrip("/"), timeout=5) as r:
-                if r.headers.get(POOL_HEADER) == "warm":
-                    return time.perf_counter() - t0
-        except OSError:
-            pass
+        if server_state(port) == "warm":
+            return time.perf_counter() - t0
         time.sleep(0.2)
     raise SystemExit("the dashboard server did not start")
 
@@ -56,7 +50,7 @@ def loads(preheat: bool, n: int, gap_s: float) -> tuple[float, list[float]]:
     proc = subprocess.Popen(cmd, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     url = f"http://127.0.0.1:{port}/"
     try:
-        start_s = _warm(url)
+        start_s = _warm(port)
         out = []
         with sync_playwright() as pw:
             browser = pw.chromium.launch(executable_path="/usr/bin/chromium", args=FLAGS)

@@ -13,16 +13,15 @@ import os
 import shutil
 import socket
 import subprocess
+import tempfile
 import time
-import urllib.request
 import zipfile
 from pathlib import Path
 
 import pytest
 
 from planner.app.notebooks import notebook_path
-from planner.app.serve import voila_command
-from planner.app.voila_server import INSTANCE_PATH, POOL_HEADER
+from planner.app.serve import server_state, voila_command
 
 # one worker runs this module (scripts/test distributes by file): one dashboard server and
 # one page for all of its tests
@@ -64,18 +63,17 @@ def _serve(notebook: str, **env_extra: str):
     port = free_port()
     cmd, env = voila_command(notebook_path(notebook), port)
     env.update(env_extra)
-    proc = subprocess.Popen(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+    # Voilà's log to a file: a pipe nobody reads fills up and stalls the server
+    log = tempfile.TemporaryFile()
+    proc = subprocess.Popen(cmd, env=env, stdout=log, stderr=subprocess.STDOUT)
     url = f"http://127.0.0.1:{port}/"
     deadline = time.time() + 90
     while time.time() < deadline:
         if proc.poll() is not None:
-            pytest.fail(f"voila exited: {proc.stdout.read().decode(errors='replace')[-2000:]}")
-        try:
-            with urllib.request.urlopen(url + INSTANCE_PATH.lstrip("/"), timeout=5) as r:
-                if r.headers.get(POOL_HEADER) == "warm":
-                    break
-        except OSError:
-            pass
+            log.seek(0)
+            pytest.fail(f"voila exited: {log.read().decode(errors='replace')[-2000:]}")
+        if server_state(port) == "warm":
+            break
         time.sleep(0.5)
     else:
         proc.kill()
@@ -86,6 +84,7 @@ def _serve(notebook: str, **env_extra: str):
         proc.wait(10)
     except subprocess.TimeoutExpired:
         proc.kill()
+    log.close()
 
 
 @pytest.fixture(scope="module")
@@ -242,13 +241,20 @@ def _station_boxes(page) -> list[dict]:
     return _marks(page, 10, 1e9)
 
 
-def test_dragging_a_station_changes_the_coverage(page):
+def _edit_tab_stations(page) -> list[dict]:
+    """Open the Edit stations tab; the screen centres of its station marks, one for each
+    station the plan's count says."""
     n = int(page.locator(".station-count").inner_text().split()[0])
     page.get_by_text("Edit stations", exact=True).click()
     page.locator(".planner-whatif-map").wait_for(timeout=30_000)
     page.wait_for_timeout(1000)
     boxes = _station_boxes(page)
     assert len(boxes) == n
+    return boxes
+
+
+def test_dragging_a_station_changes_the_coverage(page):
+    boxes = _edit_tab_stations(page)
     b = boxes[0]
     page.mouse.move(b["x"], b["y"])
     page.mouse.down()
@@ -306,12 +312,7 @@ def _stations_in(status: str) -> int:
 def test_adding_deleting_and_locking_by_hand(page):
     """Add a station where clicked, delete one, rule a target out, lock a station and
     re-optimise around it: each judged again, the locked station kept where it stood."""
-    n = int(page.locator(".station-count").inner_text().split()[0])
-    page.get_by_text("Edit stations", exact=True).click()
-    page.locator(".planner-whatif-map").wait_for(timeout=30_000)
-    page.wait_for_timeout(1000)
-    boxes = _station_boxes(page)
-    assert len(boxes) == n
+    boxes = _edit_tab_stations(page)
     # add: a click on free ground next to a station (stations stand on free ground)
     page.get_by_role("button", name="Add station", exact=True).click()
     marks = _marks(page, 0, 1e9)
@@ -326,7 +327,7 @@ def test_adding_deleting_and_locking_by_hand(page):
         except timeout:  # not taken: the next spot
             continue
     assert "judged again" in text, text
-    assert _stations_in(text) >= n + 1
+    assert _stations_in(text) >= len(boxes) + 1
     assert len(_station_boxes(page)) == _stations_in(text)
     # delete: the station clicked goes
     before = _stations_in(text)

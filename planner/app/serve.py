@@ -34,7 +34,7 @@ from pathlib import Path
 from planner.app.voila_server import INSTANCE_ENV, INSTANCE_PATH, POOL_HEADER
 from planner.errors import InputError
 
-__all__ = ["UPLOAD_ROOT_ENV", "port_is_free", "serve", "voila_command"]
+__all__ = ["UPLOAD_ROOT_ENV", "port_is_free", "serve", "server_state", "voila_command"]
 
 #: Where the dashboards put uploaded files (a folder the server removes when it stops).
 UPLOAD_ROOT_ENV = "TLS_PLANNER_UPLOAD_ROOT"
@@ -125,8 +125,9 @@ def _stop(proc: subprocess.Popen, grace_s: float = 10.0) -> None:
             os.kill(pid, signal.SIGKILL)
 
 
-def _answers(port: int, instance: str) -> str:
-    """``""`` until this server (not another one on the port) answers, then ``"warming"``
+def server_state(port: int, instance: str = "") -> str:
+    """``""`` until the server with this instance id (``planner serve`` gives each its own;
+    a server started without one answers ``""``) answers on ``port``, then ``"warming"``
     while its pre-started kernel runs the dashboard and ``"warm"`` when a page opens at
     once; no page is loaded, so no kernel is started by asking."""
     try:
@@ -175,7 +176,7 @@ def serve(
         url = f"http://127.0.0.1:{port}/"
         deadline = time.monotonic() + ready_timeout_s
         said_warming = False
-        while not stop_requested and (state := _answers(port, instance)) != "warm":
+        while not stop_requested and (state := server_state(port, instance)) != "warm":
             if state == "warming" and not said_warming:
                 say(f"Starting the dashboard at {url}: running it once so that it opens at once")
                 said_warming = True
