@@ -77,6 +77,50 @@ def test_every_sample_is_judged_on_scanner_plus_registration(which, request):
     assert (reg > 0.3).mean() > 0.5 and reg.max() > 0.5
 
 
+def _hidden_sight_lines(p) -> list[tuple[str, str, str]]:
+    """(station, target, sphere) for every target sight the plan counts on (its station
+    list) that a sphere target set up — its own size, the line sampled every 5 mm or finer,
+    independent of the planner's test — hides."""
+    st = p.stations.set_index("station_id")
+    spheres = p.targets[p.targets["type"] == "sphere"]
+    out = []
+    u = np.linspace(0.0, 1.0, 8001)[1:-1, None]
+    for r in p.targets.itertuples():
+        for sid in r.station_ids:
+            a = st.loc[sid, ["x", "y", "instrument_height_m"]].to_numpy(dtype=float)
+            line = a + u * (np.array([r.x, r.y, r.z]) - a)
+            for s in spheres.itertuples():
+                centre = np.array([s.x, s.y, s.z])
+                if s.target_id != r.target_id and (
+                    np.linalg.norm(line - centre, axis=1).min() < s.size_mm / 2000.0
+                ):
+                    out.append((sid, r.target_id, s.target_id))
+    return out
+
+
+@pytest.mark.parametrize("which", ["default_plan", "block_plan"])
+def test_no_target_a_station_counts_on_is_behind_another_target(which, request):
+    """Spheres on stands are set up together and hide what lies behind them: a virtual
+    survey found stations of the default plan and of a block that could not see targets of
+    their links (before: 4 and 25 hidden sight lines). No target a station is listed for —
+    its links' and the adjustment's observations — is behind a sphere of the plan."""
+    p = request.getfixturevalue(which)
+    assert (p.targets["type"] == "sphere").sum() >= 5  # spheres on stands are in the plan
+    hidden = _hidden_sight_lines(p)
+    if which == "block_plan":
+        assert hidden == []
+    else:  # a link that has no other targets keeps one behind a sphere, and the plan says so
+        linked = {
+            (s, t)
+            for r in p.links.itertuples()
+            for s in (r.station_a, r.station_b)
+            for t in r.target_ids.split(";")
+        }
+        assert {(s, t) for s, t, _ in hidden} <= linked
+        assert any("link(s) use a target behind another link's sphere" in m for m in p.messages)
+    _check_links(p)  # and the links still have three usable, spread targets
+
+
 def test_the_scanner_alone_overstates_what_a_plan_meets(default_plan):
     """Plan by the scanner's error alone, then judge those stations with the registration
     error of their own network: fewer samples meet. The plan that counts registration

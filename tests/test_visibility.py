@@ -1,6 +1,6 @@
 """Line of sight: the compiled crossing test against shapely's segment intersections (the
-exact geometry, ``clearance_m=0``), and the clearance a sight line keeps from footprint
-corners and roof edges."""
+exact geometry, ``clearance_m=0``), the clearance a sight line keeps from footprint
+corners and roof edges, and targets on stands as obstacles."""
 
 from __future__ import annotations
 
@@ -10,8 +10,10 @@ import shapely
 
 from planner.pipeline.visibility import (
     SIGHT_CLEARANCE_M,
+    STAND_RADIUS_M,
     bridge_interval,
     clear_height,
+    stand_blocks,
     visible,
 )
 
@@ -127,3 +129,36 @@ def test_the_floors_over_a_passage_keep_the_clearance_too():
     assert lo0[0] == pytest.approx(6.5, abs=1e-9) and up0[0] == pytest.approx(22.5, abs=1e-9)
     assert lo[0] == pytest.approx(6.5 - SIGHT_CLEARANCE_M / 0.5, abs=1e-9)  # m
     assert up[0] == pytest.approx(22.5 + SIGHT_CLEARANCE_M / 0.5, abs=1e-9)  # m
+
+
+def test_a_sphere_on_its_stand_hides_what_is_behind_it():
+    """A station at 1.5 m sighting a target 20 m away at 1.6 m: a 0.2 m-radius sphere on the
+    line 12 m out hides it; one 0.25 m beside the line (past radius + clearance) does not,
+    nor one behind the target or behind the station; its stand (a pole up to the sphere)
+    hides a line that passes over it lower down, not one passing above the sphere."""
+    src = np.array([[0.0, 0.0, 1.5]])
+    dst = np.array([[20.0, 0.0, 1.6]])
+    spheres = np.array(
+        [
+            [12.0, 0.0, 1.56],  # on the line
+            [12.0, 0.25, 1.56],  # beside it, 0.25 m > 0.2 + 0.02
+            [12.0, 0.21, 1.56],  # beside it, within radius + clearance
+            [22.0, 0.0, 1.6],  # behind the target
+            [-2.0, 0.0, 1.5],  # behind the station
+        ]
+    )
+    got = stand_blocks(src, dst, spheres, 0.2)[0]
+    assert got.tolist() == [True, False, True, False, False]
+    # the stand: a line descending to a mark on the ground passes over a stand 10 m out at
+    # 0.75 m, below its sphere at 1.6 m (hidden); a line rising to 3 m passes the sphere's
+    # top (1.8 m) at 2.25 m (seen)
+    stand = np.array([[10.0, 0.0, 1.6]])
+    down = stand_blocks(src, np.array([[20.0, 0.0, 0.0]]), stand, 0.2)[0, 0]
+    up = stand_blocks(src, np.array([[20.0, 0.0, 3.0]]), stand, 0.2)[0, 0]
+    assert down and not up
+    # the pole's width: a descending line 0.06 m beside it is hidden, 0.08 m beside it seen
+    assert STAND_RADIUS_M + SIGHT_CLEARANCE_M == pytest.approx(0.07, abs=1e-12)  # m
+    near = np.array([[10.0, 0.06, 1.6]])
+    far = np.array([[10.0, 0.08, 1.6]])
+    low = np.array([[20.0, 0.0, 0.0]])
+    assert stand_blocks(src, low, near, 0.01)[0, 0] and not stand_blocks(src, low, far, 0.01)[0, 0]

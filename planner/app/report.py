@@ -220,7 +220,8 @@ class ReportContent:
             + (f" {REGISTRATION_PROCESSING}" if st.computes_registration else ""),
             "Visibility: 2.5-D — footprints extruded to their heights block the beam, every "
             f"sight line keeping {SIGHT_CLEARANCE_M * 1000:.0f} mm from their edges, corners "
-            "and roof edges; flat ground.",
+            "and roof edges; flat ground; the spheres on their stands, set up together, hide "
+            "the targets behind them.",
             "Target sizes: the larger of Sossa's 2d (flat) / 4d (sphere, cylinder) rule (2d / "
             "cos θ on a wall seen at incidence θ) and practice "
             f"({st.min_points_per_quadrant:g} points per checkerboard quadrant, "

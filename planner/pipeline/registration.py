@@ -30,7 +30,7 @@ import heapq
 import math
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 from scipy.spatial import cKDTree
@@ -46,7 +46,13 @@ from planner.pipeline.facades import (
     in_opening,
     party_wall_mask,
 )
-from planner.pipeline.visibility import bridge_interval, clear_height, edges_in_box, visible
+from planner.pipeline.visibility import (
+    bridge_interval,
+    clear_height,
+    edges_in_box,
+    stand_blocks,
+    visible,
+)
 from planner.registration_error import (
     CONTROL,
     MAX_CONDITION,
@@ -560,8 +566,11 @@ class Network:
         """The registration error every candidate would have if it joined this network, for
         choosing stations with their registration in view: a station of the network keeps
         its own; another candidate gets the pose error of the nearest tied station, carried
-        to where it stands, plus the error of one typical link of this network (the median
-        one). An estimate — the chosen stations' network is then built and judged exactly."""
+        to where it stands, plus the error of one of this network's better links (its lower
+        quartile). An estimate, on the hopeful side: the chosen stations' network is then
+        built and judged exactly, and stations are added again where it falls short, while
+        a pessimistic estimate (the median link, once targets hide each other) could rule
+        out every candidate and leave the samples short."""
         if self.error is None or not self.error.tied.any():
             return None
         tied = np.flatnonzero(self.error.tied)
@@ -573,7 +582,7 @@ class Network:
         links = list(self.error.link_cov.values())
         if links:
             size = [np.trace(c[:3, :3]) for c in links]
-            pose += links[int(np.argsort(size)[len(size) // 2])]
+            pose += links[int(np.argsort(size)[len(size) // 4])]
         own = self.stations[self.error.tied]
         pose[own] = self.error.pose_cov[self.error.tied]
         return Registration(pose_cov=pose, station_xyz=xyz, tied=np.ones(len(xyz), dtype=bool))
@@ -895,19 +904,22 @@ class _Layout:
         ok = cl.fixed and cl.overlap_pct >= self.ctx.settings.min_overlap_pct
         return cl if ok else None
 
-    def link(self, i: int, j: int, placed: set[int] | None = None) -> tuple[list[int], float]:
+    def link(
+        self, i: int, j: int, placed: set[int] | None = None, stands: _Stands | None = None
+    ) -> tuple[list[int], float]:
         """Targets and error of registering j to i (i may be CONTROL); cached unless
-        ``placed`` (targets already set up, preferred) is given. Cloud to cloud (no
-        targets): the cloud link; hybrid: the cloud link unless it is weaker than the goal
-        and the targets do better."""
+        ``placed`` (targets already set up, preferred) is given; ``stands``: the spheres set
+        up and the sight lines in use, which rule out targets hidden or hiding. Cloud to
+        cloud (no targets): the cloud link; hybrid: the cloud link unless it is weaker than
+        the goal and the targets do better."""
         cl = self.cloud(i, j)
         if cl is not None or self.mode == "cloud":
             err = self._cloud_error(cl, j) if cl is not None else np.inf
             if self.mode == "cloud" or err <= self.goal_mm:
                 return [], err
-            by_targets = self._target_link(i, j, placed)
+            by_targets = self._target_link(i, j, placed, stands)
             return by_targets if by_targets[1] < err else ([], err)
-        return self._target_link(i, j, placed)
+        return self._target_link(i, j, placed, stands)
 
     def _cloud_error(self, cl: CloudLink, j: int) -> float:
         """A cloud link's own error at the child's facade points [mm] (kept per link)."""
@@ -926,7 +938,7 @@ class _Layout:
         return float(np.sqrt(np.einsum("nij,jk,nik->ni", g, cov, g).max()))
 
     def _target_link(
-        self, i: int, j: int, placed: set[int] | None = None
+        self, i: int, j: int, placed: set[int] | None = None, stands: _Stands | None = None
     ) -> tuple[list[int], float]:
         key = (i, j)
         if placed is None and key in self._links:
@@ -939,16 +951,21 @@ class _Layout:
         tc = self.tc
         if i == CONTROL:
             common = np.flatnonzero(self.sight.usable[:, j] & tc.is_control)
-            s2 = np.array([tc.control_rms_mm[t] ** 2 + self.sigma(j, t) ** 2 for t in common])
         else:
             common = _linkable(self.sight, tc, i, j)
+        if stands is not None:
+            common = common[~stands.hidden((i, j), common)]
+        if i == CONTROL:
+            s2 = np.array([tc.control_rms_mm[t] ** 2 + self.sigma(j, t) ** 2 for t in common])
+        else:
             s2 = np.array([self.sigma(i, t) ** 2 + self.sigma(j, t) ** 2 for t in common])
         out: tuple[list[int], float] = ([], np.inf)
-        if len(common) >= 3:
+        free = np.ones(len(common), dtype=bool)
+        while free.sum() >= 3:
             out = _choose_link_targets(
-                common,
+                common[free],
                 tc.xyz,
-                s2,
+                s2[free],
                 self.station_xyz[j],
                 probe,
                 placed or set(),
@@ -957,6 +974,11 @@ class _Layout:
                 self.goal_mm,
                 self.by_hand,
             )
+            hiding = stands.among((i, j), out[0]) if stands is not None else []
+            if not hiding:  # no sphere of the choice hides another of it
+                break
+            free &= ~np.isin(common, hiding)
+            out = ([], np.inf)
         if placed is None:
             self._links[key] = self._memo[shared] = out
         return out
@@ -967,6 +989,88 @@ class _Layout:
             (a, b) for a, b in self.pairs if min(self.link(a, b)[1], self.link(b, a)[1]) <= weak_mm
         ]
         return _components(self.k, ok)
+
+
+#: A link whose targets the spheres of earlier links hide is registered to another station
+#: instead if that link's error is within this factor of its own (or within the goal); else
+#: it keeps its targets, and the plan says which sphere to set up only after its scans.
+HIDDEN_DETOUR = 1.5
+
+
+class _Stands:
+    """The sphere targets set up so far, as obstacles to the other targets' sight lines
+    (:func:`~planner.pipeline.visibility.stand_blocks`; each as big as the largest sphere of
+    the inventory, the size a later user may still need), and the sight lines in use, which
+    a further sphere must not hide."""
+
+    def __init__(self, ctx: Context, tc: TargetCandidates, station_xyz: np.ndarray) -> None:
+        sizes = [i.size_mm for i in ctx.settings.inventory if i.type == "sphere"]
+        self.radius_m = max(sizes, default=0.0) / 2000.0
+        self.tc, self.station_xyz = tc, station_xyz
+        self.end = tc.xyz.copy()
+        self.end[:, :2] += SIGHT_OFFSET_M * tc.normal  # where target sights end (sights)
+        self.spheres: list[int] = []
+        self.lines: set[tuple[int, int]] = set()  # (station column, target)
+
+    def _blocks(self, src: np.ndarray, dst: np.ndarray, own: np.ndarray) -> np.ndarray:
+        """Whether the spheres set up hide each sight line (``own``: its target)."""
+        block = stand_blocks(src, dst, self.tc.xyz[self.spheres], self.radius_m)
+        return (block & (own[:, None] != np.array(self.spheres)[None, :])).any(axis=1)
+
+    def hidden(self, stations: Sequence[int], targets: np.ndarray) -> np.ndarray:
+        """Mask over ``targets``: hidden from one of ``stations`` (columns; CONTROL
+        skipped) by a sphere set up, or a sphere that would hide a sight line in use."""
+        out = np.zeros(len(targets), dtype=bool)
+        own = [j for j in stations if j != CONTROL]
+        if not len(targets):
+            return out
+        if self.spheres and own:
+            src = np.repeat(self.station_xyz[own], len(targets), axis=0)
+            tt = np.tile(targets, len(own))
+            out |= self._blocks(src, self.end[tt], tt).reshape(len(own), -1).any(axis=0)
+        new = (self.tc.type[targets] == "sphere") & ~np.isin(targets, self.spheres)
+        if self.lines and new.any():
+            lines = sorted(self.lines)
+            src = self.station_xyz[[j for j, _ in lines]]
+            dst = self.end[[t for _, t in lines]]
+            hides = stand_blocks(src, dst, self.tc.xyz[targets[new]], self.radius_m)
+            out[new] |= hides.any(axis=0)
+        return out
+
+    def among(self, stations: Sequence[int], targets: Sequence[int]) -> list[int]:
+        """The spheres not yet set up among ``targets`` that hide another of them from one
+        of ``stations`` (columns; CONTROL skipped)."""
+        own = [j for j in stations if j != CONTROL]
+        targets = np.asarray(targets, dtype=np.int64)
+        new = targets[(self.tc.type[targets] == "sphere") & ~np.isin(targets, self.spheres)]
+        if not len(new) or not own:
+            return []
+        src = np.repeat(self.station_xyz[own], len(targets), axis=0)
+        tt = np.tile(targets, len(own))
+        block = stand_blocks(src, self.end[tt], self.tc.xyz[new], self.radius_m)
+        block &= tt[:, None] != new[None, :]
+        return [int(u) for u in new[block.any(axis=0)]]
+
+    def hide(self, sight: Sight, targets: Sequence[int]) -> Sight:
+        """``sight`` (a copy) with those of ``targets`` the spheres set up hide from a
+        station not usable from it (a link's own sight lines kept: the few a link can only
+        have behind another's sphere, which the network's message tells)."""
+        usable = sight.usable.copy()
+        rows = np.asarray(sorted(targets), dtype=np.int64)
+        tt, jj = np.nonzero(usable[rows])
+        tt = rows[tt]
+        if self.spheres and len(tt):
+            hidden = self._blocks(self.station_xyz[jj], self.end[tt], tt)
+            hidden &= [(j, t) not in self.lines for j, t in zip(jj, tt, strict=True)]
+            usable[tt[hidden], jj[hidden]] = False
+        return replace(sight, usable=usable)
+
+    def set_up(self, stations: Sequence[int], targets: Sequence[int]) -> None:
+        """Targets now in use, seen from ``stations`` (columns; CONTROL skipped)."""
+        for t in targets:
+            if self.tc.type[t] == "sphere" and t not in self.spheres:
+                self.spheres.append(int(t))
+            self.lines |= {(int(j), int(t)) for j in stations if j != CONTROL}
 
 
 def build_network(
@@ -1019,18 +1123,39 @@ def build_network(
     placed: set[int] = set()
     links: list[Link] = []
     link_error: dict[tuple[int, int], float] = {}
+    stands = _Stands(ctx, tc, station_xyz)
+    tied = [] if datum is None or datum == CONTROL else [datum]
+    paired = set(lay.pairs)
+    behind = 0  # links that can only use a target another link's sphere hides
     for parent, child in lay.tree:
-        targets, err = lay.link(parent, child, placed)
+        targets, err = lay.link(parent, child, placed, stands)
         cl = lay.cloud(parent, child)
         if not targets and cl is not None:  # cloud to cloud
             links.append(Link(parent, child, (), cl.info))
             link_error[(parent, child)] = err
+            tied.append(child)
             continue
-        if not targets:  # cannot happen for a tree edge; keep the cached choice
+        if not targets:  # the targets set up hide this link's: register it to another
+            bound = max(lay.goal_mm, HIDDEN_DETOUR * lay.link(parent, child)[1])
+            others = [(i, lay.link(i, child, placed, stands)) for i in tied if i != parent]
+            others = [
+                (e, i, t)
+                for i, (t, e) in others
+                if t and e <= bound and (min(i, child), max(i, child)) in paired
+            ]
+            if others:
+                err, parent, targets = min(others)
+        if not targets:  # no good other either: targets that do not hide one another
+            targets, err = lay.link(parent, child, placed, _Stands(ctx, tc, station_xyz))
+            behind += 1  # behind a sphere of another link: the message says so
+        if not targets:
             targets, err = lay.link(parent, child)
         links.append(Link(parent, child, tuple(targets)))
         link_error[(parent, child)] = err
         placed.update(targets)
+        stands.set_up((parent, child), targets)
+        tied.append(child)
+    sight = stands.hide(sight, placed)  # the spheres set up hide some targets from some stations
     # the final sizes: each placed target gets the smallest item that serves every station
     # using it, and the centre RMS with that item
     users: dict[int, set[int]] = {}
@@ -1102,6 +1227,11 @@ def build_network(
     n_groups = int(_components(k, lay.pairs).max() + 1) if k else 0
     untied = int((~error.tied).sum()) if error is not None else k
     message = _message(k, k - n_cover, datum, untied, n_groups, tc, links, lay.mode)
+    if behind:
+        message += (
+            f"; {behind} link(s) use a target behind another link's sphere (set that sphere "
+            "up only after those scans)"
+        )
     linkable = [(a, b, len(_linkable(sight, tc, a, b))) for a, b in lay.pairs]
     return Network(
         stations=np.array(stations, dtype=np.int64),
