@@ -993,7 +993,8 @@ class _Layout:
 
 #: A link whose targets the spheres of earlier links hide is registered to another station
 #: instead if that link's error is within this factor of its own (or within the goal); else
-#: it keeps its targets, and the plan says which sphere to set up only after its scans.
+#: it keeps its targets, and the network's message says to set such spheres up only after
+#: those scans (which ones is not yet named: the field booklet's set-up order is to come).
 HIDDEN_DETOUR = 1.5
 
 
