@@ -321,13 +321,15 @@ def reach_bound_m(
     max_y_mm: float,
     max_z_mm: float,
     station_rms_mm: tuple[float, float] = (0.0, 0.0),
+    initial_tilt_rms_arcsec: float | None = None,
 ) -> float:
     """A distance [m] beyond which no point can meet all three limits, whatever γ and ν.
 
     From eq. 2, ``m_x² + m_y² = m_xc² + m_yc² + m_S² + (D·m_β/ρ)²`` whatever γ, so
     ``D <= ρ/m_β · √(T_x² + T_y² − m_xc² − m_yc² − a²)``; from eq. 4 with S_0 = S,
     ``m_z >= S·m_ν0/ρ``, so ``S <= ρ·T_z/m_ν0``. The smaller of the two (a search radius
-    for candidate stations: S >= D).
+    for candidate stations: S >= D). m_ν0: ``initial_tilt_rms_arcsec``, default the
+    scanner's (0 where a plan's registration part carries the tilt: no bound from eq. 4).
 
     Examples
     --------
@@ -338,5 +340,10 @@ def reach_bound_m(
     budget = max_x_mm**2 + max_y_mm**2 - sum(v * v for v in station_rms_mm)
     budget -= scanner.range_rms_mm**2
     d_xy = math.sqrt(max(budget, 0.0)) / (MM_PER_M_PER_ARCSEC * scanner.angle_rms_arcsec)
-    d_z = max_z_mm / (MM_PER_M_PER_ARCSEC * scanner.initial_tilt_rms_arcsec)
+    m_nu0 = (
+        scanner.initial_tilt_rms_arcsec
+        if initial_tilt_rms_arcsec is None
+        else initial_tilt_rms_arcsec
+    )
+    d_z = max_z_mm / (MM_PER_M_PER_ARCSEC * m_nu0) if m_nu0 > 0 else math.inf
     return min(d_xy, d_z)

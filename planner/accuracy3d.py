@@ -152,10 +152,15 @@ def point_rms_3d(
     *,
     station_rms_mm: float | tuple[float, float] = 0.0,
     incidence_noise: bool = False,
+    axis_tilt_rms_arcsec: float | None = None,
 ) -> tuple[Any, Any, Any]:
     """m_x, m_y, m_z [mm] of a point on a vertical facade by the full 3-D model (module
     docstring), the ranging RMS a + b·S at the slope distance and, with
     ``incidence_noise``, grown with the 3-D incidence (:func:`incidence_ranging_rms_mm`).
+    σ_τ, the tilt of the vertical axis: ``axis_tilt_rms_arcsec``, default the scanner's
+    m_ν0 (a scan levelled on its own; a plan whose registration part carries the frame's
+    tilt counts 0 here, :meth:`planner.pipeline.requirements.PlanSettings
+    .scan_tilt_rms_arcsec`).
 
     Examples
     --------
@@ -186,7 +191,7 @@ def point_rms_3d(
         m_s,
         scanner.angle_rms_arcsec,
         scanner.tilt_rms_arcsec,
-        scanner.initial_tilt_rms_arcsec,
+        scanner.initial_tilt_rms_arcsec if axis_tilt_rms_arcsec is None else axis_tilt_rms_arcsec,
         (m_xc * m_xc, m_yc * m_yc),
     )
     inputs = (slope_distance_m, gamma_deg, nu_deg)
@@ -198,11 +203,13 @@ def reach_bound_3d_m(
     max_x_mm: float,
     max_y_mm: float,
     station_rms_mm: tuple[float, float] = (0.0, 0.0),
+    axis_tilt_rms_arcsec: float | None = None,
 ) -> float:
     """A slope distance [m] beyond which no point meets both horizontal limits under the
     3-D model, whatever γ and ν: ``m_x² + m_y² >= (S/ρ)²·min(m_β², m_ν² + 2σ_τ²)``
     (the horizontal angle's share at ν = 0, the vertical angle's and the tilt's at
-    ν = 90°; ranging only adds).
+    ν = 90°; ranging only adds). σ_τ: ``axis_tilt_rms_arcsec``, default the scanner's
+    m_ν0 (0 where a plan's registration part carries the tilt).
 
     Examples
     --------
@@ -211,7 +218,7 @@ def reach_bound_3d_m(
     117.6
     """
     budget = max_x_mm**2 + max_y_mm**2 - sum(v * v for v in station_rms_mm)
-    tau = scanner.initial_tilt_rms_arcsec
+    tau = scanner.initial_tilt_rms_arcsec if axis_tilt_rms_arcsec is None else axis_tilt_rms_arcsec
     floor = min(scanner.angle_rms_arcsec**2, scanner.tilt_rms_arcsec**2 + 2.0 * tau**2)
     return float(np.sqrt(max(budget, 0.0) / floor) / MM_PER_M_PER_ARCSEC)
 

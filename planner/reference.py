@@ -66,6 +66,17 @@ REFERENCES: dict[str, str] = {
         "least squares, the propagation of covariances, three-dimensional conformal "
         "(rigid-body) coordinate transformations"
     ),
+    "al-sharadqah-chernov": (
+        'A. Al-Sharadqah, N. Chernov, "Error analysis for circle fitting algorithms", '
+        "Electronic Journal of Statistics 3:886–911, 2009, doi:10.1214/09-EJS419: the "
+        "second-order error analysis of geometric fits (their bias), carried out by the "
+        "planner for a sphere of known radius"
+    ),
+    "triggs2000": (
+        'B. Triggs, P. McLauchlan, R. Hartley, A. Fitzgibbon, "Bundle adjustment — a modern '
+        'synthesis", Vision Algorithms: Theory and Practice, LNCS 1883, Springer, 2000, '
+        "doi:10.1007/3-540-44480-7_21: targets and poses adjusted together"
+    ),
     "deformation-tls": (
         '"Experimental study of the deformation accuracy of terrestrial 3-D laser scanners" '
         "(in Chinese: «地面三维激光扫描仪变形精度试验研究»): Leica ScanStation2 modelled surface "

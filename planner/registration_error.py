@@ -6,17 +6,30 @@ joining (their m_xc, m_yc). This module computes those errors per station, and p
 from the targets that tie the scans together. It goes beyond the paper; the model is the
 planner's, checked by a Monte Carlo of the whole chain in ``tests/test_registration.py``.
 
-**Target centres.** A target's fitted centre is uncertain by (per axis)
+**Target centres.** A target's fitted centre is uncertain by (per axis) σ_t² = σ_floor² +
+(fit) + (systematic), with σ_r the ranging RMS and σ_l = S·m/ρ the lateral RMS of one point
+at the target's distance S, d the point spacing there and n the points on the target
+(:func:`points_on_target`):
 
-.. math::
+* a **sphere** fitted with its known radius R, its visible cap sampled evenly in the
+  projected disc: the fit's variance across the beam (the larger axis)
+  (w_r σ_r² + 8/3 σ_l²) / n, and a bias toward the scanner
+  b = (β_r σ_r² + 8/15 σ_l²) / R — noise moves points off the sphere's surface more often
+  than onto it, and the fit follows them (the second-order error analysis of geometric
+  fits of Al-Sharadqah & Chernov 2009, carried out here for a known radius);
+  w_r = 4/3, β_r = 4/5 for a constant ranging noise, 32/15 and 3/2 when it grows as
+  1/√cos θ with the incidence (:func:`planner.accuracy3d.incidence_ranging_rms_mm`). The
+  bias is counted as an error per axis (it points along each station's own beam);
+* a **flat** (checkerboard) target, its centre found by a plane fit and its edges: the
+  fit (σ_r² + 2σ_l²) / n (σ_r² / cos θ with incidence-dependent ranging) and the sampling
+  of its edges — an edge lies somewhere between two scan points, and scan lines square to
+  the board cross it at the same phase, so averaging along the edge does not help:
+  (d / cos θ)² / 12 per in-plane axis (d / cos θ the coarser spacing on the board),
+  counted on every axis.
 
-    \sigma_t = \sqrt{\sigma_\mathrm{floor}^2 + k\,\frac{\sigma_r^2 + 2\sigma_l^2}{3\,n}}
-
-with σ_r the ranging RMS and σ_l = S·m/ρ the lateral RMS of one point at the target's
-distance, n the number of scan points on it (:func:`points_on_target`) and k the number of
-parameters the fit determines (3 for the centre of a flat target, 4 for a sphere: centre
-and radius). The first term is a floor for what the fit does not see (the printing or
-turning of the target, centring): 0.5 mm unless given. A user figure replaces the model.
+The floor stands for what the fit does not see (the printing or turning of the target,
+centring): 0.5 mm unless given. A user figure replaces the model. Both are checked against
+targets scanned point by point and fitted in ``tests/test_targets.py``.
 
 **Pairwise registration.** Station j is registered to station i by least squares over
 their common targets: unknowns the shift δs and the rotation δω of j (6 parameters; 4 —
@@ -58,6 +71,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
+from planner.accuracy3d import MIN_COS_INCIDENCE
 from planner.errors import InputError
 from planner.units import RHO_ARCSEC
 
@@ -66,6 +80,7 @@ __all__ = [
     "Link",
     "NetworkError",
     "adjust",
+    "datum_tilt_cov",
     "pair_registration_variances",
     "point_registration_variances",
     "points_on_target",
@@ -77,8 +92,11 @@ __all__ = [
 
 #: What a centre fit does not see (printing, turning, centring) [mm], per axis.
 DEFAULT_FLOOR_MM = 0.5
-#: Parameters of the centre fit: a flat target's centre (3), a sphere's centre and radius (4).
-FIT_PARAMETERS = {"flat": 3, "sphere": 4, "cylinder": 4}
+#: The sphere fit's weights of the ranging variance (module docstring): its variance across
+#: the beam and its bias toward the scanner, for a constant ranging noise and for one
+#: growing as 1/√cos θ with the incidence.
+SPHERE_FIT_RANGING = {False: (4.0 / 3.0, 4.0 / 5.0), True: (32.0 / 15.0, 3.0 / 2.0)}
+TARGET_TYPES = ("flat", "sphere", "cylinder")
 #: The datum: station index meaning "the control network" (targets with known coordinates).
 CONTROL = -1
 
@@ -116,24 +134,46 @@ def target_centre_rms_mm(
     spacing_mm: np.ndarray,
     *,
     floor_mm: float = DEFAULT_FLOOR_MM,
+    incidence_noise: bool = False,
 ) -> np.ndarray:
     """Per-axis RMS [mm] of a target's fitted centre seen from one station (module
-    docstring): the floor, and the noise of the points on it averaged by the fit.
+    docstring): the floor, the noise of the points on it averaged by the fit, and the
+    sphere fit's bias or the sampling of a flat target's edges. ``incidence_noise``: the
+    ranging noise grows as 1/√cos θ with the incidence (the 3-D model's term). A cylinder
+    is taken as a sphere of its diameter.
 
     Examples
     --------
-    A 200 mm sphere at 50 m, 4 mm ranging, 12.4″, 10 mm spacing:
+    A 200 mm sphere at 50 m, 4 mm ranging, 12.4″, 10 mm spacing (its bias 0.18 mm):
 
     >>> round(float(target_centre_rms_mm("sphere", 200.0, 50.0, 1.0, 4.0, 12.4, 10.0)), 3)
-    0.628
+    0.652
+
+    A 200 mm checkerboard there, square to the beam: the edges' sampling, 10 / √12 mm,
+    dominates.
+
+    >>> round(float(target_centre_rms_mm("flat", 200.0, 50.0, 1.0, 4.0, 12.4, 10.0)), 3)
+    2.944
     """
-    if target_type not in FIT_PARAMETERS:
-        raise InputError(f"target type must be one of {', '.join(FIT_PARAMETERS)}")
+    if target_type not in TARGET_TYPES:
+        raise InputError(f"target type must be one of {', '.join(TARGET_TYPES)}")
     s = np.asarray(slope_distance_m, dtype=float)
-    lateral = s * 1000.0 * angle_rms_arcsec / RHO_ARCSEC
-    point_var = (np.square(range_rms_mm) + 2.0 * np.square(lateral)) / 3.0
-    n = points_on_target(target_type, size_mm, spacing_mm, cos_incidence)
-    return np.sqrt(floor_mm**2 + FIT_PARAMETERS[target_type] * point_var / n)
+    size = np.asarray(size_mm, dtype=float)
+    cos_t = np.clip(np.asarray(cos_incidence, dtype=float), MIN_COS_INCIDENCE, 1.0)
+    d = np.asarray(spacing_mm, dtype=float)
+    lateral2 = np.square(s * 1000.0 * angle_rms_arcsec / RHO_ARCSEC)
+    ranging2 = np.square(np.asarray(range_rms_mm, dtype=float))
+    n = points_on_target(target_type, size, d, cos_t)
+    if target_type == "flat":
+        if incidence_noise:
+            ranging2 = ranging2 / cos_t
+        fit = (ranging2 + 2.0 * lateral2) / n
+        systematic = np.square(d / cos_t) / 12.0
+    else:
+        w_fit, w_bias = SPHERE_FIT_RANGING[bool(incidence_noise)]
+        fit = (w_fit * ranging2 + 8.0 / 3.0 * lateral2) / n
+        systematic = np.square((w_bias * ranging2 + 8.0 / 15.0 * lateral2) / (size / 2.0))
+    return np.sqrt(floor_mm**2 + fit + systematic)
 
 
 @dataclass(frozen=True, eq=False)
@@ -197,7 +237,10 @@ def propagate(
     control_rms_mm : control targets (index → per-axis RMS of their known coordinates);
         links with ``parent = CONTROL`` register a station to them.
     levelled : 4-parameter registrations; every station's tilt is an independent error of
-        ``tilt_rms_arcsec`` per axis.
+        ``tilt_rms_arcsec`` per axis. Otherwise (6 parameters) each registration takes out
+        its station's own tilt, and ``tilt_rms_arcsec`` is the datum's: the network's
+        vertical is the datum scan's, tilted from true vertical by that much per axis
+        (:func:`datum_tilt_cov`).
     """
     k = len(station_xyz)
     control_rms_mm = control_rms_mm or {}
@@ -219,13 +262,16 @@ def propagate(
     if levelled:
         for st in range(k):
             source(("tilt", st), tau, 2)
+    elif datum is not None and tau > 0:
+        source(("tilt", datum), tau, 2)
     params = 4 if levelled else 6
     for link in links:
         if link.info is not None:
             source(("cloud", link.parent, link.child), 1.0, params)
     m = len(sigma)
     pose = {} if datum is None else {datum: np.zeros((6, m))}
-    if levelled and datum is not None:  # the datum's own tilt still moves its points
+    if ("tilt", datum) in index:  # the datum's tilt moves its points, and (6 parameters)
+        # every station registered to its frame
         pose[datum][3:5, index[("tilt", datum)] : index[("tilt", datum)] + 2] = np.eye(2)
     link_only: dict[tuple[int, int], np.ndarray] = {}
     for link in links:
@@ -322,8 +368,11 @@ def adjust(
     the estimate's error is N⁻¹GᵀW times the noise; its covariance N⁻¹ plus, for a levelled
     scanner, the part of the unestimated tilts ζ (σ_τ per axis, every station, the datum's
     too): M Σ_ζ Mᵀ with M = N⁻¹GᵀW A_tilt, the tilt itself then being the pose's rotation
-    about x and y (Ghilani, *Adjustment Computations*, 6th ed., Wiley 2017, ch. 10 and 21:
-    the covariance of adjusted unknowns; Triggs et al., "Bundle adjustment — a modern
+    about x and y. With 6 parameters every station's own tilt is estimated away, but the
+    datum's frame is held: the whole network turns with the datum's tilt about the datum
+    (:func:`datum_tilt_cov`, independent of the target noise), which is added (Ghilani,
+    *Adjustment Computations*, 6th ed., Wiley 2017, ch. 10 and 21: the covariance of
+    adjusted unknowns; Triggs et al., "Bundle adjustment — a modern
     synthesis", LNCS 1883, 2000, https://doi.org/10.1007/3-540-44480-7_21: targets and poses
     adjusted together). Stations not in ``tied`` keep zero covariance; the observations of
     ``target_rms_mm`` must tie every station in ``tied`` (the pairwise links that
@@ -389,7 +438,38 @@ def adjust(
             c[3:5, :] += cross.T
             c[3:5, 3:5] += tau2 * np.eye(2)
         pose_cov[j] = c
+    if not levelled and datum is not None:
+        pose_cov[tied] += datum_tilt_cov(station_xyz[tied], station_xyz[datum], tilt_rms_arcsec)
     return pose_cov
+
+
+def datum_tilt_cov(
+    station_xyz: np.ndarray, datum_xyz: np.ndarray, tilt_rms_arcsec: float
+) -> np.ndarray:
+    """Pose covariance (K, 6, 6) the datum's tilt gives stations registered to its frame
+    with 6 parameters: registration software holds the datum scan's frame, so the network's
+    vertical is the datum scanner's axis, tilted from true vertical by ζ (σ =
+    ``tilt_rms_arcsec`` about x and about y); every station turns with it about the datum —
+    rotation ζ, shift ζ × (s − s_datum). Heights are against true vertical, so this is an
+    error of every point, growing with its distance from the datum. (Voroshilov &
+    Karachentsev's eq. 3–4 measure heights from the initial horizontal direction with RMS
+    m_ν0 at distance S₀: for a network that direction is the datum's, at the point's
+    distance from the datum.)
+
+    Examples
+    --------
+    A station 100 m east of the datum, 12.4″ (60 µrad): 6 mm up or down.
+
+    >>> c = datum_tilt_cov(np.array([[100.0, 0.0, 1.5]]), np.array([0.0, 0.0, 1.5]), 12.4)
+    >>> round(float(np.sqrt(c[0, 2, 2])), 2)
+    6.01
+    """
+    xyz = np.atleast_2d(np.asarray(station_xyz, dtype=float))
+    jac = np.zeros((len(xyz), 6, 2))
+    jac[:, 3:5, :] = np.eye(2)
+    jac[:, 0:3, :] = -_skew((xyz - np.asarray(datum_xyz, dtype=float)) * 1000.0)[:, :, 0:2]
+    tau2 = (tilt_rms_arcsec / RHO_ARCSEC) ** 2
+    return tau2 * jac @ np.swapaxes(jac, 1, 2)
 
 
 def _eliminate_planes(n_mat, tilt_rhs, planes, station_xyz, tied, s_col, par, levelled) -> None:

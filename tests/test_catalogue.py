@@ -52,13 +52,19 @@ def test_every_catalogue_scanner_plans_the_default_site(site, name, switches):
     lo, hi = sc.vertical_fov_deg
     assert np.all((nu >= lo - 1e-6) & (nu <= hi + 1e-6))
     got = [cov[f"scanner_m_{c}_mm"].to_numpy() for c in "xyz"]
+    # the axis tilt is the registration's part when that is computed (heights against true
+    # vertical: each scan's own tilt, or the datum's turning the network), else the scan's
+    tilt = 0.0 if st.computes_registration else sc.initial_tilt_rms_arcsec
+    assert st.scan_tilt_rms_arcsec(sc) == tilt
     if st.model == "3d":  # the profile's figures through the 3-D model
-        want = point_rms_3d(s, g, nu, sc, incidence_noise=st.incidence_noise)
+        want = point_rms_3d(
+            s, g, nu, sc, incidence_noise=st.incidence_noise, axis_tilt_rms_arcsec=tilt
+        )
     else:  # eq. 2 (ranging at the slope distance) and eq. 4
         d = cov["distance_m"].to_numpy()
         want = (
             *planimetric_rms(d, g, sc, ranging_distance_m=s),
-            height_rms(s, nu, sc, initial_tilt_rms_arcsec=sc.initial_tilt_rms_arcsec),
+            height_rms(s, nu, sc, initial_tilt_rms_arcsec=tilt),
         )
     for c, a, b in zip("xyz", got, want, strict=True):
         assert a == pytest.approx(b, abs=1e-6), f"m_{c}"  # mm

@@ -12,7 +12,7 @@ from sites import run_cli as _cli
 from planner.pipeline import clouds
 from planner.pipeline.evaluate import Context
 from planner.pipeline.facades import build_facades
-from planner.pipeline.planning import plan
+from planner.pipeline.planning import REGISTRATION_GOAL, plan
 from planner.pipeline.requirements import PlanSettings, Requirements
 from planner.scanner import Scanner, catalogue
 from planner.site import Building, Site
@@ -73,7 +73,9 @@ def test_hybrid_meets_the_default_site_with_fewer_targets(modes):
     cloud = h.links[h.links["kind"] == "cloud"]
     assert len(cloud) >= 1
     assert (cloud["overlap_pct"] >= PlanSettings().min_overlap_pct).all()
-    assert (cloud["targets_placed"] == 0).all() and (cloud["link_rms_mm"] < 1.0).all()  # mm
+    # a cloud link is kept where it is within the registration goal (0.3 × the 5 mm limit)
+    goal = REGISTRATION_GOAL * 5.0
+    assert (cloud["targets_placed"] == 0).all() and (cloud["link_rms_mm"] <= goal).all()  # mm
     assert any(m.startswith("Registration: hybrid") for m in h.messages)
 
 

@@ -96,7 +96,11 @@ def test_target_centre_rms_grows_with_distance_and_shrinks_with_size():
     far = target_centre_rms_mm("sphere", 200.0, 80.0, 1.0, 2.0, 10.0, 16.0)
     bigger = target_centre_rms_mm("sphere", 400.0, 80.0, 1.0, 2.0, 10.0, 16.0)
     assert 0.5 < near < far and bigger < far
-    assert target_centre_rms_mm("flat", 100.0, 10.0, 1.0, 1.0, 5.0, 2.0, floor_mm=0.0) < 0.1
+    # a checkerboard is as good as the sampling of its edges: d / √12, stretched by 1/cos θ
+    flat = target_centre_rms_mm("flat", 100.0, 10.0, 1.0, 1.0, 5.0, 2.0, floor_mm=0.0)
+    assert flat == pytest.approx(2.0 / np.sqrt(12), abs=0.01)  # mm
+    oblique = target_centre_rms_mm("flat", 100.0, 10.0, 0.5, 1.0, 5.0, 2.0, floor_mm=0.0)
+    assert oblique == pytest.approx(4.0 / np.sqrt(12), abs=0.02)  # mm
 
 
 # -- Monte Carlo of the whole chain -------------------------------------------------------
@@ -172,11 +176,11 @@ def _rms_table(seed: int = 3):
     return rms
 
 
-def _scan(rms, nominal, levelled, tau, stations, targets, rng):
+def _scan(rms, nominal, tilted, tau, stations, targets, rng):
     """One trial's true station frames (the nominal heading, tilted by a random ``tau``
-    [rad] per axis when levelled) and every observation (station, target) → the target's
+    [rad] per axis when ``tilted``) and every observation (station, target) → the target's
     centre measured once in the station's frame [m], with its RMS of noise."""
-    rot = [(_rot_xy(*rng.normal(0, tau, 2)) if levelled else np.eye(3)) @ n for n in nominal]
+    rot = [(_rot_xy(*rng.normal(0, tau, 2)) if tilted else np.eye(3)) @ n for n in nominal]
     meas = {
         (k, t): rot[k].T @ (targets[t] - stations[k]) + rng.normal(0, sigma / 1000, 3)
         for (k, t), sigma in rms.items()
@@ -304,8 +308,8 @@ def test_control_targets_are_a_datum():
 def test_the_default_plans_registration_error_matches_a_monte_carlo_of_its_network():
     """The default site's plan, its network as planned (stations, targets, every station's
     observation of every placed target it sees, with its centre RMS), simulated end to end
-    and adjusted together; the empirical error
-    of every facade sample scanned from a registered station, along the facade, across it
+    and adjusted together, every station's axis tilted (the datum's too); the empirical
+    error of every facade sample scanned from a registered station, along the facade, across it
     and in height, against the registration RMS the coverage reports. Negative control:
     the same network without its rotations' lever arms (shift errors only) misses."""
     p = plan()
@@ -321,13 +325,14 @@ def test_the_default_plans_registration_error_matches_a_monte_carlo_of_its_netwo
     sim = _simulate_adjustment(
         net.centre_rms,
         False,
-        0.0,
+        p.scanner.initial_tilt_rms_arcsec,  # every station tilted, the datum's too
         np.random.default_rng(11),
         stations=net.station_xyz,
         targets=net.candidates.xyz,
         samples=samples,
         datum=net.datum,
         trials=trials,
+        tilted=True,
     )
     tol = 5 / np.sqrt(2 * trials)
     worst, shift_only = 0.0, 0.0
@@ -387,13 +392,16 @@ def _simulate_adjustment(
     samples=SAMPLES,
     datum=0,
     trials=TRIALS,
+    tilted=None,
 ):
     """Errors [mm] of every sample point after one joint least-squares adjustment of all
     the observations ``rms`` ((station, target) → RMS): rigid station frames (random
-    heading, and a random tilt when levelled), noisy target centres, the datum fixed at its
-    nominal frame; the adjustment is a Gauss-Newton step from the nominal poses with a
-    finite-difference Jacobian of the rigid model (nothing shared with the covariance
-    formula). Returns {station: (trials, points, 3)}."""
+    heading, and a random tilt when levelled or ``tilted``), noisy target centres, the datum
+    held at its nominal frame (untilted: heights against true vertical); the adjustment is
+    a Gauss-Newton step from the nominal poses with a finite-difference Jacobian of the
+    rigid model (nothing shared with the covariance formula). Returns {station: (trials,
+    points, 3)}."""
+    tilted = levelled if tilted is None else tilted
     keys = list(rms)
     seen = sorted({t for _, t in keys})
     col = {t: n for n, t in enumerate(seen)}
@@ -430,7 +438,7 @@ def _simulate_adjustment(
     tau = tilt_arcsec / RHO_ARCSEC
     res, true_rot = [], []
     for _ in range(trials):
-        rot, meas = _scan(rms, nominal, levelled, tau, stations, targets, rng)
+        rot, meas = _scan(rms, nominal, tilted, tau, stations, targets, rng)
         res.append(residual(np.zeros(n_u), meas))
         true_rot.append(rot)
     steps = -np.linalg.solve(normal, jac.T @ (w[:, None] * np.array(res).T)).T
@@ -467,6 +475,52 @@ def test_simultaneous_adjustment_matches_a_monte_carlo(levelled, tilt):
         chained = np.sqrt(np.column_stack(_predicted(chain, j)))
         assert (chained >= emp * (1 - REL_TOL)).all()  # the chain never promises more
         misses.append(float(np.max(chained / emp - 1)))
+    assert max(misses) > 4 * REL_TOL, misses
+
+
+def test_the_datum_tilt_turns_the_network_and_each_stations_own_is_registered_away():
+    """Without a compensator (6-parameter registrations) every station's axis is tilted
+    (12.4″ per axis, the datum's too): a registration takes out each station's own tilt,
+    but the datum's frame is held, so the whole network leans with the datum's tilt and
+    heights (against true vertical) err in proportion to the distance from the datum. The
+    adjustment's covariance with the datum's tilt matches the Monte Carlo at every sample
+    (the datum's own included); the former model — the datum exact, each station's own
+    tilt counted at its points — is rejected by it (negative control)."""
+    tilt = 12.4
+    rms = _observed_rms()
+    samples = {**SAMPLES, 0: np.array([[-20.0, 10.0, 8.0], [10.0, -25.0, 2.0]])}
+    cov = adjust(STATIONS, TARGETS, rms, np.ones(4, bool), datum=0, tilt_rms_arcsec=tilt)
+    sim = _simulate_adjustment(
+        rms, False, tilt, np.random.default_rng(29), samples=samples, tilted=True
+    )
+    assert np.sqrt(cov[0, 3, 3]) * RHO_ARCSEC == pytest.approx(tilt)  # the datum's tilt itself
+    no_tilt = adjust(STATIONS, TARGETS, rms, np.ones(4, bool), datum=0)
+    tau2 = (tilt / RHO_ARCSEC) ** 2
+    misses = []
+    for j, pts in samples.items():
+        n = len(pts)
+        along, normal = np.tile([1.0, 0.0], (n, 1)), np.tile([0.0, 1.0], (n, 1))
+
+        def rms_of(c, j=j, pts=pts, n=n, along=along, normal=normal):
+            var = point_registration_variances(
+                np.repeat(c[j][None], n, axis=0),
+                np.repeat(STATIONS[j][None], n, axis=0),
+                pts,
+                along,
+                normal,
+            )
+            return np.column_stack(var)
+
+        emp = np.sqrt(np.mean(np.square(sim[j]), axis=0))
+        np.testing.assert_allclose(emp, np.sqrt(rms_of(cov)), rtol=REL_TOL)
+        # the former model: no datum tilt, each station's own tilt at its points (the
+        # 3-D model's σ_τ terms, S·sin ν·σ_τ across and D·σ_τ in height)
+        rel = (pts - STATIONS[j]) * 1000.0
+        own = tau2 * np.column_stack(
+            [rel[:, 2] ** 2, rel[:, 2] ** 2, rel[:, 0] ** 2 + rel[:, 1] ** 2]
+        )
+        former = np.sqrt(rms_of(no_tilt) + own)
+        misses.append(float(np.max(np.abs(emp / former - 1))))
     assert max(misses) > 4 * REL_TOL, misses
 
 

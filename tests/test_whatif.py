@@ -151,11 +151,11 @@ def test_the_plan_says_which_registration_processing_its_promise_assumes(default
     the booklet and the report, which print it) says so, and that pairwise registration
     along the links can do worse."""
     from planner.app.report import ReportContent
-    from planner.pipeline.planning import REGISTRATION_PROCESSING
+    from planner.pipeline.planning import PROCESSING_WORDS
 
     summary = default_plan.summary()
     line = next(m for m in summary.splitlines() if m.startswith("Registration error: worst"))
-    assert line.endswith(REGISTRATION_PROCESSING)
+    assert line.endswith(PROCESSING_WORDS["adjustment"])
     assert "one adjustment" in line and "pair by pair" in line
     text = str(ReportContent(default_plan).assumptions().data)
     assert "pair by pair along the links" in text and "20 mm from their edges" in text

@@ -228,7 +228,7 @@ def plan_inputs(args: argparse.Namespace):
             limits=limits,
             crs=args.crs,
             # a problem farther than any station reaches cannot change the plan
-            near_m=reach_m(scanner, req, settings.station_rms_pair, settings.model),
+            near_m=reach_m(scanner, req, settings),
             **({"storey_height_m": args.storey_height_m} if args.storey_height_m else {}),
         )
     else:
@@ -509,6 +509,7 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         METHODS,
         MODELS,
         REGISTRATION_MODES,
+        REGISTRATION_PROCESSING,
         PlanSettings,
         Requirements,
         field_specs,
@@ -608,6 +609,14 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         help="how the scans are registered: targets, cloud (cloud to cloud on the surfaces "
         "the scans share), hybrid (cloud links, targets where a link is weak), or auto: the "
         "scanner profile's usual workflow, else targets (default)",
+    )
+    pl.add_argument(
+        "--registration-processing",
+        choices=REGISTRATION_PROCESSING,
+        default=None,
+        help="what the promised registration error assumes of the registration software: "
+        "adjustment, every scan's targets and surfaces adjusted together (default), or "
+        "pairwise, each scan registered to the one before it along the plan's links",
     )
     pl.add_argument(
         "--no-incidence-noise",

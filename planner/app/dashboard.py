@@ -403,6 +403,17 @@ class StationPlanner:
             ],
             style=_STYLE,
         )
+        self.processing = w.ToggleButtons(
+            options=[("in one adjustment", "adjustment"), ("pair by pair", "pairwise")],
+            value=PlanSettings().registration_processing,
+            description=SITE_LABELS["--registration-processing"],
+            tooltips=[
+                "every scan's targets and surfaces adjusted together (a registration "
+                "program's network or bundle adjustment)",
+                "each scan registered on its own to the one before it along the links",
+            ],
+            style=_STYLE,
+        )
         self.accuracy_class.observe(lambda _c: self._show_class(), "value")
         self.plan_button = w.Button(description="Plan", button_style="primary")
         self.cancel_button = w.Button(description="Cancel", icon="stop", disabled=True)
@@ -483,6 +494,7 @@ class StationPlanner:
             self.accuracy_class,
             self.model,
             self.registration,
+            self.processing,
             self.grid,
             self.registration_error,
             self.inventory,
@@ -511,6 +523,7 @@ class StationPlanner:
                 self.class_note,
                 self.model,
                 self.registration,
+                self.processing,
                 self.grid,
                 more,
                 self.zone_editor.widget,
@@ -640,6 +653,7 @@ class StationPlanner:
                 "max_z_mm": None if cls else self.max_z.value,
                 "model": self.model.value,
                 "registration": self.registration.value,
+                "registration_processing": self.processing.value,
                 "max_gamma_deg": self.max_gamma.value,
                 "max_spacing_mm": _field_value(self._specs["max_spacing_mm"], self.max_spacing),
                 "stations_per_sample": int(self.per_sample.value),
@@ -650,7 +664,7 @@ class StationPlanner:
         )
         scanner = Scanner.from_name(self.scanner.value)
         # a problem farther than any station reaches cannot change the plan
-        site = self._site(reach_m(scanner, req, settings.station_rms_pair, settings.model))
+        site = self._site(reach_m(scanner, req, settings))
         if self.zone_editor.zones:
             site = replace(site, zones=[*site.zones, *self.zone_editor.zones])
         return site, scanner, req, settings

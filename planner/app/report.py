@@ -21,7 +21,7 @@ from IPython.display import HTML
 
 from planner.atomic import write_text_atomic
 from planner.errors import PlannerError
-from planner.pipeline.planning import REGISTRATION_PROCESSING
+from planner.pipeline.planning import PROCESSING_WORDS
 from planner.pipeline.requirements import PlanSettings, field_specs
 from planner.pipeline.result import Plan
 from planner.pipeline.visibility import SIGHT_CLEARANCE_M
@@ -208,16 +208,26 @@ class ReportContent:
                 else "not counted (scanner error only)"
             )
         else:
+            together = (
+                "every scan's targets adjusted together to the datum"
+                if st.registration_processing == "adjustment"
+                else "each scan registered to the one before it along the links"
+            )
             reg = (
                 "computed from the targets: each target's centre RMS (type, size, distance, "
-                "incidence), every scan's targets adjusted together to the datum, propagated "
-                "to every sample and added in quadrature"
+                f"incidence; a sphere's fit bias, a checkerboard's edge sampling), {together}, "
+                "the datum's levelling turning the whole network (heights against true "
+                "vertical), propagated to every sample and added in quadrature"
             )
         items = [
             f"Accuracy model: {html.escape(st.model_description())}, the ranging RMS at "
             "the slope distance (docs/science.md of tls-planner).",
             f"Registration error: {reg}."
-            + (f" {REGISTRATION_PROCESSING}" if st.computes_registration else ""),
+            + (
+                f" {PROCESSING_WORDS[st.registration_processing]}"
+                if st.computes_registration
+                else ""
+            ),
             "Visibility: 2.5-D — footprints extruded to their heights block the beam, every "
             f"sight line keeping {SIGHT_CLEARANCE_M * 1000:.0f} mm from their edges, corners "
             "and roof edges; flat ground; the spheres on their stands, set up together, hide "

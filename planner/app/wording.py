@@ -30,6 +30,7 @@ SITE_LABELS = {
     "--class": "accuracy class",
     "--model": "accuracy model",
     "--registration": "registration",
+    "--registration-processing": "registration processing",
     "--registration-error": "count the registration error",
     "--no-registration-error": "count the registration error",
     "--inventory": "targets you own (name, type, size mm)",

@@ -60,6 +60,7 @@ from planner.pipeline.requirements import (
 )
 from planner.pipeline.result import Plan
 from planner.pipeline.route import field_route
+from planner.registration_error import datum_tilt_cov
 from planner.scanner import Scanner
 from planner.site import Site
 from planner.sitecheck import notes_summary
@@ -220,15 +221,21 @@ def _plan_block(
 def keep_frame(p: Plan) -> None:
     """What the stitch ties a block's network to its neighbours' with
     (:mod:`planner.pipeline.seams`), kept in the block's plan before its network and
-    workbench are dropped: every station's scanner centre, pose covariance and whether it
-    is tied (``solver["frame"]``), and every sample's m limits (hidden coverage columns)."""
+    workbench are dropped: every station's scanner centre, pose covariance about the block's
+    datum (without the lean of the datum's tilt: in the district's frame only one datum's
+    tilt counts), whether it is tied, and where the datum whose tilt leans the block stands
+    (None: a levelled scanner, control, or no network) (``solver["frame"]``); and every
+    sample's m limits (hidden coverage columns)."""
     net = p.network
     k = len(net.stations) if net is not None else 0
-    p.solver["frame"] = (
-        net.station_xyz.copy() if k else np.empty((0, 3)),
-        net.error.pose_cov.copy() if k and net.error is not None else np.zeros((k, 6, 6)),
-        net.tied.copy() if k else np.zeros(0, dtype=bool),
-    )
+    xyz = net.station_xyz.copy() if k else np.empty((0, 3))
+    pose = net.error.pose_cov.copy() if k and net.error is not None else np.zeros((k, 6, 6))
+    tied = net.tied.copy() if k else np.zeros(0, dtype=bool)
+    datum = None
+    if k and net.error is not None and net.datum is not None and not p.scanner.is_levelled:
+        datum = xyz[net.datum].copy()
+        pose[tied] -= datum_tilt_cov(xyz[tied], datum, p.scanner.initial_tilt_rms_arcsec)
+    p.solver["frame"] = (xyz, pose, tied, datum)
     limits = p.workbench.ctx.limits
     for c in "xyz":  # for judging each sample again in the district's frame
         p.coverage[f"_lim_m_{c}"] = limits[f"m_{c}"]
@@ -432,7 +439,7 @@ def plan_district(
     if deadline is None:
         deadline = time.monotonic() + st.time_limit_s
     blocks = partition(site, block_m)
-    halo = reach_m(scanner, req, st.station_rms_pair, st.model)
+    halo = reach_m(scanner, req, st)
     if workers < 1:
         raise InputError(f"--workers must be at least 1 (got {workers})")
     _memory_bytes(memory_limit)
@@ -763,10 +770,11 @@ def _tie_seams(
 
     if len(blocks) < 2 or not st.computes_registration or "_lim_m_x" not in coverage:
         return coverage, links, []
-    frames, targets = [], []
+    frames, targets, datums = [], [], []
     gone = set(removed)
     for b, p in zip(blocks, plans, strict=True):
-        xyz, pose, tied = p.solver["frame"]
+        xyz, pose, tied, datum = p.solver["frame"]
+        datums.append(datum)
         ids = [f"{b.key}-{s}" for s in p.stations["station_id"][: len(xyz)]]
         keep = np.array([i not in gone for i in ids], dtype=bool)
         frames.append(
@@ -783,9 +791,17 @@ def _tie_seams(
     ctx_of = seams.context_of(site, scanner, req, st, reach)
     found = seams.seam_links(site, ctx_of, frames, targets)
     extra, used = seams.tie_blocks(frames, found)
+    # one datum's tilt leans the district's frame: the root block's, in place of each
+    # block's own (a scanner without a compensator)
+    lean = datums[seams.root_block(frames)]
+    tau = scanner.initial_tilt_rms_arcsec
     per_station, xyz = {}, {}
-    for f, e in zip(frames, extra, strict=True):
+    for f, e, own in zip(frames, extra, datums, strict=True):
         if e is not None:
+            if lean is not None:
+                e = e + datum_tilt_cov(f.xyz, lean, tau)
+            if own is not None:
+                e = e - datum_tilt_cov(f.xyz, own, tau)
             per_station |= dict(zip(f.ids, e, strict=True))
         xyz |= dict(zip(f.ids, f.xyz, strict=True))
     limits = coverage[[f"_lim_m_{c}" for c in "xyz"]].to_numpy(dtype=float)

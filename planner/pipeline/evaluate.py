@@ -413,14 +413,13 @@ def facade_pairs(
     st = ctx.settings
     m_s = sc.range_rms_at(s)
     no_station = (0.0, 0.0)  # the station's own error is the registration's part, below
+    tilt = st.scan_tilt_rms_arcsec(sc)  # the frame's tilt: here, or the registration's part
     beam = None
     if st.model == "paper":  # eq. 2 and 4 of Voroshilov & Karachentsev
         var_x, var_y = eq2_variances(d, cos_g * cos_g, m_s, sc.angle_rms_arcsec, no_station)
-        var_z = eq4_variance(
-            s, sin_nu * sin_nu, m_s, sc.tilt_rms_arcsec, s, sc.initial_tilt_rms_arcsec
-        )
+        var_z = eq4_variance(s, sin_nu * sin_nu, m_s, sc.tilt_rms_arcsec, s, tilt)
     else:  # the full 3-D propagation, with its optional terms
-        if st.incidence_noise:
+        if st.incidence_ranging:
             with np.errstate(divide="ignore", invalid="ignore"):
                 cos_theta = cos_g * np.where(s > 0, d / s, 1.0)
             m_s = incidence_ranging_rms_mm(m_s, cos_theta)
@@ -431,7 +430,7 @@ def facade_pairs(
             m_s,
             sc.angle_rms_arcsec,
             sc.tilt_rms_arcsec,
-            sc.initial_tilt_rms_arcsec,
+            tilt,
             no_station,
         )
         if st.beam_footprint and (sc.beam_divergence_mrad or sc.beam_exit_mm):

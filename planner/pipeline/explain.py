@@ -112,13 +112,13 @@ def suggestions(p: Plan) -> list[str]:
     if u.empty:
         return out
     st = p.settings
-    now = reach_m(p.scanner, p.requirements, st.station_rms_pair, st.model)
+    now = reach_m(p.scanner, p.requirements, st)
     better = []
     for name in catalogue():
         sc = Scanner.from_name(name)
         if sc.name == p.scanner.name:
             continue
-        r = reach_m(sc, p.requirements, st.station_rms_pair, st.model)
+        r = reach_m(sc, p.requirements, st)
         if r > now * 1.1:
             better.append((r, name))
     if better:

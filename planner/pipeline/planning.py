@@ -22,7 +22,7 @@ import pandas as pd
 import scipy.sparse as sp
 import shapely
 
-from planner.accuracy import reach_bound_m
+from planner.accuracy import MM_PER_M_PER_ARCSEC, reach_bound_m
 from planner.accuracy3d import reach_bound_3d_m
 from planner.errors import InputError
 from planner.pipeline.candidates import blocked_ground, candidate_grid
@@ -82,21 +82,20 @@ SOLVER_SHARE = 0.5
 EVALUATION_SHARE = 0.6
 
 
-def reach_m(
-    scanner: Scanner,
-    req: Requirements,
-    station_rms_mm: tuple[float, float],
-    model: str = "3d",
-) -> float:
+def reach_m(scanner: Scanner, req: Requirements, settings: PlanSettings | None = None) -> float:
     """Search radius for candidate stations [m]: the distance beyond which no station can
-    meet the requirements under ``model`` (:func:`planner.accuracy.reach_bound_m`,
+    meet the requirements under the settings' model (:func:`planner.accuracy.reach_bound_m`,
     :func:`planner.accuracy3d.reach_bound_3d_m`), within the scanner's and the requirement's
     range, and never below :data:`MIN_SEARCH_RADIUS_M` — so that even an infeasible
     requirement gets candidates close by and the plan can say what is achievable."""
-    if model == "paper":
-        bound = reach_bound_m(scanner, req.max_x_mm, req.max_y_mm, req.max_z_mm, station_rms_mm)
+    st = settings or PlanSettings()
+    tilt = st.scan_tilt_rms_arcsec(scanner)
+    if st.model == "paper":
+        bound = reach_bound_m(
+            scanner, req.max_x_mm, req.max_y_mm, req.max_z_mm, st.station_rms_pair, tilt
+        )
     else:
-        bound = reach_bound_3d_m(scanner, req.max_x_mm, req.max_y_mm, station_rms_mm)
+        bound = reach_bound_3d_m(scanner, req.max_x_mm, req.max_y_mm, st.station_rms_pair, tilt)
     limit = min(scanner.max_range_m, req.max_range_m or np.inf)
     return float(min(limit, max(bound, MIN_SEARCH_RADIUS_M)))
 
@@ -224,7 +223,7 @@ def _prepare(
         )
     messages += zones.messages
     # the search radius: the farthest any requirement (the site-wide one, a zone's) reaches
-    reach = max(reach_m(sc, r, st.station_rms_pair, st.model) for r in [req, *zones.requirements])
+    reach = max(reach_m(sc, r, st) for r in [req, *zones.requirements])
     cand = candidate_grid(site, fac, reach, st.grid_m, st.clearance_m)
     ctx = Context.build(site, fac, sc, req, st, reach, sample_req)
     pairs = ctx.pair_count(cand)
@@ -318,10 +317,16 @@ def choose_stations(
             break
         short = r.judged.short_by_registration
         more = np.empty(0, dtype=np.int64)
+        keep = None
         if short.any() and (resolved or adds < ADD_ROUNDS):
-            say(0.85, f"registration: {int(short.sum())} samples short; adding stations")
-            more = _stations_for(ctx, cand, r.net, short, deadline, timings)
-        grown_from = r.net
+            keep = _datum_station(ctx, cand, r)
+            if keep is not None:
+                say(0.85, "registration: a datum station nearer the middle of the site")
+                more = np.array([keep])
+            else:
+                say(0.85, f"registration: {int(short.sum())} samples short; adding stations")
+                more = _stations_for(ctx, cand, r.net, short, deadline, timings)
+                keep = r.net.datum_station if len(more) else None
         if len(more):
             adds += 1
             chosen = np.concatenate([r.net.stations, more])
@@ -339,7 +344,6 @@ def choose_stations(
         else:
             break
         rounds += 1
-        keep = grown_from.datum_station if len(more) else None
         r.net = _network(ctx, cand, seen, chosen, timings, deadline, keep)
         r.judged = _judge(ctx, cand, r)
         if r.judged.better_than(best.judged):
@@ -832,6 +836,45 @@ def _stations_for(
     return np.asarray(sol.chosen, dtype=np.int64)
 
 
+def _datum_station(ctx: Context, cand: np.ndarray, r: _Round) -> int | None:
+    """A station to hold as the datum, nearer the middle of the samples, where the datum's
+    levelling leans the far heights of a scanner without a compensator beyond their limit
+    (:func:`planner.registration_error.datum_tilt_cov`): the candidate (where a tied
+    station's ground reaches) that leaves the fewest samples short in m_z with the lean
+    about it, if fewer than the present datum does; else None. Each sample is judged on
+    its station's scanner part and the lean alone."""
+    net = r.net
+    if ctx.scanner.is_levelled or net is None or net.datum is None or net.error is None:
+        return None
+    a = r.judged.assignment
+    has = (a.station >= 0) & ~ctx.facades.party_wall
+    if not has.any():
+        return None
+    budget = np.square(ctx.limits["m_z"][has]) - np.square(a.metrics["scanner_m_z_mm"][has])
+    lean = MM_PER_M_PER_ARCSEC * ctx.scanner.initial_tilt_rms_arcsec
+
+    def short(xy: np.ndarray) -> np.ndarray:  # samples short with the datum at each of xy
+        far2 = ((ctx.facades.xy[has][None, :, :] - xy[:, None, :]) ** 2).sum(axis=2)
+        return (lean * lean * far2 > budget[None, :]).sum(axis=1)
+
+    now = int(short(net.station_xyz[net.datum, None, :2])[0])
+    if now == 0:
+        return None
+    region = ctx.regions.label(cand)
+    tied = np.unique(region[net.stations[net.tied]])
+    pool = np.flatnonzero(np.isin(region, tied[tied >= 0]))
+    pool = pool[:: max(1, len(pool) // DATUM_POOL)]  # an even thinning of the grid
+    if not len(pool):
+        return None
+    counts = np.concatenate([short(cand[pool[k : k + 256]]) for k in range(0, len(pool), 256)])
+    best = int(np.argmin(counts))
+    return int(pool[best]) if counts[best] < now else None
+
+
+#: The datum station is looked for among at most about this many candidates.
+DATUM_POOL = 2000
+
+
 def _estimate(ctx: Context, net: Network, cand: np.ndarray) -> Registration | None:
     """The registration error every candidate would have in ``net``
     (:meth:`Network.estimate`), none for a candidate that could not be tied: one standing
@@ -973,10 +1016,13 @@ def _coverage(
     if net is not None and net.error is not None and len(ids) > 1:
         has = assignment.station >= 0
         untied[has] = ~net.error.tied[assignment.station[has]]
+    datum = None  # unlevelled: the datum scan's tilt turns the network
+    if net is not None and net.datum is not None and not ctx.scanner.is_levelled:
+        datum = (ids[net.datum], net.station_xyz[net.datum, :2])
     for i in np.flatnonzero(candidates_meet):
         place = places.get(int(assignment.station[i]), "") if untied[i] else ""
         reason[i] = _short_reason(
-            ctx, i, picked, station[i], untied[i], n_meeting[i], k_req[i], place
+            ctx, i, picked, station[i], untied[i], n_meeting[i], k_req[i], place, datum
         )
     elevated = np.full(n, "", dtype=object)
     for i in np.flatnonzero(~meets & demanded & (n_ok_cand < k_req) & ev.evaluated):
@@ -1031,9 +1077,11 @@ def _short_reason(
     n_meeting: int,
     k_req: int,
     place: str = "",
+    datum: tuple[str, np.ndarray] | None = None,
 ) -> str:
     """Why a sample some candidate could meet is not met by the chosen stations (``place``:
-    where an untied station stands, :func:`untied_places`)."""
+    where an untied station stands, :func:`untied_places`; ``datum``: the datum station's id
+    and position, whose levelling leans the network of a scanner without a compensator)."""
     if untied and place:
         return (
             f"its station {station} stands in {place}, which no registration reaches: "
@@ -1051,10 +1099,20 @@ def _short_reason(
                 worst = (total / limit, c, scanner, reg, total, limit)
     if worst is not None:
         _, c, scanner, reg, total, limit = worst
-        return (
+        text = (
             f"the registration error takes it over: m_{c} {scanner:.1f} mm from the scanner "
             f"⊕ {reg:.1f} mm registration (station {station}) = {total:.1f} mm > {limit:g} mm"
         )
+        if datum is not None and c == "z":
+            far = float(np.hypot(*(ctx.facades.xy[i] - datum[1])))
+            m_nu0 = ctx.scanner.initial_tilt_rms_arcsec
+            lean = far * MM_PER_M_PER_ARCSEC * m_nu0
+            if lean >= 0.5 * reg:
+                text += (
+                    f"; {lean:.1f} mm of it is the levelling of the datum {datum[0]} "
+                    f"({m_nu0:g}″ at {far:.0f} m): {DATUM_LEVELLING_FIX}"
+                )
+        return text
     if k_req > 1:
         return (
             f"the chosen stations give {n_meeting} of the {k_req} views required (views "
@@ -1062,6 +1120,12 @@ def _short_reason(
         )
     return "the chosen stations do not cover this sample"
 
+
+#: What keeps heights true far from the datum of a scanner without a compensator.
+DATUM_LEVELLING_FIX = (
+    "level that scan better (a scanner with a compensator: its levelling figure in the "
+    "profile, levelling_rms_arcsec) or tie the heights to control points (--control)"
+)
 
 #: What ties a closed courtyard's stations to the others.
 ENCLOSED_FIX = (
@@ -1287,14 +1351,19 @@ def _common_count(net: Network, tc: TargetCandidates, lk: Link) -> int:
     return int((usable[:, lk.parent] & usable[:, lk.child] & ~tc.is_control).sum())
 
 
-#: What the predicted registration error assumes of the registration software (said in
-#: the summary, the report and the booklet through the summary's message).
-REGISTRATION_PROCESSING = (
-    "It assumes the scans are registered together in one adjustment (every scan's targets "
-    "and surfaces at once, as a registration program's network or bundle adjustment does); "
-    "registered pair by pair along the links instead, the errors add up along the chain "
-    "and can exceed it."
-)
+#: What the predicted registration error assumes of the registration software, per
+#: ``registration_processing`` (said in the summary, the report and the booklet through the
+#: summary's message).
+PROCESSING_WORDS = {
+    "adjustment": "It assumes the scans are registered together in one adjustment (every "
+    "scan's targets and surfaces at once, as a registration program's network or bundle "
+    "adjustment does); registered pair by pair along the links instead, the errors add up "
+    "along the chain and can exceed it (plan for that with --registration-processing "
+    "pairwise).",
+    "pairwise": "It assumes each scan is registered on its own to the one before it along "
+    "the links (pair by pair: the errors add up along the chain); one adjustment of every "
+    "scan's targets and surfaces together does at least as well.",
+}
 
 
 def _registration_messages(
@@ -1317,7 +1386,7 @@ def _registration_messages(
     out = [
         f"Registration error: worst {worst[i]:.1f} mm (m_{parts.loc[i].idxmax().split('_')[2]}) at "
         f"{row['sample_id']} scanned from {row['station_id']}; median {worst.median():.1f} mm. "
-        + REGISTRATION_PROCESSING
+        + PROCESSING_WORDS[st.registration_processing]
     ]
     if len(links):
         weak = links.loc[links["link_rms_mm"].idxmax()]

@@ -66,6 +66,7 @@ from planner.registration_error import (
 )
 from planner.spacing import point_spacing_mm
 from planner.targets import choose_target, size_rules
+from planner.units import RHO_ARCSEC
 
 __all__ = [
     "Network",
@@ -385,6 +386,7 @@ def centre_rms(
             sc.angle_rms_arcsec,
             sight.spacing_mm[t, j],
             floor_mm=st.target_floor_mm,
+            incidence_noise=st.incidence_ranging,
         )
     )
 
@@ -860,7 +862,8 @@ class _Layout:
         self._links: dict[tuple[int, int], tuple[list[int], float]] = {}
         # the datum: the control network if any station sees three control points, else the
         # station from which the tree of registrations accumulates the least error
-        # (Dijkstra on the links' variances), the choice keeping the worst station best
+        # (Dijkstra on the links' variances; with 6 parameters, plus the datum's tilt at
+        # each station's facade points), the choice keeping the worst station best
         roots: list[int] = []
         if tc.is_control.any():
             seen_ctl = any(np.isfinite(self.link(CONTROL, j)[1]) for j in range(k))
@@ -870,12 +873,26 @@ class _Layout:
         best = None
         for root in roots or range(k):
             tree, cost = _tree(root, k, self.pairs, self.link)
-            key = (-len(cost), max(cost.values()) if cost else np.inf)
+            tilt = self.datum_tilt_var(root)
+            key = (-len(cost), max((c + tilt[j] for j, c in cost.items()), default=np.inf))
             if best is None or key < best[0]:
                 best = (key, root, tree, cost)
         (_, self.worst_var), self.datum, self.tree, self.cost = (
             best if best else ((0, np.inf), None, [], {})
         )
+
+    def datum_tilt_var(self, root: int) -> np.ndarray:
+        """(K,) the largest height variance [mm²] the datum's tilt gives each station's
+        facade points with ``root`` as the datum (none for a levelled scanner, whose
+        stations keep their own tilt, or for the control network):
+        :func:`~planner.registration_error.datum_tilt_cov`."""
+        sc = self.ctx.scanner
+        if root == CONTROL or sc.is_levelled:
+            return np.zeros(self.k)
+        tau = sc.initial_tilt_rms_arcsec / RHO_ARCSEC * 1000.0  # mm per m
+        s0 = self.station_xyz[root, :2]
+        far = [np.hypot(*(self.probe(j)[:, :2] - s0).T).max() for j in range(self.k)]
+        return np.square(tau * np.array(far))
 
     def sigma(self, j: int, t: int) -> float:
         """Centre RMS of target t from station j with the largest item it could need."""
@@ -1188,9 +1205,11 @@ def build_network(
             datum=None if datum == CONTROL else datum,
             control_rms_mm=control_rms,
             levelled=levelled,
-            tilt_rms_arcsec=ctx.scanner.initial_tilt_rms_arcsec if levelled else 0.0,
+            tilt_rms_arcsec=ctx.scanner.initial_tilt_rms_arcsec,
         )
+    if error is not None and ctx.settings.registration_processing == "adjustment":
         # the registration as it is computed: every target each scan sees, adjusted together
+        # (pairwise: each scan registered to its parent on the link's targets, the chain's)
         error.pose_cov = adjust(
             station_xyz,
             xyz,
@@ -1199,9 +1218,10 @@ def build_network(
             datum=None if datum == CONTROL else datum,
             control_rms_mm={t: r for t, r in control_rms.items() if t in users},
             levelled=levelled,
-            tilt_rms_arcsec=ctx.scanner.initial_tilt_rms_arcsec if levelled else 0.0,
+            tilt_rms_arcsec=ctx.scanner.initial_tilt_rms_arcsec,
             planes=_planes(lay.surf),
         )
+    if error is not None:
         # each link's own error with the final sizes, at the facade points of its child; and
         # the RMS of one target's centre difference in it (its dilution's denominator)
         for lk in links:

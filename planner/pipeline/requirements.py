@@ -385,6 +385,9 @@ MODELS = ("3d", "paper")
 #: How the scans are registered: ``auto`` takes the scanner profile's usual workflow
 #: (targets when it names none).
 REGISTRATION_MODES = ("auto", "targets", "cloud", "hybrid")
+#: How the registration software computes the registration the plan promises: every scan's
+#: targets and surfaces in one adjustment, or pair by pair along the plan's links.
+REGISTRATION_PROCESSING = ("adjustment", "pairwise")
 
 
 #: Side of a district block [m] (:mod:`planner.pipeline.district`): a few city blocks, a
@@ -469,6 +472,11 @@ class PlanSettings:
         surfaces two scans share, :mod:`planner.cloud_registration`); or hybrid (cloud links,
         targets only where a link is weak). ``auto``: the scanner profile's workflow, else
         targets.
+    registration_processing : "adjustment" or "pairwise", default "adjustment"
+        What the promise assumes of the registration software: every scan's targets and
+        surfaces adjusted together (a registration program's network or bundle adjustment),
+        or each scan registered on its own to the one before it along the plan's links
+        (errors add up along the chain; the plan then judges, and adds stations, by that).
     min_overlap_pct, cloud_floor_mm : float, default 20 and 1
         A cloud link needs this overlap (as registration software counts it); what a patch's
         plane fit does not see.
@@ -679,6 +687,7 @@ class PlanSettings:
     method: str = "auto"
     model: str = "3d"
     registration: str = "auto"
+    registration_processing: str = "adjustment"
     incidence_noise: bool = True
     beam_footprint: bool = True
     registration_error: bool = True
@@ -695,6 +704,11 @@ class PlanSettings:
             raise InputError(
                 f"registration must be one of {', '.join(REGISTRATION_MODES)}; "
                 f"got {self.registration!r}"
+            )
+        if self.registration_processing not in REGISTRATION_PROCESSING:
+            raise InputError(
+                "registration processing must be one of "
+                f"{', '.join(REGISTRATION_PROCESSING)}; got {self.registration_processing!r}"
             )
         for name in ("incidence_noise", "beam_footprint", "registration_error"):
             if not isinstance(getattr(self, name), bool):
@@ -731,6 +745,23 @@ class PlanSettings:
         """Whether samples are judged with the registration error computed from targets
         (on, and no fixed ``station_rms_mm`` given in its place)."""
         return self.registration_error and self.station_rms_pair == (0.0, 0.0)
+
+    @property
+    def incidence_ranging(self) -> bool:
+        """Whether the ranging noise grows with the incidence (the 3-D model's term), for
+        facade points and target points alike."""
+        return self.model == "3d" and self.incidence_noise
+
+    def scan_tilt_rms_arcsec(self, scanner: Scanner) -> float:
+        """The tilt of the scanner's vertical axis counted in every point's scanner part
+        [″] — the 3-D model's σ_τ, eq. 4's m_ν0. Heights are against true vertical. Where
+        the registration error is computed, the registration part carries each scan's
+        frame, its tilt included (a levelled scanner's own residual tilt; else, each scan
+        registered with 6 parameters, the datum's tilt, which turns the whole network:
+        :func:`planner.registration_error.datum_tilt_cov`), so the scanner part counts
+        none; otherwise every scan stands levelled on its own, to the profile's m_ν0
+        (:attr:`Scanner.initial_tilt_rms_arcsec`). The one place this is decided."""
+        return 0.0 if self.computes_registration else scanner.initial_tilt_rms_arcsec
 
 
 def requirements_and_settings(

@@ -35,7 +35,7 @@ from planner.registration_error import (
 )
 from planner.site import Site
 
-__all__ = ["BlockFrame", "SeamLink", "seam_links", "tie_blocks"]
+__all__ = ["BlockFrame", "SeamLink", "root_block", "seam_links", "tie_blocks"]
 
 #: Stations of two blocks this close may share targets [m].
 SEAM_RADIUS_M = 60.0
@@ -179,6 +179,11 @@ def _spread(xyz: np.ndarray) -> bool:
     return bool(np.linalg.svd(centred, compute_uv=False)[1] > 1.0)
 
 
+def root_block(frames: list[BlockFrame]) -> int:
+    """The block whose frame is the district's: the one with the most stations."""
+    return int(np.argmax([len(f.ids) for f in frames]))
+
+
 def tie_blocks(
     frames: list[BlockFrame], links: list[SeamLink]
 ) -> tuple[list[np.ndarray | None], list[SeamLink]]:
@@ -188,7 +193,7 @@ def tie_blocks(
     n = len(frames)
     if not n:
         return [], []
-    root = int(np.argmax([len(f.ids) for f in frames]))
+    root = root_block(frames)
     back = [  # each seam the other way: a registered to b, its covariance carried to a
         replace(
             s,
@@ -266,7 +271,8 @@ def add_frame_errors(
     was = cov["meets"].to_numpy().copy()
     worse = np.zeros(len(cov), dtype=bool)
     for c, v in zip("xyz", more, strict=True):
-        reg = np.sqrt(cov[f"reg_m_{c}_mm"].to_numpy()[rows] ** 2 + v)
+        # (v may take a block's own datum lean out again: never below zero but by rounding)
+        reg = np.sqrt(np.maximum(cov[f"reg_m_{c}_mm"].to_numpy()[rows] ** 2 + v, 0.0))
         total = np.hypot(cov[f"scanner_m_{c}_mm"].to_numpy()[rows], reg)
         cov.loc[cov.index[rows], f"reg_m_{c}_mm"] = reg
         cov.loc[cov.index[rows], f"m_{c}_mm"] = total

@@ -66,7 +66,9 @@ def _judged(
     network built and every sample judged."""
     timings: dict[str, float] = {"setup": 0.0}
     r = _Round(cover=idx)
-    r.net = _network(wb.ctx, wb.pool, wb.seen, idx, timings) if len(idx) else None
+    datum = p.network.datum_station if p.network is not None else None  # kept where it stays
+    datum = datum if datum is not None and datum in set(np.asarray(idx).tolist()) else None
+    r.net = _network(wb.ctx, wb.pool, wb.seen, idx, timings, datum=datum) if len(idx) else None
     r.judged = _judge(wb.ctx, wb.pool, r)
     bound = p.solver.get("lower_bound")
     n = len(r.net.stations) if r.net is not None else 0
