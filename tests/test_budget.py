@@ -40,7 +40,15 @@ def test_a_site_far_beyond_its_budget_ends_in_time_and_says_what_was_cut(
     out = tmp_path / "plan"
     t0 = time.monotonic()
     code, _stdout, err = run_cli(
-        "plan", str(site), "--time-limit-s", f"{budget_s:g}", *mode, "--out", str(out), "-q"
+        "plan",
+        str(site),
+        "--time-limit-s",
+        f"{budget_s:g}",
+        *mode,
+        "--booklet",
+        "--out",
+        str(out),
+        "-q",
     )
     wall = time.monotonic() - t0
     assert code in (0, 1), err

@@ -781,19 +781,19 @@ def build_parser() -> argparse.ArgumentParser:
         "need tls-planner installed); default: a local cluster",
     )
     pl.add_argument(
-        "--no-booklet",
-        dest="booklet",
-        action="store_false",
-        help="do not write the field booklet (booklet.pdf: overview map and a page per "
-        "station; a few seconds per ten stations)",
+        "--booklet",
+        action=argparse.BooleanOptionalAction,
+        default=False,
+        help="also draw the field booklet (booklet.pdf: the overview map and a page per "
+        "station, about 0.3 s a page); default: not drawn (the dashboard draws it on demand)",
     )
     pl.set_defaults(func=run_plan)
 
     rp = sub.add_parser(
         "report",
         help="render the static HTML report of a plan",
-        description="Executes the report notebook headless and writes one self-contained HTML "
-        "file (images embedded, no code, opens offline).",
+        description="Renders one self-contained HTML file of the plan (tables, figures "
+        "embedded, no code, opens offline).",
     )
     _plan_arguments(rp)
     rp.add_argument("--out", required=True, metavar="REPORT.html", help="the HTML file to write")

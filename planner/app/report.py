@@ -1,33 +1,88 @@
-"""The static HTML report: the notebook ``report.ipynb`` executed headless (nbclient) on a
-given :class:`~planner.pipeline.result.Plan` and exported without code (nbconvert), images
-embedded, opening offline.
+"""The static HTML report of a :class:`~planner.pipeline.result.Plan`: one self-contained
+HTML file (tables, figures embedded as PNG), opening offline.
 
-The report describes exactly the plan it is given: ``planner report`` builds that plan with
-the same function as ``planner plan``, the dashboard passes the plan on screen.
-:class:`ReportContent` is what the notebook's cells display; :func:`make_report` runs it.
+:data:`SECTIONS` says what the report holds, section by section; :class:`ReportContent`
+makes each piece for one plan. :func:`render_html` writes them as one page directly (no
+kernel); the notebook ``report.ipynb`` shows the same sections (:meth:`ReportContent.show`)
+for whoever wants the report as a notebook. The report describes exactly the plan it is
+given: ``planner report`` builds that plan with the same function as ``planner plan``, the
+dashboard passes the plan on screen.
 """
 
 from __future__ import annotations
 
+import base64
 import html
+import io
 import pickle
-import re
-import tempfile
 from pathlib import Path
-from typing import Any
 
 import pandas as pd
 from IPython.display import HTML
 
 from planner.atomic import write_text_atomic
-from planner.errors import PlannerError
 from planner.pipeline.planning import PROCESSING_WORDS
 from planner.pipeline.requirements import PlanSettings, field_specs
 from planner.pipeline.result import Plan
 from planner.pipeline.visibility import SIGHT_CLEARANCE_M
 from planner.reference import REFERENCES
 
-__all__ = ["ReportContent", "make_report"]
+__all__ = ["SECTIONS", "ReportContent", "make_report", "render_html"]
+
+#: The report, section by section: its heading, the words under it (HTML) and what it shows
+#: (:class:`ReportContent`'s methods, with their arguments). The HTML report and the report
+#: notebook both read it.
+SECTIONS: list[tuple[str, str, tuple[tuple, ...]]] = [
+    ("Terrestrial laser scanning: station plan", "", (("overview",),)),
+    ("Site", "", (("site_table",),)),
+    ("Scanner and requirements", "", (("scanner_and_requirements",),)),
+    ("Plan map", "", (("plan_map",),)),
+    (
+        "Stations",
+        "Coordinates in the site's CRS; the instrument height is above the ground.",
+        (("stations",),),
+    ),
+    (
+        "Visiting order and field time",
+        "The stations in walking order (round buildings and no-go areas), the targets placed "
+        "before each scan, set-up, scan time at the plan's scan step, and the sessions. The "
+        "same schedule is in <code>route.csv</code> and the field booklet.",
+        (("field_route",),),
+    ),
+    (
+        "Registration targets",
+        "Position, type, the smallest size its stations need — the larger of Sossa's 2d / 4d "
+        "rule and practice (points per checkerboard quadrant, points on a sphere), "
+        "<code>sized_by</code> naming the rule — the item of the inventory to set up, which "
+        "way a wall target faces, and the predicted RMS of its fitted centre.",
+        (("targets",),),
+    ),
+    (
+        "Registration network",
+        "Each station is registered to its parent (or to the control points) by the targets "
+        "listed. <code>link_rms_mm</code> is the link's own predicted error at the child "
+        "station's facade points, <code>dilution</code> how much the targets' layout "
+        "magnifies their centre errors there (lower is stronger), "
+        "<code>station_b_rms_mm</code> the whole registration error the child's points end "
+        "with, accumulated from the datum.",
+        (("registration",), ("registration_coverage",)),
+    ),
+    (
+        "Predicted accuracy on the facades",
+        "The total error at every sample — the scanner's from its assigned station and the "
+        "registration's, added in quadrature — is what is judged against the requirement.",
+        (("coverage", "m_x_mm"), ("coverage", "m_y_mm"), ("coverage", "m_z_mm")),
+    ),
+    ("Per-facade summary", "", (("facades",),)),
+    (
+        "Zones",
+        "Where the client asks for a different requirement: each zone, its requirement and "
+        "sampling, and whether its samples meet it.",
+        (("zones",),),
+    ),
+    ("Unmet areas", "", (("unmet",),)),
+    ("Assumptions and references", "", (("assumptions",),)),
+]
 
 
 def _pre(text: str) -> str:
@@ -40,6 +95,25 @@ class ReportContent:
 
     def __init__(self, p: Plan) -> None:
         self.plan = p
+
+    def parts(self):
+        """Every section: (heading, words, the pieces it shows)."""
+        for heading, words, shows in SECTIONS:
+            yield heading, words, [getattr(self, name)(*args) for name, *args in shows]
+
+    def show(self) -> None:
+        """Display the report section by section (the report notebook's one cell)."""
+        from IPython.display import display
+
+        for n, (heading, words, pieces) in enumerate(self.parts()):
+            tag = "h1" if n == 0 else "h2"
+            display(
+                HTML(
+                    f"<{tag}>{html.escape(heading)}</{tag}>" + (f"<p>{words}</p>" if words else "")
+                )
+            )
+            for piece in pieces:
+                display(piece)
 
     @classmethod
     def load(cls, plan_path: str | None) -> ReportContent:
@@ -258,56 +332,52 @@ def _closed(fig):
     return fig
 
 
-def _parameter_cell(params: dict[str, Any]):
-    import nbformat
-
-    lines = ["# injected parameters"] + [f"{k} = {v!r}" for k, v in params.items()]
-    cell = nbformat.v4.new_code_cell("\n".join(lines))
-    cell.metadata["tags"] = ["injected-parameters"]
-    return cell
-
-
-def make_report(p: Plan, out: str | Path, *, timeout_s: int = 600) -> Path:
-    """Execute the report notebook on the plan ``p`` and write a self-contained HTML file."""
-    import nbformat
-    from nbclient import NotebookClient
-    from nbclient.exceptions import CellExecutionError
-    from nbconvert import HTMLExporter
-
-    from planner.app.notebooks import notebook_path
-
-    nb = nbformat.read(notebook_path("report.ipynb"), as_version=4)
-    with tempfile.TemporaryDirectory(prefix="planner-report-") as tmp:
-        plan_file = Path(tmp) / "plan.pickle"
-        with open(plan_file, "wb") as fh:
-            pickle.dump(p, fh, protocol=pickle.HIGHEST_PROTOCOL)
-        at = next(
-            (i for i, c in enumerate(nb.cells) if "parameters" in c.metadata.get("tags", [])), -1
-        )
-        nb.cells.insert(at + 1, _parameter_cell({"plan_path": str(plan_file)}))
-        client = NotebookClient(
-            nb, timeout=timeout_s, kernel_name="python3", resources={"metadata": {"path": tmp}}
-        )
-        try:
-            client.execute()
-        except CellExecutionError as exc:
-            raise PlannerError(
-                f"the report notebook failed: {str(exc).strip().splitlines()[-1]}"
-            ) from None
-    exporter = HTMLExporter(
-        template_name="lab",
-        exclude_input=True,
-        exclude_input_prompt=True,
-        exclude_output_prompt=True,
+def render_html(p: Plan) -> str:
+    """The report of plan ``p`` as one self-contained HTML page: every section of
+    :data:`SECTIONS`, tables as HTML (empty cells blank), figures as embedded PNG."""
+    body = []
+    for n, (heading, words, pieces) in enumerate(ReportContent(p).parts()):
+        tag = "h1" if n == 0 else "h2"
+        body.append(f"<section><{tag}>{html.escape(heading)}</{tag}>")
+        if words:
+            body.append(f"<p>{words}</p>")
+        body += [_as_html(piece) for piece in pieces]
+        body.append("</section>")
+    title = html.escape(f"tls-planner report: {p.site.name}")
+    return (
+        f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8"><title>{title}</title>'
+        f"<style>{_CSS}</style></head><body>\n" + "\n".join(body) + "\n</body></html>\n"
     )
-    body, _ = exporter.from_notebook_node(nb)
-    return write_text_atomic(out, _offline(body), create_parents=False)
 
 
-_EXTERNAL = re.compile(r"<script[^>]+src=\"https?://[^\"]+\"[^>]*>\s*</script>", re.I)
+def _as_html(piece) -> str:
+    """One piece of a section as HTML: text as it is, a table in a scrolling box (empty
+    cells blank), a figure as an embedded PNG (closed after)."""
+    if isinstance(piece, HTML):
+        return piece.data
+    if isinstance(piece, pd.DataFrame):
+        return f"<div class='table'>{piece.to_html(na_rep='', escape=True)}</div>"
+    buf = io.BytesIO()
+    piece.savefig(buf, format="png", dpi=100, bbox_inches="tight")
+    data = base64.b64encode(buf.getvalue()).decode("ascii")
+    return f'<p><img alt="figure" src="data:image/png;base64,{data}"></p>'
 
 
-def _offline(body: str) -> str:
-    """Drop scripts fetched from the network (MathJax, require.js): the report has no maths
-    to typeset and no widgets to run, and must open offline."""
-    return _EXTERNAL.sub("", body)
+_CSS = """
+body { font-family: "DejaVu Sans", Arial, sans-serif; font-size: 13px; margin: 2em auto;
+       max-width: 1150px; color: #222; padding: 0 1em; }
+h1 { font-size: 22px; } h2 { font-size: 17px; margin-top: 1.6em; border-bottom: 1px solid #ccc; }
+.table { overflow-x: auto; max-width: 100%; }
+table { border-collapse: collapse; font-size: 11px; margin: 0.5em 0; }
+th, td { border: 1px solid #ddd; padding: 2px 6px; text-align: left; vertical-align: top; }
+th { background: #f3f3f3; }
+img { max-width: 100%; height: auto; }
+pre { background: #f7f7f7; padding: 0.6em; }
+@media print { body { max-width: none; font-size: 10px; } table { font-size: 7.5px; }
+               .table { overflow: visible; } section { break-inside: avoid-page; } }
+"""
+
+
+def make_report(p: Plan, out: str | Path) -> Path:
+    """Write the report of plan ``p`` to ``out`` (:func:`render_html`), atomically."""
+    return write_text_atomic(out, render_html(p), create_parents=False)
