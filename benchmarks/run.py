@@ -88,7 +88,7 @@ def run_case(case: str, time_limit_s: float | None = None) -> dict:
     total = time.perf_counter() - t0
     # evaluation throughput, measured on its own (a second pass, same inputs)
     fac = build_facades(site, st.sample_spacing_m, st.sample_height_step_m)
-    reach = reach_m(sc, req, (0.0, 0.0))
+    reach = reach_m(sc, req, st)
     cand = candidate_grid(site, fac, reach, st.grid_m, st.clearance_m)
     ctx = Context.build(site, fac, sc, req, st, reach)
     pairs = sum(

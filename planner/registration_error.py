@@ -29,7 +29,7 @@ at the target's distance S, d the point spacing there and n the points on the ta
 
 The floor stands for what the fit does not see (the printing or turning of the target,
 centring): 0.5 mm unless given. A user figure replaces the model. Both are checked against
-targets scanned point by point and fitted in ``tests/test_targets.py``.
+targets scanned point by point and fitted in ``tests/test_target_centres.py``.
 
 **Pairwise registration.** Station j is registered to station i by least squares over
 their common targets: unknowns the shift δs and the rotation δω of j (6 parameters; 4 —
@@ -70,8 +70,9 @@ from dataclasses import dataclass
 
 import numpy as np
 from numba import njit
+from numpy.typing import ArrayLike
 
-from planner.accuracy3d import MIN_COS_INCIDENCE
+from planner.accuracy3d import INCIDENCE_NOISE_EXPONENT, MIN_COS_INCIDENCE
 from planner.errors import InputError
 from planner.units import RHO_ARCSEC
 
@@ -80,6 +81,7 @@ __all__ = [
     "Link",
     "NetworkError",
     "adjust",
+    "datum_lean_mm",
     "datum_tilt_cov",
     "pair_registration_variances",
     "point_registration_variances",
@@ -94,7 +96,9 @@ __all__ = [
 DEFAULT_FLOOR_MM = 0.5
 #: The sphere fit's weights of the ranging variance (module docstring): its variance across
 #: the beam and its bias toward the scanner, for a constant ranging noise and for one
-#: growing as 1/√cos θ with the incidence.
+#: growing as 1/√cos θ with the incidence (:data:`~planner.accuracy3d.
+#: INCIDENCE_NOISE_EXPONENT` = 1/2: the weights are integrals over the visible cap with that
+#: exponent; ``tests/test_target_centres.py`` checks them against a simulation with it).
 SPHERE_FIT_RANGING = {False: (4.0 / 3.0, 4.0 / 5.0), True: (32.0 / 15.0, 3.0 / 2.0)}
 TARGET_TYPES = ("flat", "sphere", "cylinder")
 #: The datum: station index meaning "the control network" (targets with known coordinates).
@@ -166,7 +170,7 @@ def target_centre_rms_mm(
     n = points_on_target(target_type, size, d, cos_t)
     if target_type == "flat":
         if incidence_noise:
-            ranging2 = ranging2 / cos_t
+            ranging2 = ranging2 / cos_t ** (2.0 * INCIDENCE_NOISE_EXPONENT)
         fit = (ranging2 + 2.0 * lateral2) / n
         systematic = np.square(d / cos_t) / 12.0
     else:
@@ -415,14 +419,15 @@ def adjust(
     if planes is not None and n_unk:
         _eliminate_planes(n_mat, tilt_rhs, planes, station_xyz, tied, s_col, par, levelled)
     pose_cov = np.zeros((k, 6, 6))
-    if not n_unk:
-        return pose_cov
-    n_inv = np.linalg.inv(n_mat)
-    cov_q = n_inv
     tau2 = (tilt_rms_arcsec / RHO_ARCSEC) ** 2
-    if levelled:
+    if n_unk:
+        n_inv = np.linalg.inv(n_mat)
+        cov_q = n_inv
         m = n_inv @ tilt_rhs  # (unknowns, 2K)
-        cov_q = n_inv + tau2 * m @ m.T
+        if levelled:
+            cov_q = n_inv + tau2 * m @ m.T
+    else:  # nothing to adjust (one station): only the tilts
+        cov_q, m = np.zeros((0, 0)), np.zeros((0, 2 * k))
     for j in range(k):
         if not tied[j]:
             continue
@@ -441,6 +446,18 @@ def adjust(
     if not levelled and datum is not None:
         pose_cov[tied] += datum_tilt_cov(station_xyz[tied], station_xyz[datum], tilt_rms_arcsec)
     return pose_cov
+
+
+def datum_lean_mm(distance_m: ArrayLike, tilt_rms_arcsec: float) -> np.ndarray:
+    """RMS [mm] of the height error the datum's tilt (``tilt_rms_arcsec`` per axis) gives a
+    point ``distance_m`` [m] from the datum, horizontally (:func:`datum_tilt_cov`).
+
+    Examples
+    --------
+    >>> round(float(datum_lean_mm(50.0, 12.4)), 2)
+    3.01
+    """
+    return np.asarray(distance_m, dtype=float) * 1000.0 * tilt_rms_arcsec / RHO_ARCSEC
 
 
 def datum_tilt_cov(

@@ -242,15 +242,22 @@ def _station_boxes(page) -> list[dict]:
 
 
 def _station_in_the_clear(page) -> dict:
-    """The station mark farthest from every other mark (a click on it reaches it, not a
-    target drawn beside it)."""
+    """The station mark on screen farthest from every other mark (a click on it reaches
+    it, not a target drawn beside it)."""
+    page.locator(".planner-whatif-map").scroll_into_view_if_needed()
     everything = _marks(page, 0, 1e9)
+    view = page.viewport_size
 
     def room(b):
         others = [q for q in everything if (q["x"], q["y"]) != (b["x"], b["y"])]
         return min(abs(q["x"] - b["x"]) + abs(q["y"] - b["y"]) for q in others)
 
-    return max(_station_boxes(page), key=room)
+    shown = [
+        b
+        for b in _station_boxes(page)
+        if 0 < b["x"] < view["width"] and 0 < b["y"] < view["height"]
+    ]
+    return max(shown, key=room)
 
 
 def _edit_tab_stations(page) -> list[dict]:
@@ -308,11 +315,15 @@ def _status_after(page, action, timeout_ms: int = 30_000) -> str:
     """Run ``action`` and return the what-if status once it has changed."""
     old = page.locator(".planner-whatif-status").inner_text()
     action()
-    page.wait_for_function(
-        "(old) => document.querySelector('.planner-whatif-status').innerText !== old",
-        arg=old,
-        timeout=timeout_ms,
-    )
+    try:
+        page.wait_for_function(
+            "(old) => document.querySelector('.planner-whatif-status').innerText !== old",
+            arg=old,
+            timeout=timeout_ms,
+        )
+    except _need_browser().TimeoutError:
+        page.screenshot(path=str(ARTIFACTS / "dashboard-status-unchanged.png"), full_page=True)
+        raise
     page.wait_for_timeout(1000)  # the marks are drawn after the status
     return page.locator(".planner-whatif-status").inner_text()
 

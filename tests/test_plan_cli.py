@@ -189,3 +189,24 @@ def test_main_job_serves_the_dashboard_on_loopback(monkeypatch):
     assert "--Voila.port_retries=0" in cmd
     assert any(a.startswith("--MappingKernelManager.cull_idle_timeout=") for a in cmd)
     assert "jupyter" in env["JUPYTER_PATH"]
+
+
+def test_the_registration_processing_is_chosen_on_the_command_line(tmp_path):
+    """``--registration-processing pairwise``: the promise assumes each scan registered to
+    the one before it along the links, and the summary says so; a wrong value is refused
+    (exit 2) naming the valid ones."""
+    code, _, err = run(
+        "plan",
+        *PAPER_5MM,
+        "--registration-processing",
+        "pairwise",
+        "--out",
+        str(tmp_path / "p"),
+        "-q",
+        *FAST,
+    )
+    assert code in (0, 1), err
+    summary = (tmp_path / "p" / "summary.txt").read_text()
+    assert "It assumes each scan registered on its own to the one before it" in summary
+    code, _, err = run("plan", *PAPER_5MM, "--registration-processing", "chain", "--out", "x")
+    assert code == 2 and "adjustment" in err and "pairwise" in err

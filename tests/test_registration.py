@@ -551,3 +551,18 @@ def test_adjustment_of_a_tree_is_the_chain(levelled, control):
     np.testing.assert_allclose(
         adjust(STATIONS, TARGETS, rms, chain.tied, **kw), chain.pose_cov, rtol=1e-9, atol=1e-18
     )
+
+
+@pytest.mark.parametrize("levelled", [False, True])
+def test_one_scan_alone_keeps_its_own_levelling(levelled):
+    """One station, nothing to register: its frame is still tilted from true vertical by
+    its levelling (the scanner part of a plan that computes the registration counts no
+    tilt, so the registration part must), whether or not a compensator levels it."""
+    station, no_targets = np.array([[0.0, 0.0, 1.5]]), np.zeros((0, 3))
+    kw = {"datum": 0, "levelled": levelled, "tilt_rms_arcsec": 12.4}
+    cov = adjust(station, no_targets, {}, np.ones(1, bool), **kw)
+    tilt = np.sqrt(np.diag(cov[0])[3:5]) * RHO_ARCSEC
+    np.testing.assert_allclose(tilt, 12.4, rtol=1e-9)  # ″ about x and about y
+    np.testing.assert_allclose(
+        propagate(station, no_targets, {}, [], **kw).pose_cov, cov, rtol=1e-12, atol=0
+    )

@@ -99,3 +99,20 @@ def test_a_checkerboards_centre_is_as_good_as_the_sampling_of_its_edges(distance
     model = _model("flat", 200.0, distance, np.cos(a), True)
     assert 0.9 * worst <= model <= 1.5 * worst, (model, worst)
     assert _model("flat", 200.0, distance, np.cos(a), True, old=True) < worst / 3
+
+
+def test_the_sphere_weights_are_for_the_models_incidence_exponent():
+    """The sphere fit's weights with incidence-dependent ranging are integrals over the cap
+    for m_S / cos^k θ with k = 1/2: a change of the exponent must derive them again."""
+    from planner.accuracy3d import INCIDENCE_NOISE_EXPONENT
+    from planner.registration_error import SPHERE_FIT_RANGING
+
+    assert INCIDENCE_NOISE_EXPONENT == 0.5
+    # E[c^(1-2k) ...] over the projected disc, c = cos θ: the variance across the beam
+    # 16·(σ_r² E[ρ² c^(1-2k)] / 2) and the bias (E[1 − c²] + E[(1 − c²)]) at k = 1/2
+    rho = np.linspace(0.0, 1.0, 400_001)[:-1] + 0.5 / 400_000
+    c = np.sqrt(1 - rho**2)
+    mean = lambda f: float(np.mean(f * 2 * rho))  # noqa: E731  (area-weighted over the disc)
+    across = 16 * mean(rho**2 * c) / 2
+    bias = 2 * (mean(1 - c**2) / 2 + mean(1 - c**2))
+    assert SPHERE_FIT_RANGING[True] == pytest.approx((across, bias), rel=1e-4)

@@ -25,7 +25,7 @@ def default_world():
 def test_the_default_plan_keeps_its_promise_in_a_virtual_survey(default_world):
     res = survey(default_world, trials=60, seed=1)
     out = report(res)
-    assert out["met"] == out["samples"] == 936
+    assert out["met"] == out["samples"] > 900  # every sample of the default plan is met
     assert out["hidden"] == 0 and out["untied"] == 0
     assert out["false_meets_3se"] == 0, out
     # simulated / promised RMS at the samples marked met, per axis (m_x, m_y, m_z)
@@ -49,9 +49,9 @@ def test_a_plan_for_pairwise_registration_keeps_that_promise():
     holds when the survey registers pair by pair; one adjustment of the same observations
     does at least as well."""
     p = plan(settings=PlanSettings(registration_processing="pairwise"))
-    assert "each scan is registered on its own" in p.summary()
+    assert "each scan registered on its own" in p.summary()
     w = world_of(p)
-    pairwise = report(survey(w, trials=300, seed=3, target_points=False, processing="pairwise"))
+    pairwise = report(survey(w, trials=1000, seed=3, target_points=False, processing="pairwise"))
     assert pairwise["false_meets_3se"] == 0, pairwise
     assert np.all(np.abs(np.array(pairwise["reg_median"]) - 1.0) < 0.15), pairwise
     together = report(survey(w, trials=300, seed=3, target_points=False))

@@ -615,8 +615,8 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         choices=REGISTRATION_PROCESSING,
         default=None,
         help="what the promised registration error assumes of the registration software: "
-        "adjustment, every scan's targets and surfaces adjusted together (default), or "
-        "pairwise, each scan registered to the one before it along the plan's links",
+        + "; or ".join(f"{k}, {v}" for k, v in REGISTRATION_PROCESSING.items())
+        + " (default adjustment)",
     )
     pl.add_argument(
         "--no-incidence-noise",

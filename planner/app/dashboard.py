@@ -30,6 +30,7 @@ from planner.app.whatif_view import WhatIfMap
 from planner.app.wording import SITE_LABELS, for_dashboard, for_dashboard_html
 from planner.errors import PlannerError
 from planner.pipeline.requirements import (
+    REGISTRATION_PROCESSING,
     FieldSpec,
     PlanSettings,
     Requirements,
@@ -407,11 +408,7 @@ class StationPlanner:
             options=[("in one adjustment", "adjustment"), ("pair by pair", "pairwise")],
             value=PlanSettings().registration_processing,
             description=SITE_LABELS["--registration-processing"],
-            tooltips=[
-                "every scan's targets and surfaces adjusted together (a registration "
-                "program's network or bundle adjustment)",
-                "each scan registered on its own to the one before it along the links",
-            ],
+            tooltips=list(REGISTRATION_PROCESSING.values()),
             style=_STYLE,
         )
         self.accuracy_class.observe(lambda _c: self._show_class(), "value")

@@ -294,7 +294,11 @@ def cloud_link(ctx: Context, surf: Surfaces, parent: int, child: int) -> CloudLi
     sc = ctx.scanner
     levelled = sc.is_levelled
     cov = link_covariance(
-        info, levelled=levelled, tilt_rms_arcsec=sc.initial_tilt_rms_arcsec if levelled else 0.0
+        # a link relative to its parent: the two stations' tilts levelled, none without a
+        # compensator (6 parameters take them out; the datum's lean is the network's)
+        info,
+        levelled=levelled,
+        tilt_rms_arcsec=sc.initial_tilt_rms_arcsec if levelled else 0.0,
     )
     area = surf.area_m2
     common = area[both].sum()

@@ -223,19 +223,20 @@ def keep_frame(p: Plan) -> None:
     (:mod:`planner.pipeline.seams`), kept in the block's plan before its network and
     workbench are dropped: every station's scanner centre, pose covariance about the block's
     datum (without the lean of the datum's tilt: in the district's frame only one datum's
-    tilt counts), whether it is tied, and where the datum whose tilt leans the block stands
-    (None: a levelled scanner, control, or no network) (``solver["frame"]``); and every
-    sample's m limits (hidden coverage columns)."""
+    tilt counts), whether it is tied, where the datum whose tilt leans the block stands
+    (None: a levelled scanner, control, or no network) and which stations carry that lean
+    (``solver["frame"]``); and every sample's m limits (hidden coverage columns)."""
     net = p.network
     k = len(net.stations) if net is not None else 0
     xyz = net.station_xyz.copy() if k else np.empty((0, 3))
     pose = net.error.pose_cov.copy() if k and net.error is not None else np.zeros((k, 6, 6))
     tied = net.tied.copy() if k else np.zeros(0, dtype=bool)
-    datum = None
-    if k and net.error is not None and net.datum is not None and not p.scanner.is_levelled:
-        datum = xyz[net.datum].copy()
-        pose[tied] -= datum_tilt_cov(xyz[tied], datum, p.scanner.initial_tilt_rms_arcsec)
-    p.solver["frame"] = (xyz, pose, tied, datum)
+    datum = net.leaning_datum(p.scanner) if k else None
+    leans = net.leans(p.scanner) if k else np.zeros(0, dtype=bool)
+    if datum is not None:
+        datum = datum.copy()
+        pose[leans] -= datum_tilt_cov(xyz[leans], datum, p.scanner.initial_tilt_rms_arcsec)
+    p.solver["frame"] = (xyz, pose, tied, datum, leans)
     limits = p.workbench.ctx.limits
     for c in "xyz":  # for judging each sample again in the district's frame
         p.coverage[f"_lim_m_{c}"] = limits[f"m_{c}"]
@@ -770,13 +771,14 @@ def _tie_seams(
 
     if len(blocks) < 2 or not st.computes_registration or "_lim_m_x" not in coverage:
         return coverage, links, []
-    frames, targets, datums = [], [], []
+    frames, targets, datums, leaning = [], [], [], []
     gone = set(removed)
     for b, p in zip(blocks, plans, strict=True):
-        xyz, pose, tied, datum = p.solver["frame"]
-        datums.append(datum)
+        xyz, pose, tied, datum, leans = p.solver["frame"]
         ids = [f"{b.key}-{s}" for s in p.stations["station_id"][: len(xyz)]]
         keep = np.array([i not in gone for i in ids], dtype=bool)
+        datums.append(datum)
+        leaning.append(np.asarray(leans, dtype=bool)[keep])
         frames.append(
             seams.BlockFrame(
                 [i for i, k in zip(ids, keep, strict=True) if k],
@@ -796,12 +798,13 @@ def _tie_seams(
     lean = datums[seams.root_block(frames)]
     tau = scanner.initial_tilt_rms_arcsec
     per_station, xyz = {}, {}
-    for f, e, own in zip(frames, extra, datums, strict=True):
+    for f, e, own, leans in zip(frames, extra, datums, leaning, strict=True):
         if e is not None:
-            if lean is not None:
-                e = e + datum_tilt_cov(f.xyz, lean, tau)
+            e = e.copy()
+            if lean is not None:  # (a levelled scanner's frames do not lean)
+                e[leans] += datum_tilt_cov(f.xyz[leans], lean, tau)
             if own is not None:
-                e = e - datum_tilt_cov(f.xyz, own, tau)
+                e[leans] -= datum_tilt_cov(f.xyz[leans], own, tau)
             per_station |= dict(zip(f.ids, e, strict=True))
         xyz |= dict(zip(f.ids, f.xyz, strict=True))
     limits = coverage[[f"_lim_m_{c}" for c in "xyz"]].to_numpy(dtype=float)

@@ -22,7 +22,7 @@ import pandas as pd
 import scipy.sparse as sp
 import shapely
 
-from planner.accuracy import MM_PER_M_PER_ARCSEC, reach_bound_m
+from planner.accuracy import reach_bound_m
 from planner.accuracy3d import reach_bound_3d_m
 from planner.errors import InputError
 from planner.pipeline.candidates import blocked_ground, candidate_grid
@@ -51,11 +51,16 @@ from planner.pipeline.registration import (
     build_network,
     target_candidates,
 )
-from planner.pipeline.requirements import CHECKS, PlanSettings, Requirements
+from planner.pipeline.requirements import (
+    CHECKS,
+    REGISTRATION_PROCESSING,
+    PlanSettings,
+    Requirements,
+)
 from planner.pipeline.result import LINK_COLUMNS, TARGET_COLUMNS, ZONE_COLUMNS, Plan
 from planner.pipeline.route import field_route
 from planner.pipeline.zones import ZoneTable, apply_zones
-from planner.registration_error import CONTROL, Link
+from planner.registration_error import CONTROL, Link, datum_lean_mm
 from planner.scanner import DEFAULT_SCANNER, Scanner, load_scanner
 from planner.site import Site
 from planner.sitecheck import notes_summary
@@ -88,7 +93,8 @@ def reach_m(scanner: Scanner, req: Requirements, settings: PlanSettings | None =
     :func:`planner.accuracy3d.reach_bound_3d_m`), within the scanner's and the requirement's
     range, and never below :data:`MIN_SEARCH_RADIUS_M` — so that even an infeasible
     requirement gets candidates close by and the plan can say what is achievable."""
-    st = settings or PlanSettings()
+    st = PlanSettings() if settings is None else settings
+    _expect(st, PlanSettings, "settings", "PlanSettings(...)")
     tilt = st.scan_tilt_rms_arcsec(scanner)
     if st.model == "paper":
         bound = reach_bound_m(
@@ -319,10 +325,10 @@ def choose_stations(
         more = np.empty(0, dtype=np.int64)
         keep = None
         if short.any() and (resolved or adds < ADD_ROUNDS):
-            keep = _datum_station(ctx, cand, r)
-            if keep is not None:
+            middle = _datum_station(ctx, cand, r)
+            if middle is not None:  # offered as the datum: the network's layout decides
                 say(0.85, "registration: a datum station nearer the middle of the site")
-                more = np.array([keep])
+                more = np.array([middle])
             else:
                 say(0.85, f"registration: {int(short.sum())} samples short; adding stations")
                 more = _stations_for(ctx, cand, r.net, short, deadline, timings)
@@ -604,7 +610,7 @@ def assemble(
 
 #: How many times stations are added or chosen again for the registration error (each time
 #: the network is built and judged again) …
-MAX_REGISTRATION_ROUNDS = 4
+MAX_REGISTRATION_ROUNDS = 5
 #: … of which rounds of adding before the fewest are chosen again.
 ADD_ROUNDS = 2
 
@@ -844,25 +850,30 @@ def _datum_station(ctx: Context, cand: np.ndarray, r: _Round) -> int | None:
     about it, if fewer than the present datum does; else None. Each sample is judged on
     its station's scanner part and the lean alone."""
     net = r.net
-    if ctx.scanner.is_levelled or net is None or net.datum is None or net.error is None:
+    lean_at = net.leaning_datum(ctx.scanner) if net is not None else None
+    if lean_at is None:
         return None
     a = r.judged.assignment
-    has = (a.station >= 0) & ~ctx.facades.party_wall
+    scanner_z = a.metrics["scanner_m_z_mm"]
+    budget = np.square(ctx.limits["m_z"]) - np.square(scanner_z)
+    # the samples its station meets in m_z by the scanner alone (a lean can spoil them)
+    has = (a.station >= 0) & ~ctx.facades.party_wall & np.isfinite(scanner_z) & (budget >= 0)
     if not has.any():
         return None
-    budget = np.square(ctx.limits["m_z"][has]) - np.square(a.metrics["scanner_m_z_mm"][has])
-    lean = MM_PER_M_PER_ARCSEC * ctx.scanner.initial_tilt_rms_arcsec
+    budget = budget[has]
+    per_m = float(datum_lean_mm(1.0, ctx.scanner.initial_tilt_rms_arcsec))
 
     def short(xy: np.ndarray) -> np.ndarray:  # samples short with the datum at each of xy
         far2 = ((ctx.facades.xy[has][None, :, :] - xy[:, None, :]) ** 2).sum(axis=2)
-        return (lean * lean * far2 > budget[None, :]).sum(axis=1)
+        return (per_m * per_m * far2 > budget[None, :]).sum(axis=1)
 
-    now = int(short(net.station_xyz[net.datum, None, :2])[0])
+    now = int(short(lean_at[None, :2])[0])
     if now == 0:
         return None
     region = ctx.regions.label(cand)
     tied = np.unique(region[net.stations[net.tied]])
     pool = np.flatnonzero(np.isin(region, tied[tied >= 0]))
+    pool = np.setdiff1d(pool, net.stations)  # a new station (the layout weighs the others)
     pool = pool[:: max(1, len(pool) // DATUM_POOL)]  # an even thinning of the grid
     if not len(pool):
         return None
@@ -1016,9 +1027,8 @@ def _coverage(
     if net is not None and net.error is not None and len(ids) > 1:
         has = assignment.station >= 0
         untied[has] = ~net.error.tied[assignment.station[has]]
-    datum = None  # unlevelled: the datum scan's tilt turns the network
-    if net is not None and net.datum is not None and not ctx.scanner.is_levelled:
-        datum = (ids[net.datum], net.station_xyz[net.datum, :2])
+    lean_at = net.leaning_datum(ctx.scanner) if net is not None else None
+    datum = None if lean_at is None else (ids[net.datum], lean_at[:2])
     for i in np.flatnonzero(candidates_meet):
         place = places.get(int(assignment.station[i]), "") if untied[i] else ""
         reason[i] = _short_reason(
@@ -1106,7 +1116,7 @@ def _short_reason(
         if datum is not None and c == "z":
             far = float(np.hypot(*(ctx.facades.xy[i] - datum[1])))
             m_nu0 = ctx.scanner.initial_tilt_rms_arcsec
-            lean = far * MM_PER_M_PER_ARCSEC * m_nu0
+            lean = float(datum_lean_mm(far, m_nu0))
             if lean >= 0.5 * reg:
                 text += (
                     f"; {lean:.1f} mm of it is the levelling of the datum {datum[0]} "
@@ -1355,14 +1365,12 @@ def _common_count(net: Network, tc: TargetCandidates, lk: Link) -> int:
 #: ``registration_processing`` (said in the summary, the report and the booklet through the
 #: summary's message).
 PROCESSING_WORDS = {
-    "adjustment": "It assumes the scans are registered together in one adjustment (every "
-    "scan's targets and surfaces at once, as a registration program's network or bundle "
-    "adjustment does); registered pair by pair along the links instead, the errors add up "
-    "along the chain and can exceed it (plan for that with --registration-processing "
-    "pairwise).",
-    "pairwise": "It assumes each scan is registered on its own to the one before it along "
-    "the links (pair by pair: the errors add up along the chain); one adjustment of every "
-    "scan's targets and surfaces together does at least as well.",
+    "adjustment": f"It assumes {REGISTRATION_PROCESSING['adjustment']}; registered pair by "
+    "pair along the links instead, the errors add up along the chain and can exceed it (plan "
+    "for that with --registration-processing pairwise).",
+    "pairwise": f"It assumes {REGISTRATION_PROCESSING['pairwise']}: the errors add up along "
+    "the chain; one adjustment of every scan's targets and surfaces together does at least "
+    "as well.",
 }
 
 

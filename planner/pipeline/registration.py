@@ -59,14 +59,15 @@ from planner.registration_error import (
     Link,
     NetworkError,
     adjust,
+    datum_lean_mm,
     propagate,
     scaled_condition,
     target_centre_rms_mm,
     transport_pose_cov,
 )
+from planner.scanner import Scanner
 from planner.spacing import point_spacing_mm
 from planner.targets import choose_target, size_rules
-from planner.units import RHO_ARCSEC
 
 __all__ = [
     "Network",
@@ -552,6 +553,26 @@ class Network:
             tied=self.error.tied | (len(self.stations) == 1),
         )
 
+    def leaning_datum(self, scanner: Scanner) -> np.ndarray | None:
+        """Where the datum whose tilt leans the whole network stands (x, y, z): a scanner
+        without a compensator registered to a station datum
+        (:func:`~planner.registration_error.datum_tilt_cov`); None where a compensator
+        levels every scan or control points fix the vertical."""
+        if scanner.is_levelled or self.datum is None or self.error is None:
+            return None
+        return self.station_xyz[self.datum]
+
+    def leans(self, scanner: Scanner) -> np.ndarray:
+        """(K,) the stations whose pose carries the datum's lean: tied to the datum (also
+        through a traverse from a tied station), not by planned GNSS control of their own."""
+        if self.leaning_datum(scanner) is None:
+            return np.zeros(len(self.stations), dtype=bool)
+        out = self.tied.copy()
+        for tie in self.ties:
+            if tie.start < 0:
+                out[list(tie.stations)] = False
+        return out
+
     @property
     def datum_station(self) -> int | None:
         """The datum as a candidate index (None: the control network, or no datum)."""
@@ -868,18 +889,28 @@ class _Layout:
         if tc.is_control.any():
             seen_ctl = any(np.isfinite(self.link(CONTROL, j)[1]) for j in range(k))
             roots = [CONTROL] if seen_ctl else []
-        if not roots and datum in stations:  # kept from the network this one grows from
+        kept = not roots and datum in stations  # kept from the network this one grows from
+        if kept:
             roots = [stations.index(datum)]
+        best = self._best_tree(roots or range(k))
+        if kept and best is not None and len(best[3]) < k:  # it does not reach them all
+            free = self._best_tree(range(k))
+            best = free if len(free[3]) > len(best[3]) else best
+        self.datum, self.tree, self.cost = best[1:] if best else (None, [], {})
+        self.worst_var = max(self.cost.values()) if self.cost else np.inf
+
+    def _best_tree(self, roots) -> tuple | None:
+        """(key, root, tree, cost) of the root whose tree reaches the most stations, then
+        keeps the worst station's error smallest — with 6 parameters, its variance plus the
+        datum's lean at its facade points (:meth:`datum_tilt_var`)."""
         best = None
-        for root in roots or range(k):
-            tree, cost = _tree(root, k, self.pairs, self.link)
+        for root in roots:
+            tree, cost = _tree(root, self.k, self.pairs, self.link)
             tilt = self.datum_tilt_var(root)
             key = (-len(cost), max((c + tilt[j] for j, c in cost.items()), default=np.inf))
             if best is None or key < best[0]:
                 best = (key, root, tree, cost)
-        (_, self.worst_var), self.datum, self.tree, self.cost = (
-            best if best else ((0, np.inf), None, [], {})
-        )
+        return best
 
     def datum_tilt_var(self, root: int) -> np.ndarray:
         """(K,) the largest height variance [mm²] the datum's tilt gives each station's
@@ -889,10 +920,9 @@ class _Layout:
         sc = self.ctx.scanner
         if root == CONTROL or sc.is_levelled:
             return np.zeros(self.k)
-        tau = sc.initial_tilt_rms_arcsec / RHO_ARCSEC * 1000.0  # mm per m
         s0 = self.station_xyz[root, :2]
         far = [np.hypot(*(self.probe(j)[:, :2] - s0).T).max() for j in range(self.k)]
-        return np.square(tau * np.array(far))
+        return np.square(datum_lean_mm(np.array(far), sc.initial_tilt_rms_arcsec))
 
     def sigma(self, j: int, t: int) -> float:
         """Centre RMS of target t from station j with the largest item it could need."""

@@ -385,9 +385,14 @@ MODELS = ("3d", "paper")
 #: How the scans are registered: ``auto`` takes the scanner profile's usual workflow
 #: (targets when it names none).
 REGISTRATION_MODES = ("auto", "targets", "cloud", "hybrid")
-#: How the registration software computes the registration the plan promises: every scan's
-#: targets and surfaces in one adjustment, or pair by pair along the plan's links.
-REGISTRATION_PROCESSING = ("adjustment", "pairwise")
+#: How the registration software computes the registration the plan promises, in words
+#: (the command line's help, the dashboard's tooltips, the summary and the report).
+REGISTRATION_PROCESSING = {
+    "adjustment": "the scans registered in one adjustment (every scan's targets and surfaces "
+    "at once, as a registration program's network or bundle adjustment does)",
+    "pairwise": "each scan registered on its own to the one before it along the plan's links "
+    "(pair by pair)",
+}
 
 
 #: Side of a district block [m] (:mod:`planner.pipeline.district`): a few city blocks, a

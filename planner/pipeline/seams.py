@@ -157,6 +157,8 @@ def _best_seam(ctx: Context, t: pd.DataFrame, fi, fj, near_i, near_j, i, j) -> S
                 [Link(0, 1, tuple(int(c) for c in common))],
                 datum=0,
                 levelled=ctx.scanner.is_levelled,
+                # the seam's own error: its two stations' tilts, levelled; without a
+                # compensator no datum's (the district's lean is added once, district.py)
                 tilt_rms_arcsec=ctx.scanner.initial_tilt_rms_arcsec
                 if ctx.scanner.is_levelled
                 else 0.0,
@@ -271,7 +273,8 @@ def add_frame_errors(
     was = cov["meets"].to_numpy().copy()
     worse = np.zeros(len(cov), dtype=bool)
     for c, v in zip("xyz", more, strict=True):
-        # (v may take a block's own datum lean out again: never below zero but by rounding)
+        # (v takes a block's own datum lean out again where the district's replaces it:
+        # never more than the sample had, so below zero only by rounding)
         reg = np.sqrt(np.maximum(cov[f"reg_m_{c}_mm"].to_numpy()[rows] ** 2 + v, 0.0))
         total = np.hypot(cov[f"scanner_m_{c}_mm"].to_numpy()[rows], reg)
         cov.loc[cov.index[rows], f"reg_m_{c}_mm"] = reg
