@@ -174,30 +174,6 @@ def test_too_small_courtyard_is_reported_unmet_with_the_reason():
     assert unmet["facade_id"].isin(court_ids).all()  # the outer walls are met
 
 
-def test_a_datum_station_in_the_middle_keeps_the_far_heights(monkeypatch):
-    """A scanner without a compensator (12.4″): the network leans with its datum's tilt, so
-    heights err in proportion to their distance from the datum. The two stations the
-    scanner alone needs stand far apart (60 m); held as the datum, either leaves the far
-    walls short in m_z, and the reasons say it is the datum's levelling. A third station
-    nearer the middle, held as the datum, meets every sample."""
-    import planner.pipeline.planning as planning
-
-    a = Building("A", rect(0, 0, 20, 10), 12.0)
-    site = Site([a, Building("B", rect(20, 0, 30, 10), 6.0, planned=False)])
-    args = (site, PAPER, Requirements(max_xy_mm=6, max_z_mm=6), PlanSettings())
-    p = plan(*args)
-    assert p.meets_all and len(p.stations) == 3
-    net = p.network
-    centre = np.array([E0 + 10, N0 + 5])
-    far = np.hypot(*(net.station_xyz[:, :2] - centre).T)
-    assert far[net.datum] == far.min() < 25.0  # m: the datum stands near the building
-    monkeypatch.setattr(planning, "_datum_station", lambda *_a: None)
-    two = plan(*args)
-    assert len(two.stations) == 2 and len(two.unmet) > 50
-    lean = two.unmet["reason"].str.contains(r"mm of it is the levelling of the datum S0\d \(12.4″")
-    assert lean.mean() > 0.8
-
-
 def test_a_wall_above_a_lower_neighbours_roof_needs_an_elevated_station():
     """The default site's east wall above the annex's 7 m roof (12 m deep): the samples
     at 8.4 m are seen from the ground only over the roof's edge, steeply; with the X7, each

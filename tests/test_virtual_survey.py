@@ -37,11 +37,12 @@ def test_the_default_plan_keeps_its_promise_in_a_virtual_survey(default_world):
 def test_registered_pair_by_pair_the_survey_breaks_the_adjustments_promise(default_world):
     """Negative control: the same plan, its scans registered link by link instead of in one
     adjustment (the targets' centres as the model has them, to keep it quick): the errors
-    add up along the chain and the survey finds samples above their limits."""
+    add up along the chain, the survey finds the registration half as large again as
+    promised, and samples above their limits."""
     res = survey(default_world, trials=300, seed=2, target_points=False, processing="pairwise")
     out = report(res)
-    assert out["false_meets_3se"] >= 3, out
-    assert max(out["reg_median"]) > 1.3, out
+    assert max(out["reg_median"]) > 1.3 and max(out["p95"]) > 1.2, out
+    assert out["false_meets_any"] > 0, out
 
 
 def test_a_plan_for_pairwise_registration_keeps_that_promise():

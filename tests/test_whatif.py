@@ -126,14 +126,17 @@ def test_a_moved_flat_target_slides_along_its_wall_and_is_used(own_plan):
 
 def test_a_sphere_added_by_hand_is_preferred_where_it_can_serve(own_plan):
     p = own_plan
-    s = p.stations.iloc[0]
-    q = edit_targets(p, add_xy=np.array([[s["x"] + 2.0, s["y"] + 2.0]]))
+    st = p.stations.set_index("station_id")[["x", "y"]]
+    link = p.links.iloc[0]  # a third of the way along the first link: both its stations see it
+    a, b = st.loc[link["station_a"]].to_numpy(float), st.loc[link["station_b"]].to_numpy(float)
+    xy = a + (b - a) / 3 + 0.7
+    q = edit_targets(p, add_xy=xy[None])
     z = p.workbench.settings.target_height_m
-    assert _has(q.targets, np.array([s["x"] + 2.0, s["y"] + 2.0, z]))
+    assert _has(q.targets, np.array([*xy, z]))
     assert "Targets placed by hand: 1 of 1 used by the registration." in q.messages
     # negative control: a stand far outside every station's view serves nothing
-    far = edit_targets(q, add_xy=np.array([[s["x"] + 2000.0, s["y"]]]))
-    assert not _has(far.targets, np.array([s["x"] + 2000.0, s["y"], z]))
+    far = edit_targets(q, add_xy=np.array([[a[0] + 2000.0, a[1]]]))
+    assert not _has(far.targets, np.array([a[0] + 2000.0, a[1], z]))
     assert "Targets placed by hand: 1 of 2 used by the registration" in " ".join(far.messages)
 
 

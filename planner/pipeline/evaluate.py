@@ -377,11 +377,20 @@ class PairMetrics:
 
 
 def facade_pairs(
-    ctx: Context, f: int, cand_xy: np.ndarray, smp: np.ndarray | None = None, keep: bool = False
+    ctx: Context,
+    f: int,
+    cand_xy: np.ndarray,
+    smp: np.ndarray | None = None,
+    keep: bool = False,
+    own_level: bool = False,
 ) -> PairMetrics:
     """Evaluate candidates ``cand_xy`` against the samples ``smp`` (default: all) of facade
     ``f``: geometry, visibility and the predicted variances (``keep``: keep the line of
-    sight for the next evaluation, :meth:`Context.clear_heights`)."""
+    sight for the next evaluation, :meth:`Context.clear_heights`). ``own_level``: each
+    candidate's scans carry its own levelling, as a scan on its own (or the datum) does —
+    the stand-in for its frame's error before a registration network exists; otherwise the
+    settings decide (:meth:`~planner.pipeline.requirements.PlanSettings
+    .scan_tilt_rms_arcsec`)."""
     fac, sc = ctx.facades, ctx.scanner
     hi = ctx.settings.instrument_height_m
     cols = ctx.cols_of[f]
@@ -413,7 +422,8 @@ def facade_pairs(
     st = ctx.settings
     m_s = sc.range_rms_at(s)
     no_station = (0.0, 0.0)  # the station's own error is the registration's part, below
-    tilt = st.scan_tilt_rms_arcsec(sc)  # the frame's tilt: here, or the registration's part
+    # the frame's tilt: here, or the registration's part
+    tilt = sc.initial_tilt_rms_arcsec if own_level else st.scan_tilt_rms_arcsec(sc)
     beam = None
     if st.model == "paper":  # eq. 2 and 4 of Voroshilov & Karachentsev
         var_x, var_y = eq2_variances(d, cos_g * cos_g, m_s, sc.angle_rms_arcsec, no_station)
@@ -488,9 +498,11 @@ def evaluate_candidates(
     only: np.ndarray | None = None,
 ) -> CandidateEvaluation:
     """Evaluate every candidate against every facade sample (sparse result), on the scanner's
-    error plus, when given, the registration's (one entry per candidate); ``only`` (N,) bool
-    restricts it to some samples. Facades not reached by ``deadline`` (a
-    :func:`time.monotonic` time) are left unevaluated."""
+    error plus, when given, the registration's (one entry per candidate) — without it, each
+    candidate with its own levelling (:func:`facade_pairs`' ``own_level``: the choice's
+    stand-in for the frame's error until the network exists); ``only`` (N,) bool restricts
+    it to some samples. Facades not reached by ``deadline`` (a :func:`time.monotonic` time)
+    are left unevaluated."""
     fac = ctx.facades
     n_samples = len(fac.z)
     rows, cols = [], []
@@ -513,7 +525,7 @@ def evaluate_candidates(
             if time.monotonic() > deadline:
                 break  # the facade's samples stay "not evaluated"; the pairs found count
             ci = cand[lo : lo + step]
-            m = facade_pairs(ctx, f, cand_xy[ci], smp, keep=only is None)
+            m = facade_pairs(ctx, f, cand_xy[ci], smp, only is None, registration is None)
             if registration is not None:
                 add_registration(ctx, m, f, smp, registration, ci)
             r, c = np.nonzero(meets(ctx, m, smp) & ~m.untied)
@@ -552,7 +564,8 @@ def best_achievable(
         cand = ctx.front_candidates(f, cand_xy)
         step = max(1, PAIR_CHUNK // len(smp))
         for lo in range(0, len(cand), step):
-            m = facade_pairs(ctx, int(f), cand_xy[cand[lo : lo + step]], smp)
+            # as the scanner-only evaluation judged it (each candidate with its own levelling)
+            m = facade_pairs(ctx, int(f), cand_xy[cand[lo : lo + step]], smp, own_level=True)
             for c, _ in ctx.active_checks(smp):
                 seen = np.where(m.view, m.value(c.metric), c.worst_value())
                 best = c.best(seen, axis=0)
