@@ -547,3 +547,31 @@ def test_the_optimiser_leaves_the_registration_its_share_of_the_time(monkeypatch
     share = 0.5 if registration else 1.0  # the registration is left at least half
     assert all(planning.MIN_SOLVER_S <= s <= share * budget for s in limits)
     assert limits[0] > share * budget - 10.0  # s: most of the share is still there
+
+
+def test_what_a_plan_says_of_hopeless_samples_does_not_depend_on_the_optimisers_time(
+    monkeypatch,
+):
+    """The diagnosis of the samples no position meets (their best achievable values, which
+    the reasons print) runs before the optimiser: an optimiser that takes nearly all the
+    time left no longer cuts it short (it did: the reasons then changed under load)."""
+    import time
+
+    import planner.pipeline.planning as planning
+
+    args = (None, None, Requirements(max_xy_mm=5, max_z_mm=2), PlanSettings(time_limit_s=2))
+    calm = plan(*args).workbench
+    real = planning.solve_cover
+
+    def slow(ok, demand, time_limit_s, method):  # the machine loaded: the time all gone
+        time.sleep(time_limit_s / planning.SOLVER_SHARE + 0.05)
+        return real(ok, demand, time_limit_s, method)
+
+    monkeypatch.setattr(planning, "solve_cover", slow)
+    hurried = plan(*args).workbench
+    assert calm.evaluation.evaluated.all() and hurried.evaluation.evaluated.all()
+    a, b = calm.diagnosis, hurried.diagnosis
+    assert len(a.samples) > 10 and np.array_equal(a.samples, b.samples)
+    assert a.best["done"].all() and b.best["done"].all()
+    for key in a.best:
+        np.testing.assert_array_equal(a.best[key], b.best[key])

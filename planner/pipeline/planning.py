@@ -297,16 +297,19 @@ def choose_stations(
     cut: list[str] = []  # what the time budget cut short, in words
     now = time.monotonic()
     evaluated_by = now + EVALUATION_SHARE * max(0.0, deadline - now)
-    ev, sol = _choose(ctx, cand, say, deadline, timings, forced=forced, evaluated_by=evaluated_by)
+    ev = _evaluate(ctx, cand, say, min(deadline, evaluated_by), timings)
     if not ev.evaluated.all():
         cut.append(
             f"the evaluation ({int(ev.evaluated.sum())} of {len(fac.z)} samples; the plan "
             "covers those)"
         )
     wb.evaluation = ev
+    # the diagnosis before the optimiser: the optimiser takes a share of the time left, and
+    # what it leaves must not decide what the plan says of the samples no position meets
     wb.diagnosis = _diagnose(ctx, cand, ev, deadline, timings)
     if len(wb.diagnosis.samples) and not np.all(wb.diagnosis.best["done"]):
         cut.append("the diagnosis of the samples no position meets")
+    sol = _optimise(ctx, cand, ev, say, deadline, timings, forced=forced)
     if len(wb.diagnosis.samples) and time.monotonic() > deadline:
         cut.append("the best-effort stations for the samples no position meets")
     best_effort, relaxed_by = _best_effort(ctx, cand, sol.chosen, wb.diagnosis, deadline)
@@ -662,26 +665,52 @@ def _choose(
     estimate: Registration | None = None,
     forced: np.ndarray | None = None,
     scanner_ok: sp.csr_matrix | None = None,
-    evaluated_by: float | None = None,
 ) -> tuple[CandidateEvaluation, CoverSolution]:
-    """Evaluate every candidate on the scanner's error (plus the ``estimate`` of its
-    registration error) and choose the fewest stations (with the redundant views spread);
-    the ``forced`` candidates are taken and the fewest others added to them. A sample the
-    estimate leaves fewer candidates than the ``scanner_ok`` (the evaluation on the
-    scanner's error alone) would give it is covered on ``scanner_ok``: by stations it
-    is met from by the scanner's error, where the exact network may still meet it — not
-    by whichever station happens to be nearest. The evaluation stops at ``evaluated_by``
-    (default ``deadline``)."""
-    fac, req, st = ctx.facades, ctx.req, ctx.settings
+    """Evaluate every candidate (:func:`_evaluate`) and choose the fewest stations
+    (:func:`_optimise`)."""
+    ev = _evaluate(ctx, cand, say, deadline, timings, estimate)
+    return ev, _optimise(ctx, cand, ev, say, deadline, timings, forced, scanner_ok)
+
+
+def _evaluate(
+    ctx: Context,
+    cand: np.ndarray,
+    say: Progress,
+    deadline: float,
+    timings: dict[str, float],
+    estimate: Registration | None = None,
+) -> CandidateEvaluation:
+    """Every candidate against every sample on the scanner's error (plus the ``estimate`` of
+    its registration error), until ``deadline``."""
     t = time.perf_counter()
     ev = evaluate_candidates(
         ctx,
         cand,
         progress=lambda f, m: say(0.05 + 0.6 * f, m),
-        deadline=deadline if evaluated_by is None else min(deadline, evaluated_by),
+        deadline=deadline,
         registration=estimate,
     )
     timings["evaluate"] = timings.get("evaluate", 0.0) + time.perf_counter() - t
+    return ev
+
+
+def _optimise(
+    ctx: Context,
+    cand: np.ndarray,
+    ev: CandidateEvaluation,
+    say: Progress,
+    deadline: float,
+    timings: dict[str, float],
+    forced: np.ndarray | None = None,
+    scanner_ok: sp.csr_matrix | None = None,
+) -> CoverSolution:
+    """The fewest stations meeting the evaluation ``ev`` (with the redundant views spread);
+    the ``forced`` candidates are taken and the fewest others added to them. A sample the
+    evaluation leaves fewer candidates than the ``scanner_ok`` (the evaluation on the
+    scanner's error alone) would give it is covered on ``scanner_ok``: by stations it is
+    met from by the scanner's error, where the exact network may still meet it — not by
+    whichever station happens to be nearest."""
+    fac, req, st = ctx.facades, ctx.req, ctx.settings
     say(0.7, "choosing the fewest stations")
     t = time.perf_counter()
     ok = ev.ok
@@ -711,7 +740,7 @@ def _choose(
             sol.chosen, sol.objective = spread, len(spread)
             sol.gap = (sol.objective - sol.lower_bound) / sol.objective
     timings["optimise"] = timings.get("optimise", 0.0) + time.perf_counter() - t
-    return ev, sol
+    return sol
 
 
 def _solver_time(ctx: Context, deadline: float) -> float:
