@@ -12,7 +12,8 @@ from sites import run_cli as _cli
 from planner.pipeline import clouds
 from planner.pipeline.evaluate import Context
 from planner.pipeline.facades import build_facades
-from planner.pipeline.planning import REGISTRATION_GOAL, plan
+from planner.pipeline.judge import REGISTRATION_GOAL
+from planner.pipeline.planning import plan
 from planner.pipeline.requirements import PlanSettings, Requirements
 from planner.scanner import Scanner, catalogue
 from planner.site import Building, Site
@@ -118,7 +119,8 @@ def _corner_network(min_overlap_pct: float):
     """The cloud-to-cloud network of two stations 6 m and 62 m out along the diagonal off
     one corner of a 40 m square building: both see its two walls there, but their scans
     overlap by a third only (the ground near each is the other's blind spot)."""
-    from planner.pipeline.planning import _network, _prepare
+    from planner.pipeline.judge import round_network
+    from planner.pipeline.planning import _prepare
 
     st = PlanSettings(registration="cloud", min_overlap_pct=min_overlap_pct)
     wb = _prepare(square_site(40.0, 12.0), SCANNER, Requirements(), st, lambda *_: None)
@@ -127,7 +129,7 @@ def _corner_network(min_overlap_pct: float):
         int(np.argmin(np.hypot(*(cand - np.array([E0 + x, N0 + y])).T)))
         for x, y in ((-6.0, -6.0), (-62.0, -62.0))
     ]
-    return _network(wb.ctx, cand, wb.seen, np.array(ends), {})
+    return round_network(wb.ctx, cand, wb.seen, np.array(ends), {})
 
 
 def test_scans_that_overlap_too_little_are_chained_by_linking_stations_cloud_to_cloud():

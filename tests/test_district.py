@@ -190,8 +190,7 @@ def test_local_workers_keep_the_dynamic_mmap_threshold():
 
 def _table(rows):
     """A meeting table from (facade, sample, station, own) rows on distinct points."""
-    from planner.pipeline.district import MEETING_COLUMNS
-    from planner.pipeline.evaluate import METRIC_KEYS
+    from planner.pipeline.schema import MEETING_COLUMNS, METRIC_KEYS
 
     out = pd.DataFrame(
         [

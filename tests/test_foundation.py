@@ -21,7 +21,7 @@ from sites import osm_like_export
 from test_cli import run
 
 import planner
-from planner.pipeline.evaluate import METRIC_KEYS, PairMetrics
+from planner.pipeline.evaluate import PairMetrics
 from planner.pipeline.requirements import (
     CHECKS,
     PlanSettings,
@@ -29,6 +29,7 @@ from planner.pipeline.requirements import (
     field_specs,
     requirements_and_settings,
 )
+from planner.pipeline.schema import METRIC_KEYS
 from planner.scanner import DEFAULT_SCANNER
 from planner.siteio import read_site
 

@@ -9,7 +9,7 @@ import pytest
 from test_cli import PAPER_5MM, run
 
 from planner.app.cli import main
-from planner.pipeline.export import COVERAGE_COLUMNS, STATION_COLUMNS, TARGET_COLUMNS
+from planner.pipeline.schema import COVERAGE_COLUMNS, STATION_COLUMNS, TARGET_COLUMNS
 
 FAST = ["--sample-spacing-m", "3", "--sample-height-step-m", "3"]
 

@@ -154,7 +154,7 @@ def test_the_plan_says_which_registration_processing_its_promise_assumes(default
     the booklet and the report, which print it) says so, and that pairwise registration
     along the links can do worse."""
     from planner.app.report import ReportContent
-    from planner.pipeline.planning import PROCESSING_WORDS
+    from planner.pipeline.tables import PROCESSING_WORDS
 
     summary = default_plan.summary()
     line = next(m for m in summary.splitlines() if m.startswith("Registration error: worst"))

@@ -295,6 +295,7 @@ def run_plan(args: argparse.Namespace) -> int:
     no time for (said in the summary and on its last page)."""
     import time
 
+    from planner.pipeline.export import save
     from planner.pipeline.planning import plan
 
     started = time.monotonic()
@@ -340,7 +341,7 @@ def run_plan(args: argparse.Namespace) -> int:
                 + (" …" if len(left) > 8 else "")
                 + "): its last page lists them; raise --time-limit-s for the whole booklet."
             )
-    written = result.save(args.out, extra)
+    written = save(result, args.out, extra)
     print(result.summary())
     unmet = result.unmet
     if len(unmet):

@@ -20,8 +20,9 @@ from matplotlib.path import Path as MplPath
 from shapely.geometry.base import BaseGeometry
 
 from planner.crs import name_of as crs_name
-from planner.pipeline.result import STATION_PURPOSES, Plan
+from planner.pipeline.result import Plan
 from planner.pipeline.route import view_sectors
+from planner.pipeline.schema import STATION_PURPOSES
 from planner.site import Site
 
 __all__ = [

@@ -21,9 +21,9 @@ import pandas as pd
 from IPython.display import HTML
 
 from planner.atomic import write_text_atomic
-from planner.pipeline.planning import PROCESSING_WORDS
 from planner.pipeline.requirements import PlanSettings, field_specs
 from planner.pipeline.result import Plan
+from planner.pipeline.tables import PROCESSING_WORDS
 from planner.pipeline.visibility import SIGHT_CLEARANCE_M
 from planner.reference import REFERENCES
 

@@ -18,8 +18,9 @@ import numpy as np
 
 from planner.pipeline.result import Plan
 from planner.pipeline.route import view_sectors
+from planner.pipeline.schema import STAKEOUT_COLUMNS, geojson, geometry_json, to_csv
 
-__all__ = ["DXF_LAYERS", "STAKEOUT_COLUMNS", "dxf_text", "kml_text", "stakeout_csv"]
+__all__ = ["DXF_LAYERS", "dxf_text", "kml_text", "stakeout_csv"]
 
 #: DXF layer of each GeoJSON layer, with its AutoCAD colour index.
 DXF_LAYERS = {
@@ -38,13 +39,8 @@ DXF_LAYERS = {
     "info": ("PLAN-INFO", 7),
 }
 
-#: The stake-out file a controller imports: point id, easting, northing, height, code.
-STAKEOUT_COLUMNS = ["point_id", "easting", "northing", "height", "code"]
-
 
 def _features(p: Plan) -> list[dict]:
-    from planner.pipeline.export import geojson
-
     return geojson(p)["features"]
 
 
@@ -130,9 +126,7 @@ def dxf_text(p: Plan) -> str:
                     [tuple(c[:2]) for c in ring], close=closed, dxfattribs={"layer": layer}
                 )
     if p.site.boundary is not None:
-        from planner.pipeline.export import _to_geojson
-
-        for ring in _rings(_to_geojson(p.site.boundary)):
+        for ring in _rings(geometry_json(p.site.boundary)):
             msp.add_lwpolyline([tuple(c[:2]) for c in ring], dxfattribs={"layer": "BOUNDARY"})
     st = p.stations.set_index("station_id")
     for sid, (start, end, radius) in view_sectors(p.stations, p.coverage, p.targets).items():
@@ -264,8 +258,6 @@ def stakeout_csv(p: Plan) -> str:
     (:data:`STAKEOUT_COLUMNS`), in the site's CRS; height above the site's ground (a
     station: its ground mark, 0; a target: its centre)."""
     import pandas as pd
-
-    from planner.pipeline.export import to_csv
 
     rows: list[dict[str, Any]] = [
         {

@@ -38,7 +38,6 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -48,8 +47,8 @@ import shapely
 from shapely.geometry import box
 
 from planner.errors import InputError
+from planner.pipeline.evaluate import Progress
 from planner.pipeline.facades import estimate_samples
-from planner.pipeline.planning import budget_message
 from planner.pipeline.requirements import (
     DEFAULT_BLOCK_M,
     DISTRICT_SAMPLES,
@@ -60,6 +59,8 @@ from planner.pipeline.requirements import (
 )
 from planner.pipeline.result import Plan
 from planner.pipeline.route import field_route
+from planner.pipeline.schema import MEETING_COLUMNS, METRIC_KEYS
+from planner.pipeline.tables import budget_message
 from planner.registration_error import datum_tilt_cov
 from planner.scanner import Scanner
 from planner.site import Site
@@ -80,7 +81,6 @@ __all__ = [
     "shared_prices",
 ]
 
-Progress = Callable[[float, str], None]
 
 #: Configuration of the local workers. Dask sets ``MALLOC_TRIM_THRESHOLD_`` for its workers
 #: so that freed memory goes back to the system; setting it turns off glibc's dynamic mmap
@@ -343,10 +343,6 @@ def meeting_reach(p: Plan, rows_per_chunk: int = 2000) -> float:
     return farthest
 
 
-#: The columns of :func:`meeting_table`.
-MEETING_COLUMNS = ["facade_id", "sample_id", "x", "y", "z", "station_id", "own", "needed"]
-
-
 def meeting_table(p: Plan, region: shapely.Geometry | None = None) -> pd.DataFrame:
     """Which of a block plan's stations meet which samples — of its own buildings and of the
     others within reach (its halo's, planned by other blocks) — on the scanner's error plus
@@ -355,7 +351,7 @@ def meeting_table(p: Plan, region: shapely.Geometry | None = None) -> pd.DataFra
     requirement (``needed`` NaN: its zones, if any, belong to its own block), and only at
     samples inside ``region`` (:func:`block_region`): a sight line between two points in it
     can only be blocked by buildings the block's site holds."""
-    from planner.pipeline.evaluate import METRIC_KEYS, Context, meeting_pairs
+    from planner.pipeline.evaluate import Context, meeting_pairs
     from planner.pipeline.facades import build_facades
 
     wb, st = p.workbench, p.settings
@@ -918,7 +914,6 @@ def _without(
     remaining station meeting them (:func:`_counting_pairs`) with the smallest largest RMS
     (its metrics taken over) and counted again, their links gone, and the targets no link
     uses any more."""
-    from planner.pipeline.evaluate import METRIC_KEYS
 
     gone = set(removed)
     key = ["facade_id", "sample_id"]

@@ -27,6 +27,7 @@ from planner.accuracy3d import footprint_mm, incidence_ranging_rms_mm, variances
 from planner.pipeline.candidates import GroundRegions
 from planner.pipeline.facades import SIGHT_OFFSET_M, FacadeSet, bridge_edges, footprint_edges
 from planner.pipeline.requirements import CHECKS, Check, PlanSettings, Requirements
+from planner.pipeline.schema import METRIC_KEYS
 from planner.pipeline.visibility import (
     bridge_interval,
     clear_height,
@@ -42,7 +43,6 @@ from planner.site import Site
 from planner.spacing import facade_spacing_kernel
 
 __all__ = [
-    "METRIC_KEYS",
     "Assignment",
     "CandidateEvaluation",
     "Context",
@@ -55,25 +55,6 @@ __all__ = [
 ]
 
 Progress = Callable[[float, str], None]
-
-#: Per-pair quantities reported for chosen stations (besides ``score``, ``view``, ``ok``).
-METRIC_KEYS = (
-    "distance_m",
-    "slope_distance_m",
-    "gamma_deg",
-    "nu_deg",
-    "incidence_deg",
-    "m_x_mm",
-    "m_y_mm",
-    "m_z_mm",
-    "spacing_mm",
-    "scanner_m_x_mm",
-    "scanner_m_y_mm",
-    "scanner_m_z_mm",
-    "reg_m_x_mm",
-    "reg_m_y_mm",
-    "reg_m_z_mm",
-)
 
 #: Candidate × sample pairs evaluated at once: ~20 float arrays of this many stay in cache.
 PAIR_CHUNK = 65_536

@@ -7,84 +7,17 @@ The plan's files (CSV, GeoJSON, summary) are written by :mod:`planner.pipeline.e
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 import pandas as pd
 
 from planner.crs import name_of as crs_name
 from planner.pipeline.requirements import PlanSettings, Requirements
+from planner.pipeline.schema import FACADE_TABLE_COLUMNS, STATION_PURPOSES, ZONE_COLUMNS
 from planner.scanner import Scanner
 from planner.site import Site
 
-__all__ = ["FACADE_TABLE_COLUMNS", "LINK_COLUMNS", "TARGET_COLUMNS", "ZONE_COLUMNS", "Plan"]
-
-#: Why a station is in the plan (the ``purpose`` column of the stations), in the words of the
-#: summary and of the map's legend, in the order they are listed.
-STATION_PURPOSES = {
-    "hand": "placed by hand",
-    "best-effort": "best effort, for samples no position meets",
-    "cover": "to cover",
-    "link": "to link the network",
-    "registration": "for the registration error",
-    "traverse": "a total-station set-up of a traverse (planned control)",
-}
-
-#: The zones as planned: where, the requirement inside, the sample spacing there [m], and
-#: how many of its samples (not on party walls) meet it.
-ZONE_COLUMNS = ["zone_id", "where", "requirement", "sample_spacing_m", "samples", "met", "unmet"]
-
-#: The target list: where (site CRS, z above the ground), which type, the smallest size its
-#: stations need and the item placed, the rule that sized it, the stations using it, the
-#: wall it is on and which way it faces (azimuth of the normal), its centre's RMS [mm].
-TARGET_COLUMNS = [
-    "target_id",
-    "x",
-    "y",
-    "z",
-    "type",
-    "min_size_mm",
-    "size_mm",
-    "item",
-    "sized_by",
-    "station_ids",
-    "facade_id",
-    "facing_deg",
-    "centre_rms_mm",
-]
-#: The registrations (station_b registered to station_a, or to the control network): common
-#: targets usable by both, targets placed, the link's own predicted error at station_b's
-#: facade points [mm], its geometry's strength — ``dilution``, that error over the RMS of
-#: one target's centre difference (like a DOP: how much the targets' layout magnifies their
-#: errors out at the facades; lower is stronger) — and the whole registration error
-#: station_b's points end with [mm].
-LINK_COLUMNS = [
-    "station_a",
-    "station_b",
-    "common_targets",
-    "targets_placed",
-    "target_ids",
-    "link_rms_mm",
-    "dilution",
-    "station_b_rms_mm",
-    "kind",
-    "overlap_pct",
-    "weakest_direction",
-]
-
-#: The per-facade summary as a surveyor reads it (dashboard, report).
-FACADE_TABLE_COLUMNS = [
-    "building_id",
-    "length_m",
-    "samples",
-    "party_wall_samples",
-    "met",
-    "unmet",
-    "worst_m_x_mm",
-    "worst_m_y_mm",
-    "worst_m_z_mm",
-    "stations",
-]
+__all__ = ["Plan"]
 
 
 @dataclass(kw_only=True)
@@ -215,9 +148,3 @@ class Plan:
             state = "met" if z.unmet == 0 else f"{z.unmet} of {z.samples} samples unmet"
             lines.append(f"Zone {z.zone_id} ({z.where}; {z.requirement}): {state}")
         return "\n".join(lines + self.messages)
-
-    def save(self, out_dir: str | Path, extra: dict[str, bytes] | None = None) -> list[Path]:
-        """Write the plan's files into ``out_dir`` (see :func:`planner.pipeline.export.save`)."""
-        from planner.pipeline.export import save
-
-        return save(self, out_dir, extra)

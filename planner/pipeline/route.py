@@ -34,11 +34,12 @@ from scipy.spatial import cKDTree
 
 from planner.fieldwork import scan_points, scan_time_s
 from planner.pipeline.requirements import PlanSettings
+from planner.pipeline.schema import ROUTE_COLUMNS
 from planner.scanner import Scanner
 from planner.site import Site
 from planner.spacing import resolve_step_mm
 
-__all__ = ["ROUTE_COLUMNS", "FieldRoute", "field_route", "view_sectors", "walk_paths"]
+__all__ = ["FieldRoute", "field_route", "view_sectors", "walk_paths"]
 
 #: Distance kept from buildings and obstacles when walking [m] (at most half the clearance).
 WALK_CLEARANCE_M = 0.4
@@ -57,31 +58,6 @@ ORDER_WORK = 1e8
 TWO_OPT_WINDOW = 400
 #: … and looks at this many of the best reversals in a pass.
 MOVES_PER_PASS = 2000
-
-#: route.csv: one row per station in visiting order.
-ROUTE_COLUMNS = [
-    "order",
-    "station_id",
-    "x",
-    "y",
-    "session",
-    "walk_m",
-    "walk_min",
-    "targets_to_set",
-    "targets_min",
-    "setup_min",
-    "sector_start_deg",
-    "sector_deg",
-    "step_mm_at_10m",
-    "scan_points_million",
-    "scan_min",
-    "station_min",
-    "elapsed_min",
-    "max_spacing_mm",
-    "links_to",
-    "registers_to",
-    "walk_note",
-]
 
 
 @dataclass

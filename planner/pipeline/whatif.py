@@ -21,16 +21,9 @@ import time
 import numpy as np
 
 from planner.errors import InputError
-from planner.pipeline.planning import (
-    Progress,
-    Workbench,
-    _free_positions,
-    _judge,
-    _network,
-    _Round,
-    assemble,
-    choose_stations,
-)
+from planner.pipeline.evaluate import Progress
+from planner.pipeline.judge import Round, Workbench, assemble, free_positions, judge, round_network
+from planner.pipeline.planning import choose_stations
 from planner.pipeline.registration import TargetCandidates
 from planner.pipeline.result import Plan
 
@@ -55,7 +48,7 @@ def evaluate_stations(p: Plan, xy: np.ndarray) -> Plan:
     purpose is "link")."""
     t0 = time.perf_counter()
     wb = _workbench(p)
-    idx = wb.add_positions(_free_positions(wb, xy, "station"))
+    idx = wb.add_positions(free_positions(wb, xy, "station"))
     return _judged(p, wb, idx, idx, f"Stations placed by hand: {len(idx)}.", t0)
 
 
@@ -65,11 +58,11 @@ def _judged(
     """The plan of the stations ``idx`` (pool indices; ``hand`` placed by hand), their
     network built and every sample judged."""
     timings: dict[str, float] = {"setup": 0.0}
-    r = _Round(cover=idx)
+    r = Round(cover=idx)
     datum = p.network.datum_station if p.network is not None else None  # kept where it stays
     datum = datum if datum is not None and datum in set(np.asarray(idx).tolist()) else None
-    r.net = _network(wb.ctx, wb.pool, wb.seen, idx, timings, datum=datum) if len(idx) else None
-    r.judged = _judge(wb.ctx, wb.pool, r)
+    r.net = round_network(wb.ctx, wb.pool, wb.seen, idx, timings, datum=datum) if len(idx) else None
+    r.judged = judge(wb.ctx, wb.pool, r)
     bound = p.solver.get("lower_bound")
     n = len(r.net.stations) if r.net is not None else 0
     solver = {
@@ -138,7 +131,7 @@ def edit_targets(
             u = float(np.clip(np.dot([e, n] - a, b - a) / np.dot(b - a, b - a), 0.02, 0.98))
             rows.append(([*(a + u * (b - a)), tc.xyz[t, 2]], "flat", list(tc.normal[t]), f))
         else:
-            (xy,) = _free_positions(wb, [e, n], f"target stand of {target_id}")
+            (xy,) = free_positions(wb, [e, n], f"target stand of {target_id}")
             rows.append(([*xy, st.target_height_m], str(tc.type[t]), [0.0, 0.0], -1))
     if add_xy is not None and len(np.asarray(add_xy).reshape(-1, 2)):
         if not any(i.type == "sphere" for i in st.inventory):
@@ -146,7 +139,7 @@ def edit_targets(
                 "a target placed by hand stands on a tripod as a sphere, and your inventory "
                 "holds no sphere; add one to the inventory (e.g. 'S145, sphere, 145')"
             )
-        for xy in _free_positions(wb, add_xy, "target stand"):
+        for xy in free_positions(wb, add_xy, "target stand"):
             rows.append(([*xy, st.target_height_m], "sphere", [0.0, 0.0], -1))
             n_added += 1
     wb.seen.barred[out] = True

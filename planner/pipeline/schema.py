@@ -1,0 +1,369 @@
+"""The plan's output tables — their columns, each list written once — and the writers every
+file and download uses: CSV (:func:`to_csv`, text cells made inert for spreadsheets) and the
+layered GeoJSON of a plan (:func:`geojson`, which the DXF and KML writers read too).
+
+The table builders that fill these columns are in :mod:`planner.pipeline.tables`; the files
+are rendered and written by :mod:`planner.pipeline.export`.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import pandas as pd
+
+if TYPE_CHECKING:
+    from planner.pipeline.result import Plan
+
+__all__ = [
+    "COVERAGE_COLUMNS",
+    "FACADE_TABLE_COLUMNS",
+    "LINK_COLUMNS",
+    "MEETING_COLUMNS",
+    "METRIC_KEYS",
+    "OPTIONAL_COVERAGE_COLUMNS",
+    "ROUTE_COLUMNS",
+    "STAKEOUT_COLUMNS",
+    "STATION_COLUMNS",
+    "STATION_PURPOSES",
+    "TARGET_COLUMNS",
+    "ZONE_COLUMNS",
+    "geojson",
+    "geometry_json",
+    "neutralise",
+    "to_csv",
+]
+
+#: Why a station is in the plan (the ``purpose`` column of the stations), in the words of the
+#: summary and of the map's legend, in the order they are listed.
+STATION_PURPOSES = {
+    "hand": "placed by hand",
+    "best-effort": "best effort, for samples no position meets",
+    "cover": "to cover",
+    "link": "to link the network",
+    "registration": "for the registration error",
+    "traverse": "a total-station set-up of a traverse (planned control)",
+}
+
+STATION_COLUMNS = ["station_id", "x", "y", "instrument_height_m", "purpose"]
+
+#: Per-pair quantities reported for chosen stations (besides ``score``, ``view``, ``ok``).
+METRIC_KEYS = (
+    "distance_m",
+    "slope_distance_m",
+    "gamma_deg",
+    "nu_deg",
+    "incidence_deg",
+    "m_x_mm",
+    "m_y_mm",
+    "m_z_mm",
+    "spacing_mm",
+    "scanner_m_x_mm",
+    "scanner_m_y_mm",
+    "scanner_m_z_mm",
+    "reg_m_x_mm",
+    "reg_m_y_mm",
+    "reg_m_z_mm",
+)
+
+COVERAGE_COLUMNS = [
+    "building_id",
+    "facade_id",
+    "sample_id",
+    "x",
+    "y",
+    "z",
+    "station_id",
+    "distance_m",
+    "slope_distance_m",
+    "gamma_deg",
+    "nu_deg",
+    "incidence_deg",
+    "m_x_mm",
+    "m_y_mm",
+    "m_z_mm",
+    "meets",
+    "model",
+    "scanner_m_x_mm",
+    "scanner_m_y_mm",
+    "scanner_m_z_mm",
+    "reg_m_x_mm",
+    "reg_m_y_mm",
+    "reg_m_z_mm",
+    "spacing_mm",
+    "reason",
+    "elevated_station",
+    "zone",
+]
+
+
+#: Columns written only when the plan has them (an accuracy class was asked for).
+OPTIONAL_COVERAGE_COLUMNS = ["class_achieved"]
+
+
+#: The zones as planned: where, the requirement inside, the sample spacing there [m], and
+#: how many of its samples (not on party walls) meet it.
+ZONE_COLUMNS = ["zone_id", "where", "requirement", "sample_spacing_m", "samples", "met", "unmet"]
+
+#: The target list: where (site CRS, z above the ground), which type, the smallest size its
+#: stations need and the item placed, the rule that sized it, the stations using it, the
+#: wall it is on and which way it faces (azimuth of the normal), its centre's RMS [mm].
+TARGET_COLUMNS = [
+    "target_id",
+    "x",
+    "y",
+    "z",
+    "type",
+    "min_size_mm",
+    "size_mm",
+    "item",
+    "sized_by",
+    "station_ids",
+    "facade_id",
+    "facing_deg",
+    "centre_rms_mm",
+]
+#: The registrations (station_b registered to station_a, or to the control network): common
+#: targets usable by both, targets placed, the link's own predicted error at station_b's
+#: facade points [mm], its geometry's strength — ``dilution``, that error over the RMS of
+#: one target's centre difference (like a DOP: how much the targets' layout magnifies their
+#: errors out at the facades; lower is stronger) — and the whole registration error
+#: station_b's points end with [mm].
+LINK_COLUMNS = [
+    "station_a",
+    "station_b",
+    "common_targets",
+    "targets_placed",
+    "target_ids",
+    "link_rms_mm",
+    "dilution",
+    "station_b_rms_mm",
+    "kind",
+    "overlap_pct",
+    "weakest_direction",
+]
+
+#: The per-facade summary as a surveyor reads it (dashboard, report).
+FACADE_TABLE_COLUMNS = [
+    "building_id",
+    "length_m",
+    "samples",
+    "party_wall_samples",
+    "met",
+    "unmet",
+    "worst_m_x_mm",
+    "worst_m_y_mm",
+    "worst_m_z_mm",
+    "stations",
+]
+
+
+#: route.csv: one row per station in visiting order.
+ROUTE_COLUMNS = [
+    "order",
+    "station_id",
+    "x",
+    "y",
+    "session",
+    "walk_m",
+    "walk_min",
+    "targets_to_set",
+    "targets_min",
+    "setup_min",
+    "sector_start_deg",
+    "sector_deg",
+    "step_mm_at_10m",
+    "scan_points_million",
+    "scan_min",
+    "station_min",
+    "elapsed_min",
+    "max_spacing_mm",
+    "links_to",
+    "registers_to",
+    "walk_note",
+]
+
+
+#: The stake-out file a controller imports: point id, easting, northing, height, code.
+STAKEOUT_COLUMNS = ["point_id", "easting", "northing", "height", "code"]
+
+
+#: The columns of :func:`meeting_table`.
+MEETING_COLUMNS = ["facade_id", "sample_id", "x", "y", "z", "station_id", "own", "needed"]
+
+
+#: A text cell starting with one of these is a formula to a spreadsheet (CSV injection).
+_FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
+
+
+def neutralise(value: object) -> object:
+    """A text that a spreadsheet would run as a formula, made inert with a leading
+    apostrophe (OWASP's advice for CSV injection); anything else unchanged.
+
+    Examples
+    --------
+    >>> [neutralise(v) for v in ("=1+2", "@SUM(A1)", "main-f01", -3.5)]
+    ["'=1+2", "'@SUM(A1)", 'main-f01', -3.5]
+    """
+    if isinstance(value, str) and value.startswith(_FORMULA_START):
+        return "'" + value
+    return value
+
+
+def to_csv(df: pd.DataFrame) -> str:
+    """A table as CSV: 3 decimals (1 mm), text cells neutralised (:func:`neutralise`)."""
+    out = df.copy()
+    for col in out.select_dtypes(include=["object", "string"]).columns:
+        out[col] = out[col].map(neutralise)
+    return out.to_csv(index=False, float_format="%.3f")
+
+
+def geometry_json(geom: Any) -> dict:
+    """A shapely geometry as a GeoJSON geometry (coordinates to the millimetre)."""
+    import shapely
+
+    return json.loads(shapely.to_geojson(shapely.set_precision(geom, 0.001)))
+
+
+def _clean(props: dict[str, Any]) -> dict[str, Any]:
+    out = {}
+    for k, v in props.items():
+        if isinstance(v, np.generic):
+            v = v.item()
+        if isinstance(v, float) and not math.isfinite(v):
+            v = None
+        elif isinstance(v, float):
+            v = round(v, 3)
+        out[k] = v
+    return out
+
+
+def geojson(p: Plan) -> dict:
+    """Buildings, obstacles, no-go areas, facades, stations, links, targets and unmet samples
+    as one GeoJSON FeatureCollection (a ``layer`` property on every feature)."""
+    feats: list[dict] = []
+
+    def add(geom: dict, **props: Any) -> None:
+        feats.append({"type": "Feature", "geometry": geom, "properties": _clean(props)})
+
+    for b in p.site.buildings:
+        add(
+            geometry_json(b.footprint),
+            layer="building",
+            building_id=b.id,
+            height_m=b.height_m,
+            planned=b.planned,
+            name=b.name,
+        )
+    for o in p.site.obstacles:
+        add(
+            geometry_json(o.geometry),
+            layer="obstacle",
+            obstacle_id=o.id,
+            kind=o.kind,
+            height_m=o.height_m,
+        )
+    for a in p.site.no_go:
+        add(geometry_json(a.geometry), layer="no-go", area_id=a.id)
+    for g in p.site.passages:
+        add(
+            geometry_json(g.geometry),
+            layer="passage",
+            passage_id=g.id,
+            clear_height_m=g.clear_height_m,
+        )
+    for r in p.facades.itertuples():
+        add(
+            {"type": "LineString", "coordinates": [[r.x0, r.y0], [r.x1, r.y1]]},
+            layer="facade",
+            building_id=r.building_id,
+            facade_id=r.facade_id,
+            length_m=r.length_m,
+            samples=r.samples,
+            party_wall_samples=r.party_wall_samples,
+            met=r.met,
+            unmet=r.unmet,
+            stations=r.stations,
+        )
+    st = p.stations.set_index("station_id")
+    for r in p.stations.itertuples():
+        add(
+            {"type": "Point", "coordinates": [r.x, r.y]},
+            layer="station",
+            station_id=r.station_id,
+            instrument_height_m=r.instrument_height_m,
+            purpose=r.purpose,
+            samples_met=r.samples_met,
+        )
+    tg = p.targets.set_index("target_id")
+    for r in p.links.itertuples():
+        b = st.loc[r.station_b]
+        if r.station_a == "control":  # tied to the control points it uses: a line to each
+            ends = [tg.loc[t] for t in r.target_ids.split(";") if t in tg.index]
+            geom = {
+                "type": "MultiLineString",
+                "coordinates": [[[b.x, b.y], [c.x, c.y]] for c in ends],
+            }
+        else:
+            a = st.loc[r.station_a]
+            geom = {"type": "LineString", "coordinates": [[a.x, a.y], [b.x, b.y]]}
+        add(
+            geom,
+            layer="link",
+            station_a=r.station_a,
+            station_b=r.station_b,
+            common_targets=r.common_targets,
+            targets_placed=r.targets_placed,
+            target_ids=r.target_ids,
+            link_rms_mm=r.link_rms_mm,
+            dilution=r.dilution,
+            station_b_rms_mm=r.station_b_rms_mm,
+        )
+    for r in p.targets.itertuples():
+        add(
+            {"type": "Point", "coordinates": [r.x, r.y, r.z]},
+            layer="target",
+            target_id=r.target_id,
+            type=r.type,
+            min_size_mm=r.min_size_mm,
+            size_mm=r.size_mm,
+            item=r.item,
+            sized_by=r.sized_by,
+            station_ids=";".join(r.station_ids),
+            facing_deg=r.facing_deg,
+            centre_rms_mm=r.centre_rms_mm,
+        )
+    if p.route is not None:
+        t = p.route.table
+        for n, leg in enumerate(p.route.legs[1:], start=1):
+            add(
+                {"type": "LineString", "coordinates": np.round(leg, 3).tolist()},
+                layer="route",
+                order=int(t["order"].iloc[n]),
+                station_a=t["station_id"].iloc[n - 1],
+                station_b=t["station_id"].iloc[n],
+                walk_m=float(t["walk_m"].iloc[n]),
+                session=int(t["session"].iloc[n]),
+                walk_note=t["walk_note"].iloc[n],
+            )
+    for r in p.unmet.itertuples():
+        add(
+            {"type": "Point", "coordinates": [r.x, r.y, r.z]},
+            layer="unmet",
+            building_id=r.building_id,
+            facade_id=r.facade_id,
+            sample_id=r.sample_id,
+            reason=r.reason,
+        )
+    out: dict[str, Any] = {
+        "type": "FeatureCollection",
+        "name": f"tls-planner plan: {p.site.name}",
+        "accuracy_model": p.settings.model_description(),
+    }
+    if p.site.crs:
+        out["crs"] = {"type": "name", "properties": {"name": p.site.crs}}
+    out["features"] = feats
+    return out
