@@ -38,7 +38,7 @@ def _truly_met(p) -> int:
         p.scanner,
         p.requirements,
         st,
-        p.solver["reach_m"],
+        p.solver.reach_m,
     )
     judged = assign_stations(ctx, p.stations[["x", "y"]].to_numpy(), p.network.registration())
     demanded = ~ctx.facades.party_wall

@@ -12,7 +12,8 @@
 * :func:`six_segment_constant` — the additive constant alone from all combinations of
   distances between points of an unknown baseline (Liu & Zhang, Schwendener's method).
 * :func:`axis_errors` — collimation c (effect c / cos α) and trunnion-axis tilt i (effect
-  i·tan α) from horizontal directions at several vertical angles α (Liu & Zhang, eq. 5–6).
+  i·tan α) from horizontal directions at several vertical angles α (Liu & Zhang, eq. 5–6);
+  the model itself is :func:`axis_error_effect`.
 * :func:`profile_from_calibration` — a :class:`~planner.scanner.Scanner` built from these,
   with the calibration recorded in it.
 
@@ -29,7 +30,9 @@ from typing import Any
 
 import numpy as np
 import pandas as pd
+from numpy.typing import ArrayLike
 
+from planner._array import as_float_array
 from planner.errors import InputError
 from planner.scanner import DEFAULT_SCANNER, Scanner, check_profile_name
 from planner.units import RHO_ARCSEC
@@ -40,6 +43,7 @@ __all__ = [
     "HelmertResult",
     "LabTest",
     "SixSegmentResult",
+    "axis_error_effect",
     "axis_errors",
     "baseline_calibration",
     "helmert6",
@@ -607,6 +611,24 @@ class AxisResult:
         return out
 
 
+def axis_error_effect(c: ArrayLike, i: ArrayLike, alpha_deg: ArrayLike) -> np.ndarray:
+    """Effect of collimation c and trunnion-axis tilt i on a horizontal direction at vertical
+    angle α — Liu & Zhang, eq. 5–6: ``c / cos α + i·tan α``.
+
+    ``alpha_deg`` in degrees; the effect comes in the unit of ``c`` and ``i`` (the model is
+    linear in them: degrees in :func:`axis_errors` and :func:`simulate_axes`, arc-seconds
+    for ″). ``axis_error_effect(1, 0, α)`` and ``(0, 1, α)`` are its derivatives by c and i.
+    Arrays broadcast; it grows without bound towards α = ±90°.
+
+    Examples
+    --------
+    >>> axis_error_effect(10.0, 20.0, [0.0, 60.0]).round(4).tolist()  # ″ in, ″ out
+    [10.0, 54.641]
+    """
+    alpha = np.radians(as_float_array(alpha_deg, "alpha_deg"))
+    return as_float_array(c, "c") / np.cos(alpha) + as_float_array(i, "i") * np.tan(alpha)
+
+
 def axis_errors(data: pd.DataFrame | str | Path, *, orientation: bool = True) -> AxisResult:
     """Collimation and trunnion-axis errors from directions at several vertical angles.
 
@@ -619,13 +641,15 @@ def axis_errors(data: pd.DataFrame | str | Path, *, orientation: bool = True) ->
     origin = None if isinstance(data, pd.DataFrame) else Path(data).name
     cols = ["vertical_angle_deg", "observed_deg", "reference_deg"]
     df = _numbers(_table(data, cols, origin), cols, origin or "the table")
-    alpha = np.radians(df["vertical_angle_deg"].to_numpy())
+    alpha_deg = df["vertical_angle_deg"].to_numpy()
     if (np.abs(df["vertical_angle_deg"]) >= 89).any():
         raise InputError(
             "vertical angles must be within ±89°: c / cos α and i·tan α blow up at the zenith"
         )
     diff = np.angle(np.exp(1j * np.radians(df["observed_deg"] - df["reference_deg"]).to_numpy()))
-    cols_a = [1.0 / np.cos(alpha), np.tan(alpha)] + ([np.ones_like(alpha)] if orientation else [])
+    # the design matrix: the model's derivatives by c and i (and o)
+    cols_a = [axis_error_effect(1.0, 0.0, alpha_deg), axis_error_effect(0.0, 1.0, alpha_deg)]
+    cols_a += [np.ones_like(alpha_deg)] if orientation else []
     a = np.column_stack(cols_a)
     need = a.shape[1]
     if len(df) <= need:
@@ -858,19 +882,18 @@ def simulate_axes(
     """Directions to targets at several vertical angles, affected by collimation c and
     trunnion-axis tilt i (Liu & Zhang's HDS3000 values by default)."""
     rng = np.random.default_rng(seed)
-    alpha = np.radians(np.asarray(alphas_deg, dtype=float))
-    reference = np.linspace(10.0, 170.0, len(alpha))
+    alpha_deg = np.asarray(alphas_deg, dtype=float)
+    reference = np.linspace(10.0, 170.0, len(alpha_deg))
     observed = (
         reference
         + orientation_deg
-        + c_deg / np.cos(alpha)
-        + i_deg * np.tan(alpha)
-        + rng.normal(0, noise_arcsec / 3600, len(alpha))
+        + axis_error_effect(c_deg, i_deg, alpha_deg)
+        + rng.normal(0, noise_arcsec / 3600, len(alpha_deg))
     )
     return pd.DataFrame(
         {
-            "target": [chr(65 + k) for k in range(len(alpha))],
-            "vertical_angle_deg": np.asarray(alphas_deg, dtype=float),
+            "target": [chr(65 + k) for k in range(len(alpha_deg))],
+            "vertical_angle_deg": alpha_deg,
             "observed_deg": observed % 360,
             "reference_deg": reference,
         }

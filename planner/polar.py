@@ -6,21 +6,23 @@ Arrays broadcast: points as ``(..., 3)``, horizontal vectors as ``(..., 2)``.
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike
 
-from planner._array import as_float_array
+from planner._array import as_float_array, check_range, like_input
 from planner.errors import InputError
 
 __all__ = [
     "SightGeometry",
     "deviation_angle_deg",
+    "horizontal_distance_m",
     "incidence_deg",
     "polar_to_xyz",
     "separated_directions",
     "sight_geometry",
+    "slope_distance_m",
     "tilt_deg",
 ]
 
@@ -60,6 +62,40 @@ def polar_to_xyz(
     y = st[..., 1] + d * np.sin(a)
     z = st[..., 2] + s * np.sin(nu) + ic
     return np.stack(np.broadcast_arrays(x, y, z), axis=-1)
+
+
+#: :func:`slope_distance_m` holds cos ν at least this, so a vertical beam gives a finite S.
+MIN_COS_TILT = 1e-9
+
+
+def slope_distance_m(distance_m: ArrayLike, nu_deg: ArrayLike) -> Any:
+    """Slope distance S [m] from the horizontal distance D [m] and the tilt ν [deg]:
+    ``D = S·cos ν`` of eq. 1 (Voroshilov & Karachentsev) solved for S, ``S = D / cos ν``
+    (cos ν held at :data:`MIN_COS_TILT` at least). ``inf`` and NaN distances pass through.
+
+    Examples
+    --------
+    >>> slope_distance_m([10.0, 10.0, float("inf")], [0.0, 60.0, 30.0]).round(6).tolist()
+    [10.0, 20.0, inf]
+    """
+    d = as_float_array(distance_m, "distance_m")
+    nu = check_range(as_float_array(nu_deg, "nu_deg"), "nu_deg", "deg", hi=90.0, absolute=True)
+    return like_input(d / np.maximum(np.cos(np.radians(nu)), MIN_COS_TILT), distance_m, nu_deg)
+
+
+def horizontal_distance_m(slope_distance_m: ArrayLike, nu_deg: ArrayLike) -> Any:
+    """Horizontal distance D [m] of a beam of slope distance S [m] and tilt ν [deg]:
+    ``D = S·cos ν`` (eq. 1 of Voroshilov & Karachentsev); the inverse of
+    :func:`slope_distance_m` (below ν = 90°).
+
+    Examples
+    --------
+    >>> horizontal_distance_m([10.0, 20.0], [0.0, 60.0]).round(6).tolist()
+    [10.0, 10.0]
+    """
+    s = as_float_array(slope_distance_m, "slope_distance_m")
+    nu = check_range(as_float_array(nu_deg, "nu_deg"), "nu_deg", "deg", hi=90.0, absolute=True)
+    return like_input(s * np.cos(np.radians(nu)), slope_distance_m, nu_deg)
 
 
 def deviation_angle_deg(

@@ -59,7 +59,7 @@ def stitched(district):
 def test_stitched_plan_is_a_valid_cover(stitched, district):
     site, blocks = district
     p = stitched
-    assert p.solver["blocks"] == len(blocks)
+    assert p.solver.blocks == len(blocks)
     assert p.stations["station_id"].is_unique and p.targets["target_id"].is_unique
     ids = set(p.stations["station_id"])
     assert all(s in ids for sids in p.targets["station_ids"] for s in sids)
@@ -80,16 +80,16 @@ def test_stitched_matches_the_single_process_plan_within_its_bound(stitched, dis
     site, _ = district
     whole = plan(site, SCANNER, settings=SETTINGS)
     s, w = stitched.solver, whole.solver
-    assert s["lower_bound"] <= w["objective"]  # the district's bound is a true bound
+    assert s.lower_bound <= w.objective  # the district's bound is a true bound
     # the blocks' covers meet every sample the scanner can; the stations removed on block
     # edges after that only had to keep the samples met with registration, which a
     # neighbour's station meets: the count to compare with the whole's cover is the one
     # before they went
-    cover = s["objective"] + s["redundant_removed"]
-    assert w["lower_bound"] <= cover
-    assert abs(cover - w["objective"]) <= cover - s["lower_bound"]
-    assert s["lower_bound"] <= s["block_bound_sum"]
-    assert 0 < s["shared_bound"] <= s["lower_bound"] + 1 - 1e-6
+    cover = s.objective + s.redundant_removed
+    assert w.lower_bound <= cover
+    assert abs(cover - w.objective) <= cover - s.lower_bound
+    assert s.lower_bound <= s.block_bound_sum
+    assert 0 < s.shared_bound <= s.lower_bound + 1 - 1e-6
 
 
 def test_unreachable_scheduler_is_exit_2(tmp_path):
@@ -303,10 +303,10 @@ def test_stitching_removes_redundant_stations_and_keeps_every_sample(blockwise):
     req = Requirements()
     plain = stitch(site, UNLEVELLED, req, SETTINGS, blocks, plans, halo)
     lean = stitch(site, UNLEVELLED, req, SETTINGS, blocks, plans, halo, tables)
-    removed = lean.solver["redundant_removed"]
+    removed = lean.solver.redundant_removed
     assert removed >= 1
     assert len(lean.stations) == len(plain.stations) - removed
-    assert lean.solver["objective"] == plain.solver["objective"] - removed
+    assert lean.solver.objective == plain.solver.objective - removed
     a, b = plain.scanned.set_index("sample_id"), lean.scanned.set_index("sample_id")
     assert (a["meets"] == b.loc[a.index, "meets"]).all()  # nothing met is lost
     ids = set(lean.stations["station_id"])
@@ -435,7 +435,8 @@ def test_blocks_farther_apart_than_their_meeting_reaches_add_their_bounds():
 
     def plans(meet_m):
         return [
-            SimpleNamespace(solver={"lower_bound": b, "meeting_reach_m": meet_m}) for b in (7, 5)
+            SimpleNamespace(solver=SimpleNamespace(lower_bound=b, meeting_reach_m=meet_m))
+            for b in (7, 5)
         ]
 
     assert _honest_bound(blocks, plans(30.0), 80.0) == 12
@@ -475,7 +476,7 @@ def test_the_blocks_networks_are_tied_into_one_across_their_seams(blockwise):
     kept = []
     for p in plans:
         q = copy.copy(p)
-        q.coverage, q.solver = p.coverage.copy(), dict(p.solver)
+        q.coverage, q.solver = p.coverage.copy(), copy.copy(p.solver)
         keep_frame(q)
         kept.append(q)
     one = stitch(site, UNLEVELLED, req, SETTINGS, blocks, kept, halo)
@@ -508,11 +509,11 @@ def test_one_datums_tilt_leans_the_whole_district(blockwise):
     site, blocks, plans, _tables, halo = blockwise
     plans = [copy.copy(q) for q in plans]  # the fixture's plans stay as they are
     for q in plans:
-        q.coverage, q.solver = q.coverage.copy(), dict(q.solver)
+        q.coverage, q.solver = q.coverage.copy(), copy.copy(q.solver)
         keep_frame(q)  # as a worker does
     p = stitch(site, UNLEVELLED, Requirements(), SETTINGS, blocks, plans, halo)
     root = max(range(len(plans)), key=lambda k: len(plans[k].stations))
-    datum = plans[root].solver["frame"][3]  # the root block's datum (x, y, z)
+    datum = plans[root].block_frame[3]  # the root block's datum (x, y, z)
     key = blocks[root].key
     cov = p.scanned[~p.scanned["station_id"].str.startswith(key) & (p.scanned["station_id"] != "")]
     assert len(cov) > 50

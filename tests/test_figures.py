@@ -35,13 +35,13 @@ def test_accuracy_explorer_plots_are_legible(monkeypatch, gamma, nu):
     import matplotlib.pyplot as plt
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-    from planner.app import dashboard
+    from planner.app import dashboard, widgets
 
     figures = []
-    real = dashboard._output
+    real = widgets.output
     monkeypatch.setattr(
-        dashboard,
-        "_output",
+        widgets,
+        "output",
         lambda obj: (
             (figures.append(obj), real(obj))[1] if isinstance(obj, plt.Figure) else real(obj)
         ),

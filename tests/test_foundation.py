@@ -212,7 +212,8 @@ def test_dashboard_messages_name_its_own_controls(tmp_path):
     """One wording, two renderings: a message names ``--make-valid`` and ``--height H`` on
     the command line; the dashboard shows the same message with the labels of its own
     controls, and an option it has no control for as the command line's."""
-    from planner.app.dashboard import StationPlanner, _error_html
+    from planner.app.dashboard import StationPlanner
+    from planner.app.widgets import error_html
     from planner.app.wording import SITE_LABELS, dashboard_labels, for_dashboard
     from planner.sitecheck import SiteProblems
 
@@ -228,7 +229,7 @@ def test_dashboard_messages_name_its_own_controls(tmp_path):
     for flag, box in (("--make-valid", ui.make_valid), ("--height", ui.height)):
         assert box.description == SITE_LABELS[flag]
         assert f"the ‘{box.description}’ control" in page
-    assert "<br>" in _error_html(cli)  # one line per kind of problem
+    assert "<br>" in error_html(cli)  # one line per kind of problem
     for flag, label in dashboard_labels().items():
         assert for_dashboard(f"x ({flag})") == f"x (the ‘{label}’ control)"
     assert ui.grid.description.startswith(dashboard_labels()["--grid-m"])

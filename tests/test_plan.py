@@ -238,7 +238,7 @@ def test_infeasible_tolerance_does_not_crash_and_says_what_is_achievable():
     assert "best effort, for samples no position meets" in p.summary()
     # best achievable m_y with m_S = 4 mm: 4·cos 75° = 1.04 mm at the grazing limit
     assert p.unmet["reason"].str.contains(r"best achievable m_y 1\.0 mm > 0\.5 mm").all()
-    assert p.solver["status"] == "nothing to cover"
+    assert p.solver.status == "nothing to cover"
     # the map says so: grey positions, no colour bar scaled on nothing (it ran -0.1..0.1)
     from planner.app.maps import plot_plan_map
 
@@ -478,9 +478,9 @@ def test_optimiser_finds_the_minimum_worked_out_by_hand():
     assert p.meets_all
     # proven optimal: by HiGHS, or by greedy meeting the packing bound (8 samples, one near
     # the middle of each half-facade, share no candidate)
-    assert p.solver["status"].startswith("optimal")
-    assert p.solver["objective"] == 8 and p.solver["lower_bound"] == 8 and p.solver["gap"] == 0.0
-    assert p.solver["greedy_objective"] >= 8
+    assert p.solver.status.startswith("optimal")
+    assert p.solver.objective == 8 and p.solver.lower_bound == 8 and p.solver.gap == 0.0
+    assert p.solver.greedy_objective >= 8
     assert (p.stations["purpose"] == "cover").sum() == 8
     greedy = plan(
         site,
@@ -488,7 +488,7 @@ def test_optimiser_finds_the_minimum_worked_out_by_hand():
         req,
         PlanSettings(grid_m=0.5, sample_spacing_m=2.0, sample_height_step_m=3.0, method="greedy"),
     )
-    assert greedy.solver["method"] == "greedy" and greedy.meets_all
+    assert greedy.solver.method == "greedy" and greedy.meets_all
 
 
 def test_stations_per_sample():
@@ -499,7 +499,7 @@ def test_stations_per_sample():
     )
     assert two.meets_all
     assert (two.coverage["stations_meeting"] >= 2).all()
-    assert two.solver["objective"] > one.solver["objective"]
+    assert two.solver.objective > one.solver.objective
 
 
 def test_registration_targets_tie_the_default_plan(rich_plan):

@@ -55,3 +55,17 @@ def test_facade_point_spacing():
     assert facade_point_spacing_mm(s, 30.0, nu, step_mm_at_10m=2.0) == pytest.approx(8.0)
     assert facade_point_spacing_mm(10.0, 90.0, 0.0, step_mm_at_10m=2.0) == np.inf
     assert np.isnan(facade_point_spacing_mm(np.nan, 0.0, 0.0, step_mm_at_10m=2.0))
+
+
+@pytest.mark.parametrize("nu", [-89.0, -30.0, 0.0, 45.0, 89.0])
+def test_slope_and_horizontal_distance_round_trip(nu):
+    """D = S·cos ν and S = D / cos ν undo each other (to 1 nm), for arrays and scalars; and
+    they agree with the polar coordinates of eq. 1 (the point's horizontal offset)."""
+    from planner.polar import horizontal_distance_m, slope_distance_m
+
+    s = np.array([0.5, 12.0, 250.0])
+    d = horizontal_distance_m(s, nu)
+    np.testing.assert_allclose(slope_distance_m(d, nu), s, atol=1e-9)  # m
+    assert horizontal_distance_m(12.0, nu) == pytest.approx(float(d[1]), abs=1e-12)
+    p = polar_to_xyz([0.0, 0.0, 0.0], 0.0, 30.0, 12.0, nu)
+    assert np.hypot(p[0], p[1]) == pytest.approx(float(d[1]), abs=1e-9)  # m

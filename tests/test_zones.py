@@ -134,9 +134,9 @@ def test_a_stricter_entrance_adds_what_it_needs_and_no_more_than_the_strict_site
     zoned = plan(replace(site, zones=[parse_zone(ENTRANCE)]), settings=st)
     strict = plan(site, requirements=Requirements(max_xy_mm=4, max_z_mm=4), settings=st)
     for p in (base, zoned, strict):
-        assert p.solver["status"] == "optimal"
-    assert base.solver["objective"] <= zoned.solver["objective"] <= strict.solver["objective"]
-    assert zoned.solver["objective"] < strict.solver["objective"]
+        assert p.solver.status == "optimal"
+    assert base.solver.objective <= zoned.solver.objective <= strict.solver.objective
+    assert zoned.solver.objective < strict.solver.objective
     cov = zoned.scanned
     zone = cov[cov["zone"] == "entrance"]
     assert len(zone) == 144 and zone["meets"].all()

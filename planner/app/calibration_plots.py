@@ -9,7 +9,13 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.figure import Figure
 
-from planner.calibration import AxisResult, BaselineResult, LabTest, SixSegmentResult
+from planner.calibration import (
+    AxisResult,
+    BaselineResult,
+    LabTest,
+    SixSegmentResult,
+    axis_error_effect,
+)
 
 __all__ = ["example_path", "plot_axes", "plot_baseline", "plot_lab", "plot_six_segment"]
 
@@ -85,14 +91,14 @@ def plot_axes(r: AxisResult) -> Figure:
     """Direction differences against the vertical angle, the fitted c / cos α + i·tan α."""
     fig, ax = plt.subplots(figsize=(6, 3.5), layout="constrained")
     alpha = r.residuals["vertical_angle_deg"].to_numpy()
-    a = np.radians(np.linspace(alpha.min(), alpha.max(), 100))
-    fit = (r.c_deg / np.cos(a) + r.i_deg * np.tan(a)) * 3600
+    line = np.linspace(alpha.min(), alpha.max(), 100)
+    fit = axis_error_effect(r.c_deg, r.i_deg, line) * 3600
     o = r.orientation_deg or 0.0
     diff = (
         (r.residuals["observed_deg"] - r.residuals["reference_deg"] - o + 180) % 360 - 180
     ) * 3600
     ax.plot(alpha, diff, "o", label="observed − reference − orientation")
-    ax.plot(np.degrees(a), fit, "-", label=f"c = {r.c_deg * 3600:.1f}″, i = {r.i_deg * 3600:.1f}″")
+    ax.plot(line, fit, "-", label=f"c = {r.c_deg * 3600:.1f}″, i = {r.i_deg * 3600:.1f}″")
     ax.set_xlabel("vertical angle α [deg]")
     ax.set_ylabel("″")
     ax.legend(fontsize=8)

@@ -23,11 +23,11 @@ from planner.app.calibration_plots import (
     plot_lab,
     plot_six_segment,
 )
-from planner.app.dashboard import (
-    _download_link,
-    _error_html,
-    _scanner_dropdown,
-    _show,
+from planner.app.widgets import (
+    download_link,
+    error_html,
+    scanner_dropdown,
+    show,
     upload_folder,
 )
 from planner.calibration import (
@@ -136,7 +136,7 @@ class CalibrationDashboard:
             style=_STYLE,
             layout=w.Layout(width="36em"),
         )
-        self.base = _scanner_dropdown()
+        self.base = scanner_dropdown()
         self.base.description = "other figures from"
         self.base.style = _STYLE
         self.range_from = w.Dropdown(
@@ -259,10 +259,10 @@ class CalibrationDashboard:
         try:
             result, shown = run()
         except PlannerError as exc:
-            _show(self.outs[step], w.HTML(_error_html(str(exc), "Cannot calibrate")))
+            show(self.outs[step], w.HTML(error_html(str(exc), "Cannot calibrate")))
         else:
             self.results[step] = result
-            _show(self.outs[step], *shown)
+            show(self.outs[step], *shown)
         if profile:
             self._profile()
 
@@ -346,7 +346,7 @@ class CalibrationDashboard:
             )
             toml = scanner.profile_file_text()
         except PlannerError as exc:
-            _show(self.profile_out, w.HTML(_error_html(str(exc), "No profile")))
+            show(self.profile_out, w.HTML(error_html(str(exc), "No profile")))
             return
         self.scanner = scanner
         lines = [
@@ -354,7 +354,7 @@ class CalibrationDashboard:
             f"{scanner.angle_rms_arcsec:.1f}″ horizontal, {scanner.tilt_rms_arcsec:.1f}″ "
             f"vertical; the rest from {self.base.value}",
         ]
-        _show(
+        show(
             self.profile_out,
             self._text(lines, notes),
             w.HTML(
@@ -363,7 +363,7 @@ class CalibrationDashboard:
                 + "</pre></details>"
             ),
         )
-        self.download.value = _download_link(
+        self.download.value = download_link(
             f"{scanner.name}.toml", toml.encode("utf-8"), "application/toml"
         )
         self.install.disabled = False
@@ -385,7 +385,7 @@ class CalibrationDashboard:
         try:
             path = installed_profile_path(self.scanner.name)
         except PlannerError as exc:
-            self.install_status.value = _error_html(str(exc), "Not installed")
+            self.install_status.value = error_html(str(exc), "Not installed")
             return
         if path.exists() and self._replace != self.scanner.name:
             self._replace = self.scanner.name

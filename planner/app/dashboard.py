@@ -8,11 +8,8 @@ and show results; the science lives elsewhere.
 
 from __future__ import annotations
 
-import base64
 import html
 import io
-import os
-import tempfile
 import threading
 import time
 import traceback
@@ -25,9 +22,9 @@ import numpy as np
 import pandas as pd
 from IPython.display import display
 
-from planner.app.serve import UPLOAD_ROOT_ENV
 from planner.app.whatif_view import WhatIfMap
-from planner.app.wording import SITE_LABELS, for_dashboard, for_dashboard_html
+from planner.app.widgets import download_link, error_html, scanner_dropdown, show, upload_folder
+from planner.app.wording import SITE_LABELS, for_dashboard
 from planner.errors import PlannerError
 from planner.pipeline.requirements import (
     REGISTRATION_PROCESSING,
@@ -37,49 +34,14 @@ from planner.pipeline.requirements import (
     field_specs,
     requirements_and_settings,
 )
-from planner.scanner import DEFAULT_SCANNER, Scanner, catalogue, user_profiles
+from planner.polar import slope_distance_m
+from planner.scanner import DEFAULT_SCANNER, Scanner
 from planner.site import DEFAULT_NEAR_M
 from planner.siteio import DEFAULT_STOREY_HEIGHT_M
 from planner.tables import SOSSA_DISTANCES_M, height_table, planimetric_table
 from planner.targets import DEFAULT_INVENTORY, SOSSA_STEP_MM_AT_10M
 
 __all__ = ["AccuracyExplorer", "StationPlanner", "TargetExplorer"]
-
-
-def _error_html(message: str, head: str = "Cannot plan") -> str:
-    """A message (in the dashboard's words: :mod:`planner.app.wording`) as an error box."""
-    return (
-        f'<div class="planner-error" style="color:#922;background:#fdecea;border:1px solid #e6b0aa;'
-        f'padding:6px 10px;border-radius:4px"><b>{html.escape(head)}:</b> '
-        f"{for_dashboard_html(message)}</div>"
-    )
-
-
-def _download_link(name: str, data: bytes, mime: str) -> str:
-    b64 = base64.b64encode(data).decode("ascii")
-    return (
-        f'<a download="{name}" href="data:{mime};base64,{b64}" class="planner-download" '
-        f'style="margin-right:1em">⬇ {name}</a>'
-    )
-
-
-def _output(obj) -> dict:
-    """One output of an Output widget: a figure as PNG, anything else as IPython shows it."""
-    if isinstance(obj, plt.Figure):
-        buf = io.BytesIO()
-        obj.savefig(buf, format="png", dpi=96)
-        plt.close(obj)
-        data = {"image/png": base64.b64encode(buf.getvalue()).decode("ascii"), "text/plain": ""}
-        return {"output_type": "display_data", "data": data, "metadata": {}}
-    from IPython.core.interactiveshell import InteractiveShell
-
-    data, metadata = InteractiveShell.instance().display_formatter.format(obj)
-    return {"output_type": "display_data", "data": data, "metadata": metadata}
-
-
-def _show(out: w.Output, *objs) -> None:
-    """Replace what ``out`` shows (at once, from any thread: the plan runs in one)."""
-    out.outputs = tuple(_output(o) for o in objs)
 
 
 _MIME = {
@@ -100,15 +62,6 @@ def _zip(files: dict[str, bytes]) -> bytes:
         for name, data in files.items():
             z.writestr(zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0)), data)
     return buf.getvalue()
-
-
-def upload_folder() -> tempfile.TemporaryDirectory:
-    """Where a dashboard writes uploaded files: inside the server's folder when served (removed
-    when the server stops), else a temporary folder of its own."""
-    root = os.environ.get(UPLOAD_ROOT_ENV)
-    return tempfile.TemporaryDirectory(
-        prefix="planner-upload-", dir=root if root and os.path.isdir(root) else None
-    )
 
 
 _STYLE = {"description_width": "initial"}
@@ -158,19 +111,6 @@ def _inventory_box(description: str, style: dict, layout: w.Layout) -> w.Textare
 def _field_value(spec: FieldSpec, box: w.Widget):
     """A box's value for the data class: an optional field's 0 means "not given" (None)."""
     return None if spec.optional and not box.value else box.value
-
-
-def _scanner_dropdown() -> w.Dropdown:
-    """The catalogue's scanners, then the profiles the user installed (by name)."""
-    scanners = [*catalogue().values(), *user_profiles()[0].values()]
-    return w.Dropdown(
-        options=[(s.label or s.name, s.name) for s in scanners],
-        value=DEFAULT_SCANNER,
-        description="",
-        tooltip="the scanner profile (its catalogue name is the --scanner of the command line)",
-        layout=w.Layout(width="98%"),
-        style={"description_width": "initial"},
-    )
 
 
 class ZoneEditor:
@@ -234,7 +174,7 @@ class ZoneEditor:
         from planner.zones import Zone
 
         if not self.facade.value:
-            self.listing.value = _error_html("choose a facade first")
+            self.listing.value = error_html("choose a facade first")
             return
         requirement = {"max_xy_mm": self.max_xy.value, "max_z_mm": self.max_z.value}
         try:
@@ -248,7 +188,7 @@ class ZoneEditor:
                 sample_height_step_m=self.spacing.value or None,
             )
         except PlannerError as exc:
-            self.listing.value = _error_html(str(exc))
+            self.listing.value = error_html(str(exc))
             return
         self.zones.append(zone)
         self._list()
@@ -337,7 +277,7 @@ class StationPlanner:
             description=SITE_LABELS["--buildings"],
             layout=_FULL,
         )
-        self.scanner = _scanner_dropdown()
+        self.scanner = scanner_dropdown()
         self.max_x = _field_box(rq["max_xy_mm"], "largest m_x")
         self.max_y = _field_box(rq["max_xy_mm"], "largest m_y")
         self.max_z = _field_box(rq["max_z_mm"])
@@ -582,8 +522,8 @@ class StationPlanner:
         self.results.remove_class("planner-stale")
         self.summary.value = ""
         for out in (self.map_out, self.cov_out, self.fac_out, self.unmet_out, self.reg_out):
-            _show(out)
-        _show(self.field_out)
+            show(out)
+        show(self.field_out)
         self.downloads.value = "<p>No plan: nothing to download.</p>"
         self.report_status.value = self.booklet_status.value = ""
 
@@ -679,7 +619,7 @@ class StationPlanner:
         try:
             classes, limits = parse_class(text), class_limits(text)
         except PlannerError as exc:
-            self.class_note.value = _error_html(str(exc))
+            self.class_note.value = error_html(str(exc))
             return
         if "max_xy_mm" in limits:
             self.max_x.value = self.max_y.value = limits["max_xy_mm"]
@@ -731,12 +671,12 @@ class StationPlanner:
             return
         except (PlannerError, ValueError) as exc:
             self._clear_results()
-            self.error.value = _error_html(str(exc))
+            self.error.value = error_html(str(exc))
             self.status.value = ""
             return
         except Exception as exc:  # never a dead widget: say what happened
             self._clear_results()
-            self.error.value = _error_html(f"unexpected {type(exc).__name__}: {exc}")
+            self.error.value = error_html(f"unexpected {type(exc).__name__}: {exc}")
             self.status.value = ""
             traceback.print_exc()
             return
@@ -838,7 +778,7 @@ class StationPlanner:
 
         base = self.plan
         if base is None:
-            self.whatif.status.value = _error_html("make a plan first")
+            self.whatif.status.value = error_html("make a plan first")
             return
         self.start(
             lambda progress: reoptimise(base, locked_xy, progress), "re-optimising", fresh=False
@@ -876,21 +816,21 @@ class StationPlanner:
             f"<details><summary>Summary</summary><pre style='white-space:pre-wrap;"
             f"font-size:85%'>{html.escape(for_dashboard(p.summary()))}</pre></details>"
         )
-        _show(self.map_out, plot_plan_map(p))
+        show(self.map_out, plot_plan_map(p))
         if whatif:
             self.whatif.show_plan(p, "")
         self._show_coverage()
-        _show(self.fac_out, p.facade_table())
+        show(self.fac_out, p.facade_table())
         network = [m for m in p.messages if m.startswith(("Registration", "Weakest link"))]
-        _show(
+        show(
             self.reg_out,
             w.HTML("".join(f"<p>{html.escape(m)}</p>" for m in network)),
             p.links.set_index(["station_a", "station_b"]).round(2),
         )
         if p.unmet.empty:
-            _show(self.unmet_out, w.HTML("<p>Every sample meets the requirements.</p>"))
+            show(self.unmet_out, w.HTML("<p>Every sample meets the requirements.</p>"))
         else:
-            _show(
+            show(
                 self.unmet_out,
                 w.HTML("<p><b>Which quantity fails, where, and the worst value there:</b></p>"),
                 explain_unmet(p).set_index("quantity"),
@@ -901,7 +841,7 @@ class StationPlanner:
                 p.unmet_areas().set_index("facade_id"),
             )
         if p.route is not None:
-            _show(
+            show(
                 self.field_out,
                 w.HTML(f"<p>{html.escape(p.route.summary())}</p>"),
                 p.route.table.set_index("order").round({"x": 3, "y": 3}),
@@ -916,14 +856,14 @@ class StationPlanner:
         """A link per file of the plan on screen, and plan.zip of them all (with the report
         and the booklet once they are made)."""
         files = self._files
-        links = [_download_link(n, data, _MIME[Path(n).suffix]) for n, data in files.items()]
-        links.append(_download_link("plan.zip", _zip(files), "application/zip"))
+        links = [download_link(n, data, _MIME[Path(n).suffix]) for n, data in files.items()]
+        links.append(download_link("plan.zip", _zip(files), "application/zip"))
         self.downloads.value = "<p>" + "".join(links) + "</p>"
 
     def _add_download(self, name: str, data: bytes, status: w.HTML) -> None:
         self._files[name] = data
         self._offer_downloads()
-        status.value = _download_link(name, data, _MIME[Path(name).suffix]) + (
+        status.value = download_link(name, data, _MIME[Path(name).suffix]) + (
             "<small>(also in plan.zip)</small>"
         )
 
@@ -931,7 +871,7 @@ class StationPlanner:
         if self.plan is not None:
             from planner.app.maps import plot_coverage
 
-            _show(self.cov_out, plot_coverage(self.plan, self.quantity.value))
+            show(self.cov_out, plot_coverage(self.plan, self.quantity.value))
 
     def make_report(self) -> None:
         """Render the static HTML report of the current inputs and offer it for download."""
@@ -966,14 +906,14 @@ class StationPlanner:
         """Make one more file of the plan on screen (``button`` off meanwhile, news in
         ``status``), then offer it for download and in plan.zip."""
         if self.plan is None:
-            status.value = _error_html("make a plan first")
+            status.value = error_html("make a plan first")
             return
         status.value = f"<i>{doing}…</i>"
         button.disabled = True
         try:
             self._add_download(name, build(self.plan), status)
         except Exception as exc:  # the file's own failure, shown where it was asked for
-            status.value = _error_html(f"the {Path(name).stem} failed: {exc}")
+            status.value = error_html(f"the {Path(name).stem} failed: {exc}")
         finally:
             button.disabled = False
 
@@ -988,7 +928,7 @@ class AccuracyExplorer:
         style = {"description_width": "12em"}
         paper = Scanner.from_name(DEFAULT_SCANNER)  # typed figures start from the paper's
         self.source = w.ToggleButtons(options=["Catalogue", "Typed figures"], value="Catalogue")
-        self.scanner = _scanner_dropdown()
+        self.scanner = scanner_dropdown()
         self.range_mm = w.BoundedFloatText(
             value=paper.range_rms_mm,
             min=0.01,
@@ -1088,7 +1028,7 @@ class AccuracyExplorer:
         try:
             sc = self.current_scanner()
         except PlannerError as exc:
-            self.error.value = _error_html(str(exc))
+            self.error.value = error_html(str(exc))
             return
         lo, hi = self.distance.value
         hi = max(hi, lo + 5.0)
@@ -1097,7 +1037,7 @@ class AccuracyExplorer:
         for name in ("m_x", "m_y", "m_z"):
             reach_paper = float(max_distance_m(limit, sc, name, nu if name == "m_z" else g))
             if name != "m_z":  # eq. 2 works in the horizontal distance D = S·cos ν
-                reach_paper /= max(np.cos(np.radians(nu)), 1e-9)
+                reach_paper = slope_distance_m(reach_paper, nu)
             reach_3d = float(max_distance_3d_m(limit, sc, name, g, nu, incidence_noise=True))
             lines.append(
                 f"{name} ≤ {limit:g} mm at γ = {g:g}°, ν = {nu:g}°: "
@@ -1126,7 +1066,7 @@ class AccuracyExplorer:
         models = plot_models(sc, g, nu, hi, limit_mm=limit)
         for ax in models.axes:
             ax.set_xlim(lo, hi)
-        _show(self.plots, fig, models)
+        show(self.plots, fig, models)
         t1 = planimetric_table(sc)
         t1.columns = [f"{a} γ={b:g}°" for a, b in t1.columns]
         t2 = height_table(sc)
@@ -1153,7 +1093,7 @@ class AccuracyExplorer:
                 ),
                 mis.round(3),
             ]
-        _show(self.tables, *items)
+        show(self.tables, *items)
 
     def show(self) -> None:
         self.update()
@@ -1212,9 +1152,9 @@ class TargetExplorer:
                 self.max_distance.value, items, step_mm_at_10m=self.step.value
             )
         except (PlannerError, ValueError) as exc:
-            self.error.value = _error_html(str(exc))
+            self.error.value = error_html(str(exc))
             return
-        _show(
+        show(
             self.out,
             fig,
             w.HTML("<b>Sossa's Table 2 layout (mm)</b>"),

@@ -141,12 +141,13 @@ def plot_models(
     eq. 2 and 4 (dashed) and by the full 3-D model (solid; with the incidence term dotted
     when ``incidence_noise``) — the two models side by side."""
     from planner.accuracy3d import point_rms_3d
+    from planner.polar import horizontal_distance_m
 
     if axes is None:
         fig, axes = plt.subplots(1, 3, figsize=(13, 3.8), sharey=True, layout="constrained")
     fig = axes[0].figure
     s = np.linspace(0.0, max_distance_m, 241)
-    d = s * np.cos(np.radians(nu_deg))
+    d = horizontal_distance_m(s, nu_deg)
     paper_xy = planimetric_rms(d, gamma_deg, scanner, ranging_distance_m=s)
     paper = (*paper_xy, height_rms(s, nu_deg, scanner))
     model = point_rms_3d(s, gamma_deg, nu_deg, scanner)

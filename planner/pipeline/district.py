@@ -57,7 +57,7 @@ from planner.pipeline.requirements import (
     PlanSettings,
     Requirements,
 )
-from planner.pipeline.result import Plan
+from planner.pipeline.result import Plan, SolverReport
 from planner.pipeline.route import field_route
 from planner.pipeline.schema import MEETING_COLUMNS, METRIC_KEYS
 from planner.pipeline.tables import budget_message
@@ -210,7 +210,7 @@ def _plan_block(
     deadline = min(now + share_s, now + (until_epoch - time.time()))
     p = plan(site, scanner, req, settings, deadline=deadline)
     table = meeting_table(p, region)
-    p.solver["meeting_reach_m"] = meeting_reach(p)
+    p.solver.meeting_reach_m = meeting_reach(p)
     cover = block_cover(p)
     keep_frame(p)
     p.network = p.workbench = None
@@ -225,7 +225,7 @@ def keep_frame(p: Plan) -> None:
     datum (without the lean of the datum's tilt: in the district's frame only one datum's
     tilt counts), whether it is tied, where the datum whose tilt leans the block stands
     (None: a levelled scanner, control, or no network) and which stations carry that lean
-    (``solver["frame"]``); and every sample's m limits (hidden coverage columns)."""
+    (:attr:`Plan.block_frame`); and every sample's m limits (hidden coverage columns)."""
     net = p.network
     k = len(net.stations) if net is not None else 0
     xyz = net.station_xyz.copy() if k else np.empty((0, 3))
@@ -236,7 +236,7 @@ def keep_frame(p: Plan) -> None:
     if datum is not None:
         datum = datum.copy()
         pose[leans] -= datum_tilt_cov(xyz[leans], datum, p.scanner.initial_tilt_rms_arcsec)
-    p.solver["frame"] = (xyz, pose, tied, datum, leans)
+    p.block_frame = (xyz, pose, tied, datum, leans)
     limits = p.workbench.ctx.limits
     for c in "xyz":  # for judging each sample again in the district's frame
         p.coverage[f"_lim_m_{c}"] = limits[f"m_{c}"]
@@ -332,7 +332,7 @@ def meeting_reach(p: Plan, rows_per_chunk: int = 2000) -> float:
     the scanner's error), horizontally [m]; the plan's reach when it was not kept."""
     wb = p.workbench
     if wb is None or wb.evaluation is None:
-        return float(p.solver.get("reach_m", np.inf))
+        return float(p.solver.reach_m)
     ok, xy, pool = wb.evaluation.ok.tocsr(), wb.facades.xy, wb.pool
     farthest = 0.0
     for start in range(0, ok.shape[0], rows_per_chunk):
@@ -538,7 +538,9 @@ def plan_district(
                 f"The bound on shared stations was not computed ({why}); the bound given is "
                 "that of the blocks far apart."
             )
-        out.solver.update(_bound_fields(out.solver["objective"], out.solver["far_bound"], shared))
+        out.solver = replace(
+            out.solver, **_bound_fields(out.solver.objective, out.solver.far_bound, shared)
+        )
         out.timings_s["stitch_s"] = stitched - t
         out.timings_s["bound_wait_s"] = time.perf_counter() - stitched
     finally:
@@ -591,8 +593,8 @@ def _honest_bound(blocks: list[Block], plans: list[Plan], reach: float) -> float
     """The largest sum of block bounds over blocks pairwise farther apart than the sum of
     their meeting reaches (the ``reach`` where a block does not say its own; greedy, by
     bound), never below the largest single block's."""
-    bounds = [float(p.solver.get("lower_bound") or 0.0) for p in plans]
-    meet = [min(reach, float(p.solver.get("meeting_reach_m", reach))) for p in plans]
+    bounds = [float(p.solver.lower_bound or 0.0) for p in plans]
+    meet = [min(reach, _meeting_reach(p, reach)) for p in plans]
     chosen: list[int] = []
     for k in np.argsort(bounds)[::-1]:
         if all(
@@ -604,6 +606,12 @@ def _honest_bound(blocks: list[Block], plans: list[Plan], reach: float) -> float
 
 #: A station named in a sample's reason (``(station S04)``, ``its station S04 cannot…``).
 STATION_IN_TEXT = r"(?<=station )S\d+\b"
+
+
+def _meeting_reach(p: Plan, reach: float) -> float:
+    """How far a block plan's stations meet samples [m] (the reach where it kept none)."""
+    m = p.solver.meeting_reach_m
+    return float(reach if m is None else m)
 
 
 def _bound_fields(objective: int, far: float, shared: float) -> dict[str, float]:
@@ -663,14 +671,13 @@ def stitch(
         reg = next((m for m in p.messages if m.startswith("Registration:")), "")
         messages.append(
             f"Block {b.key} ({len(b.buildings)} buildings): {len(p.stations)} stations, "
-            f"{p.solver['status']}, bound {p.solver.get('lower_bound')}"
-            + (f"; {reg}" if reg else "")
+            f"{p.solver.status}, bound {p.solver.lower_bound}" + (f"; {reg}" if reg else "")
         )
     targets_df = _merge_control(pd.concat(targets, ignore_index=True))
     stations_df = pd.concat(stations, ignore_index=True)
     coverage_df = pd.concat(coverage, ignore_index=True)
     links_df = pd.concat(links, ignore_index=True)
-    objective = int(sum(p.solver["objective"] for p in plans))
+    objective = int(sum(p.solver.objective for p in plans))
     removed: list[str] = []
     if tables is not None:
         meeting = pd.concat(
@@ -695,28 +702,27 @@ def stitch(
     if cut:
         messages.append(budget_message(st.time_limit_s, cut))
     far = _honest_bound(blocks, plans, reach)
-    statuses = {p.solver["status"] for p in plans}
-    solver = {
-        "method": f"district ({len(blocks)} blocks)",
-        "status": statuses.pop() if len(statuses) == 1 else "mixed: " + ", ".join(sorted(statuses)),
-        "objective": objective,
+    statuses = {p.solver.status for p in plans}
+    solver = SolverReport(
+        method=f"district ({len(blocks)} blocks)",
+        status=statuses.pop() if len(statuses) == 1 else "mixed: " + ", ".join(sorted(statuses)),
+        objective=objective,
         **_bound_fields(objective, far, 0.0),
-        "far_bound": far,
-        "seconds": max(float(p.solver["seconds"]) for p in plans),
-        "greedy_objective": sum(int(p.solver.get("greedy_objective") or 0) for p in plans),
-        "reductions": "",
-        "parts": sum(int(p.solver.get("parts") or 0) for p in plans),
-        "reach_m": reach,
-        "meeting_reach_m": max(float(p.solver.get("meeting_reach_m", reach)) for p in plans),
-        "candidates": sum(int(p.solver["candidates"]) for p in plans),
-        "samples": sum(int(p.solver["samples"]) for p in plans),
-        "pairs": sum(int(p.solver["pairs"]) for p in plans),
-        "registration_rounds": max(int(p.solver["registration_rounds"]) for p in plans),
-        "blocks": len(blocks),
-        "block_bound_sum": float(sum(p.solver.get("lower_bound") or 0 for p in plans)),
-        "redundant_removed": len(removed),
-        "cut_short": cut,
-    }
+        far_bound=far,
+        seconds=max(float(p.solver.seconds) for p in plans),
+        greedy_objective=sum(int(p.solver.greedy_objective or 0) for p in plans),
+        parts=sum(int(p.solver.parts) for p in plans),
+        reach_m=reach,
+        meeting_reach_m=max(_meeting_reach(p, reach) for p in plans),
+        candidates=sum(int(p.solver.candidates) for p in plans),
+        samples=sum(int(p.solver.samples) for p in plans),
+        pairs=sum(int(p.solver.pairs) for p in plans),
+        registration_rounds=max(int(p.solver.registration_rounds) for p in plans),
+        blocks=len(blocks),
+        block_bound_sum=float(sum(p.solver.lower_bound or 0 for p in plans)),
+        redundant_removed=len(removed),
+        cut_short=cut,
+    )
     coverage_df, links_df, seam_notes = _tie_seams(
         site, scanner, req, st, blocks, plans, reach, coverage_df, links_df, facades, removed
     )
@@ -770,7 +776,7 @@ def _tie_seams(
     frames, targets, datums, leaning = [], [], [], []
     gone = set(removed)
     for b, p in zip(blocks, plans, strict=True):
-        xyz, pose, tied, datum, leans = p.solver["frame"]
+        xyz, pose, tied, datum, leans = p.block_frame
         ids = [f"{b.key}-{s}" for s in p.stations["station_id"][: len(xyz)]]
         keep = np.array([i not in gone for i in ids], dtype=bool)
         datums.append(datum)
@@ -848,14 +854,14 @@ def _cut_short(blocks: list[Block], plans: list[Plan]) -> list[str]:
     happened in (the evaluation with the samples left out over all blocks)."""
     kinds: dict[str, list[str]] = {}
     for b, p in zip(blocks, plans, strict=True):
-        for what in p.solver.get("cut_short", []):
+        for what in p.solver.cut_short:
             kinds.setdefault(what.split(" (")[0], []).append(b.key)
     out = []
     for what, keys in kinds.items():
         shown = ", ".join(keys[:6]) + (f" and {len(keys) - 6} more" if len(keys) > 6 else "")
         if what == "the evaluation":
-            total = sum(int(p.solver.get("samples_total", 0)) for p in plans)
-            done = sum(int(p.solver.get("samples_evaluated", 0)) for p in plans)
+            total = sum(int(p.solver.samples_total) for p in plans)
+            done = sum(int(p.solver.samples_evaluated) for p in plans)
             what = f"the evaluation ({done} of {total} samples; the plan covers those)"
         out.append(f"{what} in {len(keys)} of {len(blocks)} blocks ({shown})")
     return out

@@ -11,8 +11,7 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field
-from typing import Any
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import pandas as pd
@@ -35,7 +34,7 @@ from planner.pipeline.facades import FacadeSet
 from planner.pipeline.optimise import solve_cover
 from planner.pipeline.registration import Network, SightCache, TargetCandidates, build_network
 from planner.pipeline.requirements import PlanSettings, Requirements
-from planner.pipeline.result import Plan
+from planner.pipeline.result import Plan, SolverReport
 from planner.pipeline.route import field_route
 from planner.pipeline.tables import (
     class_family,
@@ -168,7 +167,7 @@ def free_positions(wb: Workbench, xy: np.ndarray, what: str) -> np.ndarray:
 def assemble(
     wb: Workbench,
     r: Round,
-    solver: dict[str, Any],
+    solver: SolverReport,
     messages: list[str],
     timings: dict[str, float],
     t0: float,
@@ -237,13 +236,13 @@ def assemble(
             "samples_met": np.asarray(ev.ok[:, : wb.n_grid].sum(axis=0)).ravel(),
         }
     )
-    solver = {
-        **solver,
-        "reach_m": wb.reach,
-        "candidates": wb.n_grid,
-        "samples": int((~wb.facades.party_wall).sum()),
-        "pairs": wb.pairs,
-    }
+    solver = replace(
+        solver,
+        reach_m=wb.reach,
+        candidates=wb.n_grid,
+        samples=int((~wb.facades.party_wall).sum()),
+        pairs=wb.pairs,
+    )
     messages.insert(0, f"Accuracy model: {st.model_description()}.")
     timings["total"] = time.perf_counter() - t0
     say(1.0, "plan ready")

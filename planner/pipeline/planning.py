@@ -59,7 +59,7 @@ from planner.pipeline.requirements import (
     PlanSettings,
     Requirements,
 )
-from planner.pipeline.result import Plan
+from planner.pipeline.result import Plan, SolverReport
 from planner.pipeline.tables import budget_message
 from planner.pipeline.zones import apply_zones
 from planner.scanner import DEFAULT_SCANNER, Scanner, load_scanner
@@ -127,7 +127,7 @@ def plan(
 
     The plan ends by ``deadline`` (a :func:`time.monotonic` time; default: now plus the
     settings' ``time_limit_s``): when it comes, the best plan so far is made, and its
-    messages say what the budget cut short (``solver["cut_short"]``).
+    messages say what the budget cut short (``solver.cut_short``).
     """
     from planner.siteio import default_site
 
@@ -336,21 +336,21 @@ def choose_stations(
             f"meets, meeting them within {relaxed_by:.2f} × the "
             "limits (they stay unmet; see the best achievable values and what would meet them)."
         )
-    solver = {
-        "method": sol.method,
-        "status": sol.status,
-        "objective": sol.objective,
-        "lower_bound": sol.lower_bound,
-        "gap": sol.gap,
-        "seconds": sol.seconds,
-        "greedy_objective": sol.greedy_objective,
-        "reductions": sol.details.get("reductions", ""),
-        "parts": sol.details.get("parts", 0),
-        "registration_rounds": rounds,
-        "cut_short": cut,
-        "samples_total": len(fac.z),
-        "samples_evaluated": int(ev.evaluated.sum()),
-    }
+    solver = SolverReport(
+        method=sol.method,
+        status=sol.status,
+        objective=sol.objective,
+        lower_bound=sol.lower_bound,
+        gap=sol.gap,
+        seconds=sol.seconds,
+        greedy_objective=sol.greedy_objective,
+        reductions=sol.details.get("reductions", ""),
+        parts=sol.details.get("parts", 0),
+        registration_rounds=rounds,
+        cut_short=cut,
+        samples_total=len(fac.z),
+        samples_evaluated=int(ev.evaluated.sum()),
+    )
     if r.net is not None and len(r.net.stations) != sol.objective and st.computes_registration:
         messages.append(
             f"Stations: {sol.objective} meet the requirement by the scanner's error alone; "

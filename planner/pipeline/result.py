@@ -6,6 +6,7 @@ The plan's files (CSV, GeoJSON, summary) are written by :mod:`planner.pipeline.e
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -17,7 +18,40 @@ from planner.pipeline.schema import FACADE_TABLE_COLUMNS, STATION_PURPOSES, ZONE
 from planner.scanner import Scanner
 from planner.site import Site
 
-__all__ = ["Plan"]
+__all__ = ["Plan", "SolverReport"]
+
+
+@dataclass
+class SolverReport:
+    """How the stations were chosen: the optimiser's method and status, the cover's size and
+    the proven lower bound on it (and the gap), what the time budget cut short, and the work
+    behind it (reach, candidates, samples, pairs evaluated). A district's plan adds its
+    blocks: the bound of the blocks far apart, the one at shared prices, the stations removed
+    as redundant; a block's plan the farthest pair meeting a sample."""
+
+    method: str
+    status: str
+    objective: int
+    lower_bound: float | None = None
+    gap: float | None = None
+    seconds: float = 0.0
+    greedy_objective: int | None = None
+    reductions: str = ""
+    parts: int = 0
+    registration_rounds: int = 0
+    cut_short: list[str] = field(default_factory=list)
+    samples_total: int = 0
+    samples_evaluated: int = 0
+    reach_m: float = math.inf
+    candidates: int = 0
+    samples: int = 0
+    pairs: int = 0
+    meeting_reach_m: float | None = None
+    blocks: int = 0
+    far_bound: float | None = None
+    shared_bound: float | None = None
+    block_bound_sum: float | None = None
+    redundant_removed: int = 0
 
 
 @dataclass(kw_only=True)
@@ -53,7 +87,7 @@ class Plan:
     facades: pd.DataFrame
     links: pd.DataFrame
     candidates: pd.DataFrame
-    solver: dict[str, Any]
+    solver: SolverReport
     zones: pd.DataFrame = field(default_factory=lambda: pd.DataFrame(columns=ZONE_COLUMNS))
     network: Any = None  # the registration network (planner.pipeline.registration.Network)
     route: Any = None  # visiting order and field time (planner.pipeline.route.FieldRoute)
@@ -62,6 +96,9 @@ class Plan:
     #: What the plan was made from, for what-if edits (planner.pipeline.whatif); not saved,
     #: and dropped when a plan is sent between processes.
     workbench: Any = field(default=None, repr=False, compare=False)
+    #: A district block's network as the stitch ties it to its neighbours'
+    #: (:func:`planner.pipeline.district.keep_frame`); None elsewhere.
+    block_frame: tuple | None = field(default=None, repr=False, compare=False)
 
     @property
     def unmet(self) -> pd.DataFrame:
@@ -100,13 +137,13 @@ class Plan:
         req, sc, s = self.requirements, self.scanner, self.solver
         cov = self.scanned
         purposes = self.stations["purpose"].value_counts()
-        solver = f"({s['status']}; objective {s['objective']}"
-        if s.get("gap") is not None:
-            solver += f", lower bound {s['lower_bound']:g}, gap {100 * s['gap']:.1f} %"
-        if s.get("greedy_objective") is not None:
-            solver += f"; greedy {s['greedy_objective']}"
-        if s.get("reductions"):
-            solver += f"; reductions: {s['reductions']}; {s.get('parts', 0)} independent part(s)"
+        solver = f"({s.status}; objective {s.objective}"
+        if s.gap is not None:
+            solver += f", lower bound {s.lower_bound:g}, gap {100 * s.gap:.1f} %"
+        if s.greedy_objective is not None:
+            solver += f"; greedy {s.greedy_objective}"
+        if s.reductions:
+            solver += f"; reductions: {s.reductions}; {s.parts} independent part(s)"
         solver += ")"
         types = self.targets["type"].value_counts()
         lines = [
@@ -129,11 +166,11 @@ class Plan:
             )
             + ("none" if self.stations.empty else "")
             + (
-                f"); the covering ones chosen by {s['method']} {solver} from "
+                f"); the covering ones chosen by {s.method} {solver} from "
                 f"{len(self.candidates)} candidates"
-                if s["method"] != "hand placement"
-                else f"; the optimiser's lower bound {s['lower_bound']:g})"
-                if s.get("lower_bound") is not None
+                if s.method != "hand placement"
+                else f"; the optimiser's lower bound {s.lower_bound:g})"
+                if s.lower_bound is not None
                 else ")"
             ),
             f"Targets: {len(self.targets)}"

@@ -17,6 +17,7 @@ hand stays offered, for every later edit and re-optimisation of that plan.
 from __future__ import annotations
 
 import time
+from dataclasses import replace
 
 import numpy as np
 
@@ -25,7 +26,7 @@ from planner.pipeline.evaluate import Progress
 from planner.pipeline.judge import Round, Workbench, assemble, free_positions, judge, round_network
 from planner.pipeline.planning import choose_stations
 from planner.pipeline.registration import TargetCandidates
-from planner.pipeline.result import Plan
+from planner.pipeline.result import Plan, SolverReport
 
 __all__ = ["edit_targets", "evaluate_stations", "reoptimise"]
 
@@ -63,20 +64,15 @@ def _judged(
     datum = datum if datum is not None and datum in set(np.asarray(idx).tolist()) else None
     r.net = round_network(wb.ctx, wb.pool, wb.seen, idx, timings, datum=datum) if len(idx) else None
     r.judged = judge(wb.ctx, wb.pool, r)
-    bound = p.solver.get("lower_bound")
+    bound = p.solver.lower_bound
     n = len(r.net.stations) if r.net is not None else 0
-    solver = {
-        "method": "hand placement",
-        "status": "stations placed by hand",
-        "objective": n,
-        "lower_bound": bound,
-        "gap": None if bound is None or n == 0 else max(0.0, (n - bound) / n),
-        "seconds": 0.0,
-        "greedy_objective": None,
-        "reductions": "",
-        "parts": 0,
-        "registration_rounds": 0,
-    }
+    solver = SolverReport(
+        method="hand placement",
+        status="stations placed by hand",
+        objective=n,
+        lower_bound=bound,
+        gap=None if bound is None or n == 0 else max(0.0, (n - bound) / n),
+    )
     messages = [*wb.messages, message]
     return assemble(wb, r, solver, messages, timings, t0, hand=hand)
 
@@ -160,7 +156,7 @@ def edit_targets(
     done += [f"{len(move)} moved"] if move else []
     done += [f"{n_added} added"] if n_added else []
     q = _judged(p, wb, idx, hand, f"Targets edited by hand: {', '.join(done)}.", t0)
-    q.solver = dict(p.solver) | {"objective": q.solver["objective"]}
+    q.solver = replace(p.solver, objective=q.solver.objective)
     mine = int(wb.seen.by_hand.sum())
     if mine:
         used = q.network.targets if q.network is not None else []

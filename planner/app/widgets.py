@@ -1,0 +1,81 @@
+"""Widget helpers the dashboards share (the station planner's and the calibration's): an error
+box, a download link, showing figures and tables in an Output widget, the scanner dropdown
+and the folder uploads go to. No science."""
+
+from __future__ import annotations
+
+import base64
+import html
+import io
+import os
+import tempfile
+from typing import Any
+
+import ipywidgets as w
+import matplotlib.pyplot as plt
+
+from planner.app.serve import UPLOAD_ROOT_ENV
+from planner.app.wording import for_dashboard_html
+from planner.scanner import DEFAULT_SCANNER, catalogue, user_profiles
+
+__all__ = ["download_link", "error_html", "output", "scanner_dropdown", "show", "upload_folder"]
+
+
+def error_html(message: str, head: str = "Cannot plan") -> str:
+    """A message (in the dashboard's words: :mod:`planner.app.wording`) as an error box."""
+    return (
+        f'<div class="planner-error" style="color:#922;background:#fdecea;border:1px solid #e6b0aa;'
+        f'padding:6px 10px;border-radius:4px"><b>{html.escape(head)}:</b> '
+        f"{for_dashboard_html(message)}</div>"
+    )
+
+
+def download_link(name: str, data: bytes, mime: str) -> str:
+    """A link that downloads ``data`` as the file ``name`` (the data inline, base64)."""
+    b64 = base64.b64encode(data).decode("ascii")
+    return (
+        f'<a download="{name}" href="data:{mime};base64,{b64}" class="planner-download" '
+        f'style="margin-right:1em">⬇ {name}</a>'
+    )
+
+
+def output(obj: Any) -> dict:
+    """One output of an Output widget: a figure as PNG, anything else as IPython shows it."""
+    if isinstance(obj, plt.Figure):
+        buf = io.BytesIO()
+        obj.savefig(buf, format="png", dpi=96)
+        plt.close(obj)
+        data = {"image/png": base64.b64encode(buf.getvalue()).decode("ascii"), "text/plain": ""}
+        return {"output_type": "display_data", "data": data, "metadata": {}}
+    from IPython.core.interactiveshell import InteractiveShell
+
+    data, metadata = InteractiveShell.instance().display_formatter.format(obj)
+    return {"output_type": "display_data", "data": data, "metadata": metadata}
+
+
+def show(out: w.Output, *objs: Any) -> None:
+    """Replace what ``out`` shows (at once, from any thread: the plan runs in one), each
+    object turned into an output by :func:`output`."""
+    out.outputs = tuple(output(o) for o in objs)
+
+
+def upload_folder() -> tempfile.TemporaryDirectory:
+    """Where a dashboard writes uploaded files: inside the server's folder when served (removed
+    when the server stops), else a temporary folder of its own."""
+    root = os.environ.get(UPLOAD_ROOT_ENV)
+    return tempfile.TemporaryDirectory(
+        prefix="planner-upload-", dir=root if root and os.path.isdir(root) else None
+    )
+
+
+def scanner_dropdown() -> w.Dropdown:
+    """The catalogue's scanners, then the profiles the user installed (by name)."""
+    scanners = [*catalogue().values(), *user_profiles()[0].values()]
+    return w.Dropdown(
+        options=[(s.label or s.name, s.name) for s in scanners],
+        value=DEFAULT_SCANNER,
+        description="",
+        tooltip="the scanner profile (its catalogue name is the --scanner of the command line)",
+        layout=w.Layout(width="98%"),
+        style={"description_width": "initial"},
+    )
