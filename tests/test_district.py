@@ -320,16 +320,19 @@ def test_stitching_removes_redundant_stations_and_keeps_every_sample(blockwise):
     # a reason naming a block's station names it by its id in the whole plan
     import copy
 
+    from planner.pipeline.tables import REASON_DATA, Reason
+
     first = copy.copy(plans[0])
     first.coverage = first.coverage.copy()
-    first.coverage.loc[0, "reason"] = (
-        "a (station S01) = b; its station S02 cannot; no station meets"
+    first.coverage.at[0, REASON_DATA] = Reason(
+        "a (station {0}) = b; its station {1} cannot; no station S09 meets", ("S01", "S02")
     )
     named = stitch(site, UNLEVELLED, req, SETTINGS, blocks, [first, *plans[1:]], halo)
     key = blocks[0].key
-    assert named.coverage.loc[0, "reason"] == (
-        f"a (station {key}-S01) = b; its station {key}-S02 cannot; no station meets"
+    assert named.coverage.loc[0, "reason"] == (  # the words themselves are not read
+        f"a (station {key}-S01) = b; its station {key}-S02 cannot; no station S09 meets"
     )
+    assert REASON_DATA not in named.coverage  # the files never had it
     assert set(lean.links["station_b"]) <= ids and set(lean.links["station_a"]) <= ids | {"control"}
     assert all(s in ids for sids in lean.targets["station_ids"] for s in sids)
     # a moved sample's metrics are its new station's, within its limit
@@ -513,7 +516,7 @@ def test_one_datums_tilt_leans_the_whole_district(blockwise):
         keep_frame(q)  # as a worker does
     p = stitch(site, UNLEVELLED, Requirements(), SETTINGS, blocks, plans, halo)
     root = max(range(len(plans)), key=lambda k: len(plans[k].stations))
-    datum = plans[root].block_frame[3]  # the root block's datum (x, y, z)
+    datum = plans[root].block_frame.datum  # the root block's datum (x, y, z)
     key = blocks[root].key
     cov = p.scanned[~p.scanned["station_id"].str.startswith(key) & (p.scanned["station_id"] != "")]
     assert len(cov) > 50

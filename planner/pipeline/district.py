@@ -60,7 +60,7 @@ from planner.pipeline.requirements import (
 from planner.pipeline.result import Plan, SolverReport
 from planner.pipeline.route import field_route
 from planner.pipeline.schema import MEETING_COLUMNS, METRIC_KEYS
-from planner.pipeline.tables import budget_message
+from planner.pipeline.tables import REASON_DATA, budget_message
 from planner.registration_error import datum_tilt_cov
 from planner.scanner import Scanner
 from planner.site import Site
@@ -218,6 +218,21 @@ def _plan_block(
     return p, table, cover
 
 
+@dataclass(frozen=True)
+class KeptNetwork:
+    """A block's registration network as the stitch needs it, kept when the network itself
+    is dropped (:func:`keep_frame`): scanner centres (K, 3) [m], pose covariances about the
+    datum without its lean, which are tied, the datum whose tilt leans them (None: none
+    does) and which carry that lean, and the network's message."""
+
+    xyz: np.ndarray
+    pose_cov: np.ndarray
+    tied: np.ndarray
+    datum: np.ndarray | None
+    leans: np.ndarray
+    message: str
+
+
 def keep_frame(p: Plan) -> None:
     """What the stitch ties a block's network to its neighbours' with
     (:mod:`planner.pipeline.seams`), kept in the block's plan before its network and
@@ -236,7 +251,7 @@ def keep_frame(p: Plan) -> None:
     if datum is not None:
         datum = datum.copy()
         pose[leans] -= datum_tilt_cov(xyz[leans], datum, p.scanner.initial_tilt_rms_arcsec)
-    p.block_frame = (xyz, pose, tied, datum, leans)
+    p.block_frame = KeptNetwork(xyz, pose, tied, datum, leans, net.message if net else "")
     limits = p.workbench.ctx.limits
     for c in "xyz":  # for judging each sample again in the district's frame
         p.coverage[f"_lim_m_{c}"] = limits[f"m_{c}"]
@@ -604,8 +619,12 @@ def _honest_bound(blocks: list[Block], plans: list[Plan], reach: float) -> float
     return max(sum(bounds[k] for k in chosen), max(bounds, default=0.0))
 
 
-#: A station named in a sample's reason (``(station S04)``, ``its station S04 cannot…``).
-STATION_IN_TEXT = r"(?<=station )S\d+\b"
+def _network_message(p: Plan) -> str:
+    """What a block's registration network says of itself (kept when the network is
+    dropped for the trip back from the worker)."""
+    if p.block_frame is not None:
+        return p.block_frame.message
+    return p.network.message if p.network is not None else ""
 
 
 def _meeting_reach(p: Plan, reach: float) -> float:
@@ -654,9 +673,9 @@ def stitch(
         targets.append(t)
         c = p.coverage.copy()
         c["station_id"] = c["station_id"].map(lambda s, m=sid: m.get(s, s))
-        c["reason"] = c["reason"].str.replace(  # the stations a reason names, too
-            STATION_IN_TEXT, lambda hit, m=sid: m.get(hit[0], hit[0]), regex=True
-        )
+        if REASON_DATA in c:  # the stations a reason names, by their data
+            c["reason"] = [r.text(sid) for r in c[REASON_DATA]]
+            c = c.drop(columns=[REASON_DATA])
         coverage.append(c)
         facades.append(p.facades)
         lk = p.links.copy()
@@ -668,10 +687,11 @@ def stitch(
         links.append(lk)
         zones.append(p.zones)
         cands.append(p.candidates)
-        reg = next((m for m in p.messages if m.startswith("Registration:")), "")
+        net = _network_message(p)
         messages.append(
             f"Block {b.key} ({len(b.buildings)} buildings): {len(p.stations)} stations, "
-            f"{p.solver.status}, bound {p.solver.lower_bound}" + (f"; {reg}" if reg else "")
+            f"{p.solver.status}, bound {p.solver.lower_bound}"
+            + (f"; Registration: {net}." if net else "")
         )
     targets_df = _merge_control(pd.concat(targets, ignore_index=True))
     stations_df = pd.concat(stations, ignore_index=True)
@@ -776,7 +796,8 @@ def _tie_seams(
     frames, targets, datums, leaning = [], [], [], []
     gone = set(removed)
     for b, p in zip(blocks, plans, strict=True):
-        xyz, pose, tied, datum, leans = p.block_frame
+        fr = p.block_frame
+        xyz, pose, tied, datum, leans = fr.xyz, fr.pose_cov, fr.tied, fr.datum, fr.leans
         ids = [f"{b.key}-{s}" for s in p.stations["station_id"][: len(xyz)]]
         keep = np.array([i not in gone for i in ids], dtype=bool)
         datums.append(datum)

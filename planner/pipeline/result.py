@@ -98,7 +98,7 @@ class Plan:
     workbench: Any = field(default=None, repr=False, compare=False)
     #: A district block's network as the stitch ties it to its neighbours'
     #: (:func:`planner.pipeline.district.keep_frame`); None elsewhere.
-    block_frame: tuple | None = field(default=None, repr=False, compare=False)
+    block_frame: Any = field(default=None, repr=False, compare=False)
 
     @property
     def unmet(self) -> pd.DataFrame:

@@ -7,6 +7,7 @@ the summary prints (:data:`planner.pipeline.schema`'s columns).
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -31,6 +32,8 @@ if TYPE_CHECKING:
 
 __all__ = [
     "PROCESSING_WORDS",
+    "REASON_DATA",
+    "Reason",
     "budget_message",
     "class_family",
     "coverage_table",
@@ -134,11 +137,13 @@ def coverage_table(
         untied[has] = ~net.error.tied[assignment.station[has]]
     lean_at = net.leaning_datum(ctx.scanner) if net is not None else None
     datum = None if lean_at is None else (ids[net.datum], lean_at[:2])
+    named = np.full(n, None, dtype=object)  # the reasons naming stations, as data
     for i in np.flatnonzero(candidates_meet):
         place = places.get(int(assignment.station[i]), "") if untied[i] else ""
-        reason[i] = _short_reason(
+        named[i] = _short_reason(
             ctx, i, picked, station[i], untied[i], n_meeting[i], k_req[i], place, datum
         )
+        reason[i] = named[i].text()
     elevated = np.full(n, "", dtype=object)
     for i in np.flatnonzero(~meets & demanded & (n_ok_cand < k_req) & ev.evaluated):
         found = diagnosis.at(int(i))
@@ -151,6 +156,8 @@ def coverage_table(
             elevated[i] = f"roof of {roof}" if roof else "above the ground"
     reason[~meets & demanded & ~ev.evaluated] = "not evaluated: the time budget ran out"
     reason[fac.party_wall] = "party wall (against a neighbour): not scanned"
+    named[~meets & demanded & ~ev.evaluated] = None
+    named[fac.party_wall] = None
     extra = {}
     if class_family:  # the class each sample achieves, beside pass/fail
         from planner.classes import achieved_class
@@ -179,8 +186,36 @@ def coverage_table(
             "elevated_station": elevated,
             "zone": ctx_zone_ids,
             **extra,
+            REASON_DATA: [
+                r if r is not None else Reason(_literal(t))
+                for r, t in zip(named, reason, strict=True)
+            ],
         }
     )
+
+
+#: The coverage's column of :class:`Reason` (not written to files): the reason's words and
+#: the stations it names, so that a district renames stations without reading the words.
+REASON_DATA = "reason_data"
+
+
+@dataclass(frozen=True)
+class Reason:
+    """Why a sample is not met, as data: ``template`` with ``{0}``, ``{1}`` … where the
+    stations it names go (their ids, ``stations``); :meth:`text` renders it."""
+
+    template: str
+    stations: tuple[str, ...] = ()
+
+    def text(self, rename: dict[str, str] | None = None) -> str:
+        """The reason in words, the stations under their names in ``rename`` if given."""
+        ids = self.stations if rename is None else tuple(rename.get(s, s) for s in self.stations)
+        return self.template.format(*ids)
+
+
+def _literal(text: str) -> str:
+    """``text`` as a template that names no station (braces kept as they are)."""
+    return text.replace("{", "{{").replace("}", "}}")
 
 
 def _short_reason(
@@ -193,17 +228,18 @@ def _short_reason(
     k_req: int,
     place: str = "",
     datum: tuple[str, np.ndarray] | None = None,
-) -> str:
+) -> Reason:
     """Why a sample some candidate could meet is not met by the chosen stations (``place``:
     where an untied station stands, :func:`untied_places`; ``datum``: the datum station's id
     and position, whose levelling leans the network of a scanner without a compensator)."""
     if untied and place:
-        return (
-            f"its station {station} stands in {place}, which no registration reaches: "
-            f"{ENCLOSED_FIX}"
+        return Reason(
+            "its station {0} stands in "
+            + _literal(f"{place}, which no registration reaches: {ENCLOSED_FIX}"),
+            (station,),
         )
     if untied:
-        return f"its station {station} cannot be tied to the registration network"
+        return Reason("its station {0} cannot be tied to the registration network", (station,))
     worst = None
     for c in "xyz":
         total, scanner = picked[f"m_{c}_mm"][i], picked[f"scanner_m_{c}_mm"][i]
@@ -216,7 +252,7 @@ def _short_reason(
         _, c, scanner, reg, total, limit = worst
         text = (
             f"the registration error takes it over: m_{c} {scanner:.1f} mm from the scanner "
-            f"⊕ {reg:.1f} mm registration (station {station}) = {total:.1f} mm > {limit:g} mm"
+            f"⊕ {reg:.1f} mm registration (station {{0}}) = {total:.1f} mm > {limit:g} mm"
         )
         if datum is not None and c == "z":
             far = float(np.hypot(*(ctx.facades.xy[i] - datum[1])))
@@ -224,16 +260,17 @@ def _short_reason(
             lean = float(datum_lean_mm(far, m_nu0))
             if lean >= 0.5 * reg:
                 text += (
-                    f"; {lean:.1f} mm of it is the levelling of the datum {datum[0]} "
-                    f"({m_nu0:g}″ at {far:.0f} m): {DATUM_LEVELLING_FIX}"
+                    f"; {lean:.1f} mm of it is the levelling of the datum {{1}} "
+                    f"({m_nu0:g}″ at {far:.0f} m): {_literal(DATUM_LEVELLING_FIX)}"
                 )
-        return text
+                return Reason(text, (station, datum[0]))
+        return Reason(text, (station,))
     if k_req > 1:
-        return (
+        return Reason(
             f"the chosen stations give {n_meeting} of the {k_req} views required (views "
             f"{ctx.req.min_view_angle_deg:g}° apart in direction)"
         )
-    return "the chosen stations do not cover this sample"
+    return Reason("the chosen stations do not cover this sample")
 
 
 #: What keeps heights true far from the datum of a scanner without a compensator.
