@@ -311,7 +311,7 @@ def max_distance_m(
     with np.errstate(divide="ignore", invalid="ignore"):
         disc = np.sqrt(np.maximum(qb * qb - 4.0 * qa * qc, 0.0))
         root = np.where(qa > 0, (-qb + disc) / (2.0 * qa), np.where(qb > 0, -qc / qb, np.inf))
-    out = np.where(qc > 1e-12, np.nan, root)
+    out = np.where((qc > 1e-12) | np.isnan(qa + qc), np.nan, root)  # NaN in, NaN out
     return like_input(np.asarray(out, dtype=float), angle_deg)
 
 

@@ -138,7 +138,7 @@ def footprint_mm(
     """
     s = np.asarray(slope_distance_m, dtype=float)
     if scanner.beam_divergence_mrad is None and scanner.beam_exit_mm is None:
-        return like_input(np.zeros_like(s), slope_distance_m)
+        return like_input(np.where(np.isnan(s), np.nan, 0.0), slope_distance_m)
     width = (scanner.beam_exit_mm or 0.0) + s * (scanner.beam_divergence_mrad or 0.0)
     cos_t = np.clip(np.asarray(cos_incidence, dtype=float), MIN_COS_INCIDENCE, 1.0)
     return like_input(width / cos_t, slope_distance_m)
@@ -279,5 +279,5 @@ def max_distance_3d_m(
     with np.errstate(divide="ignore", invalid="ignore"):
         disc = np.sqrt(np.maximum(qb * qb - 4.0 * qa * qc, 0.0))
         root = np.where(qa > 0, (-qb + disc) / (2.0 * qa), np.where(qb > 0, -qc / qb, np.inf))
-    out = np.where(qc > 1e-12, np.nan, root)
+    out = np.where((qc > 1e-12) | np.isnan(qa + qc), np.nan, root)  # NaN in, NaN out
     return like_input(np.asarray(out, dtype=float), gamma_deg, nu_deg)

@@ -110,18 +110,17 @@ def test_import_planner_is_lazy():
     assert set(planner.__all__) <= set(dir(planner))
 
 
-def test_every_module_imports_and_its_doctests_pass():
-    finder, runner = doctest.DocTestFinder(), doctest.DocTestRunner(verbose=False)
-    attempted = 0
+def test_every_module_imports_and_has_examples_the_suite_runs():
+    """Every module imports; their docstrings' examples are collected one by one
+    (``--doctest-modules`` in pyproject.toml) — there are many of them to collect."""
+    finder = doctest.DocTestFinder()
+    examples = 0
     for name, _ in _modules():
         if name.endswith("__main__"):
             continue
         module = importlib.import_module(name)
-        for test in finder.find(module, name):
-            runner.run(test)
-        attempted = runner.summarize(verbose=False).attempted
-    assert runner.summarize(verbose=False).failed == 0
-    assert attempted >= 20  # the suite really runs the examples
+        examples += sum(len(t.examples) for t in finder.find(module, name))
+    assert examples >= 60
 
 
 # -- one table of requirement checks ------------------------------------------------------

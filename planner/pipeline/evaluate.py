@@ -35,7 +35,7 @@ from planner.pipeline.visibility import (
     edges_in_front,
     visible,
 )
-from planner.pipeline.zones import SampleRequirements
+from planner.pipeline.zoning import SampleRequirements
 from planner.polar import separated_directions
 from planner.registration_error import pair_registration_variances
 from planner.scanner import Scanner
@@ -101,7 +101,7 @@ class Context:
         sample_req: SampleRequirements | None = None,
     ) -> Context:
         """Everything the evaluation needs; ``sample_req`` the requirement of every sample
-        (:func:`planner.pipeline.zones.apply_zones`; default: ``req`` everywhere)."""
+        (:func:`planner.pipeline.zoning.apply_zones`; default: ``req`` everywhere)."""
         edges, heights = footprint_edges(site)
         bridges = bridge_edges(site)
         masks, cols_of, samples_of = [], [], []

@@ -47,7 +47,7 @@ from planner.pipeline.tables import (
     untied_places,
     zone_summary,
 )
-from planner.pipeline.zones import ZoneTable
+from planner.pipeline.zoning import ZoneTable
 from planner.registration_error import datum_lean_mm
 from planner.scanner import Scanner
 from planner.site import Site

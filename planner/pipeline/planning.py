@@ -61,7 +61,7 @@ from planner.pipeline.requirements import (
 )
 from planner.pipeline.result import Plan, SolverReport
 from planner.pipeline.tables import budget_message
-from planner.pipeline.zones import apply_zones
+from planner.pipeline.zoning import apply_zones
 from planner.scanner import DEFAULT_SCANNER, Scanner, load_scanner
 from planner.site import Site
 from planner.sitecheck import notes_summary

@@ -23,7 +23,7 @@ from planner.pipeline.requirements import (
     Requirements,
 )
 from planner.pipeline.schema import LINK_COLUMNS, METRIC_KEYS, TARGET_COLUMNS, ZONE_COLUMNS
-from planner.pipeline.zones import ZoneTable
+from planner.pipeline.zoning import ZoneTable
 from planner.registration_error import CONTROL, Link, datum_lean_mm
 from planner.targets import choose_target
 
