@@ -69,6 +69,8 @@ METRIC_KEYS = (
     "reg_m_z_mm",
 )
 
+#: coverage.csv: the sample, its station, the totals of its metrics, whether it meets its
+#: requirement, the scanner's and the registration's parts, the spacing and why not met.
 COVERAGE_COLUMNS = [
     "building_id",
     "facade_id",
@@ -77,22 +79,10 @@ COVERAGE_COLUMNS = [
     "y",
     "z",
     "station_id",
-    "distance_m",
-    "slope_distance_m",
-    "gamma_deg",
-    "nu_deg",
-    "incidence_deg",
-    "m_x_mm",
-    "m_y_mm",
-    "m_z_mm",
+    *(k for k in METRIC_KEYS if k != "spacing_mm" and not k.startswith(("scanner", "reg"))),
     "meets",
     "model",
-    "scanner_m_x_mm",
-    "scanner_m_y_mm",
-    "scanner_m_z_mm",
-    "reg_m_x_mm",
-    "reg_m_y_mm",
-    "reg_m_z_mm",
+    *(k for k in METRIC_KEYS if k.startswith(("scanner", "reg"))),
     "spacing_mm",
     "reason",
     "elevated_station",

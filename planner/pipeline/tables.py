@@ -22,7 +22,13 @@ from planner.pipeline.requirements import (
     PlanSettings,
     Requirements,
 )
-from planner.pipeline.schema import LINK_COLUMNS, METRIC_KEYS, TARGET_COLUMNS, ZONE_COLUMNS
+from planner.pipeline.schema import (
+    COVERAGE_COLUMNS,
+    LINK_COLUMNS,
+    METRIC_KEYS,
+    TARGET_COLUMNS,
+    ZONE_COLUMNS,
+)
 from planner.pipeline.zoning import ZoneTable
 from planner.registration_error import CONTROL, Link, datum_lean_mm
 from planner.targets import choose_target
@@ -165,33 +171,32 @@ def coverage_table(
         extra["class_achieved"] = achieved_class(
             picked["m_x_mm"], picked["m_y_mm"], picked["m_z_mm"], class_family
         )
-    shown = [k for k in METRIC_KEYS if k != "spacing_mm" and not k.startswith(("scanner", "reg"))]
-    return pd.DataFrame(
-        {
-            "building_id": fac.building_id[fac.facade],
-            "facade_id": fac.facade_id[fac.facade],
-            "sample_id": fac.sample_id,
-            "x": fac.xy[:, 0],
-            "y": fac.xy[:, 1],
-            "z": fac.z,
-            "station_id": station,
-            **{k: picked[k] for k in shown},
-            "meets": meets,
-            "model": ctx.settings.model,
-            **{k: picked[k] for k in METRIC_KEYS if k.startswith(("scanner", "reg"))},
-            "spacing_mm": picked["spacing_mm"],
-            "stations_meeting": n_meeting,
-            "party_wall": fac.party_wall,
-            "reason": reason,
-            "elevated_station": elevated,
-            "zone": ctx_zone_ids,
-            **extra,
-            REASON_DATA: [
-                r if r is not None else Reason(_literal(t))
-                for r, t in zip(named, reason, strict=True)
-            ],
-        }
-    )
+    data = {
+        "building_id": fac.building_id[fac.facade],
+        "facade_id": fac.facade_id[fac.facade],
+        "sample_id": fac.sample_id,
+        "x": fac.xy[:, 0],
+        "y": fac.xy[:, 1],
+        "z": fac.z,
+        "station_id": station,
+        **{k: picked[k] for k in METRIC_KEYS},
+        "meets": meets,
+        "model": ctx.settings.model,
+        "reason": reason,
+        "elevated_station": elevated,
+        "zone": ctx_zone_ids,
+        # beside the file's columns: how many stations meet it, whether on a party wall,
+        # the reason as data
+        "stations_meeting": n_meeting,
+        "party_wall": fac.party_wall,
+        REASON_DATA: [
+            r if r is not None else Reason(_literal(t)) for r, t in zip(named, reason, strict=True)
+        ],
+        **extra,
+    }
+    return pd.DataFrame(data)[
+        [*COVERAGE_COLUMNS, "stations_meeting", "party_wall", *extra, REASON_DATA]
+    ]
 
 
 #: The coverage's column of :class:`Reason` (not written to files): the reason's words and
