@@ -335,10 +335,10 @@ def test_a_datum_station_in_the_middle_keeps_the_block_s_heights(block_plan, mon
     The ten-building block's first network leaves a third of its samples short in m_z,
     nearly all by that lean; one station nearer the middle, held as the datum, meets them
     (the far heights lean about it instead). Without that step the plan meets fewer."""
-    import planner.pipeline.planning as planning
+    import planner.pipeline.judge as judge
 
     p = block_plan
-    monkeypatch.setattr(planning, "datum_station", lambda *_a: None)
+    monkeypatch.setattr(judge, "datum_station", lambda *_a: None)
     without = plan(town(10, seed=0), settings=PlanSettings(grid_m=3.0, sample_spacing_m=3.0))
     met, met_without = int(p.scanned["meets"].sum()), int(without.scanned["meets"].sum())
     assert met >= met_without + 30 and len(p.stations) <= len(without.stations)

@@ -135,6 +135,8 @@ def world_of(p) -> World:
         },
         levelled=sc.is_levelled,
         tilt_rms_arcsec=sc.initial_tilt_rms_arcsec,
+        # (written out, not PlanSettings.incidence_ranging: the survey also reads plans made
+        # by the code before it, for benchmarks/virtual_survey_before.json)
         scan=ScanModel.of(
             sc, p.workbench.ctx.step_mm_at_10m, st.model == "3d" and st.incidence_noise
         ),

@@ -58,6 +58,7 @@ __all__ = [
     "Round",
     "Workbench",
     "assemble",
+    "datum_round",
     "datum_station",
     "estimate_registration",
     "free_positions",
@@ -461,6 +462,30 @@ def datum_station(ctx: Context, cand: np.ndarray, r: Round) -> int | None:
     counts = np.concatenate([short(cand[pool[k : k + 256]]) for k in range(0, len(pool), 256)])
     best = int(np.argmin(counts))
     return int(pool[best]) if counts[best] < now else None
+
+
+def datum_round(
+    ctx: Context,
+    cand: np.ndarray,
+    seen: SightCache,
+    r: Round,
+    timings: dict[str, float],
+    deadline: float,
+    say: Progress,
+) -> Round | None:
+    """Round ``r`` with a datum station nearer the middle (:func:`datum_station`), its
+    network built and judged, where that meets more than :data:`DATUM_SHARE` of the samples
+    more; else None (the round as it was)."""
+    middle = datum_station(ctx, cand, r)
+    if middle is None:
+        return None
+    say(0.85, "registration: a datum station nearer the middle of the site")
+    trial = Round(cover=r.cover, added=np.union1d(r.added, [middle]))
+    chosen = np.concatenate([r.net.stations, [middle]])
+    trial.net = round_network(ctx, cand, seen, chosen, timings, deadline)
+    trial.judged = judge(ctx, cand, trial)
+    gain = trial.judged.n_met - r.judged.n_met
+    return trial if gain > DATUM_SHARE * (~ctx.facades.party_wall).sum() else None
 
 
 #: The datum station is looked for among at most about this many candidates.

@@ -36,12 +36,11 @@ from planner.pipeline.facades import (
     lower_roof_in_front,
 )
 from planner.pipeline.judge import (
-    DATUM_SHARE,
     Diagnosis,
     Round,
     Workbench,
     assemble,
-    datum_station,
+    datum_round,
     estimate_registration,
     free_positions,
     judge,
@@ -279,19 +278,12 @@ def choose_stations(
         short = r.judged.short_by_registration
         if short.any() and not moved:  # once: a datum nearer the middle, kept if better
             moved = True
-            middle = datum_station(ctx, cand, r)
-            if middle is not None:
-                say(0.85, "registration: a datum station nearer the middle of the site")
-                trial = Round(cover=r.cover, added=np.union1d(r.added, [middle]))
-                chosen = np.concatenate([r.net.stations, [middle]])
-                trial.net = round_network(ctx, cand, seen, chosen, timings, deadline)
-                trial.judged = judge(ctx, cand, trial)
-                gain = trial.judged.n_met - r.judged.n_met
-                if gain > DATUM_SHARE * (~ctx.facades.party_wall).sum():  # else: as if untried
-                    rounds += 1
-                    r = trial
-                    best = r if r.judged.better_than(best.judged) else best
-                    continue
+            trial = datum_round(ctx, cand, seen, r, timings, deadline, say)
+            if trial is not None:  # else: as if untried
+                rounds += 1
+                r = trial
+                best = r if r.judged.better_than(best.judged) else best
+                continue
         more = np.empty(0, dtype=np.int64)
         if short.any() and (resolved or adds < ADD_ROUNDS):
             say(0.85, f"registration: {int(short.sum())} samples short; adding stations")
