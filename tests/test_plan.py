@@ -271,6 +271,30 @@ def test_party_wall_is_reported_not_demanded():
     assert sum(f",{sid}," in csv for sid in east.loc[~east["party_wall"], "sample_id"]) == 15
 
 
+def test_party_walls_are_not_evaluated_and_never_count_as_cut_short():
+    """A party wall is never scanned: the evaluation skips it (all of its samples count as
+    done, none as met), so a budget can never say "the evaluation was cut short" for samples
+    the coverage file does not hold (the cause of a district plan saying so with no sample
+    marked "not evaluated")."""
+    from planner.pipeline.evaluate import evaluate_candidates
+
+    a = Building("A", rect(0, 0, 20, 10), 12.0)
+    b = Building("B", rect(20, 0, 30, 10), 6.0, planned=False)
+    st = PlanSettings(sample_spacing_m=2.0, sample_height_step_m=2.0)
+    site, req = Site([a, b]), Requirements(max_xy_mm=6, max_z_mm=6)
+    fac = build_facades(site, st.sample_spacing_m, st.sample_height_step_m)
+    ctx = Context.build(site, fac, PAPER, req, st, reach_m(PAPER, req, st))
+    party = ctx.facades.party_wall
+    assert party.sum() == 15
+    cand = np.array([[E0 + 40.0, N0 + 5.0], [E0 + 10.0, N0 - 15.0]])
+    ev = evaluate_candidates(ctx, cand)
+    assert ev.evaluated.all()
+    assert ev.ok[np.flatnonzero(party)].nnz == 0  # east of A: the party wall is not met
+    assert ev.ok[np.flatnonzero(~party & (ctx.facades.xy[:, 0] == E0 + 20))].nnz > 0
+    late = evaluate_candidates(ctx, cand, deadline=0.0)
+    assert np.array_equal(late.evaluated, party)  # only the party wall counts as done
+
+
 def test_many_short_edges_and_multipolygons():
     tower = Site([Building("tower", shapely.Point(E0, N0).buffer(10.0, quad_segs=16), 20.0)])
     fac = build_facades(tower)

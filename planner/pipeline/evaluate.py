@@ -482,19 +482,20 @@ def evaluate_candidates(
     error plus, when given, the registration's (one entry per candidate) — without it, each
     candidate with its own levelling (:func:`facade_pairs`' ``own_level``: the choice's
     stand-in for the frame's error until the network exists); ``only`` (N,) bool restricts
-    it to some samples. Facades not reached by ``deadline`` (a :func:`time.monotonic` time)
-    are left unevaluated."""
+    it to some samples. Party-wall samples (never scanned) are not evaluated. Facades not
+    reached by ``deadline`` (a :func:`time.monotonic` time) are left unevaluated."""
     fac = ctx.facades
     n_samples = len(fac.z)
     rows, cols = [], []
     n_view = np.zeros(n_samples, dtype=np.int64)
-    evaluated = np.zeros(n_samples, dtype=bool)
+    evaluated = fac.party_wall.copy()
+    wanted = ~fac.party_wall if only is None else only & ~fac.party_wall
     for f in range(fac.n_facades):
         if time.monotonic() > deadline:
             break
         if progress:
             progress(f / fac.n_facades, f"evaluating facade {fac.facade_id[f]}")
-        smp = ctx.samples_of[f] if only is None else ctx.samples_of[f][only[ctx.samples_of[f]]]
+        smp = ctx.samples_of[f][wanted[ctx.samples_of[f]]]
         if not len(smp):
             continue
         cand = ctx.front_candidates(f, cand_xy)

@@ -246,10 +246,11 @@ def choose_stations(
     now = time.monotonic()
     evaluated_by = now + EVALUATION_SHARE * max(0.0, deadline - now)
     ev = _evaluate(ctx, cand, say, min(deadline, evaluated_by), timings)
-    if not ev.evaluated.all():
+    demanded = ~fac.party_wall
+    if not ev.evaluated[demanded].all():
         cut.append(
-            f"the evaluation ({int(ev.evaluated.sum())} of {len(fac.z)} samples; the plan "
-            "covers those)"
+            f"the evaluation ({int(ev.evaluated[demanded].sum())} of {int(demanded.sum())} "
+            "samples; the plan covers those)"
         )
     wb.evaluation = ev
     # the diagnosis before the optimiser: the optimiser takes a share of the time left, and
@@ -340,8 +341,8 @@ def choose_stations(
         parts=sol.details.get("parts", 0),
         registration_rounds=rounds,
         cut_short=cut,
-        samples_total=len(fac.z),
-        samples_evaluated=int(ev.evaluated.sum()),
+        samples_total=int((~fac.party_wall).sum()),
+        samples_evaluated=int((ev.evaluated & ~fac.party_wall).sum()),
     )
     if r.net is not None and len(r.net.stations) != sol.objective and st.computes_registration:
         messages.append(
