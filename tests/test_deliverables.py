@@ -4,6 +4,7 @@ that contradict the coordinates refused."""
 
 from __future__ import annotations
 
+import io
 import json
 import xml.etree.ElementTree as ET
 
@@ -15,6 +16,7 @@ import shapely
 from sites import run_cli as cli
 
 from planner.crs import to_wgs84
+from planner.pipeline.export import render
 from planner.siteio import default_site
 
 FAST = ["--grid-m", "4", "--sample-spacing-m", "4", "--sample-height-step-m", "4", "-q"]
@@ -129,9 +131,12 @@ def test_dxf_has_every_station_and_target_with_attributes(lonlat_plan):
         if ref.dxf.name == "STATION":
             assert ref.dxf.layer == "STATIONS"
             got_st[attribs["ID"]] = (ref.dxf.insert, attribs)
-        elif ref.dxf.name == "TARGET":
+        elif ref.dxf.name in ("TARGET-FLAT", "TARGET-SPHERE", "CONTROL"):
             assert ref.dxf.layer == "TARGETS"
             got_tg[attribs["ID"]] = (ref.dxf.insert, attribs)
+            assert ref.dxf.name == {"flat": "TARGET-FLAT", "sphere": "TARGET-SPHERE"}.get(
+                attribs["TYPE"], "CONTROL"
+            )
     assert set(got_st) == set(stations.index) and set(got_tg) == set(targets.index)
     for sid, (ins, attribs) in got_st.items():
         assert ins.x == pytest.approx(stations.at[sid, "x"], abs=0.001)  # m, real coordinates
@@ -147,6 +152,49 @@ def test_dxf_has_every_station_and_target_with_attributes(lonlat_plan):
     assert {"BUILDINGS", "STATIONS", "TARGETS", "LINKS", "VIEW-SECTORS", "PLAN-INFO"} <= layers
     info = " ".join(e.dxf.text for e in msp.query("TEXT"))
     assert "EPSG:32632" in info
+
+
+def _symbol(doc, name: str) -> tuple[str, int]:
+    """A block's outline: the kind of entity and its vertex count (a circle: 0)."""
+    (outline,) = [e for e in doc.blocks[name] if e.dxftype() in ("LWPOLYLINE", "CIRCLE")]
+    return outline.dxftype(), len(outline) if outline.dxftype() == "LWPOLYLINE" else 0
+
+
+@pytest.mark.parametrize("scale", [500, 200])
+def test_dxf_speaks_the_maps_symbols_at_the_drawing_scale(tmp_path, scale):
+    """The drawing's conventions: the maps' symbols (station ▲, flat target ■, sphere ●,
+    control ▼); the lettering 2.5 mm on paper at 1:scale; buildings labelled with id and
+    height; the header's extents around the drawing; the view sectors' layer off."""
+    from planner import plan
+    from planner.pipeline.requirements import PlanSettings
+
+    p = plan(settings=PlanSettings(drawing_scale=scale))
+    doc = ezdxf.read(io.StringIO(render(p)["plan.dxf"]))
+    msp = doc.modelspace()
+    assert _symbol(doc, "STATION") == ("LWPOLYLINE", 3)
+    assert _symbol(doc, "TARGET-FLAT") == ("LWPOLYLINE", 4)
+    assert _symbol(doc, "TARGET-SPHERE") == ("CIRCLE", 0)
+    up = [v[1] for v in doc.blocks["STATION"].query("LWPOLYLINE")[0].get_points("xy")]
+    down = [v[1] for v in doc.blocks["CONTROL"].query("LWPOLYLINE")[0].get_points("xy")]
+    assert up[0] == max(up) and down[0] == min(down)  # ▲ and ▼
+    m_per_mm = scale / 1000
+    for ref in msp.query("INSERT"):
+        assert ref.dxf.xscale == pytest.approx(m_per_mm)
+        shown = [a for a in ref.attribs if not a.is_invisible]
+        assert [a.dxf.tag for a in shown] == ["ID"]
+        assert shown[0].dxf.height == pytest.approx(2.5 * m_per_mm)  # m (an ATTRIB is in the world)
+    labels = {e.dxf.text: e for e in msp.query("TEXT[layer=='BUILDING-LABELS']")}
+    for b in p.site.buildings:
+        text = f"{b.id} {b.height_m:.1f} m"
+        assert text in labels
+        assert labels[text].dxf.height == pytest.approx(2.5 * m_per_mm)  # m
+    lo, hi = doc.header["$EXTMIN"], doc.header["$EXTMAX"]
+    xy = p.stations[["x", "y"]].to_numpy()
+    assert lo[0] <= xy[:, 0].min() and hi[0] >= xy[:, 0].max()
+    assert lo[1] <= xy[:, 1].min() and hi[1] >= xy[:, 1].max()
+    assert hi[0] - lo[0] < 1000  # m: the extents are the drawing's, not the 1e20 default
+    assert doc.layers.get("VIEW-SECTORS").is_off()
+    assert not doc.layers.get("STATIONS").is_off()
 
 
 def test_stakeout_file_lists_stations_and_targets(lonlat_plan):

@@ -22,24 +22,82 @@ def test_the_plans_own_stations_give_the_plans_coverage(default_plan):
     p = default_plan
     q = evaluate_stations(p, _xy(p))
     assert len(q.stations) == len(p.stations)
-    assert (q.stations["purpose"] == "hand").all()
+    # nothing moved: every station keeps its id and why it is there
+    assert list(q.stations["station_id"]) == list(p.stations["station_id"])
+    assert list(q.stations["purpose"]) == list(p.stations["purpose"])
     np.testing.assert_allclose(_xy(q), _xy(p), atol=1e-6)  # m
     assert (q.coverage["meets"] == p.coverage["meets"]).all()
+    assert (q.coverage["station_id"] == p.coverage["station_id"]).all()
     for c in ("m_x_mm", "m_y_mm", "m_z_mm"):
         np.testing.assert_allclose(q.coverage[c], p.coverage[c], atol=0.01, equal_nan=True)  # mm
-    assert "placed by hand" in q.summary()
+    assert "Stations edited by hand" in q.summary()
+
+
+def test_a_plans_station_ids_follow_the_visiting_order(default_plan):
+    """S01 is the first set-up, and the route, the stations, the coverage, the targets and
+    the links name the same stations."""
+    p = default_plan
+    n = len(p.stations)
+    assert list(p.route.table["station_id"]) == [f"S{k:02d}" for k in range(1, n + 1)]
+    ids = set(p.stations["station_id"])
+    assert set(p.coverage["station_id"]) - {""} <= ids
+    assert {s for seen in p.targets["station_ids"] for s in seen} <= ids
+    assert set(p.links["station_a"]) | set(p.links["station_b"]) <= ids | {"control"}
+    named = p.coverage["reason"].str.findall(r"\bS\d\d\b").explode().dropna()
+    assert set(named) <= ids  # the reasons name stations by the same ids
 
 
 def test_deleting_a_station_loses_the_samples_only_it_meets(default_plan):
     p = default_plan
     # the station meeting most samples: without it some samples must go unmet
     k = int(p.stations["samples_met"].idxmax())
+    gone = p.stations.loc[k, "station_id"]
     q = evaluate_stations(p, np.delete(_xy(p), k, axis=0))
-    # the stations kept by hand (a linking station may be added to tie them again)
-    assert (q.stations["purpose"] == "hand").sum() == len(p.stations) - 1
+    # the others keep their ids and purposes (a linking station may be added to tie them
+    # again: it takes a number never given)
+    before = p.stations.drop(index=k).set_index("station_id")["purpose"]
+    after = q.stations.set_index("station_id")["purpose"]
+    assert after.loc[before.index].tolist() == before.tolist()
+    assert gone not in set(q.stations["station_id"])
+    new = sorted(set(q.stations["station_id"]) - set(before.index))
+    assert all(int(s[1:]) > len(p.stations) for s in new)
     assert 0 < len(q.unmet) < len(p.scanned)
     assert (q.unmet["reason"] != "").all()
-    assert q.summary().count("placed by hand") == 2  # station line and message
+
+
+def test_ids_stay_through_edits_and_a_deleted_id_is_not_given_again(default_plan):
+    p = default_plan
+    xy, ids = _xy(p).copy(), list(p.stations["station_id"])
+    n = len(ids)
+    k3, k5 = ids.index("S03"), ids.index("S05")
+    xy[k5] += [1.0, 0.5]  # moved: keeps its id, placed by hand now
+    keep = [k for k in range(n) if k != k3]  # S03 deleted
+    free = xy[k3] + [-4.0, -6.0]  # beside the deleted S03
+    q = evaluate_stations(p, np.vstack([xy[keep], free]), [ids[k] for k in keep] + [None])
+    st = q.stations.set_index("station_id")
+    assert "S03" not in st.index
+    added = f"S{n + 1:02d}"
+    assert st.loc[added, "purpose"] == "hand"
+    assert st.loc[added, ["x", "y"]].to_numpy(float) == pytest.approx(free, abs=1e-6)  # m
+    assert st.loc["S05", "purpose"] == "hand"
+    assert st.loc["S05", ["x", "y"]].to_numpy(float) == pytest.approx(xy[k5], abs=1e-6)  # m
+    unmoved = [s for s in ids if s not in ("S03", "S05")]
+    assert (
+        st.loc[unmoved, "purpose"].tolist()
+        == p.stations.set_index("station_id").loc[unmoved, "purpose"].tolist()
+    )
+    # one more station: the next number, not the deleted S03
+    more = free + np.array([6.0, -2.0])
+    r = evaluate_stations(q, np.vstack([_xy(q), more]), [*q.stations["station_id"], None])
+    assert f"S{n + 2:02d}" in set(r.stations["station_id"])
+    assert "S03" not in set(r.stations["station_id"])
+
+
+def test_two_stations_on_one_spot_are_refused_naming_them(default_plan):
+    p = default_plan
+    xy, ids = _xy(p), list(p.stations["station_id"])
+    with pytest.raises(InputError, match=rf"the new station would stand 0\.20 m from {ids[0]}"):
+        evaluate_stations(p, np.vstack([xy, xy[0] + [0.2, 0.0]]), [*ids, None])
 
 
 def test_moving_a_station_changes_its_coverage(default_plan):
@@ -48,9 +106,11 @@ def test_moving_a_station_changes_its_coverage(default_plan):
     k = int(p.stations["samples_met"].idxmax())
     moved = xy.copy()
     moved[k] += [4.0, 0.0]
-    q = evaluate_stations(p, moved)
-    assert q.stations.loc[k, "x"] == pytest.approx(xy[k, 0] + 4.0, abs=1e-6)  # m
     sid = p.stations.loc[k, "station_id"]
+    q = evaluate_stations(p, moved, list(p.stations["station_id"]))
+    row = q.stations.set_index("station_id").loc[sid]
+    assert row["x"] == pytest.approx(xy[k, 0] + 4.0, abs=1e-6)  # m
+    assert row["purpose"] == "hand"
     before = p.coverage[p.coverage["station_id"] == sid]
     after = q.coverage.set_index("sample_id").loc[before["sample_id"]]
     # the samples it served are now seen from 4 m further along: their errors change
@@ -72,6 +132,15 @@ def test_reoptimise_keeps_the_locked_station_and_covers_the_rest(default_plan):
     assert hand[["x", "y"]].to_numpy()[0] == pytest.approx(pin, abs=1e-6)  # m
     assert q.meets_all
     assert "locked by hand" in q.summary()
+    # a station locked where it stands keeps its id; the others are numbered in visiting
+    # order around it
+    sid = p.stations["station_id"].iloc[0]
+    r = reoptimise(p, _xy(p)[:1])
+    locked = r.stations[r.stations["station_id"] == sid]
+    assert locked[["x", "y"]].to_numpy()[0] == pytest.approx(_xy(p)[0], abs=1e-6)  # m
+    others = [s for s in r.route.table["station_id"] if s != sid]
+    n = len(r.stations)
+    assert others == [f"S{k:02d}" for k in range(1, n + 1) if f"S{k:02d}" != sid]
 
 
 def test_a_plan_without_its_workbench_says_so(default_plan):
@@ -162,3 +231,40 @@ def test_the_plan_says_which_registration_processing_its_promise_assumes(default
     assert "one adjustment" in line and "pair by pair" in line
     text = str(ReportContent(default_plan).assumptions().data)
     assert "pair by pair along the links" in text and "20 mm from their edges" in text
+
+
+def test_one_id_everywhere_in_the_files_and_targets_numbered_as_they_are_set_up(default_plan):
+    """The stations' ids are the same in every file a crew or the office reads, listed in
+    order; targets are T01, T02 … in the order they are first set up."""
+    import io
+    import re
+
+    import ezdxf
+    import pandas as pd
+
+    from planner.pipeline.export import render
+
+    p = default_plan
+    files = render(p)
+    n = len(p.stations)
+    ids = [f"S{k:02d}" for k in range(1, n + 1)]
+    assert pd.read_csv(io.StringIO(files["stations.csv"]))["station_id"].tolist() == ids
+    assert pd.read_csv(io.StringIO(files["route.csv"]))["station_id"].tolist() == ids
+    stake = pd.read_csv(io.StringIO(files["stakeout.csv"]))
+    assert stake.loc[stake["code"] == "STN", "point_id"].tolist() == ids
+    doc = ezdxf.read(io.StringIO(files["plan.dxf"]))
+    drawn = [
+        a.dxf.text
+        for ref in doc.modelspace().query("INSERT[name=='STATION']")
+        for a in ref.attribs
+        if a.dxf.tag == "ID"
+    ]
+    assert sorted(drawn) == ids
+    assert set(ids) <= set(re.findall(r"<name>(S\d\d)</name>", files["plan.kml"]))
+    set_up = " ".join(
+        pd.read_csv(io.StringIO(files["route.csv"]), keep_default_na=False)["targets_to_set"]
+    ).split()
+    flat = [t for t in set_up if t.startswith("T")]
+    assert flat == [f"T{k:02d}" for k in range(1, len(flat) + 1)]
+    targets = pd.read_csv(io.StringIO(files["targets.csv"]))
+    assert targets["target_id"].tolist()[: len(flat)] == flat

@@ -24,6 +24,7 @@ from shapely.geometry import box
 
 from planner.app.maps import (
     COLOURS,
+    MARKERS,
     draw_targets,
     place_labels,
     plot_plan_map,
@@ -257,11 +258,20 @@ def _station_map(p: Plan, sid: str, ax, sector: tuple[float, float, float]) -> N
         & (p.stations["x"].sub(x).abs() <= half)
         & (p.stations["y"].sub(y).abs() <= half)
     ]
-    ax.plot(others["x"], others["y"], "^", color="0.55", ms=7, mec="k", ls="none", zorder=5)
+    ax.plot(
+        others["x"],
+        others["y"],
+        MARKERS["station"],
+        color="0.55",
+        ms=7,
+        mec="k",
+        ls="none",
+        zorder=5,
+    )
     labels += [
         (o.x, o.y, o.station_id, {"fontsize": 7, "color": "0.3"}) for o in others.itertuples()
     ]
-    ax.plot(x, y, "^", color=COLOURS["cover"], ms=11, mec="k", zorder=6, label=sid)
+    ax.plot(x, y, MARKERS["station"], color=COLOURS["cover"], ms=11, mec="k", zorder=6, label=sid)
     labels.insert(0, (x, y, sid, {"fontsize": 10, "weight": "bold"}))
     ax.set_xlim(x - half, x + half)
     ax.set_ylim(y - half, y + half)

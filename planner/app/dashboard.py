@@ -741,11 +741,12 @@ class StationPlanner:
         self._cancel.set()
         self.status.value = "<i>cancelling…</i>"
 
-    def evaluate_by_hand(self, xy) -> None:
-        """The plan with the stations at ``xy`` (the what-if map's edit), judged at once."""
+    def evaluate_by_hand(self, xy, ids=None) -> None:
+        """The plan with the stations at ``xy`` (the what-if map's edit; ``ids`` the station
+        each position is, None for one added), judged at once."""
         from planner.pipeline.whatif import evaluate_stations
 
-        self._by_hand(lambda p: evaluate_stations(p, xy))
+        self._by_hand(lambda p: evaluate_stations(p, xy, ids))
 
     def edit_targets_by_hand(self, **edits) -> None:
         """The plan with its targets ruled out, moved or added (the what-if map's edit),

@@ -22,7 +22,7 @@ from shapely.geometry.base import BaseGeometry
 from planner.crs import name_of as crs_name
 from planner.pipeline.result import Plan
 from planner.pipeline.route import view_sectors
-from planner.pipeline.schema import STATION_PURPOSES
+from planner.pipeline.schema import STATION_PURPOSES, SYMBOLS
 from planner.site import Site
 
 __all__ = [
@@ -241,7 +241,7 @@ def plot_plan_map(
             ax.plot(
                 s["x"],
                 s["y"],
-                "^",
+                MARKERS["station"],
                 color=COLOURS[purpose],
                 ms=9,
                 mec="k",
@@ -281,7 +281,12 @@ def plot_plan_map(
 #: A plan map with more labels than this leaves out the targets' ids.
 MAX_MAP_LABELS = 400
 
-_TARGET_MARKERS = {"flat": "s", "sphere": "o", "control": "v"}
+#: Matplotlib's marker of each symbol (:data:`~planner.pipeline.schema.SYMBOLS`).
+MARKERS = {
+    kind: {"triangle-up": "^", "square": "s", "circle": "o", "triangle-down": "v"}[shape]
+    for kind, shape in SYMBOLS.items()
+}
+_TARGET_MARKERS = {k: MARKERS[k] for k in ("flat", "sphere", "control")}
 
 
 def draw_targets(
@@ -479,7 +484,15 @@ def _draw_links(p: Plan, ax: Axes, labels: list) -> None:
     tg = p.targets.set_index("target_id")
     ctl = p.targets[p.targets["type"] == "control"]
     if len(ctl):
-        ax.scatter(ctl["x"], ctl["y"], marker="v", s=40, c="k", zorder=4, label="control point")
+        ax.scatter(
+            ctl["x"],
+            ctl["y"],
+            marker=MARKERS["control"],
+            s=40,
+            c="k",
+            zorder=4,
+            label="control point",
+        )
         for r in ctl.itertuples():
             labels.append((r.x, r.y, r.target_id, {"fontsize": 6}))
     if not len(p.links):

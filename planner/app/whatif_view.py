@@ -23,6 +23,7 @@ import shapely
 from planner.app.maps import COLOURS
 from planner.errors import PlannerError
 from planner.pipeline.result import Plan
+from planner.pipeline.schema import SYMBOLS
 
 __all__ = ["WhatIfMap"]
 
@@ -55,13 +56,14 @@ def _rings(geoms) -> tuple[np.ndarray, np.ndarray]:
 class WhatIfMap:
     """Stations on the site, editable; facade samples green (met) or red (unmet).
 
-    ``evaluate(xy)``, ``edit_targets(remove=, move=, add_xy=)`` and ``reoptimise(locked_xy)``
+    ``evaluate(xy, ids)``, ``edit_targets(remove=, move=, add_xy=)`` and
+    ``reoptimise(locked_xy)``
     are given by the dashboard (they run the pipeline); this class only holds the map, the
     edit modes and the lock marks."""
 
     def __init__(
         self,
-        evaluate: Callable[[np.ndarray], None],
+        evaluate: Callable[[np.ndarray, list[str | None]], None],
         reoptimise: Callable[[np.ndarray], None],
         edit_targets: Callable[..., None],
     ) -> None:
@@ -112,7 +114,7 @@ class WhatIfMap:
             names=[],
             display_names=True,
             scales=scales,
-            marker="triangle-up",
+            marker=SYMBOLS["station"],
             colors=[COLOURS["hand"]],
             stroke="black",
             default_size=140,
@@ -152,6 +154,7 @@ class WhatIfMap:
         self.status.add_class("planner-whatif-status")
         self.locked: list[bool] = []
         self._xy = np.empty((0, 2))
+        self._ids: list[str | None] = []  # the station each position is (None: added)
         self._target_ids: list[str] = []
         self._target_xy = np.empty((0, 2))
         self._quiet = False
@@ -202,6 +205,7 @@ class WhatIfMap:
         self._target_xy = p.targets[["x", "y"]].to_numpy(dtype=float).reshape(-1, 2)
         xy = p.stations[["x", "y"]].to_numpy(dtype=float)
         self._xy = xy
+        self._ids = [str(s) for s in p.stations["station_id"]]
         self.locked = [old.get(tuple(np.round(q, 3)), False) for q in xy]
         self._quiet = True
         with self.stations.hold_sync():
@@ -244,7 +248,7 @@ class WhatIfMap:
         return np.column_stack([np.asarray(self.stations.x), np.asarray(self.stations.y)])
 
     def _dragged(self, _event) -> None:
-        self._edit(self._current(), "moved")
+        self._edit(self._current(), self._ids, "moved")
 
     def _maybe_added(self) -> None:
         if self._quiet or self.mode.value != "add":
@@ -252,7 +256,7 @@ class WhatIfMap:
         xy = self._current()
         if len(xy) > len(self._xy):
             self.locked += [False] * (len(xy) - len(self._xy))
-            self._edit(xy, "added")
+            self._edit(xy, [*self._ids, *[None] * (len(xy) - len(self._xy))], "added")
 
     def _clicked(self, event) -> None:
         k = int(event.get("data", {}).get("index", -1))
@@ -261,7 +265,9 @@ class WhatIfMap:
         if self.mode.value == "delete":
             keep = np.arange(len(self._xy)) != k
             self.locked = [lk for lk, kp in zip(self.locked, keep, strict=True) if kp]
-            self._edit(self._xy[keep], "deleted")
+            self._edit(
+                self._xy[keep], [i for i, kp in zip(self._ids, keep, strict=True) if kp], "deleted"
+            )
         elif self.mode.value == "lock":
             self.locked[k] = not self.locked[k]
             ids = [n.removesuffix(" 🔒") for n in self.stations.names]
@@ -297,13 +303,13 @@ class WhatIfMap:
             )
             self._draw_targets()  # back where they were
 
-    def _edit(self, xy: np.ndarray, what: str) -> None:
-        before, locks = self._xy, list(self.locked)
-        self._xy = xy  # the locks are aligned with the edited positions
+    def _edit(self, xy: np.ndarray, ids: list[str | None], what: str) -> None:
+        before, locks, names = self._xy, list(self.locked), self._ids
+        self._xy, self._ids = xy, list(ids)  # the locks are aligned with the edited positions
         try:
-            self._evaluate(xy)
+            self._evaluate(xy, self._ids)
         except PlannerError as exc:
-            self._xy, self.locked = before, locks[: len(before)]
+            self._xy, self.locked, self._ids = before, locks[: len(before)], names
             self.status.value = (
                 f"<span class='planner-error' style='color:#922'>Not {what}: "
                 f"{html.escape(str(exc))}</span>"

@@ -18,13 +18,21 @@ import numpy as np
 
 from planner.pipeline.result import Plan
 from planner.pipeline.route import view_sectors
-from planner.pipeline.schema import STAKEOUT_COLUMNS, geojson, geometry_json, to_csv
+from planner.pipeline.schema import (
+    STAKEOUT_COLUMNS,
+    SYMBOLS,
+    geojson,
+    geometry_json,
+    in_id_order,
+    to_csv,
+)
 
 __all__ = ["DXF_LAYERS", "dxf_text", "kml_text", "stakeout_csv"]
 
-#: DXF layer of each GeoJSON layer, with its AutoCAD colour index.
+#: DXF layer of each GeoJSON layer, with its AutoCAD colour index (and the label layers).
 DXF_LAYERS = {
     "building": ("BUILDINGS", 7),
+    "building-label": ("BUILDING-LABELS", 7),
     "obstacle": ("OBSTACLES", 3),
     "no-go": ("NO-GO", 1),
     "passage": ("PASSAGES", 2),
@@ -38,6 +46,16 @@ DXF_LAYERS = {
     "route": ("ROUTE", 30),
     "info": ("PLAN-INFO", 7),
 }
+#: The attributes of a target's block (the ID shown, the others hidden).
+TARGET_TAGS = ("ID", "TYPE", "SIZE_MM", "FACADE", "FACING_DEG")
+#: Layers off when the drawing opens (there to switch on: they swamp a plan on screen).
+DXF_LAYERS_OFF = ("VIEW-SECTORS",)
+#: Text height and symbol size on paper [mm] at the drawing scale: a station's ID reads as
+#: 2.5 mm lettering (ISO 3098), its symbol 3 mm across.
+TEXT_MM = 2.5
+SYMBOL_MM = 3.0
+#: Linetype of a layer, where not continuous.
+DXF_LINETYPES = {"ROUTE": "DASHED", "LINKS": "DASHDOT", "PASSAGES": "DASHED"}
 
 
 def _features(p: Plan) -> list[dict]:
@@ -66,36 +84,66 @@ def _sector_points(x, y, start, end, radius, step_deg=5.0) -> list[tuple[float, 
     return [(x, y), *arc, (x, y)]
 
 
+def _symbol(block: Any, shape: str, size: float) -> None:
+    """Draw a map symbol (:data:`~planner.pipeline.schema.SYMBOLS`) ``size`` across,
+    centred on the block's origin, with a point at the exact position."""
+    h = size / 2
+    if shape == "circle":
+        block.add_circle((0, 0), h)
+    elif shape == "square":
+        block.add_lwpolyline([(-h, -h), (h, -h), (h, h), (-h, h)], close=True)
+    else:  # an equilateral triangle, point up or down
+        k = 1.0 if shape == "triangle-up" else -1.0
+        block.add_lwpolyline(
+            [(0, k * h), (-0.866 * h, -k * h / 2), (0.866 * h, -k * h / 2)], close=True
+        )
+    block.add_point((0, 0))
+
+
 def dxf_text(p: Plan) -> str:
-    """The plan as a DXF drawing (R2010, metres) in the site's coordinates: a layer per kind
-    (:data:`DXF_LAYERS`); stations and targets as blocks with attributes (station: ID,
-    HEIGHT, PURPOSE; target: ID, TYPE, SIZE_MM, FACADE, FACING_DEG); links, unmet samples,
-    view sectors; the CRS, scanner and requirement on PLAN-INFO."""
+    """The plan as a DXF drawing (R2010, metres) in the site's coordinates, for the drawing
+    scale 1:``p.settings.drawing_scale``: a layer per kind (:data:`DXF_LAYERS`, view sectors
+    off); stations and targets as blocks in the maps' symbols (station ▲, flat target ■,
+    sphere ●, control ▼) with attributes, the ID shown at 2.5 mm on paper, the rest (station:
+    HEIGHT, PURPOSE; target: TYPE, SIZE_MM, FACADE, FACING_DEG) carried but hidden;
+    buildings labelled with their id and height; links, unmet samples, view sectors, route;
+    the CRS, scanner and requirement on PLAN-INFO; the header's extents set (zoom extents)."""
     import ezdxf  # heavy: only when a DXF is written
+    from ezdxf import appsettings, bbox, zoom
     from ezdxf.enums import TextEntityAlignment
 
     with _same_bytes(ezdxf):  # ezdxf stamps its metadata when the document is made
         doc = ezdxf.new("R2010", setup=True)
     doc.units = ezdxf.units.M
     for name, colour in DXF_LAYERS.values():
-        doc.layers.add(name, color=colour)
-    station = doc.blocks.new("STATION")
-    station.add_circle((0, 0), 0.4)
-    station.add_line((-0.6, 0), (0.6, 0))
-    station.add_line((0, -0.6), (0, 0.6))
-    for n, tag in enumerate(("ID", "HEIGHT", "PURPOSE")):
-        station.add_attdef(tag, (0.6, 0.2 - 0.6 * n), dxfattribs={"height": 0.5})
-    target = doc.blocks.new("TARGET")
-    target.add_lwpolyline([(0, 0.35), (-0.3, -0.2), (0.3, -0.2)], close=True)
-    for n, tag in enumerate(("ID", "TYPE", "SIZE_MM", "FACADE", "FACING_DEG")):
-        target.add_attdef(tag, (0.4, 0.1 - 0.4 * n), dxfattribs={"height": 0.3})
+        layer = doc.layers.add(name, color=colour, linetype=DXF_LINETYPES.get(name, "Continuous"))
+        if name in DXF_LAYERS_OFF:
+            layer.off()
+    paper = p.settings.drawing_scale / 1000.0  # metres on the ground per mm on paper
+    doc.header["$LTSCALE"] = paper
+    for name, shape, tags in (
+        ("STATION", SYMBOLS["station"], ("ID", "HEIGHT", "PURPOSE")),
+        ("TARGET-FLAT", SYMBOLS["flat"], TARGET_TAGS),
+        ("TARGET-SPHERE", SYMBOLS["sphere"], TARGET_TAGS),
+        ("CONTROL", SYMBOLS["control"], TARGET_TAGS),
+    ):
+        block = doc.blocks.new(name)  # drawn in paper millimetres, inserted at the scale
+        size = SYMBOL_MM if name in ("STATION", "CONTROL") else 0.7 * SYMBOL_MM
+        _symbol(block, shape, size)
+        for n, tag in enumerate(tags):
+            block.add_attdef(
+                tag,
+                (0.6 * SYMBOL_MM, 0.2 * TEXT_MM - 1.2 * TEXT_MM * n),
+                dxfattribs={"height": TEXT_MM, "flags": 0 if tag == "ID" else 1},
+            )
     msp = doc.modelspace()
+    scaled = {"xscale": paper, "yscale": paper, "zscale": paper}
     for f in _features(p):
         props, geom = f["properties"], f["geometry"]
         layer = DXF_LAYERS[props["layer"]][0]
         if props["layer"] == "station":
             x, y = geom["coordinates"][:2]
-            ref = msp.add_blockref("STATION", (x, y, 0.0), dxfattribs={"layer": layer})
+            ref = msp.add_blockref("STATION", (x, y, 0.0), dxfattribs={"layer": layer, **scaled})
             ref.add_auto_attribs(
                 {
                     "ID": props["station_id"],
@@ -105,7 +153,8 @@ def dxf_text(p: Plan) -> str:
             )
         elif props["layer"] == "target":
             x, y, z = geom["coordinates"]
-            ref = msp.add_blockref("TARGET", (x, y, z), dxfattribs={"layer": layer})
+            name = {"flat": "TARGET-FLAT", "control": "CONTROL"}.get(props["type"], "TARGET-SPHERE")
+            ref = msp.add_blockref(name, (x, y, z), dxfattribs={"layer": layer, **scaled})
             ref.add_auto_attribs(
                 {
                     "ID": props["target_id"],
@@ -125,6 +174,18 @@ def dxf_text(p: Plan) -> str:
                 msp.add_lwpolyline(
                     [tuple(c[:2]) for c in ring], close=closed, dxfattribs={"layer": layer}
                 )
+    for b in p.site.buildings:
+        at = b.footprint.representative_point()
+        height = (
+            "no height"
+            if b.height_m is None or not math.isfinite(b.height_m)
+            else (f"{b.height_m:.1f} m")
+        )
+        msp.add_text(
+            f"{b.id} {height}",
+            height=TEXT_MM * paper,
+            dxfattribs={"layer": "BUILDING-LABELS"},
+        ).set_placement((at.x, at.y), align=TextEntityAlignment.MIDDLE_CENTER)
     if p.site.boundary is not None:
         for ring in _rings(geometry_json(p.site.boundary)):
             msp.add_lwpolyline([tuple(c[:2]) for c in ring], dxfattribs={"layer": "BOUNDARY"})
@@ -132,10 +193,14 @@ def dxf_text(p: Plan) -> str:
     for sid, (start, end, radius) in view_sectors(p.stations, p.coverage, p.targets).items():
         pts = _sector_points(st.at[sid, "x"], st.at[sid, "y"], start, end, radius)
         msp.add_lwpolyline(pts, close=True, dxfattribs={"layer": "VIEW-SECTORS"})
-    x0, y0 = _lower_left(p)
-    msp.add_text(_info(p), height=1.0, dxfattribs={"layer": "PLAN-INFO"}).set_placement(
-        (x0, y0 - 3.0), align=TextEntityAlignment.LEFT
+    drawn = bbox.extents(msp, fast=True)  # the plan's information below all of it
+    x0, y0 = (drawn.extmin.x, drawn.extmin.y) if drawn.has_data else _lower_left(p)
+    msp.add_text(_info(p), height=TEXT_MM * paper, dxfattribs={"layer": "PLAN-INFO"}).set_placement(
+        (x0, y0 - 2.0 * TEXT_MM * paper), align=TextEntityAlignment.LEFT
     )
+    box = appsettings.update_extents(doc)  # the header's extents: zoom extents works
+    if box.has_data:
+        zoom.center(msp, box.center, box.size)  # and the drawing opens on the plan
     stream = io.StringIO()
     with _same_bytes(ezdxf):  # … and its header dates when it is written
         doc.write(stream)
@@ -267,7 +332,7 @@ def stakeout_csv(p: Plan) -> str:
             "height": 0.0,
             "code": "TRV" if r.purpose == "traverse" else "STN",
         }
-        for r in p.stations.itertuples()
+        for r in in_id_order(p.stations, "station_id").itertuples()
     ]
     rows += [
         {
@@ -279,7 +344,7 @@ def stakeout_csv(p: Plan) -> str:
                 r.type, f"TGT-{str(r.type).upper()}"
             ),
         }
-        for r in p.targets.itertuples()
+        for r in in_id_order(p.targets, "target_id").itertuples()
     ]
     df = pd.DataFrame(rows, columns=STAKEOUT_COLUMNS).round(
         {"easting": 3, "northing": 3, "height": 3}

@@ -22,6 +22,7 @@ from planner.pipeline.schema import (
     TARGET_COLUMNS,
     ZONE_COLUMNS,
     geojson,
+    in_id_order,
     to_csv,
 )
 from planner.sitecheck import notes_table
@@ -37,11 +38,11 @@ __all__ = [
 
 
 def stations_csv(p: Plan) -> str:
-    return to_csv(p.stations[STATION_COLUMNS])
+    return to_csv(in_id_order(p.stations, "station_id")[STATION_COLUMNS])
 
 
 def targets_csv(p: Plan) -> str:
-    t = p.targets.copy()
+    t = in_id_order(p.targets, "target_id").copy()
     t["station_ids"] = t["station_ids"].map(lambda ids: ";".join(ids))
     return to_csv(t[TARGET_COLUMNS])
 

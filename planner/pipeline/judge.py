@@ -10,6 +10,7 @@ from.
 from __future__ import annotations
 
 import math
+import re
 import time
 from dataclasses import dataclass, field, replace
 
@@ -35,13 +36,15 @@ from planner.pipeline.optimise import solve_cover
 from planner.pipeline.registration import Network, SightCache, TargetCandidates, build_network
 from planner.pipeline.requirements import PlanSettings, Requirements
 from planner.pipeline.result import Plan, SolverReport
-from planner.pipeline.route import field_route
+from planner.pipeline.route import FieldRoute, field_route
 from planner.pipeline.tables import (
     class_family,
     coverage_table,
     enclosed_messages,
     facade_summary,
     registration_messages,
+    rename_stations,
+    target_numbers,
     targets_and_links,
     unmet_messages,
     untied_places,
@@ -63,6 +66,7 @@ __all__ = [
     "estimate_registration",
     "free_positions",
     "judge",
+    "name_stations",
     "prune",
     "round_network",
     "stations_for",
@@ -93,6 +97,9 @@ class Workbench:
     setup_s: float
     evaluation: CandidateEvaluation | None = None  # the last full evaluation of the grid
     diagnosis: Diagnosis | None = None  # what no candidate of that evaluation meets, and why
+    #: the highest station number given so far: a station added by hand takes the next one
+    #: (a deleted station's id is not given again)
+    last_station: int = 0
 
     @property
     def pool(self) -> np.ndarray:
@@ -165,6 +172,56 @@ def free_positions(wb: Workbench, xy: np.ndarray, what: str) -> np.ndarray:
     return xy
 
 
+#: A scanner station's id: S01, S02 … (a number beyond 99 takes more digits).
+STATION_ID = "S{:02d}"
+
+
+def _station_number(station_id: str) -> int | None:
+    m = re.fullmatch(r"S(\d+)", station_id)
+    return int(m.group(1)) if m else None
+
+
+def name_stations(n: int, visit: list[int], kept: dict[int, str], after: int | None) -> list[str]:
+    """The ids of ``n`` stations (positions 0 … n-1) visited in the order ``visit``: a
+    station in ``kept`` (position → id) keeps its id; the others are numbered in visiting
+    order — S01 the first set-up, numbers a kept id holds skipped — or, given ``after`` (an
+    edit by hand: no id is given twice), from ``after`` + 1 on.
+
+    >>> name_stations(3, [2, 0, 1], {}, None)
+    ['S02', 'S03', 'S01']
+    >>> name_stations(3, [2, 0, 1], {1: "S01"}, None)
+    ['S03', 'S01', 'S02']
+    >>> name_stations(3, [0, 1, 2], {0: "S04", 2: "S01"}, after=7)
+    ['S04', 'S08', 'S01']
+    """
+    taken = {_station_number(s) for s in kept.values()}
+    ids: list[str | None] = [kept.get(k) for k in range(n)]
+    number = after or 0
+    for k in visit:
+        if ids[k] is None:
+            number += 1
+            while after is None and number in taken:
+                number += 1
+            ids[k] = STATION_ID.format(number)
+    return [str(i) for i in ids]
+
+
+def _targets_renamed(
+    mapping: dict[str, str], targets: pd.DataFrame, links: pd.DataFrame, route: FieldRoute
+) -> tuple[pd.DataFrame, pd.DataFrame, FieldRoute]:
+    """The targets, links and route with the targets renamed (``mapping``: old id → new)."""
+
+    def ids(text: str, sep: str) -> str:
+        return sep.join(mapping.get(t, t) for t in text.split(sep) if t)
+
+    targets = targets.assign(target_id=targets["target_id"].map(lambda t: mapping.get(t, t)))
+    links = links.assign(target_ids=links["target_ids"].astype(str).map(lambda t: ids(t, ";")))
+    table = route.table.assign(
+        targets_to_set=route.table["targets_to_set"].map(lambda t: ids(t, " "))
+    )
+    return targets, links, replace(route, table=table)
+
+
 def assemble(
     wb: Workbench,
     r: Round,
@@ -176,18 +233,25 @@ def assemble(
     progress: Progress | None = None,
     hand: np.ndarray | None = None,
     best_effort: np.ndarray | None = None,
+    kept: dict[int, tuple[str, str]] | None = None,
+    edited: bool = False,
 ) -> Plan:
     """The plan of the stations of round ``r`` (pool indices; those in ``hand`` placed by
     hand, those in ``best_effort`` for samples no position meets): coverage, targets, links,
-    route, messages."""
+    route, messages.
+
+    Station ids follow the visiting order (:func:`name_stations`); a station in ``kept``
+    (pool index → its id and purpose) keeps both, and where the plan is ``edited`` by hand
+    a new station takes the next number never given (:attr:`Workbench.last_station`)."""
     say = progress or (lambda _f, _m: None)
     ctx, st, ev, cand = wb.ctx, wb.settings, wb.evaluation, wb.pool
     net, assignment = r.net, r.judged.assignment
+    kept = kept or {}
     say(0.93, "coverage of the chosen stations")
     t = time.perf_counter()
     station_idx = net.stations if net is not None else np.asarray(r.cover, dtype=np.int64)
     station_xy = cand[station_idx] if len(station_idx) else np.empty((0, 2))
-    ids = [f"S{i + 1:02d}" for i in range(len(station_idx))]
+    ids = [f"S{i + 1:02d}" for i in range(len(station_idx))]  # until the order is known
     family = class_family(wb.req, wb.zones)
     grid = cand[: wb.n_grid]
     coverage = coverage_table(ctx, ev, wb.diagnosis, assignment, ids, net, wb.zone_ids, family)
@@ -201,6 +265,9 @@ def assemble(
         ["hand", "best-effort", "cover", "registration"],
         "link",
     )
+    for k, i in enumerate(station_idx.tolist()):
+        if i in kept and not np.isin(i, hand if hand is not None else []):
+            purpose[k] = kept[i][1]
     stations = pd.DataFrame(
         {
             "station_id": ids,
@@ -221,6 +288,26 @@ def assemble(
     say(0.97, "visiting order and field time")
     t = time.perf_counter()
     route = field_route(wb.site, wb.scanner, st, stations, targets, coverage, links)
+    at = {sid: k for k, sid in enumerate(ids)}
+    visit = [at[sid] for sid in route.table["station_id"] if sid in at]
+    names = name_stations(
+        len(ids),
+        visit,
+        {k: kept[i][0] for k, i in enumerate(station_idx.tolist()) if i in kept},
+        wb.last_station if edited else None,
+    )
+    mapping = dict(zip(ids, names, strict=True))
+    stations, coverage, targets, links = rename_stations(
+        mapping, stations, coverage, targets, links
+    )
+    route = route.renamed(mapping)
+    ids = names
+    renumbered = target_numbers(
+        targets, {sid: n for n, sid in enumerate(route.table["station_id"])}
+    )
+    targets, links, route = _targets_renamed(renumbered, targets, links, route)
+    numbers = [n for n in map(_station_number, ids) if n is not None]
+    wb.last_station = max([wb.last_station, *numbers]) if edited else max([0, *numbers])
     timings["route"] = time.perf_counter() - t
     if net is not None:
         messages.append(f"Registration: {net.message}.")

@@ -221,11 +221,13 @@ def choose_stations(
     progress: Progress | None = None,
     *,
     locked: np.ndarray | None = None,
+    locked_ids: dict[tuple[float, float], str] | None = None,
     deadline: float | None = None,
     t0: float | None = None,
 ) -> Plan:
-    """The fewest stations (with ``locked`` positions kept) and their registration network,
-    for what ``wb`` holds; the plan's time budget runs from ``deadline``."""
+    """The fewest stations (with ``locked`` positions kept, those in ``locked_ids`` under
+    their ids) and their registration network, for what ``wb`` holds; the plan's time budget
+    runs from ``deadline``."""
     t0 = time.perf_counter() if t0 is None else t0
     ctx, st = wb.ctx, wb.settings
     fac = wb.facades
@@ -351,8 +353,22 @@ def choose_stations(
             "adding stations and choosing again)."
         )
     hand = np.setdiff1d(forced, best_effort)
+    kept = {
+        int(i): (sid, "hand")
+        for q, sid in (locked_ids or {}).items()
+        for i in wb.add_positions(np.array(q, dtype=float))
+    }
     return assemble(
-        wb, r, solver, messages, timings, t0, progress=say, hand=hand, best_effort=best_effort
+        wb,
+        r,
+        solver,
+        messages,
+        timings,
+        t0,
+        progress=say,
+        hand=hand,
+        best_effort=best_effort,
+        kept=kept,
     )
 
 

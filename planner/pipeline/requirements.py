@@ -453,6 +453,9 @@ class PlanSettings:
         Longest field session [h]; the visiting order is split into sessions.
     scan_rate_hz : float, default 500 000
         Measurement rate [points/s] for scan times when the scanner's profile gives none.
+    drawing_scale : int, default 500
+        The drawing (DXF) is made for the scale 1 : ``drawing_scale``: its lettering 2.5 mm
+        and its symbols 3 mm on paper at that scale.
     time_limit_s : float, default 60
         Time budget of the whole plan: reading, evaluation (at most 60 %), optimiser (at
         most half of what is left when it starts), registration rounds and documents share
@@ -647,6 +650,15 @@ class PlanSettings:
         "measurement rate if unknown",
         step=50_000.0,
         help="measurement rate for the scan time when the scanner profile gives none",
+    )
+    drawing_scale: int = _spec(
+        500,
+        "1:N",
+        "drawing scale",
+        lo=1,
+        open_lo=False,
+        step=50,
+        help="the drawing's scale 1:N (plan.dxf): lettering 2.5 mm and symbols 3 mm on paper",
     )
     time_limit_s: float = _spec(
         60.0,

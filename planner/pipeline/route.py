@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import itertools
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import pandas as pd
@@ -69,7 +69,41 @@ class FieldRoute:
     legs: list[np.ndarray] = field(default_factory=list)
     rate_hz: float = 0.0
     rate_assumed: bool = False
-    notes: list[str] = field(default_factory=list)
+    #: scans registered cloud to cloud on site, each to one scanned before it
+    on_site: bool = False
+
+    @property
+    def notes(self) -> list[str]:
+        """What the order and the walks need said (from the table: one source for both)."""
+        t, out = self.table, []
+        if self.on_site and len(t):
+            alone = t["station_id"][t["registers_to"] == ""].iloc[1:]
+            out.append(
+                "Scan order: every scan is registered to one scanned before it."
+                if not len(alone)
+                else "Scan order: every scan is registered to one scanned before it, but "
+                f"{', '.join(alone)} (linked to no scan before)."
+            )
+        walks = t[t["walk_note"] != ""] if len(t) else t
+        if len(walks):
+            out.append(
+                f"Walks to {', '.join(walks['station_id'])}: "
+                f"{'; '.join(sorted(set(walks['walk_note'])))}."
+            )
+        return out
+
+    def renamed(self, mapping: dict[str, str]) -> FieldRoute:
+        """The route with its stations renamed (``mapping``: old id → new; others kept)."""
+
+        def ids(text: str) -> str:
+            return " ".join(sorted(mapping.get(s, s) for s in text.split(" ") if s))
+
+        t = self.table.assign(
+            station_id=self.table["station_id"].map(lambda s: mapping.get(s, s)),
+            links_to=self.table["links_to"].map(ids),
+            registers_to=self.table["registers_to"].map(ids),
+        )
+        return replace(self, table=t)
 
     @property
     def total_min(self) -> float:
@@ -364,6 +398,7 @@ def field_route(
     neighbours = [{at[o] for o in linked.get(i, ()) if o in at} for i in ids]
     # scans registered cloud to cloud are registered on site as they come
     on_site = "kind" in links and bool((links["kind"] == "cloud").any())
+    route.on_site = on_site
     if on_site:
         order = _registered_order(order, neighbours, w[:, : len(xy)] if exact else None)
     legs: list[np.ndarray] = [np.empty((0, 2))]
@@ -446,18 +481,5 @@ def field_route(
             }
         )
     route.table = pd.DataFrame(rows, columns=ROUTE_COLUMNS)
-    if on_site:
-        alone = route.table["station_id"][route.table["registers_to"] == ""].iloc[1:]
-        route.notes.append(
-            "Scan order: every scan is registered to one scanned before it."
-            if not len(alone)
-            else "Scan order: every scan is registered to one scanned before it, but "
-            f"{', '.join(alone)} (linked to no scan before)."
-        )
     route.legs = legs
-    if any(notes):
-        crossing = [ids[k] for n, k in enumerate(order) if notes[n]]
-        route.notes.append(
-            f"Walks to {', '.join(crossing)}: {'; '.join(sorted(set(filter(None, notes))))}."
-        )
     return route

@@ -29,10 +29,12 @@ __all__ = [
     "STAKEOUT_COLUMNS",
     "STATION_COLUMNS",
     "STATION_PURPOSES",
+    "SYMBOLS",
     "TARGET_COLUMNS",
     "ZONE_COLUMNS",
     "geojson",
     "geometry_json",
+    "in_id_order",
     "neutralise",
     "to_csv",
 ]
@@ -49,6 +51,15 @@ STATION_PURPOSES = {
 }
 
 STATION_COLUMNS = ["station_id", "x", "y", "instrument_height_m", "purpose"]
+
+#: The symbol of each kind of point on every map: the dashboard, the booklet and the drawing
+#: (DXF) speak one symbol language.
+SYMBOLS = {
+    "station": "triangle-up",
+    "flat": "square",
+    "sphere": "circle",
+    "control": "triangle-down",
+}
 
 #: Per-pair quantities reported for chosen stations (besides ``score``, ``view``, ``ok``).
 METRIC_KEYS = (
@@ -201,6 +212,23 @@ def neutralise(value: object) -> object:
     if isinstance(value, str) and value.startswith(_FORMULA_START):
         return "'" + value
     return value
+
+
+def in_id_order(df: pd.DataFrame, column: str) -> pd.DataFrame:
+    """The rows in the order of their ids as a surveyor reads a list: by the text before the
+    id's number, then the number (S02 before S10, K01-S03 before K02-S01).
+
+    >>> in_id_order(pd.DataFrame({"id": ["S10", "TS1", "S02"]}), "id")["id"].tolist()
+    ['S02', 'S10', 'TS1']
+    """
+    import re
+
+    def key(k: int) -> tuple[str, int, str]:
+        text = str(df[column].iloc[k])
+        m = re.fullmatch(r"(.*?)(\d+)", text)
+        return (m.group(1), int(m.group(2)), text) if m else (text, -1, text)
+
+    return df.iloc[sorted(range(len(df)), key=key)]
 
 
 def to_csv(df: pd.DataFrame) -> str:

@@ -46,6 +46,8 @@ __all__ = [
     "enclosed_messages",
     "facade_summary",
     "registration_messages",
+    "rename_stations",
+    "target_numbers",
     "targets_and_links",
     "unmet_messages",
     "untied_places",
@@ -202,6 +204,49 @@ def coverage_table(
 #: The coverage's column of :class:`Reason` (not written to files): the reason's words and
 #: the stations it names, so that a district renames stations without reading the words.
 REASON_DATA = "reason_data"
+
+
+def target_numbers(targets: pd.DataFrame, visit: dict[str, int]) -> dict[str, str]:
+    """New ids for the targets (old id → new): T01, T02 … in the order the crew first needs
+    them (the visit, ``visit``: station id → its place in the route, of the first station
+    that scans each), a control point keeping its own id."""
+    first = [
+        min((visit.get(s, len(visit)) for s in seen), default=len(visit))
+        for seen in targets["station_ids"]
+    ]
+    ours = [k for k, t in enumerate(targets["type"]) if t != "control"]
+    ours.sort(key=lambda k: first[k])  # (stable: the network's order among equals)
+    ids = targets["target_id"].astype(str).tolist()
+    return {ids[k]: f"T{n:02d}" for n, k in enumerate(ours, start=1)}
+
+
+def rename_stations(
+    mapping: dict[str, str],
+    stations: pd.DataFrame,
+    coverage: pd.DataFrame,
+    targets: pd.DataFrame,
+    links: pd.DataFrame,
+) -> tuple[pd.DataFrame, pd.DataFrame, pd.DataFrame, pd.DataFrame]:
+    """The plan's tables with its stations renamed (``mapping``: old id → new; an id not in
+    it is kept): the stations, the coverage (its reasons written again from their data), the
+    stations that see each target and the links. The one place a station's id is
+    rewritten."""
+
+    def one(s: str) -> str:
+        return mapping.get(s, s)
+
+    stations = stations.assign(station_id=stations["station_id"].map(one))
+    coverage = coverage.assign(station_id=coverage["station_id"].map(one))
+    if REASON_DATA in coverage:
+        data = [Reason(r.template, tuple(map(one, r.stations))) for r in coverage[REASON_DATA]]
+        coverage = coverage.assign(reason=[r.text() for r in data], **{REASON_DATA: data})
+    targets = targets.assign(
+        station_ids=targets["station_ids"].map(lambda ids: [one(s) for s in ids])
+    )
+    links = links.assign(
+        station_a=links["station_a"].map(one), station_b=links["station_b"].map(one)
+    )
+    return stations, coverage, targets, links
 
 
 @dataclass(frozen=True)

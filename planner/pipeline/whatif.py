@@ -40,24 +40,78 @@ def _workbench(p: Plan) -> Workbench:
     return p.workbench
 
 
-def evaluate_stations(p: Plan, xy: np.ndarray) -> Plan:
+def evaluate_stations(
+    p: Plan, xy: np.ndarray, ids: list[str | None] | tuple[str | None, ...] | None = None
+) -> Plan:
     """The plan with stations exactly at ``xy`` (``(k, 2)`` [m], site CRS): the registration
     network built for them, every sample judged on scanner ⊕ registration, targets, links and
-    the route; their purpose is "hand". A position inside a
-    building, obstacle or no-go area is an :class:`~planner.errors.InputError` saying which.
-    The registration network may add a station where it needs one to tie the others (its
-    purpose is "link")."""
+    the route. A position inside a building, obstacle or no-go area is an
+    :class:`~planner.errors.InputError` saying which. The registration network may add a
+    station where it needs one to tie the others (its purpose is "link").
+
+    ``ids`` names the station each position was (``None`` for one added); without it a
+    position the plan already has a station at is that station. A station keeps its id
+    through edits, and its purpose where it has not moved; one moved or added is "hand", and
+    an added station takes the next number never given (a deleted station's id is not given
+    again)."""
     t0 = time.perf_counter()
     wb = _workbench(p)
-    idx = wb.add_positions(free_positions(wb, xy, "station"))
-    return _judged(p, wb, idx, idx, f"Stations placed by hand: {len(idx)}.", t0)
+    xy = free_positions(wb, xy, "station")
+    scans = p.stations[p.stations["purpose"] != "traverse"]
+    old_xy = scans[["x", "y"]].to_numpy(dtype=float)
+    by_id = dict(zip(scans["station_id"], range(len(scans)), strict=True))
+    if ids is None:
+        ids = [
+            next((str(scans["station_id"].iloc[j]) for j in np.flatnonzero(near)), None)
+            for near in (np.abs(old_xy[None, :, :] - xy[:, None, :]).max(axis=2) < 1e-3)
+        ]
+    if len(ids) != len(xy):
+        raise InputError(f"{len(ids)} station ids for {len(xy)} positions: give one per position")
+    _apart(xy, ids)
+    idx = wb.add_positions(xy)
+    kept, hand = {}, []
+    for i, sid, q in zip(idx.tolist(), ids, xy, strict=True):
+        j = by_id.get(sid) if sid else None
+        if j is None:
+            hand.append(i)
+            continue
+        moved = bool(np.abs(old_xy[j] - q).max() >= 1e-3)
+        kept[i] = (str(sid), "hand" if moved else str(scans["purpose"].iloc[j]))
+        if moved:
+            hand.append(i)
+    message = f"Stations edited by hand: {len(xy)} judged again."
+    return _judged(p, wb, idx, np.array(hand, dtype=np.int64), message, t0, kept)
+
+
+#: Two stations closer than this [m] are one set-up twice: an edit that does it is refused.
+MIN_STATION_SEPARATION_M = 0.5
+
+
+def _apart(xy: np.ndarray, ids) -> None:
+    """An :class:`~planner.errors.InputError` naming the stations two positions put on top
+    of each other."""
+    d = np.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1))
+    d[np.tri(len(xy), dtype=bool)] = np.inf
+    if len(xy) > 1 and d.min() < MIN_STATION_SEPARATION_M:
+        a, b = np.unravel_index(int(np.argmin(d)), d.shape)
+        names = [ids[k] or "the new station" for k in (a, b)]
+        raise InputError(
+            f"{names[1]} would stand {d[a, b]:.2f} m from {names[0]} (closer than "
+            f"{MIN_STATION_SEPARATION_M:g} m: one set-up twice); put it elsewhere"
+        )
 
 
 def _judged(
-    p: Plan, wb: Workbench, idx: np.ndarray, hand: np.ndarray, message: str, t0: float
+    p: Plan,
+    wb: Workbench,
+    idx: np.ndarray,
+    hand: np.ndarray,
+    message: str,
+    t0: float,
+    kept: dict[int, tuple[str, str]] | None = None,
 ) -> Plan:
-    """The plan of the stations ``idx`` (pool indices; ``hand`` placed by hand), their
-    network built and every sample judged."""
+    """The plan of the stations ``idx`` (pool indices; ``hand`` placed by hand; ``kept``
+    those that keep their id and purpose), their network built and every sample judged."""
     timings: dict[str, float] = {"setup": 0.0}
     r = Round(cover=idx)
     datum = p.network.datum_station if p.network is not None else None  # kept where it stays
@@ -74,7 +128,7 @@ def _judged(
         gap=None if bound is None or n == 0 else max(0.0, (n - bound) / n),
     )
     messages = [*wb.messages, message]
-    return assemble(wb, r, solver, messages, timings, t0, hand=hand)
+    return assemble(wb, r, solver, messages, timings, t0, hand=hand, kept=kept, edited=True)
 
 
 def _target_index(wb: Workbench, p: Plan, target_id: str) -> int:
@@ -150,12 +204,17 @@ def edit_targets(
                 control_rms_mm=np.full(len(rows), np.nan),
             )
         )
-    idx = wb.add_positions(p.stations[["x", "y"]].to_numpy(dtype=float))
-    hand = idx[(p.stations["purpose"] == "hand").to_numpy()]
+    scans = p.stations[p.stations["purpose"] != "traverse"]
+    idx = wb.add_positions(scans[["x", "y"]].to_numpy(dtype=float))
+    kept = {
+        i: (str(sid), str(pu))
+        for i, sid, pu in zip(idx.tolist(), scans["station_id"], scans["purpose"], strict=True)
+    }
+    hand = idx[(scans["purpose"] == "hand").to_numpy()]
     done = [f"{len(remove)} ruled out"] if remove else []
     done += [f"{len(move)} moved"] if move else []
     done += [f"{n_added} added"] if n_added else []
-    q = _judged(p, wb, idx, hand, f"Targets edited by hand: {', '.join(done)}.", t0)
+    q = _judged(p, wb, idx, hand, f"Targets edited by hand: {', '.join(done)}.", t0, kept)
     q.solver = replace(p.solver, objective=q.solver.objective)
     mine = int(wb.seen.by_hand.sum())
     if mine:
@@ -173,4 +232,13 @@ def reoptimise(p: Plan, locked_xy: np.ndarray, progress: Progress | None = None)
     """A new plan keeping the stations at ``locked_xy`` (``(k, 2)`` [m]) and choosing the
     fewest others around them, with the registration rounds of a full plan (the settings'
     time budget)."""
-    return choose_stations(_workbench(p), progress, locked=locked_xy)
+    wb = _workbench(p)
+    locked_xy = np.asarray(locked_xy, dtype=float).reshape(-1, 2)
+    scans = p.stations[p.stations["purpose"] != "traverse"]
+    old_xy = scans[["x", "y"]].to_numpy(dtype=float)
+    names = {}
+    for q in locked_xy:
+        near = np.flatnonzero(np.abs(old_xy - q).max(axis=1) < 1e-3)
+        if len(near):
+            names[tuple(q)] = str(scans["station_id"].iloc[near[0]])
+    return choose_stations(wb, progress, locked=locked_xy, locked_ids=names)
