@@ -27,6 +27,7 @@ from planner.errors import InputError
 
 __all__ = [
     "DEFAULT_SCANNER",
+    "Preset",
     "Scanner",
     "catalogue",
     "check_profile_name",
@@ -40,6 +41,44 @@ __all__ = [
 #: The scanner of Voroshilov & Karachentsev's worked example (m_S = 4 mm, 60 µrad): the
 #: default everywhere a scanner is not given (CLI, dashboard, report, ``plan()``).
 DEFAULT_SCANNER = "leica-4mm-60urad"
+
+
+@dataclass(frozen=True)
+class Preset:
+    """One resolution / quality setting of a scanner, named as its maker names it.
+
+    Parameters
+    ----------
+    name : str
+        The maker's name of the setting (e.g. the RTC360's "medium", a Focus' "1/4, 4x").
+    step_mm_at_10m : float
+        Point spacing at 10 m square to the beam [mm].
+    rate_hz : float or None
+        Points measured per second at this setting (a quality setting that measures each
+        point longer lowers it); None: the scanner's ``measurement_rate_hz``.
+    scan_s : float or None
+        The maker's stated duration of a full-dome scan at this setting [s]; None: the
+        points of the dome over the rate (:mod:`planner.fieldwork`).
+    """
+
+    name: str
+    step_mm_at_10m: float
+    rate_hz: float | None = None
+    scan_s: float | None = None
+
+    def __post_init__(self) -> None:
+        who = f"preset {self.name!r}"
+        if not isinstance(self.name, str) or not self.name.strip():
+            raise InputError("a scanner preset needs a name (the maker's name of the setting)")
+        object.__setattr__(
+            self,
+            "step_mm_at_10m",
+            _number(self.step_mm_at_10m, f"{who}: step_mm_at_10m", "mm", lo=0.0, open_lo=True),
+        )
+        for key, unit in (("rate_hz", "points/s"), ("scan_s", "s")):
+            if getattr(self, key) is not None:
+                value = _number(getattr(self, key), f"{who}: {key}", unit, lo=0.0, open_lo=True)
+                object.__setattr__(self, key, value)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -81,6 +120,17 @@ class Scanner:
         How scans of this scanner are usually registered (e.g. cloud to cloud for a
         scanner whose software registers by its own tracking and the clouds); None:
         targets.
+    presets : tuple of Preset
+        The maker's resolution / quality settings (``[[scanner.preset]]`` tables); the
+        plan picks one (:meth:`choose_preset`) and times the scans with it.
+    default_preset : str or None
+        The setting a crew uses when nothing asks for another (the profile's
+        ``step_mm_at_10m`` is its step).
+    sector_scan : bool, default True
+        Whether the scanner can scan a horizontal sector only; one that cannot scans the
+        full dome at every station, and is timed so.
+    imaging_s : float, default 0
+        Time of the station's images (HDR panorama) after the scan [s], when imaging is on.
     label, source, notes : str
         Display name; where the figures come from; which values are assumptions.
     """
@@ -99,6 +149,10 @@ class Scanner:
     beam_divergence_mrad: float | None = None
     beam_exit_mm: float | None = None
     registration: str | None = None
+    presets: tuple[Preset, ...] = ()
+    default_preset: str | None = None
+    sector_scan: bool = True
+    imaging_s: float = 0.0
     label: str = ""
     source: str = "user-defined"
     notes: str = ""
@@ -153,6 +207,21 @@ class Scanner:
             raise InputError(
                 f"{who}: registration must be targets, cloud or hybrid; got {self.registration!r}"
             )
+        presets = tuple(
+            p if isinstance(p, Preset) else Preset(**_preset_table(p, who)) for p in self.presets
+        )
+        self._set("presets", presets)
+        names = [p.name for p in presets]
+        if len(set(names)) != len(names):
+            raise InputError(f"{who}: two presets share a name ({', '.join(names)})")
+        if self.default_preset is not None and self.default_preset not in names:
+            raise InputError(
+                f"{who}: default_preset {self.default_preset!r} is not one of its presets "
+                f"({', '.join(names) or 'none'})"
+            )
+        self._set("imaging_s", _number(self.imaging_s, f"{who}: imaging_s", "s", lo=0.0))
+        if not isinstance(self.sector_scan, bool):
+            raise InputError(f"{who}: sector_scan must be true or false")
         if not self.label:
             self._set("label", self.name)
 
@@ -178,6 +247,44 @@ class Scanner:
     def is_levelled(self) -> bool:
         """Whether a compensator levels the scanner (a ``levelling_rms_arcsec`` is given)."""
         return self.levelling_rms_arcsec is not None
+
+    def preset(self, name: str | None) -> Preset | None:
+        """The preset called ``name`` (None: the default preset, if any).
+
+        Raises
+        ------
+        InputError
+            For a name the scanner has no preset of; the message lists them.
+        """
+        name = self.default_preset if name is None else name
+        if name is None:
+            return None
+        for p in self.presets:
+            if p.name.lower() == str(name).strip().lower():
+                return p
+        raise InputError(
+            f"scanner {self.name!r} has no preset {name!r}; its presets: "
+            f"{', '.join(p.name for p in self.presets) or 'none (give --step-mm-at-10m)'}"
+        )
+
+    def choose_preset(self, max_step_mm_at_10m: float | None) -> Preset | None:
+        """The coarsest preset whose step is at most ``max_step_mm_at_10m`` (None: the
+        default preset); the finest where none is fine enough; None without presets.
+
+        >>> s = Scanner(name="x", range_rms_mm=1, angle_rms_arcsec=10, presets=(
+        ...     Preset("low", 12.0), Preset("medium", 6.0), Preset("high", 3.0)),
+        ...     default_preset="medium")
+        >>> s.choose_preset(8.0).name, s.choose_preset(1.0).name, s.choose_preset(None).name
+        ('medium', 'high', 'medium')
+        """
+        if not self.presets:
+            return None
+        if max_step_mm_at_10m is None:
+            return self.preset(None) or max(self.presets, key=lambda p: p.step_mm_at_10m)
+        fine = [p for p in self.presets if p.step_mm_at_10m <= max_step_mm_at_10m * (1 + 1e-9)]
+        if fine:
+            return max(fine, key=lambda p: (p.step_mm_at_10m, p.rate_hz or math.inf))
+        return min(self.presets, key=lambda p: p.step_mm_at_10m)
 
     def range_rms_at(self, distance_m: ArrayLike) -> np.ndarray:
         """Ranging RMS ``m_S = a + b·D`` [mm] at ``distance_m`` [m] (b in ppm = mm/km)."""
@@ -241,6 +348,8 @@ class Scanner:
             )
         if "vertical_fov_deg" in kwargs:
             kwargs["vertical_fov_deg"] = tuple(kwargs["vertical_fov_deg"])
+        if "preset" in extra:  # [[scanner.preset]] tables
+            kwargs["presets"] = tuple(extra.pop("preset"))
         return cls(**kwargs, extra=extra)
 
     @classmethod
@@ -266,10 +375,14 @@ class Scanner:
 
     # -- output ---------------------------------------------------------------------------
     def to_dict(self) -> dict[str, Any]:
-        """Plain mapping of every set field (None left out), ``extra`` merged in."""
+        """Plain mapping of every set field (None left out), ``extra`` merged in; the
+        presets as the ``preset`` list of tables, as the file has them."""
         d = asdict(self)
         extra = d.pop("extra")
         d["vertical_fov_deg"] = list(self.vertical_fov_deg)
+        presets = d.pop("presets")
+        if presets:
+            d["preset"] = [{k: v for k, v in p.items() if v is not None} for p in presets]
         d = {k: v for k, v in d.items() if v is not None}
         d.update(extra)
         return d
@@ -295,7 +408,24 @@ class Scanner:
 _TOML_HEADER = "# tls-planner scanner profile (units: mm, ppm, arc-seconds, m, deg)\n"
 
 #: Tables a profile may carry besides its fields (kept as records, not used for planning).
-RECORD_KEYS = ("calibration", "datasheet_3d_accuracy_mm")
+RECORD_KEYS = ("calibration", "datasheet_3d_accuracy_mm", "preset")
+
+
+def _preset_table(table: Any, who: str) -> dict[str, Any]:
+    """A ``[[scanner.preset]]`` table checked for its keys."""
+    keys = {f.name for f in fields(Preset)}
+    if not isinstance(table, Mapping) or "name" not in table or "step_mm_at_10m" not in table:
+        raise InputError(
+            f"{who}: a preset is a table with at least name and step_mm_at_10m; got {table!r}"
+        )
+    unknown = sorted(set(table) - keys)
+    if unknown:
+        raise InputError(
+            f"{who}: preset {table.get('name')!r} has unknown key(s) {', '.join(unknown)}; "
+            f"the keys are {', '.join(sorted(keys))}"
+        )
+    return dict(table)
+
 
 #: A profile name: lower-case letters, digits, '.', '_' and '-' (it becomes a file name).
 _NAME = re.compile(r"[a-z0-9][a-z0-9._-]{0,63}")

@@ -126,7 +126,7 @@ def test_route_of_the_default_plan(default_plan):
         for tid in r.targets_to_set.split():
             assert first[tid] == r.order
     # the time adds up
-    parts = t["walk_min"] + t["targets_min"] + t["setup_min"] + t["scan_min"]
+    parts = t["walk_min"] + t["targets_min"] + t["setup_min"] + t["scan_min"] + t["imaging_min"]
     assert np.allclose(t["station_min"], parts, atol=0.15)  # min (rounding)
     assert t["elapsed_min"].iloc[-1] == pytest.approx(p.route.total_min, abs=0.2)  # min
     st = p.settings
@@ -187,3 +187,96 @@ def test_a_station_in_a_closed_courtyard_is_still_routed():
     assert list(r.table["walk_note"]) == ["", "no way round buildings found: straight line taken"]
     assert r.table["walk_m"].iloc[1] == pytest.approx(30.0, abs=1e-6)  # m, straight
     assert not r.rate_assumed and r.rate_hz == p50.measurement_rate_hz
+
+
+# -- the scanner's settings (presets) --------------------------------------------------------
+PRESET_SCANNERS = [
+    "leica-rtc360",
+    "leica-p50",
+    "leica-blk360",
+    "faro-focus-premium",
+    "zf-imager-5016",
+]
+
+
+@pytest.mark.parametrize("name", PRESET_SCANNERS)
+def test_each_preset_times_the_scans_by_its_step_rate_and_sector(default_plan, name):
+    """Every setting of a scanner: the dome's points at its step over its rate, shared out
+    by the station's sector where the scanner can scan one (the full dome where it cannot),
+    then its images."""
+    from dataclasses import replace
+
+    p, sc = default_plan, load_scanner(name)
+    lo, hi = sc.vertical_fov_deg
+    for pr in sc.presets:
+        st = replace(p.settings, preset=pr.name).for_scanner(sc, p.requirements, 100.0)
+        assert st.step_mm_at_10m == pr.step_mm_at_10m
+        t = field_route(p.site, sc, st, p.stations, p.targets, p.coverage, p.links).table
+        rate = pr.rate_hz or sc.measurement_rate_hz
+        dome_min = scan_points(360.0, hi - lo, pr.step_mm_at_10m) / rate / 60.0
+        share = scan_points(t["sector_deg"].to_numpy(), hi - lo, pr.step_mm_at_10m) / (
+            scan_points(360.0, hi - lo, pr.step_mm_at_10m)
+        )
+        assert t["scan_min"].to_numpy() == pytest.approx(dome_min * share, abs=0.051)  # min
+        assert (t["preset"] == pr.name).all()
+        assert t["imaging_min"].to_numpy() == pytest.approx(sc.imaging_s / 60.0, abs=0.051)
+        if not sc.sector_scan:
+            assert (t["sector_deg"] == 360.0).all()
+    if sc.sector_scan:
+        assert (t["sector_deg"] < 360.0).any()  # the default plan has stations facing a side
+
+
+def test_imaging_off_takes_the_images_out_of_the_field_time(default_plan):
+    from dataclasses import replace
+
+    p, sc = default_plan, load_scanner("leica-rtc360")
+    st = p.settings.for_scanner(sc, p.requirements, 100.0)
+    on = field_route(p.site, sc, st, p.stations, p.targets, p.coverage, p.links)
+    off = field_route(
+        p.site, sc, replace(st, imaging=False), p.stations, p.targets, p.coverage, p.links
+    )
+    assert on.total_min - off.total_min == pytest.approx(
+        len(p.stations) * sc.imaging_s / 60.0, abs=0.2
+    )  # min
+    assert (off.table["imaging_min"] == 0).all()
+    assert "imaging" in on.summary() and "imaging" not in off.summary()
+    assert "full dome: the scanner cannot scan a sector" in on.summary()
+
+
+@pytest.mark.parametrize(("name", "stated_s"), [("leica-rtc360", 120.0), ("leica-blk360", 180.0)])
+def test_a_full_dome_with_images_keeps_within_the_makers_stated_time(name, stated_s):
+    """The datasheets state a full-dome scan with its HDR images at the usual setting in
+    under 2 min (RTC360) and 3 min (BLK360, first generation): the computed scan and the
+    imaging time assumed stay within it."""
+    sc = load_scanner(name)
+    pr = sc.preset(None)
+    lo, hi = sc.vertical_fov_deg
+    scan_s = scan_time_s(scan_points(360.0, hi - lo, pr.step_mm_at_10m), sc.measurement_rate_hz)
+    assert scan_s + sc.imaging_s <= stated_s
+
+
+def test_the_plan_picks_the_coarsest_setting_the_spacing_allows():
+    """No spacing required: the scanner's usual setting; a spacing required at the search
+    radius: the coarsest setting meeting it; a step given: that step (and its setting's
+    name)."""
+    from planner.pipeline.planning import reach_m
+    from planner.pipeline.requirements import Requirements
+
+    sc = load_scanner("leica-rtc360")
+    st = PlanSettings()
+    req = Requirements()
+    reach = reach_m(sc, req, st)
+    assert st.for_scanner(sc, req, reach).preset == "medium"
+    for spacing_at_reach, want in ((12.5, "low"), (6.5, "medium"), (4.0, "high"), (1.0, "high")):
+        loose = Requirements(max_spacing_mm=spacing_at_reach * reach / 10.0)
+        chosen = st.for_scanner(sc, loose, reach)
+        assert chosen.preset == want
+        assert chosen.step_mm_at_10m == sc.preset(want).step_mm_at_10m
+    given = PlanSettings(step_mm_at_10m=3.0).for_scanner(sc, req, reach)
+    assert (given.preset, given.step_mm_at_10m) == ("high", 3.0)
+    own = PlanSettings(step_mm_at_10m=4.0).for_scanner(sc, req, reach)
+    assert (own.preset, own.step_mm_at_10m) == (None, 4.0)
+    p = plan(default_site(), sc, Requirements(max_spacing_mm=13.0 * reach / 10.0))
+    assert p.settings.preset == "low"
+    assert (p.route.table["step_mm_at_10m"] == 12.0).all()
+    assert "setting 'low'" in p.route.summary()

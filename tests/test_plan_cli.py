@@ -96,6 +96,11 @@ def test_unmet_samples_exit_1_and_are_listed(tmp_path):
         (["--max-gamma-deg", "95"], "max_gamma_deg must be > 0 and <= 89"),
         (["--grid-m", "-1"], "grid_m must be >= 0.25"),
         (["--scanner", "unknown"], "Unknown scanner"),
+        (
+            ["--scanner", "leica-rtc360", "--preset", "ultra"],
+            "no preset 'ultra'; its presets: low, medium, high",
+        ),
+        (["--drawing-scale", "0"], "drawing_scale must be >= 1"),
     ],
 )
 def test_bad_input_exits_2_and_writes_nothing(tmp_path, extra, message):

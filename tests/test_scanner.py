@@ -172,3 +172,44 @@ def test_levelled_scanners_and_beam_figures():
     assert cat["leica-p50"].is_levelled and cat["leica-p50"].levelling_rms_arcsec == 1.5
     assert not cat["leica-rtc360"].is_levelled and not cat[DEFAULT].is_levelled
     assert cat["faro-focus-premium"].beam_divergence_mrad == 0.3
+
+
+def test_presets_the_profiles_step_is_the_default_settings_and_they_round_trip(tmp_path):
+    """A catalogue scanner with presets: its profile's step is its default setting's, every
+    setting named once, coarsest first in the file; a profile with presets written and read
+    back is the same profile."""
+    with_presets = [s for s in catalogue().values() if s.presets]
+    assert {s.name for s in with_presets} >= {"leica-rtc360", "leica-p50", "faro-focus-premium"}
+    for s in with_presets:
+        assert s.preset(None).step_mm_at_10m == s.step_mm_at_10m
+        steps = [p.step_mm_at_10m for p in s.presets]
+        assert steps == sorted(steps, reverse=True)
+        path = tmp_path / f"{s.name}.toml"
+        s.save(path)
+        assert Scanner.from_file(path) == s
+    rtc = load_scanner("leica-rtc360")
+    assert [p.step_mm_at_10m for p in rtc.presets] == [12.0, 6.0, 3.0]  # mm, the datasheet's
+    assert not rtc.sector_scan and load_scanner("leica-p50").sector_scan
+
+
+def test_a_bad_preset_says_what_the_scanner_has():
+    rtc = load_scanner("leica-rtc360")
+    with pytest.raises(InputError, match=r"no preset 'ultra'; its presets: low, medium, high"):
+        rtc.preset("ultra")
+    with pytest.raises(InputError, match=r"unknown key\(s\) speed"):
+        Scanner.from_dict(
+            {
+                "name": "x",
+                "range_rms_mm": 1,
+                "angle_rms_arcsec": 10,
+                "preset": [{"name": "a", "step_mm_at_10m": 5, "speed": 3}],
+            }
+        )
+    with pytest.raises(InputError, match="default_preset 'b' is not one of its presets"):
+        Scanner(
+            name="x",
+            range_rms_mm=1,
+            angle_rms_arcsec=10,
+            presets=({"name": "a", "step_mm_at_10m": 5},),
+            default_preset="b",
+        )

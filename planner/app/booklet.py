@@ -168,11 +168,16 @@ def _station_page(p: Plan, n: int, sectors: dict[str, tuple[float, float, float]
         ("Walk from the previous station", walk),
         ("Scan sector", sector),
         (
-            "Resolution",
-            f"step {r['step_mm_at_10m']:g} mm at 10 m; point spacing on its facades at most "
+            "Scanner setting",
+            (f"'{r['preset']}': " if r["preset"] else "")
+            + f"step {r['step_mm_at_10m']:g} mm at 10 m; point spacing on its facades at most "
             f"{r['max_spacing_mm']:g} mm",
         ),
-        ("Expected scan time", f"{r['scan_min']:.1f} min ({r['scan_points_million']:g} M points)"),
+        (
+            "Expected scan time",
+            f"{r['scan_min']:.1f} min ({r['scan_points_million']:g} M points)"
+            + (f", then images {r['imaging_min']:.1f} min" if r["imaging_min"] > 0 else ""),
+        ),
         (
             "Time at this station",
             f"{r['station_min']:.0f} min with set-up ({r['setup_min']:g} min) and targets; "

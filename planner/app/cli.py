@@ -103,6 +103,9 @@ def cmd_scanners(args: argparse.Namespace) -> int:
     if args.verbose:
         for s, origin in listed:
             print(f"\n{s.name} ({origin})\n  source: {s.source}\n  notes:  {s.notes}")
+            for pr in s.presets:
+                mark = " (default)" if pr.name == s.default_preset else ""
+                print(f"  preset {pr.name!r}{mark}: step {pr.step_mm_at_10m:g} mm at 10 m")
     for warning in warnings:
         print(f"planner: warning: {warning}", file=sys.stderr)
     return EXIT_OK
@@ -618,6 +621,20 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         help="what the promised registration error assumes of the registration software: "
         + "; or ".join(f"{k}, {v}" for k, v in REGISTRATION_PROCESSING.items())
         + " (default adjustment)",
+    )
+    pl.add_argument(
+        "--preset",
+        default=None,
+        metavar="NAME",
+        help="the scanner's resolution / quality setting by the maker's name ('planner "
+        "scanners --verbose' lists them); default the coarsest that meets --max-spacing-mm, "
+        "else the scanner's usual one. --step-mm-at-10m wins",
+    )
+    pl.add_argument(
+        "--imaging",
+        action=argparse.BooleanOptionalAction,
+        default=None,
+        help="each station also takes its HDR images (counted in the field time; default on)",
     )
     pl.add_argument(
         "--no-incidence-noise",

@@ -452,6 +452,7 @@ def plan_district(
         deadline = time.monotonic() + st.time_limit_s
     blocks = partition(site, block_m)
     halo = reach_m(scanner, req, st)
+    st = st.for_scanner(scanner, req, halo)  # every block with the same scan step and preset
     if workers < 1:
         raise InputError(f"--workers must be at least 1 (got {workers})")
     _memory_bytes(memory_limit)

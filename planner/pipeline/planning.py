@@ -178,6 +178,7 @@ def _prepare(
     messages += zones.messages
     # the search radius: the farthest any requirement (the site-wide one, a zone's) reaches
     reach = max(reach_m(sc, r, st) for r in [req, *zones.requirements])
+    st = st.for_scanner(sc, req, reach)  # the scan step and preset, decided once
     cand = candidate_grid(site, fac, reach, st.grid_m, st.clearance_m)
     ctx = Context.build(site, fac, sc, req, st, reach, sample_req)
     pairs = ctx.pair_count(cand)

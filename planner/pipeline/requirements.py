@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, field, fields
+from dataclasses import dataclass, field, fields, replace
 from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
@@ -485,6 +485,14 @@ class PlanSettings:
         surfaces adjusted together (a registration program's network or bundle adjustment),
         or each scan registered on its own to the one before it along the plan's links
         (errors add up along the chain; the plan then judges, and adds stations, by that).
+    preset : str or None, default None
+        The scanner's resolution / quality setting (the maker's name, from the catalogue's
+        presets). None: the coarsest whose point spacing meets ``max_spacing_mm`` straight
+        on at the search radius, else the scanner's default setting
+        (:meth:`PlanSettings.for_scanner` decides it once). A ``step_mm_at_10m`` given wins.
+    imaging : bool, default True
+        Whether each station also takes its images (HDR panorama); the field time counts the
+        scanner's ``imaging_s`` for it.
     min_overlap_pct, cloud_floor_mm : float, default 20 and 1
         A cloud link needs this overlap (as registration software counts it); what a patch's
         plane fit does not see.
@@ -705,6 +713,8 @@ class PlanSettings:
     model: str = "3d"
     registration: str = "auto"
     registration_processing: str = "adjustment"
+    preset: str | None = None
+    imaging: bool = True
     incidence_noise: bool = True
     beam_footprint: bool = True
     registration_error: bool = True
@@ -727,7 +737,9 @@ class PlanSettings:
                 "registration processing must be one of "
                 f"{', '.join(REGISTRATION_PROCESSING)}; got {self.registration_processing!r}"
             )
-        for name in ("incidence_noise", "beam_footprint", "registration_error"):
+        if self.preset is not None and (not isinstance(self.preset, str) or not self.preset):
+            raise InputError(f"preset must be a setting's name; got {self.preset!r}")
+        for name in ("incidence_noise", "beam_footprint", "registration_error", "imaging"):
             if not isinstance(getattr(self, name), bool):
                 raise InputError(f"{name} must be True or False; got {getattr(self, name)!r}")
 
@@ -744,6 +756,28 @@ class PlanSettings:
             if on
         ]
         return "full 3-D propagation" + (f" with {' and '.join(terms)}" if terms else "")
+
+    def for_scanner(self, scanner: Scanner, req: Requirements, reach: float) -> PlanSettings:
+        """These settings with the scan step and preset the plan uses with ``scanner``,
+        decided once: a ``step_mm_at_10m`` given stands (with the preset of that step, if
+        the scanner has one); a ``preset`` given gives its step; else, of the scanner's
+        presets, the coarsest whose spacing step·D/10 m at the search radius ``reach`` [m]
+        stays within ``req.max_spacing_mm``, or without a spacing requirement the
+        scanner's default. A scanner without presets plans at its profile's step."""
+        if self.step_mm_at_10m is not None:
+            same = [
+                p for p in scanner.presets if abs(p.step_mm_at_10m - self.step_mm_at_10m) < 0.05
+            ]
+            return replace(self, preset=same[0].name if same else None)
+        if self.preset is not None:
+            chosen = scanner.preset(self.preset)
+        elif req.max_spacing_mm is not None:
+            chosen = scanner.choose_preset(req.max_spacing_mm * 10.0 / max(reach, 1e-9))
+        else:
+            chosen = scanner.preset(None)
+        if chosen is None:
+            return self
+        return replace(self, preset=chosen.name, step_mm_at_10m=chosen.step_mm_at_10m)
 
     def registration_for(self, scanner: Scanner) -> str:
         """How the scans are registered with ``scanner``: the setting, or (``auto``) the

@@ -13,9 +13,12 @@
   360, SCENE's on-site registration); a station waits only as long as none of the stations
   it is linked to has been scanned. ``registers_to`` names the earlier scans it is linked to.
 * **Time per station**: walk from the previous station, the targets set up before its
-  scan (a target is placed before the first station that scans it), the set-up, and the scan:
-  the station's sector (its facade samples and targets, with a margin) over the scanner's
-  vertical field at the plan's scan step (:mod:`planner.fieldwork`). The route is split into
+  scan (a target is placed before the first station that scans it), the set-up, the scan
+  and the images: the scan is the station's sector (its facade samples and targets, with a
+  margin) over the scanner's vertical field — the full dome for a scanner that cannot scan
+  a sector — at the plan's setting (:class:`~planner.scanner.Preset`: its step, its rate,
+  or the maker's stated full-dome time shared out by the points, :mod:`planner.fieldwork`);
+  the images take the scanner's ``imaging_s`` when imaging is on. The route is split into
   sessions of at most ``session_h``.
 """
 
@@ -69,6 +72,10 @@ class FieldRoute:
     legs: list[np.ndarray] = field(default_factory=list)
     rate_hz: float = 0.0
     rate_assumed: bool = False
+    #: the scanner's setting the scans are timed at ('' a step of the user's own)
+    preset: str = ""
+    #: the scanner scans a sector only (else the full dome at every station)
+    sector_scan: bool = True
     #: scans registered cloud to cloud on site, each to one scanned before it
     on_site: bool = False
 
@@ -121,13 +128,18 @@ class FieldRoute:
         order = " → ".join(t["station_id"])
         rate = f"{self.rate_hz:,.0f} points/s".replace(",", " ")
         rate += " (assumed: the scanner profile gives none)" if self.rate_assumed else ""
+        setting = f"setting '{self.preset}', " if self.preset else ""
+        dome = "" if self.sector_scan else " (full dome: the scanner cannot scan a sector)"
+        imaging = t["imaging_min"].sum()
         return (
             f"Field time: {_hm(self.total_min)} in {self.sessions} session(s) — walk "
             f"{t['walk_m'].sum() / 1000:.2f} km ({_hm(t['walk_min'].sum())}), "
             f"{int(t['targets_to_set'].str.len().gt(0).sum())} stop(s) placing "
             f"{_count_ids(t['targets_to_set'])} targets ({_hm(t['targets_min'].sum())}), set-up "
-            f"{_hm(t['setup_min'].sum())}, scanning {_hm(t['scan_min'].sum())} at {rate}, "
-            f"step {t['step_mm_at_10m'].iloc[0]:g} mm at 10 m. Visiting order: {order}."
+            f"{_hm(t['setup_min'].sum())}, scanning {_hm(t['scan_min'].sum())}{dome} at "
+            f"{setting}step {t['step_mm_at_10m'].iloc[0]:g} mm at 10 m, {rate}"
+            + (f", imaging {_hm(imaging)}" if imaging > 0 else "")
+            + f". Visiting order: {order}."
             + "".join(f" {n}" for n in self.notes)
         )
 
@@ -370,11 +382,14 @@ def field_route(
     links: pd.DataFrame,
 ) -> FieldRoute:
     """The visiting order of ``stations`` and the field time (see the module's text)."""
-    rate = scanner.measurement_rate_hz or settings.scan_rate_hz
+    preset = scanner.preset(settings.preset) if settings.preset else None
+    rate = (preset and preset.rate_hz) or scanner.measurement_rate_hz or settings.scan_rate_hz
     route = FieldRoute(
         table=pd.DataFrame(columns=ROUTE_COLUMNS),
         rate_hz=float(rate),
-        rate_assumed=scanner.measurement_rate_hz is None,
+        rate_assumed=not ((preset and preset.rate_hz) or scanner.measurement_rate_hz),
+        preset=preset.name if preset else "",
+        sector_scan=scanner.sector_scan,
     )
     if not len(stations):
         return route
@@ -422,6 +437,10 @@ def field_route(
         legs.append(path)
     step = resolve_step_mm(scanner, settings.step_mm_at_10m)
     lo, hi = scanner.vertical_fov_deg
+    dome = float(scan_points(360.0, hi - lo, step))
+    # a full dome's time: the maker's where stated, else its points over the rate
+    dome_s = preset.scan_s if preset and preset.scan_s else float(scan_time_s(dome, rate))
+    imaging_min = scanner.imaging_s / 60.0 if settings.imaging else 0.0
     sectors = view_sectors(stations, coverage, targets)
     visit = {ids[k]: n for n, k in enumerate(order)}
     first_visit: dict[int, list[str]] = {}
@@ -436,18 +455,19 @@ def field_route(
         sid = ids[k]
         start, end, _ = sectors.get(sid, (0.0, 0.0, 0.0))
         width = min(360.0, (end - start) % 360.0 + 2 * SECTOR_MARGIN_DEG)
-        if width > 300.0:
+        if width > 300.0 or not scanner.sector_scan:
             start, width = 0.0, 360.0
         else:
             start = (start - SECTOR_MARGIN_DEG) % 360.0
         points = float(scan_points(width, hi - lo, step))
-        if purposes[k] == "traverse":  # a total station's set-up: no scan
-            points = 0.0
-        scan_min = float(scan_time_s(points, rate)) / 60.0
+        scanned = purposes[k] != "traverse"  # a total station's set-up: no scan
+        points = points if scanned else 0.0
+        scan_min = dome_s * points / dome / 60.0
+        image_min = imaging_min if scanned else 0.0
         to_set = first_visit.get(n, [])
         walk_min = walk_m[n] / settings.walk_speed_m_s / 60.0
         t_min = settings.target_setup_min * len(to_set)
-        total = walk_min + t_min + settings.setup_min + scan_min
+        total = walk_min + t_min + settings.setup_min + scan_min + image_min
         if used > 0 and used + total > limit:
             session, used = session + 1, 0.0
         used += total
@@ -467,9 +487,11 @@ def field_route(
                 "setup_min": settings.setup_min,
                 "sector_start_deg": round(start, 1),
                 "sector_deg": round(width, 1),
+                "preset": route.preset,
                 "step_mm_at_10m": step,
                 "scan_points_million": round(points / 1e6, 1),
                 "scan_min": round(scan_min, 1),
+                "imaging_min": round(image_min, 1),
                 "station_min": round(total, 1),
                 "elapsed_min": round(elapsed, 1),
                 "max_spacing_mm": round(sp, 1) if np.isfinite(sp) else np.nan,
