@@ -81,3 +81,80 @@ def test_dashboard_report_and_booklet_join_plan_zip():
     ).group(1)
     names = set(zipfile.ZipFile(io.BytesIO(base64.b64decode(data))).namelist())
     assert {"report.html", "booklet.pdf", "stations.csv", "plan.dxf"} <= names
+
+
+def _text(html_page: str) -> str:
+    """The report's words: tags and embedded images out, entities decoded."""
+    import html as html_
+
+    no_img = re.sub(r"data:image/png;base64,[^\"']+", "", html_page)
+    return html_.unescape(re.sub(r"<[^>]+>", " ", no_img))
+
+
+def test_the_reports_numbers_are_the_files_numbers(tmp_path):
+    """The report says what the plan's files hold: stations, targets, samples met and not,
+    the field time, the visiting order, the solver's bound and gap, every station's
+    purpose kept through an edit by hand; no NaN, no None; the site's notes linked to
+    their file."""
+    import io
+
+    import pandas as pd
+
+    from planner import Requirements, plan
+    from planner.app.report import render_html
+    from planner.pipeline.export import render
+    from planner.pipeline.whatif import evaluate_stations
+
+    p = plan(requirements=Requirements(max_xy_mm=3, max_z_mm=3))
+    xy = p.stations[["x", "y"]].to_numpy().copy()
+    xy[0] += [0.5, 0.0]  # one station moved by hand: it alone becomes "hand"
+    q = evaluate_stations(p, xy, list(p.stations["station_id"]))
+    files = render(q)
+    text = _text(render_html(q))
+    stations = pd.read_csv(io.StringIO(files["stations.csv"]))
+    targets = pd.read_csv(io.StringIO(files["targets.csv"]))
+    cov = pd.read_csv(io.StringIO(files["coverage.csv"]), keep_default_na=False)
+    route = pd.read_csv(io.StringIO(files["route.csv"]), keep_default_na=False)
+    met = int(cov["meets"].astype(str).eq("True").sum())
+    assert f"{len(stations)} stations and {len(targets)} registration targets" in text
+    assert f"{len(cov) - met} samples are not met" in text
+    assert re.search(rf"Samples meeting every requirement[^:]*: {met} of {len(cov)}\b", text)
+    minutes = round(route["station_min"].sum())
+    shown = f"{minutes // 60} h {minutes % 60:02d} min" if minutes >= 60 else f"{minutes} min"
+    assert f"Field time: {shown} in " in text
+    assert "Visiting order: " + " → ".join(route["station_id"]) + "." in text
+    assert (stations["purpose"] == "hand").sum() == 1
+    assert sorted(set(stations["purpose"])) != ["hand"]  # the others keep theirs
+    for sid, purpose in zip(stations["station_id"], stations["purpose"], strict=True):
+        assert re.search(rf"\b{sid}\s+[\d.]+\s+[\d.]+\s+[\d.]+\s+{purpose}\b", text)
+    for found in re.finditer(r"lower bound ([\d.]+), gap ([\d.]+) %", text):
+        objective = int(re.search(r"objective (\d+)", text[: found.start()][-80:]).group(1))
+        bound, gap = float(found.group(1)), float(found.group(2))
+        assert bound <= objective
+        assert gap == pytest.approx(100 * (objective - bound) / objective, abs=0.06)  # %
+    assert not re.search(r"\bNaN\b|\bnan\b|\bNone\b", text)
+
+
+def test_every_table_of_the_report_fits_the_page(tmp_path):
+    """Opened in Chromium at 1280 px, no table of the report is wider than the page."""
+    from test_dashboard_browser import CHROMIUM, FLAGS, _need_browser
+
+    from planner import Requirements, plan
+    from planner.app.report import make_report
+
+    sync = _need_browser()
+    out = make_report(plan(requirements=Requirements(max_xy_mm=3, max_z_mm=3)), tmp_path / "r.html")
+    with sync.sync_playwright() as pw:
+        b = pw.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        page = b.new_page(viewport={"width": 1280, "height": 900})
+        page.goto(out.as_uri())
+        widths = page.evaluate(
+            """() => [...document.querySelectorAll('table')].map(t => [
+                t.closest('section').querySelector('h1,h2').textContent,
+                t.getBoundingClientRect().right,
+                t.closest('section').getBoundingClientRect().right])"""
+        )
+        b.close()
+    assert len(widths) >= 6
+    for heading, right, page_right in widths:
+        assert right <= page_right + 0.5, f"the table under {heading!r} runs off the page"

@@ -151,6 +151,9 @@ def test_a_plan_without_its_workbench_says_so(default_plan):
 
 
 # -- targets by hand (they change the plan's workbench: a plan of their own) ----------------
+BY_HAND = "Targets placed or moved by hand in this plan's edits:"
+
+
 @pytest.fixture
 def own_plan():
     return plan()
@@ -190,7 +193,10 @@ def test_a_moved_flat_target_slides_along_its_wall_and_is_used(own_plan):
     cross = (d[0] * v[1] - d[1] * v[0]) / np.linalg.norm(d)
     assert abs(cross) < 1e-6  # m: on the wall's line
     assert moved[2] == pytest.approx(flat["z"], abs=1e-9)  # m: at its height
-    assert "Targets placed by hand: 1 of 1 used by the registration." in q.messages
+    assert (
+        "Targets placed or moved by hand in this plan's edits: 1 of 1 used by the registration."
+        in q.messages
+    )
 
 
 def test_a_sphere_added_by_hand_is_preferred_where_it_can_serve(own_plan):
@@ -202,11 +208,17 @@ def test_a_sphere_added_by_hand_is_preferred_where_it_can_serve(own_plan):
     q = edit_targets(p, add_xy=xy[None])
     z = p.workbench.settings.target_height_m
     assert _has(q.targets, np.array([*xy, z]))
-    assert "Targets placed by hand: 1 of 1 used by the registration." in q.messages
+    assert (
+        "Targets placed or moved by hand in this plan's edits: 1 of 1 used by the registration."
+        in q.messages
+    )
     # negative control: a stand far outside every station's view serves nothing
     far = edit_targets(q, add_xy=np.array([[a[0] + 2000.0, a[1]]]))
     assert not _has(far.targets, np.array([a[0] + 2000.0, a[1], z]))
-    assert "Targets placed by hand: 1 of 2 used by the registration" in " ".join(far.messages)
+    assert (
+        "Targets placed or moved by hand in this plan's edits: 1 of 2 used by the registration"
+        in " ".join(far.messages)
+    )
 
 
 def test_bad_target_edits_say_what_is_wrong(own_plan):

@@ -763,7 +763,7 @@ class StationPlanner:
         self.last_edit_s = time.perf_counter() - t0
         self.plan = p
         met, n = int(p.scanned["meets"].sum()), len(p.scanned)
-        mine = [m for m in p.messages if m.startswith("Targets placed by hand")]
+        mine = [m for m in p.messages if m.startswith("Targets placed or moved by hand")]
         self.whatif.show_plan(
             p,
             f"<b>{len(p.stations)} stations, {len(p.targets)} targets</b>: {met} of {n} "

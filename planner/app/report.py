@@ -23,6 +23,7 @@ from IPython.display import HTML
 from planner.atomic import write_text_atomic
 from planner.pipeline.requirements import PlanSettings, field_specs
 from planner.pipeline.result import Plan
+from planner.pipeline.schema import in_id_order
 from planner.pipeline.tables import PROCESSING_WORDS
 from planner.pipeline.visibility import SIGHT_CLEARANCE_M
 from planner.reference import REFERENCES
@@ -85,8 +86,33 @@ SECTIONS: list[tuple[str, str, tuple[tuple, ...]]] = [
 ]
 
 
+#: The visiting order's columns the report shows (those that vary from station to station;
+#: ``route.csv`` has them all).
+ROUTE_REPORT_COLUMNS = [
+    "station_id",
+    "session",
+    "walk_m",
+    "targets_to_set",
+    "sector_start_deg",
+    "sector_deg",
+    "scan_min",
+    "imaging_min",
+    "station_min",
+    "elapsed_min",
+    "registers_to",
+    "walk_note",
+]
+
+#: The plan's files a message may name: linked from the report, which is written beside them.
+LINKED_FILES = ("site_repairs.csv", "coverage.csv", "route.csv", "targets.csv", "stations.csv")
+
+
 def _pre(text: str) -> str:
-    return f"<pre style='white-space:pre-wrap'>{html.escape(text)}</pre>"
+    """Text as it is (escaped), the plan's files it names linked."""
+    out = html.escape(text)
+    for name in LINKED_FILES:
+        out = out.replace(name, f"<a href='{name}'>{name}</a>")
+    return f"<pre style='white-space:pre-wrap'>{out}</pre>"
 
 
 class ReportContent:
@@ -211,21 +237,30 @@ class ReportContent:
         return pd.DataFrame(rows, columns=["item", "value"]).set_index("item")
 
     def stations(self) -> pd.DataFrame:
-        return self.plan.stations.set_index("station_id").round(3)
+        return in_id_order(self.plan.stations, "station_id").set_index("station_id").round(3)
 
     def field_route(self) -> pd.DataFrame | HTML:
-        """The visiting order and field time, station by station, after its summary."""
+        """The visiting order and field time, station by station, after its summary: the
+        columns that change from station to station (the others are in the summary line
+        and in ``route.csv``)."""
         r = self.plan.route
         if r is None or r.table.empty:
             return HTML("<p>No stations, no field work.</p>")
-        display_html = HTML(f"<p>{html.escape(r.summary())}</p>")
-        cols = [c for c in r.table.columns if c not in ("x", "y")]
-        return HTML(display_html.data + r.table[cols].set_index("order").to_html(na_rep=""))
+        t = r.table
+        cols = [
+            c
+            for c in ROUTE_REPORT_COLUMNS
+            if c in t and (t[c].nunique() > 1 or c in ("station_id", "station_min"))
+        ]
+        table = t.set_index("order")[cols].to_html(na_rep="", escape=True)
+        return HTML(f"<p>{html.escape(r.summary())}</p><div class='table'>{table}</div>")
 
     def targets(self) -> pd.DataFrame:
-        t = self.plan.targets.copy()
+        t = in_id_order(self.plan.targets, "target_id").copy()
         t["station_ids"] = t["station_ids"].map(", ".join)
-        return t.set_index("target_id").round({"x": 3, "y": 3, "z": 2, "min_size_mm": 1})
+        return t.set_index("target_id").round(
+            {"x": 3, "y": 3, "z": 2, "min_size_mm": 1, "centre_rms_mm": 2}
+        )
 
     def registration(self) -> pd.DataFrame | HTML:
         links = self.plan.links
@@ -372,7 +407,8 @@ body { font-family: "DejaVu Sans", Arial, sans-serif; font-size: 13px; margin: 2
 h1 { font-size: 22px; } h2 { font-size: 17px; margin-top: 1.6em; border-bottom: 1px solid #ccc; }
 .table { overflow-x: auto; max-width: 100%; }
 table { border-collapse: collapse; font-size: 11px; margin: 0.5em 0; }
-th, td { border: 1px solid #ddd; padding: 2px 6px; text-align: left; vertical-align: top; }
+th, td { border: 1px solid #ddd; padding: 2px 6px; text-align: left; vertical-align: top;
+         max-width: 22em; overflow-wrap: anywhere; }
 th { background: #f3f3f3; }
 img { max-width: 100%; height: auto; }
 pre { background: #f7f7f7; padding: 0.6em; }

@@ -265,6 +265,8 @@ def assemble(
         ["hand", "best-effort", "cover", "registration"],
         "link",
     )
+    # a covering station no sample is assigned to any more is there for the network
+    purpose[(purpose == "cover") & (np.asarray(assignment.met_by_station) == 0)] = "link"
     for k, i in enumerate(station_idx.tolist()):
         if i in kept and not np.isin(i, hand if hand is not None else []):
             purpose[k] = kept[i][1]

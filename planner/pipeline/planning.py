@@ -518,6 +518,11 @@ def _optimise(
         sol = solve_cover(sp.csr_matrix((ok @ sp.diags(free)) > 0), left, remaining, st.method)
         sol.chosen = np.union1d(sol.chosen, forced)
         sol.objective = len(sol.chosen)
+        if sol.lower_bound is not None:  # the bound of the others plus the forced ones
+            sol.lower_bound = (
+                float(sol.lower_bound) + len(sol.chosen) - len(np.setdiff1d(sol.chosen, forced))
+            )
+            sol.gap = max(0.0, (sol.objective - sol.lower_bound) / max(sol.objective, 1))
     if (ctx.stations_needed > 1).any():
         spread = spread_views(ok, demand, sol.chosen, cand, fac.xy, req.min_view_angle_deg)
         if len(spread) > len(sol.chosen):  # the bound still holds; the gap is the spread's

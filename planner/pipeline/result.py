@@ -140,6 +140,14 @@ class Plan:
         solver = f"({s.status}; objective {s.objective}"
         if s.gap is not None:
             solver += f", lower bound {s.lower_bound:g}, gap {100 * s.gap:.1f} %"
+        scans = int((self.stations["purpose"] != "traverse").sum())
+        if self.settings.computes_registration and scans > s.objective and s.blocks == 0:
+            # the bound is the scanner's cover's: the stations the registration added beyond
+            # it are said, not left to contradict it
+            solver += (
+                f" for the cover by the scanner's error alone; {scans - s.objective} more "
+                "for the registration error"
+            )
         if s.greedy_objective is not None:
             solver += f"; greedy {s.greedy_objective}"
         if s.reductions:

@@ -34,6 +34,7 @@ __all__ = [
     "ZONE_COLUMNS",
     "geojson",
     "geometry_json",
+    "id_key",
     "in_id_order",
     "neutralise",
     "to_csv",
@@ -223,14 +224,16 @@ def in_id_order(df: pd.DataFrame, column: str) -> pd.DataFrame:
     >>> in_id_order(pd.DataFrame({"id": ["S10", "TS1", "S02"]}), "id")["id"].tolist()
     ['S02', 'S10', 'TS1']
     """
+    ids = df[column].astype(str).tolist()
+    return df.iloc[sorted(range(len(df)), key=lambda k: id_key(ids[k]))]
+
+
+def id_key(text: str) -> tuple[str, int, str]:
+    """The sort key of an id as a surveyor reads a list (:func:`in_id_order`)."""
     import re
 
-    def key(k: int) -> tuple[str, int, str]:
-        text = str(df[column].iloc[k])
-        m = re.fullmatch(r"(.*?)(\d+)", text)
-        return (m.group(1), int(m.group(2)), text) if m else (text, -1, text)
-
-    return df.iloc[sorted(range(len(df)), key=key)]
+    m = re.fullmatch(r"(.*?)(\d+)", text)
+    return (m.group(1), int(m.group(2)), text) if m else (text, -1, text)
 
 
 def to_csv(df: pd.DataFrame) -> str:

@@ -28,6 +28,7 @@ from planner.pipeline.schema import (
     METRIC_KEYS,
     TARGET_COLUMNS,
     ZONE_COLUMNS,
+    id_key,
 )
 from planner.pipeline.zoning import ZoneTable
 from planner.registration_error import CONTROL, Link, datum_lean_mm
@@ -241,7 +242,7 @@ def rename_stations(
         data = [Reason(r.template, tuple(map(one, r.stations))) for r in coverage[REASON_DATA]]
         coverage = coverage.assign(reason=[r.text() for r in data], **{REASON_DATA: data})
     targets = targets.assign(
-        station_ids=targets["station_ids"].map(lambda ids: [one(s) for s in ids])
+        station_ids=targets["station_ids"].map(lambda ids: sorted(map(one, ids), key=id_key))
     )
     links = links.assign(
         station_a=links["station_a"].map(one), station_b=links["station_b"].map(one)

@@ -221,7 +221,8 @@ def edit_targets(
         used = q.network.targets if q.network is not None else []
         n_used = int(wb.seen.by_hand[used].sum())
         q.messages.append(
-            f"Targets placed by hand: {n_used} of {mine} used by the registration"
+            "Targets placed or moved by hand in this plan's edits: "
+            f"{n_used} of {mine} used by the registration"
             + ("" if n_used == mine else " (the others no pair of stations needs or sees)")
             + "."
         )
