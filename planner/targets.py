@@ -175,11 +175,13 @@ def size_rules(
 
 @dataclass(frozen=True)
 class TargetItem:
-    """One kind of target a surveyor owns: a name, a type and its size [mm]."""
+    """One kind of target a surveyor owns: a name, a type, its size [mm] and how many the
+    crew has (``count``; None: as many as the plan needs, e.g. printed checkerboards)."""
 
     name: str
     type: str
     size_mm: float
+    count: int | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "type", _check_type(self.type))
@@ -189,6 +191,13 @@ class TargetItem:
                 f"target {self.name!r}: size_mm must be > 0 [mm]; got {self.size_mm!r}"
             )
         object.__setattr__(self, "size_mm", size)
+        if self.count is not None:
+            if isinstance(self.count, bool) or int(self.count) != self.count or self.count < 1:
+                raise InputError(
+                    f"target {self.name!r}: count must be a whole number >= 1 (how many the "
+                    f"crew has); got {self.count!r}"
+                )
+            object.__setattr__(self, "count", int(self.count))
 
 
 #: Sossa's practice: standard spheres 200 mm (sometimes 400 mm), cylindrical site objects at
@@ -214,12 +223,13 @@ def as_inventory(
 
 
 def parse_inventory(text: str) -> tuple[TargetItem, ...]:
-    """An inventory from text, one item per line: ``name, type, size_mm`` (``#`` comments).
+    """An inventory from text, one item per line: ``name, type, size_mm[, count]`` (``#``
+    comments; without a count, as many as the plan needs).
 
     Examples
     --------
-    >>> parse_inventory("sphere-200, sphere, 200  # the usual ones")
-    (TargetItem(name='sphere-200', type='sphere', size_mm=200.0),)
+    >>> parse_inventory("sphere-200, sphere, 200, 12  # the usual ones")
+    (TargetItem(name='sphere-200', type='sphere', size_mm=200.0, count=12),)
     """
     items = []
     for lineno, line in enumerate(str(text).splitlines(), start=1):
@@ -227,10 +237,10 @@ def parse_inventory(text: str) -> tuple[TargetItem, ...]:
         if not line:
             continue
         parts = [p.strip() for p in line.split(",")]
-        if len(parts) != 3:
+        if len(parts) not in (3, 4):
             raise InputError(
-                f"inventory line {lineno} ({line!r}): write name, type, size in mm "
-                "(e.g. sphere-200, sphere, 200)"
+                f"inventory line {lineno} ({line!r}): write name, type, size in mm and, "
+                "optionally, how many you have (e.g. sphere-200, sphere, 200, 12)"
             )
         try:
             size = float(parts[2])
@@ -238,7 +248,15 @@ def parse_inventory(text: str) -> tuple[TargetItem, ...]:
             raise InputError(
                 f"inventory line {lineno}: the size {parts[2]!r} is not a number of mm"
             ) from None
-        items.append(TargetItem(parts[0], parts[1], size))
+        count = None
+        if len(parts) == 4 and parts[3]:
+            try:
+                count = int(parts[3])
+            except ValueError:
+                raise InputError(
+                    f"inventory line {lineno}: the count {parts[3]!r} is not a whole number"
+                ) from None
+        items.append(TargetItem(parts[0], parts[1], size, count))
     return as_inventory(items)
 
 

@@ -126,10 +126,26 @@ def test_route_of_the_default_plan(default_plan):
         for tid in r.targets_to_set.split():
             assert first[tid] == r.order
     # the time adds up
-    parts = t["walk_min"] + t["targets_min"] + t["setup_min"] + t["scan_min"] + t["imaging_min"]
-    assert np.allclose(t["station_min"], parts, atol=0.15)  # min (rounding)
-    assert t["elapsed_min"].iloc[-1] == pytest.approx(p.route.total_min, abs=0.2)  # min
     st = p.settings
+    # … and collected once, after the last station that scans it: the kit leap-frogs
+    collected = " ".join(t["targets_to_collect"]).split()
+    kit = p.targets[p.targets["type"] != "control"]
+    assert sorted(collected) == sorted(kit["target_id"])
+    last = {
+        tid: max(visit[s] for s in sids)
+        for tid, sids in zip(kit["target_id"], kit["station_ids"], strict=True)
+    }
+    for r in t.itertuples():
+        for tid in r.targets_to_collect.split():
+            assert last[tid] == r.order
+        standing = sum(first[k] <= r.order <= last[k] for k in last)
+        assert r.targets_standing == standing
+    assert p.route.kit["used"].sum() == len(kit)
+    assert p.route.kit["most_at_once"].max() <= t["targets_standing"].max()
+    parts = t[["walk_min", "targets_min", "collect_min", "setup_min", "scan_min", "imaging_min"]]
+    assert np.allclose(t["station_min"], parts.sum(axis=1), atol=0.2)  # min (rounding)
+    assert t["collect_min"].sum() == pytest.approx(st.target_collect_min * len(kit))  # min
+    assert t["elapsed_min"].iloc[-1] == pytest.approx(p.route.total_min, abs=0.2)  # min
     assert (t["setup_min"] == st.setup_min).all()
     assert t["targets_min"].sum() == pytest.approx(st.target_setup_min * len(p.targets))  # min
     # the default scanner gives no measurement rate: the setting's, said so
@@ -177,7 +193,10 @@ def test_a_station_in_a_closed_courtyard_is_still_routed():
     assert np.isinf(walk_paths(site, pts)[0, 1])  # no way round
     stations = pd.DataFrame({"station_id": ["S01", "S02"], "x": pts[:, 0], "y": pts[:, 1]})
     empty = pd.DataFrame(
-        columns=["target_id", "x", "y", "station_ids", "station_a", "station_b", "spacing_mm"]
+        columns=[
+            *["target_id", "x", "y", "type", "item", "size_mm", "station_ids"],
+            *["station_a", "station_b", "spacing_mm"],
+        ]
     )
     coverage = pd.DataFrame(
         {"station_id": ["S01", "S02"], "x": pts[:, 0] + 5, "y": pts[:, 1], "spacing_mm": 4.0}
@@ -280,3 +299,83 @@ def test_the_plan_picks_the_coarsest_setting_the_spacing_allows():
     assert p.settings.preset == "low"
     assert (p.route.table["step_mm_at_10m"] == 12.0).all()
     assert "setting 'low'" in p.route.summary()
+
+
+# -- setting out and the kit -------------------------------------------------------------------
+def test_tape_ties_and_wall_places_in_a_crews_words():
+    from planner.pipeline.setout import corner_ties, wall_place
+
+    site = Site([Building("A", rect(0, 0, 20, 10), 12.0)])
+    (ties,) = corner_ties(site, np.array([[E0 + 23.0, N0 - 4.0]]))
+    assert [t.corner for t in ties] == ["A SE corner", "A NE corner"]
+    assert ties[0].distance_m == pytest.approx(5.0, abs=1e-9)  # m: 3-4-5 from (20, 0)
+    assert ties[0].bearing_deg == pytest.approx(143.13, abs=0.01)  # deg, grid
+    assert "5.00 m at 143° from A SE corner" == ties[0].text()
+    # a corner behind the building is not a tie: the tape would cross it
+    (behind,) = corner_ties(site, np.array([[E0 + 10.0, N0 - 3.0]]))
+    assert {t.corner for t in behind} == {"A SW corner", "A SE corner"}
+    south = pd.Series({"building_id": "A", "x0": E0, "y0": N0, "x1": E0 + 20, "y1": N0})
+    assert (
+        wall_place(south, E0 + 4.2, N0, 3.0)
+        == "building A, south wall, 4.2 m from its west end, 3.0 m high"
+    )
+    east = pd.Series({"building_id": "A", "x0": E0 + 20, "y0": N0, "x1": E0 + 20, "y1": N0 + 10})
+    assert wall_place(east, E0 + 20, N0 + 7.5, 1.6).startswith(
+        "building A, east wall, 7.5 m from its south end"
+    )
+
+
+def test_a_kit_short_of_targets_is_said_with_what_to_bring():
+    from planner.targets import parse_inventory
+
+    inv = parse_inventory("flat-70, flat, 70\nsphere-200, sphere, 200, 3\nsphere-400, sphere, 400")
+    p = plan(default_site(), settings=PlanSettings(inventory=inv))
+    kit = p.route.kit.set_index("item")
+    assert kit.loc["sphere-200", "owned"] == 3
+    peak = int(kit.loc["sphere-200", "most_at_once"])
+    assert peak > 3
+    t = p.route.table.set_index("station_id")
+    where = kit.loc["sphere-200", "at_station"]
+    assert t.loc[where, "targets_standing"] >= peak
+    assert (
+        f"Kit: {peak} sphere-200 stand at once at {where}, the kit has 3: bring {peak - 3} more"
+        in p.summary()
+    )
+
+
+def test_a_station_page_says_where_everything_goes(default_plan):
+    """The page of a station: tape ties to it, every target it scans on its map, each
+    target to set up with where it goes in words and a column for notes, what to collect,
+    the walls it scans; the overview lists the kit."""
+    from matplotlib.table import Table
+    from matplotlib.text import Text
+
+    from planner.app import booklet as bk
+    from planner.pipeline.route import view_sectors
+
+    p = default_plan
+    sectors = view_sectors(p.stations, p.coverage, p.targets)
+    t = p.route.table
+    n = int(np.argmax(t["targets_to_set"].str.len()))
+    fig = bk._station_page(p, n, sectors)
+    cells = [c.get_text() for tb in fig.findobj(Table) for c in tb.get_celld().values()]
+    words = " ".join([*(x.get_text() for x in fig.findobj(Text)), *(c.get_text() for c in cells)])
+    sid = t["station_id"].iloc[n]
+    assert re.search(r"Set out \(tape\).*\d+\.\d\d m at \d+° from \w+ \w+ corner", words, re.S)
+    assert "Walls it scans" in words and "wall (" in words
+    assert "notes" in words and "Collect after it" in words
+    for tid in t["targets_to_set"].iloc[n].split():
+        assert tid in words
+    flat = p.targets[
+        (p.targets["type"] == "flat") & p.targets["station_ids"].map(lambda s: sid in s)
+    ]
+    if len(flat):
+        assert re.search(
+            r"building \w+, \w+(-\w+)? wall, \d+\.\d m from its (west|south) end", words
+        )
+    (ax,) = [a for a in fig.axes if a.get_xlabel().startswith("Easting")]
+    x0, x1, y0, y1 = *ax.get_xlim(), *ax.get_ylim()
+    seen = p.targets[p.targets["station_ids"].map(lambda s: sid in s)]
+    assert seen["x"].between(x0, x1).all() and seen["y"].between(y0, y1).all()  # all on it
+    overview = " ".join(x.get_text() for x in bk._overview(p).findobj(Text))
+    assert "Kit to pack:" in overview and "standing at once" in overview

@@ -34,23 +34,28 @@ from planner.app.maps import (
 from planner.crs import name_of as crs_name
 from planner.pipeline.result import Plan
 from planner.pipeline.route import view_sectors
+from planner.pipeline.schema import STATION_PURPOSES
+from planner.pipeline.setout import compass_word, corner_ties, wall_place, walls_scanned
 
-__all__ = ["booklet_pdf", "compass"]
+__all__ = ["booklet_pdf", "compass", "kit_list", "target_places"]
 
 A4_LANDSCAPE = (11.69, 8.27)
 A4_PORTRAIT = (8.27, 11.69)
 #: Where a station page's parts sit (figure fractions: left, bottom, width, height).
-HEAD_BOX = (0.06, 0.755, 0.9, 0.2)
-MAP_BOX = (0.14, 0.315, 0.8, 0.415)
-TABLE_BOX = (0.06, 0.02, 0.9, 0.25)
-_POINTS = ("N", "NE", "E", "SE", "S", "SW", "W", "NW")
+HEAD_BOX = (0.06, 0.745, 0.9, 0.21)
+MAP_BOX = (0.14, 0.355, 0.8, 0.37)
+TABLE_BOX = (0.06, 0.035, 0.9, 0.25)
+#: A line of the station page's facts, and the gap after each fact (head axes fractions).
+FACT_LINE, FACT_GAP = 0.056, 0.022
+#: A line of the targets table (table axes fraction): what fits decides the rows shown.
+TABLE_LINE = 0.05
 
 
 def compass(azimuth_deg: float) -> str:
     """An azimuth as a compass point and degrees, e.g. ``SW (225°)``."""
     if azimuth_deg is None or not np.isfinite(azimuth_deg):
         return ""
-    return f"{_POINTS[int(((azimuth_deg % 360) + 22.5) // 45) % 8]} ({azimuth_deg:.0f}°)"
+    return f"{compass_word(azimuth_deg, short=True)} ({azimuth_deg:.0f}°)"
 
 
 def booklet_pdf(p: Plan, deadline: float = math.inf) -> bytes:
@@ -108,7 +113,10 @@ def _overview(p: Plan) -> Figure:
     grid = fig.add_gridspec(2, 1, height_ratios=[5.2, 1])
     ax = fig.add_subplot(grid[0])
     plot_plan_map(p, ax, candidates=False, order_labels=True)
-    ax.set_title(f"Field booklet — {p.site.name}: overview (station (visiting order))")
+    ax.set_title(
+        f"Field booklet — {p.site.name}: overview (in brackets a station's place in the "
+        "visiting order, where its id does not give it)"
+    )
     text = fig.add_subplot(grid[1])
     text.axis("off")
     lines = [
@@ -120,6 +128,7 @@ def _overview(p: Plan) -> Figure:
     ]
     if p.route is not None:
         lines.append(p.route.summary())
+        lines.append(kit_list(p))
     text.text(
         0.0,
         1.0,
@@ -129,6 +138,26 @@ def _overview(p: Plan) -> Figure:
         family="DejaVu Sans",
     )
     return fig
+
+
+def kit_list(p: Plan) -> str:
+    """The targets to pack, item by item: how many the plan uses, the most standing at once
+    (they leap-frog: each collected after its last station) and how that sits with the kit."""
+    if p.route is None or p.route.kit.empty:
+        return "Kit: no targets to pack."
+    words = []
+    for k in p.route.kit.itertuples():
+        have = (
+            f"you have {k.owned}"
+            + (f": bring {k.most_at_once - k.owned} more" if k.most_at_once > k.owned else "")
+            if k.owned
+            else "count not given"
+        )
+        words.append(
+            f"{k.item} ({k.type} {k.size_mm:g} mm): {k.used} placed, at most "
+            f"{k.most_at_once} standing at once (at {k.at_station}; {have})"
+        )
+    return "Kit to pack: " + "; ".join(words) + "."
 
 
 def _wrap(text: str, width: int) -> str:
@@ -161,10 +190,15 @@ def _station_page(p: Plan, n: int, sectors: dict[str, tuple[float, float, float]
     walk = "start here" if n == 0 else f"{r['walk_m']:.0f} m, {r['walk_min']:.0f} min"
     if r["walk_note"]:
         walk += f" ({r['walk_note']})"
+    (ties,) = corner_ties(p.site, np.array([[st["x"], st["y"]]]))
     facts = [
         ("Easting / Northing", f"{st['x']:.3f} / {st['y']:.3f} m"),
-        ("Instrument height", f"{st['instrument_height_m']:.2f} m above the ground"),
-        ("Purpose", str(st["purpose"])),
+        ("Set out (tape)", "; ".join(t.text() for t in ties) or "no building corner in sight"),
+        (
+            "Instrument height, why here",
+            f"{st['instrument_height_m']:.2f} m above the ground; "
+            f"{STATION_PURPOSES.get(str(st['purpose']), str(st['purpose']))}",
+        ),
         ("Walk from the previous station", walk),
         ("Scan sector", sector),
         (
@@ -184,12 +218,14 @@ def _station_page(p: Plan, n: int, sectors: dict[str, tuple[float, float, float]
             f"{r['elapsed_min']:.0f} min since the start",
         ),
         ("Register to", _register_to(p, sid, r)),
-        ("Facade samples it serves", f"{int(st.get('samples_met', 0))}"),
+        ("Walls it scans", walls_scanned(p.coverage, p.facades, sid)),
     ]
-    for k, (label, value) in enumerate(facts):
-        y = 0.92 - k * 0.095
-        head.text(0.0, y, label, fontsize=8.5, weight="bold", va="top")
-        head.text(0.33, y, _wrap(value, 80), fontsize=8.5, va="top")
+    y = 0.95
+    for label, value in facts:  # each fact as many lines as it needs
+        text = _wrap(value, 92)
+        head.text(0.0, y, label, fontsize=8, weight="bold", va="top")
+        head.text(0.3, y, text, fontsize=8, va="top")
+        y -= FACT_LINE * (text.count("\n") + 1) + FACT_GAP
     ax = fig.add_axes(MAP_BOX)
     _station_map(p, sid, ax, sectors.get(sid, (0.0, 0.0, 20.0)))
     table_ax = fig.add_axes(TABLE_BOX)
@@ -223,8 +259,16 @@ def _station_map(p: Plan, sid: str, ax, sector: tuple[float, float, float]) -> N
     st = p.stations.set_index("station_id")
     x, y = st.at[sid, "x"], st.at[sid, "y"]
     start, end, radius = sector
-    half = max(15.0, min(radius, 60.0)) * 1.1
-    window = box(x - half, y - half, x + half, y + half)
+    mine = p.targets[p.targets["station_ids"].map(lambda s: sid in s)]
+    # a square round the station and every target it scans, the station's sector at least
+    pts = np.vstack([[[x, y]], mine[["x", "y"]].to_numpy(float).reshape(-1, 2)])
+    lo, hi = pts.min(axis=0) - 4.0, pts.max(axis=0) + 4.0
+    cx, cy = (lo + hi) / 2
+    half = max(15.0 * 1.1, float((hi - lo).max()) / 2 * 1.1)
+    wide = min(radius, 60.0) * 1.1  # the sector round the station, where that holds them
+    if half < wide and np.all(np.abs(pts - [x, y]) <= wide):
+        cx, cy, half = x, y, wide
+    window = box(cx - half, cy - half, cx + half, cy + half)
     plot_site(p.site, ax, window=window)
     ax.add_patch(
         Wedge(
@@ -238,7 +282,6 @@ def _station_map(p: Plan, sid: str, ax, sector: tuple[float, float, float]) -> N
             label="scan sector",
         )
     )
-    mine = p.targets[p.targets["station_ids"].map(lambda s: sid in s)]
     labels: list = []
     draw_targets(
         ax,
@@ -260,8 +303,8 @@ def _station_map(p: Plan, sid: str, ax, sector: tuple[float, float, float]) -> N
             )
     others = p.stations[
         (p.stations["station_id"] != sid)
-        & (p.stations["x"].sub(x).abs() <= half)
-        & (p.stations["y"].sub(y).abs() <= half)
+        & (p.stations["x"].sub(cx).abs() <= half)
+        & (p.stations["y"].sub(cy).abs() <= half)
     ]
     ax.plot(
         others["x"],
@@ -278,55 +321,70 @@ def _station_map(p: Plan, sid: str, ax, sector: tuple[float, float, float]) -> N
     ]
     ax.plot(x, y, MARKERS["station"], color=COLOURS["cover"], ms=11, mec="k", zorder=6, label=sid)
     labels.insert(0, (x, y, sid, {"fontsize": 10, "weight": "bold"}))
-    ax.set_xlim(x - half, x + half)
-    ax.set_ylim(y - half, y + half)
+    ax.set_xlim(cx - half, cx + half)
+    ax.set_ylim(cy - half, cy + half)
     survey_frame(ax, p.site.crs)
     place_labels(ax, labels)
     ax.legend(loc="lower left", fontsize=6.5, framealpha=0.9)
 
 
+def target_places(p: Plan, target_ids: list[str]) -> list[str]:
+    """Where each target goes, in a crew's words: a wall target by its building, wall,
+    distance from the wall's end and height; a stand by tape ties from building corners; a
+    control point as the mark it is."""
+    tg = p.targets.set_index("target_id").loc[target_ids]
+    fac = p.facades.set_index("facade_id")
+    stands = tg[~tg["type"].isin(["flat", "control"])]
+    ties = dict(
+        zip(stands.index, corner_ties(p.site, stands[["x", "y"]].to_numpy(float)), strict=True)
+    )
+    out = []
+    for tid, t in tg.iterrows():
+        facade = t.get("facade_id")
+        if t["type"] == "flat" and isinstance(facade, str) and facade in fac.index:
+            out.append(wall_place(fac.loc[facade], t["x"], t["y"], t["z"]))
+        elif t["type"] == "control":
+            out.append("control point: its mark is already there")
+        else:
+            near = "; ".join(x.text() for x in ties[tid][:2]) or "see its coordinates"
+            out.append(f"{t['type']} on a stand, {t['z']:.1f} m high: {near}")
+    return out
+
+
 def _targets_table(p: Plan, sid: str, r: pd.Series, ax) -> None:
     ids = [t for t in str(r["targets_to_set"]).split(" ") if t]
+    collect = [t for t in str(r.get("targets_to_collect", "")).split(" ") if t]
     ax.set_title(
-        f"Targets to set up before scanning {sid} ({len(ids)})"
-        + ("" if ids else ": none new — all were placed for an earlier station"),
+        f"Set up before scanning {sid}: {len(ids)} target(s)"
+        + ("" if ids else " — none new, all were placed for an earlier station")
+        + (f". Collect after it: {' '.join(collect)}" if collect else ". Collect after it: none"),
         loc="left",
-        fontsize=10,
+        fontsize=9,
         weight="bold",
     )
     if not ids:
         return
     tg = p.targets.set_index("target_id").loc[ids]
     rows = []
-    for tid, t in tg.iterrows():
-        if t["type"] == "flat" and isinstance(t.get("facade_id"), str) and t["facade_id"]:
-            where = f"on wall {t['facade_id']}, facing {compass(t['facing_deg'])}"
-        elif t["type"] == "control":
-            where = "control point (already marked)"
-        else:
-            where = "on a stand"
+    for (tid, t), where in zip(tg.iterrows(), target_places(p, ids), strict=True):
         size = "" if t["size_mm"] is None or not np.isfinite(t["size_mm"]) else f"{t['size_mm']:g}"
-        rows.append(
-            [
-                tid,
-                str(t["type"]),
-                size,
-                where,
-                f"{t['z']:.1f}",
-                f"{t['x']:.3f}",
-                f"{t['y']:.3f}",
-            ]
-        )
-    shown = rows[:18]
+        item = t["item"] if isinstance(t.get("item"), str) and t["item"] else str(t["type"])
+        rows.append([tid, item, size, _wrap(where, 66), f"{t['x']:.3f}", f"{t['y']:.3f}", ""])
+    lines = [r[3].count("\n") + 1 for r in rows]
+    room = 1.0 / TABLE_LINE - 1.4  # lines under the header (a row: its lines + 0.3)
+    n_shown = max(1, int(np.searchsorted(np.cumsum(np.add(lines, 0.3)), room, side="right")))
+    shown = rows[:n_shown]
     table = ax.table(
         cellText=shown,
-        colLabels=["id", "type", "size [mm]", "where", "height [m]", "easting", "northing"],
+        colLabels=["id", "item", "size mm", "where", "easting", "northing", "notes"],
         loc="upper left",
         cellLoc="left",
-        colWidths=[0.07, 0.08, 0.09, 0.39, 0.09, 0.14, 0.14],
+        colWidths=[0.05, 0.09, 0.06, 0.47, 0.1, 0.11, 0.12],
     )
     table.auto_set_font_size(False)
-    table.set_fontsize(7.5)
-    table.scale(1.0, 1.25)
+    table.set_fontsize(6.5)
+    for (row, _col), cell in table.get_celld().items():
+        cell.set_height(TABLE_LINE * (1.4 if row == 0 else lines[row - 1] + 0.3))
     if len(rows) > len(shown):
-        ax.text(0, -0.02, f"… and {len(rows) - len(shown)} more: see targets.csv", fontsize=7.5)
+        left = " ".join(r[0] for r in rows[len(shown) :])
+        ax.text(0, -0.03, f"… and {left}: see targets.csv and the stake-out file", fontsize=7)

@@ -98,10 +98,14 @@ def _field_box(spec: FieldSpec, label: str | None = None) -> w.Widget:
 
 
 def _inventory_box(description: str, style: dict, layout: w.Layout) -> w.Textarea:
-    """The target inventory as text, one item a line (name, type, size mm), starting from
-    the default inventory (read by :func:`planner.targets.parse_inventory`)."""
+    """The target inventory as text, one item a line (name, type, size mm, and how many the
+    crew has where it counts), starting from the default inventory (read by
+    :func:`planner.targets.parse_inventory`)."""
     return w.Textarea(
-        value="\n".join(f"{i.name}, {i.type}, {i.size_mm:g}" for i in DEFAULT_INVENTORY),
+        value="\n".join(
+            f"{i.name}, {i.type}, {i.size_mm:g}" + (f", {i.count}" if i.count else "")
+            for i in DEFAULT_INVENTORY
+        ),
         description=description,
         style=style,
         layout=layout,

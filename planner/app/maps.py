@@ -252,7 +252,8 @@ def plot_plan_map(
                 else None,
             )
     for r in p.stations.itertuples():
-        text = f"{r.station_id} ({order[r.station_id]})" if r.station_id in order else r.station_id
+        n = order.get(r.station_id)  # the visit shown where the id does not say it
+        text = r.station_id if n is None or r.station_id == f"S{n:02d}" else f"{r.station_id} ({n})"
         labels.append((r.x, r.y, text, {"fontsize": 8, "weight": "bold"}))
     un = p.unmet
     if len(un):

@@ -37,6 +37,7 @@ from planner.pipeline.registration import Network, SightCache, TargetCandidates,
 from planner.pipeline.requirements import PlanSettings, Requirements
 from planner.pipeline.result import Plan, SolverReport
 from planner.pipeline.route import FieldRoute, field_route
+from planner.pipeline.schema import id_key
 from planner.pipeline.tables import (
     class_family,
     coverage_table,
@@ -211,13 +212,15 @@ def _targets_renamed(
 ) -> tuple[pd.DataFrame, pd.DataFrame, FieldRoute]:
     """The targets, links and route with the targets renamed (``mapping``: old id → new)."""
 
-    def ids(text: str, sep: str) -> str:
-        return sep.join(mapping.get(t, t) for t in text.split(sep) if t)
+    def ids(text: str, sep: str, in_order: bool = False) -> str:
+        new = [mapping.get(t, t) for t in text.split(sep) if t]
+        return sep.join(sorted(new, key=id_key) if in_order else new)
 
     targets = targets.assign(target_id=targets["target_id"].map(lambda t: mapping.get(t, t)))
     links = links.assign(target_ids=links["target_ids"].astype(str).map(lambda t: ids(t, ";")))
-    table = route.table.assign(
-        targets_to_set=route.table["targets_to_set"].map(lambda t: ids(t, " "))
+    table = route.table.assign(  # a crew's lists, in id order
+        targets_to_set=route.table["targets_to_set"].map(lambda t: ids(t, " ", True)),
+        targets_to_collect=route.table["targets_to_collect"].map(lambda t: ids(t, " ", True)),
     )
     return targets, links, replace(route, table=table)
 

@@ -445,8 +445,10 @@ class PlanSettings:
     traverse_mm, gnss_mm : float, default 2 and 15
         The accuracy of planned control (:mod:`planner.pipeline.control`), per coordinate
         [mm]: what one leg of a total-station traverse adds, and a GNSS (network RTK) point.
-    setup_min, target_setup_min : float, default 5 and 2
-        Field time to set up a station and to place a target [min].
+    setup_min, target_setup_min, target_collect_min : float, default 5, 2 and 1
+        Field time to set up a station, to place a target and to collect it once the last
+        station that uses it is scanned [min] (targets leap-frog along the visiting order
+        within the inventory's counts).
     walk_speed_m_s : float, default 0.8
         Walking speed between stations, carrying the kit [m/s].
     session_h : float, default 4
@@ -641,6 +643,14 @@ class PlanSettings:
         open_lo=False,
         step=0.5,
         help="field time to place one target (stand or wall) before the first scan that sees it",
+    )
+    target_collect_min: float = _spec(
+        1.0,
+        "min",
+        "collecting per target",
+        open_lo=False,
+        step=0.5,
+        help="field time to collect one target once the last station that uses it is scanned",
     )
     walk_speed_m_s: float = _spec(
         0.8, "m/s", "walking speed", step=0.1, help="walking speed carrying the kit"

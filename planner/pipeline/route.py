@@ -12,8 +12,12 @@
   or common targets), so that they can be registered on site as they come (Cyclone FIELD
   360, SCENE's on-site registration); a station waits only as long as none of the stations
   it is linked to has been scanned. ``registers_to`` names the earlier scans it is linked to.
+* **Targets as kit**: a target is placed before the first station that scans it and
+  collected after the last, so the kit leap-frogs along the visiting order; per inventory
+  item the route counts the most standing at once and says where the crew's count
+  (:class:`~planner.targets.TargetItem`'s ``count``) falls short.
 * **Time per station**: walk from the previous station, the targets set up before its
-  scan (a target is placed before the first station that scans it), the set-up, the scan
+  scan and those collected after it, the set-up, the scan
   and the images: the scan is the station's sector (its facade samples and targets, with a
   margin) over the scanner's vertical field — the full dome for a scanner that cannot scan
   a sector — at the plan's setting (:class:`~planner.scanner.Preset`: its step, its rate,
@@ -37,7 +41,7 @@ from scipy.spatial import cKDTree
 
 from planner.fieldwork import scan_points, scan_time_s
 from planner.pipeline.requirements import PlanSettings
-from planner.pipeline.schema import ROUTE_COLUMNS
+from planner.pipeline.schema import KIT_COLUMNS, ROUTE_COLUMNS
 from planner.scanner import Scanner
 from planner.site import Site
 from planner.spacing import resolve_step_mm
@@ -76,6 +80,8 @@ class FieldRoute:
     preset: str = ""
     #: the scanner scans a sector only (else the full dome at every station)
     sector_scan: bool = True
+    #: the targets as kit (:data:`KIT_COLUMNS`): owned, used, most standing at once
+    kit: pd.DataFrame = field(default_factory=lambda: pd.DataFrame(columns=KIT_COLUMNS))
     #: scans registered cloud to cloud on site, each to one scanned before it
     on_site: bool = False
 
@@ -91,6 +97,13 @@ class FieldRoute:
                 else "Scan order: every scan is registered to one scanned before it, but "
                 f"{', '.join(alone)} (linked to no scan before)."
             )
+        for k in self.kit.itertuples():
+            if k.owned and k.most_at_once > k.owned:
+                out.append(
+                    f"Kit: {k.most_at_once} {k.item} stand at once at {k.at_station}, the kit "
+                    f"has {k.owned}: bring {k.most_at_once - k.owned} more, or plan with fewer "
+                    "stations between a target's first and last scan."
+                )
         walks = t[t["walk_note"] != ""] if len(t) else t
         if len(walks):
             out.append(
@@ -110,7 +123,8 @@ class FieldRoute:
             links_to=self.table["links_to"].map(ids),
             registers_to=self.table["registers_to"].map(ids),
         )
-        return replace(self, table=t)
+        kit = self.kit.assign(at_station=self.kit["at_station"].map(lambda s: mapping.get(s, s)))
+        return replace(self, table=t, kit=kit)
 
     @property
     def total_min(self) -> float:
@@ -135,7 +149,9 @@ class FieldRoute:
             f"Field time: {_hm(self.total_min)} in {self.sessions} session(s) — walk "
             f"{t['walk_m'].sum() / 1000:.2f} km ({_hm(t['walk_min'].sum())}), "
             f"{int(t['targets_to_set'].str.len().gt(0).sum())} stop(s) placing "
-            f"{_count_ids(t['targets_to_set'])} targets ({_hm(t['targets_min'].sum())}), set-up "
+            f"{_count_ids(t['targets_to_set'])} targets ({_hm(t['targets_min'].sum())}) and "
+            f"collecting {_count_ids(t['targets_to_collect'])} ({_hm(t['collect_min'].sum())}), "
+            "set-up "
             f"{_hm(t['setup_min'].sum())}, scanning {_hm(t['scan_min'].sum())}{dome} at "
             f"{setting}step {t['step_mm_at_10m'].iloc[0]:g} mm at 10 m, {rate}"
             + (f", imaging {_hm(imaging)}" if imaging > 0 else "")
@@ -443,11 +459,20 @@ def field_route(
     imaging_min = scanner.imaging_s / 60.0 if settings.imaging else 0.0
     sectors = view_sectors(stations, coverage, targets)
     visit = {ids[k]: n for n, k in enumerate(order)}
+    # a target stands from the first station that scans it to the last (then collected):
+    # the kit leap-frogs along the visiting order; a control point is a mark, not kit
     first_visit: dict[int, list[str]] = {}
-    for tid, sids in zip(targets["target_id"], targets["station_ids"], strict=True):
+    last_visit: dict[int, list[str]] = {}
+    life: dict[str, tuple[int, int]] = {}
+    for tid, sids, kind in zip(
+        targets["target_id"], targets["station_ids"], targets["type"], strict=True
+    ):
         seen_by = [visit[s] for s in sids if s in visit]
         if seen_by:
             first_visit.setdefault(min(seen_by), []).append(str(tid))
+            if kind != "control":
+                last_visit.setdefault(max(seen_by), []).append(str(tid))
+                life[str(tid)] = (min(seen_by), max(seen_by))
     spacing = coverage.groupby("station_id")["spacing_mm"].max()
     rows, session, used, elapsed = [], 1, 0.0, 0.0
     limit = settings.session_h * 60.0
@@ -465,9 +490,11 @@ def field_route(
         scan_min = dome_s * points / dome / 60.0
         image_min = imaging_min if scanned else 0.0
         to_set = first_visit.get(n, [])
+        to_collect = last_visit.get(n, [])
         walk_min = walk_m[n] / settings.walk_speed_m_s / 60.0
         t_min = settings.target_setup_min * len(to_set)
-        total = walk_min + t_min + settings.setup_min + scan_min + image_min
+        c_min = settings.target_collect_min * len(to_collect)
+        total = walk_min + t_min + settings.setup_min + scan_min + image_min + c_min
         if used > 0 and used + total > limit:
             session, used = session + 1, 0.0
         used += total
@@ -484,6 +511,9 @@ def field_route(
                 "walk_min": round(walk_min, 1),
                 "targets_to_set": " ".join(to_set),
                 "targets_min": round(t_min, 1),
+                "targets_to_collect": " ".join(to_collect),
+                "collect_min": round(c_min, 1),
+                "targets_standing": sum(a <= n <= b for a, b in life.values()),
                 "setup_min": settings.setup_min,
                 "sector_start_deg": round(start, 1),
                 "sector_deg": round(width, 1),
@@ -504,4 +534,34 @@ def field_route(
         )
     route.table = pd.DataFrame(rows, columns=ROUTE_COLUMNS)
     route.legs = legs
+    route.kit = _kit(settings, targets, life, [ids[k] for k in order])
     return route
+
+
+def _kit(
+    settings: PlanSettings,
+    targets: pd.DataFrame,
+    life: dict[str, tuple[int, int]],
+    visited: list[str],
+) -> pd.DataFrame:
+    """Per inventory item: owned, used by the plan, most standing at once and where."""
+    items = {i.name: i for i in settings.inventory}
+    rows = []
+    for item, group in targets[targets["type"] != "control"].groupby("item", sort=True):
+        spans = [life[t] for t in group["target_id"].astype(str) if t in life]
+        standing = [sum(a <= n <= b for a, b in spans) for n in range(len(visited))]
+        peak = int(max(standing, default=0))
+        at = visited[int(np.argmax(standing))] if peak else ""
+        inv = items.get(str(item))
+        rows.append(
+            {
+                "item": str(item),
+                "type": str(group["type"].iloc[0]),
+                "size_mm": float(group["size_mm"].iloc[0]),
+                "owned": inv.count if inv is not None and inv.count else 0,
+                "used": len(group),
+                "most_at_once": peak,
+                "at_station": at,
+            }
+        )
+    return pd.DataFrame(rows, columns=KIT_COLUMNS)

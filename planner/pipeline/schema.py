@@ -21,6 +21,7 @@ if TYPE_CHECKING:
 __all__ = [
     "COVERAGE_COLUMNS",
     "FACADE_TABLE_COLUMNS",
+    "KIT_COLUMNS",
     "LINK_COLUMNS",
     "MEETING_COLUMNS",
     "METRIC_KEYS",
@@ -174,6 +175,9 @@ ROUTE_COLUMNS = [
     "walk_min",
     "targets_to_set",
     "targets_min",
+    "targets_to_collect",
+    "collect_min",
+    "targets_standing",
     "setup_min",
     "sector_start_deg",
     "sector_deg",
@@ -190,6 +194,10 @@ ROUTE_COLUMNS = [
     "walk_note",
 ]
 
+
+#: The kit: per item of the inventory, how many the crew has, how many the plan uses and
+#: how many stand at once at most (leap-frogged along the visiting order), and where.
+KIT_COLUMNS = ["item", "type", "size_mm", "owned", "used", "most_at_once", "at_station"]
 
 #: The stake-out file a controller imports: point id, easting, northing, height, code.
 STAKEOUT_COLUMNS = ["point_id", "easting", "northing", "height", "code"]
