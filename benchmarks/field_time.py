@@ -34,7 +34,9 @@ def main() -> None:
         "at every setting: scan = the dome's points at the setting's step over its rate "
         "(shared out by the station's sector where the scanner can scan one), images = the "
         "profile's `imaging_s`. Set-up 5 min a station, 2 min a target placed, 1 min "
-        "collected; walking 0.8 m/s.",
+        "collected; walking 0.8 m/s. A computed dome time is a lower bound: the head's turn "
+        "and the mirror's limits at coarse steps are not modelled (a preset's `scan_s` holds "
+        "the maker's figure where one is published).",
         "",
         "| scanner | setting | step at 10 m | full dome (computed) | stations | scanning | "
         "images | field time | maker states |",
