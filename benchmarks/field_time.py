@@ -48,7 +48,7 @@ def main() -> None:
         lo, hi = sc.vertical_fov_deg
         for pr in sc.presets:
             st = replace(p.settings, preset=pr.name, step_mm_at_10m=None).for_scanner(
-                sc, p.requirements, p.solver.reach_m
+                sc, None, p.solver.reach_m
             )
             r = field_route(p.site, sc, st, p.stations, p.targets, p.coverage, p.links)
             t = r.table

@@ -269,7 +269,8 @@ class Scanner:
 
     def choose_preset(self, max_step_mm_at_10m: float | None) -> Preset | None:
         """The coarsest preset whose step is at most ``max_step_mm_at_10m`` (None: the
-        default preset); the finest where none is fine enough; None without presets.
+        default preset, if any); the finest where none is fine enough; None without
+        presets.
 
         >>> s = Scanner(name="x", range_rms_mm=1, angle_rms_arcsec=10, presets=(
         ...     Preset("low", 12.0), Preset("medium", 6.0), Preset("high", 3.0)),
@@ -280,7 +281,7 @@ class Scanner:
         if not self.presets:
             return None
         if max_step_mm_at_10m is None:
-            return self.preset(None) or max(self.presets, key=lambda p: p.step_mm_at_10m)
+            return self.preset(None)
         fine = [p for p in self.presets if p.step_mm_at_10m <= max_step_mm_at_10m * (1 + 1e-9)]
         if fine:
             return max(fine, key=lambda p: (p.step_mm_at_10m, p.rate_hz or math.inf))
@@ -407,7 +408,9 @@ class Scanner:
 
 _TOML_HEADER = "# tls-planner scanner profile (units: mm, ppm, arc-seconds, m, deg)\n"
 
-#: Tables a profile may carry besides its fields (kept as records, not used for planning).
+#: Tables a profile may carry besides its fields: records kept with it (a calibration, the
+#: datasheet's accuracy figures) and its ``[[scanner.preset]]`` tables (read into
+#: :attr:`Scanner.presets`).
 RECORD_KEYS = ("calibration", "datasheet_3d_accuracy_mm", "preset")
 
 

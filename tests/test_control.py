@@ -62,6 +62,26 @@ def test_a_courtyard_behind_a_narrow_gateway_is_tied_by_a_traverse(gated):
     assert tie.datum_rms_mm == pytest.approx(2.0 * np.sqrt(tie.legs))  # mm: 2 mm a leg
 
 
+def test_stations_edited_by_hand_on_a_plan_with_a_traverse(gated):
+    """Every station of the plan given back as it is (the traverse's set-ups too, two of
+    which stand on scanner stations): the scanner stations are judged again under their
+    ids and purposes, the traverse is planned again with the network, not taken for
+    stations placed by hand."""
+    from planner.pipeline.whatif import evaluate_stations
+
+    p = gated
+    q = evaluate_stations(p, p.stations[["x", "y"]].to_numpy(), list(p.stations["station_id"]))
+    before = p.scan_stations.set_index("station_id")["purpose"]
+    after = q.scan_stations.set_index("station_id")["purpose"]
+    assert after.loc[before.index].tolist() == before.tolist()
+    assert (q.stations["purpose"] == "traverse").sum() == (
+        p.stations["purpose"] == "traverse"
+    ).sum()
+    assert (q.stations["purpose"] != "hand").all()
+    q2 = evaluate_stations(p, p.stations[["x", "y"]].to_numpy())  # by position alone
+    assert sorted(q2.scan_stations["station_id"]) == sorted(before.index)
+
+
 def _stakeout(p) -> str:
     from planner.pipeline.deliver import stakeout_csv
 

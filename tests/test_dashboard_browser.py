@@ -18,6 +18,7 @@ import time
 import zipfile
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from planner.app.notebooks import notebook_path
@@ -203,6 +204,24 @@ def _cut_off(page) -> list[str]:
     )
 
 
+def test_the_plan_button_and_status_stay_in_sight(page):
+    """Scrolled to the bottom of the page, the toolbar (Plan, progress, status) is still at
+    the top of the window."""
+    scroll = """(to) => { for (const e of document.querySelectorAll('*')) {
+        const y = getComputedStyle(e).overflowY;
+        if ((y === 'auto' || y === 'scroll') && e.scrollHeight > e.clientHeight + 10)
+            e.scrollTop = to === 'end' ? e.scrollHeight : 0; } }"""
+    page.evaluate(scroll, "end")
+    page.wait_for_timeout(300)
+    for locator in (
+        page.get_by_role("button", name="Plan", exact=True),
+        page.locator(".planner-status"),
+    ):
+        box = locator.bounding_box()
+        assert box is not None and 0 <= box["y"] <= 120, box  # px from the window's top
+    page.evaluate(scroll, "top")
+
+
 def test_changed_input_marks_the_plan_out_of_date(page):
     assert page.locator(".planner-stale-banner").count() == 0
     _set_number(page, "largest m_z [mm]", "4")
@@ -328,6 +347,26 @@ def _status_after(page, action, timeout_ms: int = 30_000) -> str:
     return page.locator(".planner-whatif-status").inner_text()
 
 
+def _screen_of(page):
+    """The what-if map's data → screen transform (E, N [m] → px), read from its axes' tick
+    labels: two linear fits."""
+    ticks = page.evaluate(
+        """() => {
+        const fig = document.querySelector('.planner-whatif-map');
+        return [...fig.querySelectorAll('g.tick')].map(t => {
+            const r = t.querySelector('text').getBoundingClientRect();
+            return {v: parseFloat(t.textContent.replace(/[^0-9.-]/g, '')),
+                    x: r.x + r.width / 2, y: r.y + r.height / 2};
+        }).filter(t => isFinite(t.v));
+    }"""
+    )
+    xs = [t for t in ticks if t["v"] < 1e6]  # eastings (6 digits), northings (7)
+    ys = [t for t in ticks if t["v"] >= 1e6]
+    ax = np.polyfit([t["v"] for t in xs], [t["x"] for t in xs], 1)
+    ay = np.polyfit([t["v"] for t in ys], [t["y"] for t in ys], 1)
+    return lambda e, n: (float(np.polyval(ax, e)), float(np.polyval(ay, n)))
+
+
 def _stations_in(status: str) -> int:
     return int(status.split(" stations")[0].split()[-1])
 
@@ -336,23 +375,42 @@ def test_adding_deleting_and_locking_by_hand(page):
     """Add a station where clicked, delete one, rule a target out, lock a station and
     re-optimise around it: each judged again, the locked station kept where it stood."""
     boxes = _edit_tab_stations(page)
-    # add: a click on free ground next to a station (stations stand on free ground)
     page.get_by_role("button", name="Add station", exact=True).click()
+    # a click inside a building is refused, and the map says why where it was clicked
+    to_screen = _screen_of(page)
+    inside = to_screen(691040.0, 5335028.0)  # in the default site's main building
+    text, timeout = "", _need_browser().TimeoutError
+    for _ in range(4):  # (the mode reaches the map through the kernel: a first click may
+        try:  # come before it)
+            text = _status_after(page, lambda: page.mouse.click(*inside), timeout_ms=5000)
+            break
+        except timeout:
+            continue
+    assert "Not added" in text and "inside building main" in text, text
+    notice = page.evaluate(
+        """() => [...document.querySelectorAll('.planner-whatif-map text')]
+            .map(t => t.textContent).filter(t => t.startsWith('not added'))"""
+    )
+    assert notice == ["not added: inside building main"], notice
+    # add: a click on free ground next to a station (stations stand on free ground)
     marks = _marks(page, 0, 1e9)
     spots = [
         (b["x"] + dx, b["y"] + dy) for b in boxes[:4] for dx in (-24, 24, 0) for dy in (-24, 24, 0)
     ]
     free = [s for s in spots if all(abs(q["x"] - s[0]) + abs(q["y"] - s[1]) > 14 for q in marks)]
-    text, timeout = "", _need_browser().TimeoutError
-    for x, y in free:  # a click too near a station or inside a building is not taken
+    for x, y in free:  # a click too near a station or inside a building is refused
         try:
             text = _status_after(page, lambda x=x, y=y: page.mouse.click(x, y), timeout_ms=5000)
-            break
-        except timeout:  # not taken: the next spot
+        except timeout:  # on a mark: the next spot
             continue
+        if "judged again" in text:
+            break
+        assert text.startswith("Not added: "), text  # refused, saying why
     assert "judged again" in text, text
     assert _stations_in(text) >= len(boxes) + 1
     assert len(_station_boxes(page)) == _stations_in(text)
+    # the map kept its view: the same metre under the same pixel
+    assert _screen_of(page)(691040.0, 5335028.0) == pytest.approx(inside, abs=1.0)  # px
     # delete: the station clicked goes
     before = _stations_in(text)
     page.get_by_role("button", name="Delete", exact=True).click()

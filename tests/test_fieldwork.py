@@ -228,7 +228,7 @@ def test_each_preset_times_the_scans_by_its_step_rate_and_sector(default_plan, n
     p, sc = default_plan, load_scanner(name)
     lo, hi = sc.vertical_fov_deg
     for pr in sc.presets:
-        st = replace(p.settings, preset=pr.name).for_scanner(sc, p.requirements, 100.0)
+        st = replace(p.settings, preset=pr.name).for_scanner(sc, None, 100.0)
         assert st.step_mm_at_10m == pr.step_mm_at_10m
         t = field_route(p.site, sc, st, p.stations, p.targets, p.coverage, p.links).table
         rate = pr.rate_hz or sc.measurement_rate_hz
@@ -249,7 +249,7 @@ def test_imaging_off_takes_the_images_out_of_the_field_time(default_plan):
     from dataclasses import replace
 
     p, sc = default_plan, load_scanner("leica-rtc360")
-    st = p.settings.for_scanner(sc, p.requirements, 100.0)
+    st = p.settings.for_scanner(sc, None, 100.0)
     on = field_route(p.site, sc, st, p.stations, p.targets, p.coverage, p.links)
     off = field_route(
         p.site, sc, replace(st, imaging=False), p.stations, p.targets, p.coverage, p.links
@@ -285,15 +285,14 @@ def test_the_plan_picks_the_coarsest_setting_the_spacing_allows():
     st = PlanSettings()
     req = Requirements()
     reach = reach_m(sc, req, st)
-    assert st.for_scanner(sc, req, reach).preset == "medium"
+    assert st.for_scanner(sc, None, reach).preset == "medium"
     for spacing_at_reach, want in ((12.5, "low"), (6.5, "medium"), (4.0, "high"), (1.0, "high")):
-        loose = Requirements(max_spacing_mm=spacing_at_reach * reach / 10.0)
-        chosen = st.for_scanner(sc, loose, reach)
+        chosen = st.for_scanner(sc, spacing_at_reach * reach / 10.0, reach)
         assert chosen.preset == want
         assert chosen.step_mm_at_10m == sc.preset(want).step_mm_at_10m
-    given = PlanSettings(step_mm_at_10m=3.0).for_scanner(sc, req, reach)
+    given = PlanSettings(step_mm_at_10m=3.0).for_scanner(sc, None, reach)
     assert (given.preset, given.step_mm_at_10m) == ("high", 3.0)
-    own = PlanSettings(step_mm_at_10m=4.0).for_scanner(sc, req, reach)
+    own = PlanSettings(step_mm_at_10m=4.0).for_scanner(sc, None, reach)
     assert (own.preset, own.step_mm_at_10m) == (None, 4.0)
     p = plan(default_site(), sc, Requirements(max_spacing_mm=13.0 * reach / 10.0))
     assert p.settings.preset == "low"

@@ -118,9 +118,19 @@ def test_moving_a_station_changes_its_coverage(default_plan):
 
 
 def test_a_station_inside_a_building_is_refused_with_where(default_plan):
-    centre = default_plan.site.planned[0].footprint.representative_point()
-    with pytest.raises(InputError, match=r"inside a building.*move it onto free ground"):
+    b = default_plan.site.planned[0]
+    centre = b.footprint.representative_point()
+    with pytest.raises(InputError, match=rf"inside building {b.id}; move it onto free ground"):
         evaluate_stations(default_plan, [[centre.x, centre.y]])
+    x0, y0, _, _ = b.footprint.bounds
+    # beside the wall, within the tripod's clearance: how far, from what
+    corner = [x0 - 0.4, y0 - 0.3]
+    with pytest.raises(InputError, match=rf"stands 0\.5 m from building {b.id} \(the tripod"):
+        evaluate_stations(default_plan, [corner])
+    street = default_plan.site.no_go[0]
+    inside = street.geometry.representative_point()
+    with pytest.raises(InputError, match=f"in the no-go area {street.id}"):
+        evaluate_stations(default_plan, [[inside.x, inside.y]])
 
 
 def test_reoptimise_keeps_the_locked_station_and_covers_the_rest(default_plan):
@@ -226,7 +236,7 @@ def test_bad_target_edits_say_what_is_wrong(own_plan):
     with pytest.raises(InputError, match="no target 'T99'"):
         edit_targets(p, remove=["T99"])
     b = p.site.planned[0].footprint.representative_point()
-    with pytest.raises(InputError, match="stands inside a building"):
+    with pytest.raises(InputError, match="stands inside building"):
         edit_targets(p, add_xy=np.array([[b.x, b.y]]))
 
 

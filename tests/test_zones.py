@@ -247,10 +247,12 @@ def test_the_dashboard_adds_a_zone_without_files():
     d.run()
     assert d.error.value == ""
     assert list(d.plan.zones["zone_id"]) == ["Z1"] and d.plan.zones.loc[0, "samples"] == 144
+    assert d.stale.value == ""
     z.facade.value = "main-f00"
     z.along.value = (0.0, 0.05)
     z.height.value = (14.9, 15.0)
     z.spacing.value = 0.0
     z.add_zone()
+    assert "Out of date" in d.stale.value  # a zone added dates the plan on screen
     d.run()  # a zone too small to hold a sample: a message, never a traceback
     assert "holds no facade sample" in d.error.value

@@ -147,6 +147,9 @@ def kit_list(p: Plan) -> str:
         return "Kit: no targets to pack."
     words = []
     for k in p.route.kit.itertuples():
+        if not k.item:  # targets no item of the inventory is big enough for
+            words.append(f"{k.used} {k.type} target(s) no item of your inventory fits")
+            continue
         have = (
             f"you have {k.owned}"
             + (f": bring {k.most_at_once - k.owned} more" if k.most_at_once > k.owned else "")
@@ -218,7 +221,12 @@ def _station_page(p: Plan, n: int, sectors: dict[str, tuple[float, float, float]
             f"{r['elapsed_min']:.0f} min since the start",
         ),
         ("Register to", _register_to(p, sid, r)),
-        ("Walls it scans", walls_scanned(p.coverage, p.facades, sid)),
+        (
+            "Walls it scans",
+            "none: a total station's set-up of the traverse"
+            if st["purpose"] == "traverse"
+            else walls_scanned(p.coverage, p.facades, sid),
+        ),
     ]
     y = 0.95
     for label, value in facts:  # each fact as many lines as it needs
@@ -334,20 +342,21 @@ def target_places(p: Plan, target_ids: list[str]) -> list[str]:
     control point as the mark it is."""
     tg = p.targets.set_index("target_id").loc[target_ids]
     fac = p.facades.set_index("facade_id")
-    stands = tg[~tg["type"].isin(["flat", "control"])]
+    on_wall = (tg["type"] == "flat") & tg["facade_id"].isin(fac.index)
+    loose = tg[~on_wall & (tg["type"] != "control")]
     ties = dict(
-        zip(stands.index, corner_ties(p.site, stands[["x", "y"]].to_numpy(float)), strict=True)
+        zip(loose.index, corner_ties(p.site, loose[["x", "y"]].to_numpy(float)), strict=True)
     )
     out = []
-    for tid, t in tg.iterrows():
-        facade = t.get("facade_id")
-        if t["type"] == "flat" and isinstance(facade, str) and facade in fac.index:
-            out.append(wall_place(fac.loc[facade], t["x"], t["y"], t["z"]))
+    for (tid, t), wall in zip(tg.iterrows(), on_wall, strict=True):
+        if wall:
+            out.append(wall_place(fac.loc[t["facade_id"]], t["x"], t["y"], t["z"]))
         elif t["type"] == "control":
             out.append("control point: its mark is already there")
         else:
             near = "; ".join(x.text() for x in ties[tid][:2]) or "see its coordinates"
-            out.append(f"{t['type']} on a stand, {t['z']:.1f} m high: {near}")
+            where = "on a stand" if t["type"] != "flat" else "on its wall"
+            out.append(f"{t['type']} {where}, {t['z']:.1f} m high: {near}")
     return out
 
 

@@ -135,6 +135,7 @@ class ZoneEditor:
         self.clear = w.Button(description="Remove zones")
         self.listing = w.HTML("<small>No zones: one requirement everywhere.</small>")
         self.zones: list = []
+        self.on_change = lambda: None  # the page's: a zone added or removed dates the plan
         self._sizes: dict[str, tuple[float, float]] = {}
         self.facade.observe(lambda _c: self._fit_ranges(), "value")
         self.add.on_click(lambda _b: self.add_zone())
@@ -196,10 +197,14 @@ class ZoneEditor:
             return
         self.zones.append(zone)
         self._list()
+        self.on_change()
 
     def remove_all(self) -> None:
+        had = bool(self.zones)
         self.zones = []
         self._list()
+        if had:
+            self.on_change()
 
     def _list(self) -> None:
         if not self.zones:
@@ -234,6 +239,10 @@ _MAIN_FIELDS = {
 }
 
 _CSS = """<style>
+.planner-toolbar { position: sticky; top: 0; z-index: 50; background: white;
+  border-bottom: 1px solid #ddd; padding: 4px 0 2px 0; }
+.planner-root, .jp-OutputArea:has(.planner-toolbar), .jp-OutputArea-child:has(.planner-toolbar),
+.jp-OutputArea-output:has(.planner-toolbar) { overflow: visible !important; }
 .planner-stale { opacity: 0.45; }
 .planner-stale-banner { background:#fff3cd; border:1px solid #e0c36a; padding:4px 10px;
   border-radius:4px; margin-bottom:6px }
@@ -358,7 +367,9 @@ class StationPlanner:
         self.accuracy_class.observe(lambda _c: self._show_class(), "value")
         self.plan_button = w.Button(description="Plan", button_style="primary")
         self.cancel_button = w.Button(description="Cancel", icon="stop", disabled=True)
-        self.progress = w.FloatProgress(value=0.0, min=0.0, max=1.0, description="", layout=_FULL)
+        self.progress = w.FloatProgress(
+            value=0.0, min=0.0, max=1.0, description="", layout=w.Layout(width="40%")
+        )
         self.status = w.HTML("")
         self.status.add_class("planner-status")
         self.error = w.HTML("")
@@ -468,17 +479,32 @@ class StationPlanner:
                 self.grid,
                 more,
                 self.zone_editor.widget,
-                w.HBox([self.plan_button, self.cancel_button]),
-                self.progress,
-                self.status,
-                self.error,
             ],
             layout=w.Layout(width="34%", min_width="340px"),
         )
-        self.results = w.VBox([self.summary, self.tabs], layout=w.Layout(width="100%"))
-        self.widget = w.HBox(
-            [controls, w.VBox([self.stale, self.results], layout=w.Layout(width="64%"))]
+        # Plan, Cancel, progress, status and error in a bar that stays at the top of the
+        # window however far the page is scrolled
+        self.toolbar = w.VBox(
+            [
+                w.HBox(
+                    [self.plan_button, self.cancel_button, self.progress],
+                    layout=w.Layout(align_items="center"),
+                ),
+                self.status,
+                self.error,
+            ]
         )
+        self.toolbar.add_class("planner-toolbar")  # (sticky: its boxes do not clip it)
+        self.results = w.VBox([self.summary, self.tabs], layout=w.Layout(width="100%"))
+        self.widget = w.VBox(
+            [
+                self.toolbar,
+                w.HBox(
+                    [controls, w.VBox([self.stale, self.results], layout=w.Layout(width="64%"))]
+                ),
+            ]
+        )
+        self.widget.add_class("planner-root")
         self.plan = None
         self._files: dict[str, bytes] = {}  # the downloads of the plan on screen
         self._cancel = threading.Event()
@@ -497,6 +523,7 @@ class StationPlanner:
         self.buildings.observe(lambda _c: self._offer_facades(), "value")
         for widget in self.inputs:
             widget.observe(lambda _c: self._mark_stale(), "value")
+        self.zone_editor.on_change = self._mark_stale
         self._offer_facades()
 
     # -- honest state ----------------------------------------------------------------------------

@@ -22,7 +22,7 @@ from shapely.geometry.base import BaseGeometry
 from planner.crs import name_of as crs_name
 from planner.pipeline.result import Plan
 from planner.pipeline.route import view_sectors
-from planner.pipeline.schema import STATION_PURPOSES, SYMBOLS
+from planner.pipeline.schema import STATION_ID, STATION_PURPOSES, SYMBOLS
 from planner.site import Site
 
 __all__ = [
@@ -253,7 +253,8 @@ def plot_plan_map(
             )
     for r in p.stations.itertuples():
         n = order.get(r.station_id)  # the visit shown where the id does not say it
-        text = r.station_id if n is None or r.station_id == f"S{n:02d}" else f"{r.station_id} ({n})"
+        says_it = n is None or r.station_id == STATION_ID.format(n)
+        text = r.station_id if says_it else f"{r.station_id} ({n})"
         labels.append((r.x, r.y, text, {"fontsize": 8, "weight": "bold"}))
     un = p.unmet
     if len(un):

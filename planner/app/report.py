@@ -93,6 +93,8 @@ ROUTE_REPORT_COLUMNS = [
     "session",
     "walk_m",
     "targets_to_set",
+    "targets_to_collect",
+    "targets_standing",
     "sector_start_deg",
     "sector_deg",
     "scan_min",

@@ -53,6 +53,32 @@ def _rings(geoms) -> tuple[np.ndarray, np.ndarray]:
     return padded[:, :, 0], padded[:, :, 1]
 
 
+#: The outlines and labels never take a click: a click on a building reaches the map (and
+#: is refused there with the reason) instead of vanishing into the outline.
+_CSS = """<style>
+.planner-whatif-map path.line, .planner-whatif-map path.area, .planner-whatif-map text.label
+{ pointer-events: none; }
+</style>"""
+
+
+def _edited_point(before: np.ndarray, after: np.ndarray) -> np.ndarray | None:
+    """Where an edit was made: the point added, or the one moved farthest."""
+    if len(after) > len(before):
+        return after[-1]
+    if len(after) == len(before) and len(after):
+        return after[int(np.argmax(np.hypot(*(after - before).T)))]
+    return None
+
+
+def _short(message: str) -> str:
+    """The reason of a refusal in a few words for the map (the status has all of it)."""
+    words = message.split(";")[0]
+    for cut in (" stands ", " would stand "):
+        if cut in words:
+            words = words.split(cut, 1)[1]
+    return words if len(words) <= 60 else words[:57] + "…"
+
+
 class WhatIfMap:
     """Stations on the site, editable; facade samples green (met) or red (unmet).
 
@@ -131,6 +157,17 @@ class WhatIfMap:
                 label_offset="65px",
             ),
         ]
+        self.notice = bq.Label(  # why a click was refused, where it was made
+            x=[],
+            y=[],
+            text=[],
+            scales=scales,
+            colors=["#922b21"],
+            default_size=13,
+            font_weight="bold",
+            x_offset=10,
+            y_offset=-10,
+        )
         self.figure = bq.Figure(
             marks=[
                 self.others,
@@ -139,6 +176,7 @@ class WhatIfMap:
                 self.samples,
                 self.targets,
                 self.stations,
+                self.notice,
             ],
             axes=ax,
             padding_x=0,
@@ -150,8 +188,10 @@ class WhatIfMap:
         self.mode = w.ToggleButtons(options=MODES, value="move", description="Click to")
         self.reopt = w.Button(description="Re-optimise around the locked", icon="refresh")
         self.reopt.layout.width = "22em"
-        self.status = w.HTML("")
+        # room for three lines: a longer status never pushes the map down under the cursor
+        self.status = w.HTML("", layout=w.Layout(min_height="4.6em"))
         self.status.add_class("planner-whatif-status")
+        self._framed = None  # the site the map's view was fitted to (kept through edits)
         self.locked: list[bool] = []
         self._xy = np.empty((0, 2))
         self._ids: list[str | None] = []  # the station each position is (None: added)
@@ -168,6 +208,7 @@ class WhatIfMap:
         self.reopt.on_click(lambda _b: self._reoptimise(self._xy[np.asarray(self.locked, bool)]))
         self.widget = w.VBox(
             [
+                w.HTML(_CSS),
                 w.HTML(
                     "<small>Drag a station (▲) or a target (◆) to move it — a wall target "
                     "slides along its wall; <b>Add station</b> / <b>Add target</b> (a sphere "
@@ -203,19 +244,22 @@ class WhatIfMap:
         self.samples.color = (~cov["meets"].to_numpy()).astype(float)
         self._target_ids = [str(t) for t in p.targets["target_id"]]
         self._target_xy = p.targets[["x", "y"]].to_numpy(dtype=float).reshape(-1, 2)
-        xy = p.stations[["x", "y"]].to_numpy(dtype=float)
+        scans = p.scan_stations  # (a traverse's set-ups are planned with the network)
+        xy = scans[["x", "y"]].to_numpy(dtype=float)
         self._xy = xy
-        self._ids = [str(s) for s in p.stations["station_id"]]
+        self._ids = [str(s) for s in scans["station_id"]]
         self.locked = [old.get(tuple(np.round(q, 3)), False) for q in xy]
         self._quiet = True
         with self.stations.hold_sync():
             self.stations.x, self.stations.y = xy[:, 0], xy[:, 1]
-            self.stations.names = self._names(p.stations["station_id"])
+            self.stations.names = self._names(scans["station_id"])
         self._draw_targets()
         self._quiet = False
-        self._fit_extent(p)
-        if message:
-            self.status.value = message
+        self._say_at(None)
+        if self._framed is not p.site:  # a new site is framed; an edit keeps the view
+            self._fit_extent(p)
+            self._framed = p.site
+        self.status.value = message  # a status never outlives what it describes
 
     def _names(self, ids) -> list[str]:
         return [f"{s} 🔒" if lk else str(s) for s, lk in zip(ids, self.locked, strict=True)]
@@ -303,6 +347,15 @@ class WhatIfMap:
             )
             self._draw_targets()  # back where they were
 
+    def _say_at(self, xy: np.ndarray | None, text: str = "") -> None:
+        """Write ``text`` on the map at ``xy`` (None: clear it)."""
+        with self.notice.hold_sync():
+            if xy is None:
+                self.notice.x, self.notice.y, self.notice.text = [], [], []
+            else:
+                self.notice.x, self.notice.y = [float(xy[0])], [float(xy[1])]
+                self.notice.text = [text]
+
     def _edit(self, xy: np.ndarray, ids: list[str | None], what: str) -> None:
         before, locks, names = self._xy, list(self.locked), self._ids
         self._xy, self._ids = xy, list(ids)  # the locks are aligned with the edited positions
@@ -314,6 +367,7 @@ class WhatIfMap:
                 f"<span class='planner-error' style='color:#922'>Not {what}: "
                 f"{html.escape(str(exc))}</span>"
             )
+            self._say_at(_edited_point(before, xy), f"not {what}: {_short(str(exc))}")
             self._quiet = True
             self.stations.x, self.stations.y = self._xy[:, 0], self._xy[:, 1]
             self._quiet = False

@@ -54,6 +54,8 @@ DXF_LAYERS_OFF = ("VIEW-SECTORS",)
 #: 2.5 mm lettering (ISO 3098), its symbol 3 mm across.
 TEXT_MM = 2.5
 SYMBOL_MM = 3.0
+#: A dash of the dashed layers on paper [mm].
+LINE_DASH_MM = 5.0
 #: Linetype of a layer, where not continuous.
 DXF_LINETYPES = {"ROUTE": "DASHED", "LINKS": "DASHDOT", "PASSAGES": "DASHED"}
 
@@ -120,7 +122,8 @@ def dxf_text(p: Plan) -> str:
         if name in DXF_LAYERS_OFF:
             layer.off()
     paper = p.settings.drawing_scale / 1000.0  # metres on the ground per mm on paper
-    doc.header["$LTSCALE"] = paper
+    # ezdxf's DASHED is 1.27 units of dash and 0.254 of gap: 5 mm dashes on paper
+    doc.header["$LTSCALE"] = paper * LINE_DASH_MM / 1.27
     for name, shape, tags in (
         ("STATION", SYMBOLS["station"], ("ID", "HEIGHT", "PURPOSE")),
         ("TARGET-FLAT", SYMBOLS["flat"], TARGET_TAGS),

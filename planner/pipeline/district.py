@@ -60,7 +60,12 @@ from planner.pipeline.requirements import (
 from planner.pipeline.result import Plan, SolverReport
 from planner.pipeline.route import field_route
 from planner.pipeline.schema import MEETING_COLUMNS, METRIC_KEYS
-from planner.pipeline.tables import REASON_DATA, budget_message
+from planner.pipeline.tables import (
+    REASON_DATA,
+    budget_message,
+    rename_stations,
+    rename_targets,
+)
 from planner.registration_error import datum_tilt_cov
 from planner.scanner import Scanner
 from planner.site import Site
@@ -452,7 +457,9 @@ def plan_district(
         deadline = time.monotonic() + st.time_limit_s
     blocks = partition(site, block_m)
     halo = reach_m(scanner, req, st)
-    st = st.for_scanner(scanner, req, halo)  # every block with the same scan step and preset
+    spacing = [req.max_spacing_mm, *(z.requirement.get("max_spacing_mm") for z in site.zones)]
+    spacing = [float(v) for v in spacing if v]  # the strictest anywhere: one step for all blocks
+    st = st.for_scanner(scanner, min(spacing, default=None), halo)
     if workers < 1:
         raise InputError(f"--workers must be at least 1 (got {workers})")
     _memory_bytes(memory_limit)
@@ -666,26 +673,14 @@ def stitch(
     control = {c.id for c in site.control}
     for b, p in zip(blocks, plans, strict=True):
         sid = {s: f"{b.key}-{s}" for s in p.stations["station_id"]}
-        tid = {t: (t if t in control else f"{b.key}-{t}") for t in p.targets["target_id"]}
-        stations.append(p.stations.assign(station_id=p.stations["station_id"].map(sid)))
-        t = p.targets.copy()
-        t["target_id"] = t["target_id"].map(tid)
-        t["station_ids"] = t["station_ids"].map(lambda ids, m=sid: [m[s] for s in ids])
-        targets.append(t)
-        c = p.coverage.copy()
-        c["station_id"] = c["station_id"].map(lambda s, m=sid: m.get(s, s))
-        if REASON_DATA in c:  # the stations a reason names, by their data
-            c["reason"] = [r.text(sid) for r in c[REASON_DATA]]
-            c = c.drop(columns=[REASON_DATA])
-        coverage.append(c)
+        tid = {t: f"{b.key}-{t}" for t in p.targets["target_id"] if t not in control}
+        st_b, cov_b, tg_b, lk_b = rename_stations(sid, p.stations, p.coverage, p.targets, p.links)
+        tg_b, lk_b = rename_targets(tid, tg_b, lk_b)
+        stations.append(st_b)
+        targets.append(tg_b)
+        coverage.append(cov_b.drop(columns=[REASON_DATA], errors="ignore"))
         facades.append(p.facades)
-        lk = p.links.copy()
-        lk["station_a"] = lk["station_a"].map(lambda s, m=sid: m.get(s, s))
-        lk["station_b"] = lk["station_b"].map(lambda s, m=sid: m.get(s, s))
-        lk["target_ids"] = lk["target_ids"].map(
-            lambda ids, m=tid: ";".join(m.get(x, x) for x in str(ids).split(";") if x)
-        )
-        links.append(lk)
+        links.append(lk_b)
         zones.append(p.zones)
         cands.append(p.candidates)
         net = _network_message(p)
@@ -892,8 +887,8 @@ def _cut_short(blocks: list[Block], plans: list[Plan]) -> list[str]:
 def redundant_stations(
     stations: pd.DataFrame, coverage: pd.DataFrame, links: pd.DataFrame, meeting: pd.DataFrame
 ) -> list[str]:
-    """Covering stations whose every met sample stays met without them (ids), fewest
-    samples first, each checked against those already removed. Only a covering station no
+    """Covering (or linking) stations whose every met sample stays met without them (ids),
+    fewest samples first, each checked against those already removed. Only a station no
     other is registered to and no unmet sample is scanned from (its best achievable values
     are those of its station) can go, and only samples needing one station are served from
     elsewhere; a sample of another block counts where that block's stations meet it on the
@@ -903,7 +898,9 @@ def redundant_stations(
     multi = set(pairs.loc[pairs["own"] & (pairs["needed"] > 1), "station_id"])
     parents = set(links["station_a"])
     unmet = set(coverage.loc[~coverage["meets"] & ~coverage["party_wall"], "station_id"])
-    movable = stations[(stations["purpose"] == "cover")]["station_id"]
+    movable = stations[(stations["purpose"] == "cover") | (stations["purpose"] == "link")][
+        "station_id"
+    ]
     movable = [s for s in movable if s not in parents | multi | unmet]
     by_sample: dict[tuple, set[str]] = {}
     by_station: dict[str, list[tuple]] = {}

@@ -36,8 +36,8 @@ from planner.pipeline.optimise import solve_cover
 from planner.pipeline.registration import Network, SightCache, TargetCandidates, build_network
 from planner.pipeline.requirements import PlanSettings, Requirements
 from planner.pipeline.result import Plan, SolverReport
-from planner.pipeline.route import FieldRoute, field_route
-from planner.pipeline.schema import id_key
+from planner.pipeline.route import field_route
+from planner.pipeline.schema import STATION_ID
 from planner.pipeline.tables import (
     class_family,
     coverage_table,
@@ -45,6 +45,7 @@ from planner.pipeline.tables import (
     facade_summary,
     registration_messages,
     rename_stations,
+    rename_targets,
     target_numbers,
     targets_and_links,
     unmet_messages,
@@ -161,20 +162,35 @@ def free_positions(wb: Workbench, xy: np.ndarray, what: str) -> np.ndarray:
     xy = np.asarray(xy, dtype=float).reshape(-1, 2)
     if not np.isfinite(xy).all():
         raise InputError(f"a {what} has no coordinates (x, y must be numbers)")
-    blocked = blocked_ground(wb.site, wb.settings.clearance_m)
+    clear = wb.settings.clearance_m
+    blocked = blocked_ground(wb.site, clear)
     bad = np.flatnonzero(shapely.contains_xy(blocked, xy[:, 0], xy[:, 1]))
     if len(bad):
         k = bad[0]
         raise InputError(
-            f"the {what} at E {xy[k, 0]:.2f}, N {xy[k, 1]:.2f} stands inside a building, "
-            f"obstacle or no-go area (or within {wb.settings.clearance_m:g} m of one); move it "
-            "onto free ground"
+            f"the {what} at E {xy[k, 0]:.2f}, N {xy[k, 1]:.2f} stands "
+            f"{_what_blocks(wb.site, xy[k], clear)}; move it onto free ground"
         )
     return xy
 
 
-#: A scanner station's id: S01, S02 … (a number beyond 99 takes more digits).
-STATION_ID = "S{:02d}"
+def _what_blocks(site: Site, xy: np.ndarray, clearance_m: float) -> str:
+    """Why a station cannot stand at ``xy``, naming what is in the way."""
+    point = shapely.Point(xy)
+    names = {b.id: "building" for b in site.buildings} | {o.id: "obstacle" for o in site.obstacles}
+    near = []
+    for ident, geom, _h in site.blockers:
+        if geom.contains(point):
+            return f"inside {names.get(ident, 'building')} {ident}"
+        near.append((geom.distance(point), ident))
+    for a in site.no_go:
+        if a.geometry.contains(point):
+            return f"in the no-go area {a.id}"
+    d, ident = min(near, default=(math.inf, ""))
+    return (
+        f"{d:.1f} m from {names.get(ident, 'building')} {ident} (the tripod keeps "
+        f"{clearance_m:g} m clear)"
+    )
 
 
 def _station_number(station_id: str) -> int | None:
@@ -194,6 +210,8 @@ def name_stations(n: int, visit: list[int], kept: dict[int, str], after: int | N
     ['S03', 'S01', 'S02']
     >>> name_stations(3, [0, 1, 2], {0: "S04", 2: "S01"}, after=7)
     ['S04', 'S08', 'S01']
+    >>> name_stations(3, [0, 1, 2], {0: "S10", 1: "S11"}, after=9)
+    ['S10', 'S11', 'S12']
     """
     taken = {_station_number(s) for s in kept.values()}
     ids: list[str | None] = [kept.get(k) for k in range(n)]
@@ -201,28 +219,10 @@ def name_stations(n: int, visit: list[int], kept: dict[int, str], after: int | N
     for k in visit:
         if ids[k] is None:
             number += 1
-            while after is None and number in taken:
+            while number in taken:  # never an id a kept station holds
                 number += 1
             ids[k] = STATION_ID.format(number)
     return [str(i) for i in ids]
-
-
-def _targets_renamed(
-    mapping: dict[str, str], targets: pd.DataFrame, links: pd.DataFrame, route: FieldRoute
-) -> tuple[pd.DataFrame, pd.DataFrame, FieldRoute]:
-    """The targets, links and route with the targets renamed (``mapping``: old id → new)."""
-
-    def ids(text: str, sep: str, in_order: bool = False) -> str:
-        new = [mapping.get(t, t) for t in text.split(sep) if t]
-        return sep.join(sorted(new, key=id_key) if in_order else new)
-
-    targets = targets.assign(target_id=targets["target_id"].map(lambda t: mapping.get(t, t)))
-    links = links.assign(target_ids=links["target_ids"].astype(str).map(lambda t: ids(t, ";")))
-    table = route.table.assign(  # a crew's lists, in id order
-        targets_to_set=route.table["targets_to_set"].map(lambda t: ids(t, " ", True)),
-        targets_to_collect=route.table["targets_to_collect"].map(lambda t: ids(t, " ", True)),
-    )
-    return targets, links, replace(route, table=table)
 
 
 def assemble(
@@ -254,7 +254,7 @@ def assemble(
     t = time.perf_counter()
     station_idx = net.stations if net is not None else np.asarray(r.cover, dtype=np.int64)
     station_xy = cand[station_idx] if len(station_idx) else np.empty((0, 2))
-    ids = [f"S{i + 1:02d}" for i in range(len(station_idx))]  # until the order is known
+    ids = [STATION_ID.format(i + 1) for i in range(len(station_idx))]  # until the order is known
     family = class_family(wb.req, wb.zones)
     grid = cand[: wb.n_grid]
     coverage = coverage_table(ctx, ev, wb.diagnosis, assignment, ids, net, wb.zone_ids, family)
@@ -305,14 +305,13 @@ def assemble(
     stations, coverage, targets, links = rename_stations(
         mapping, stations, coverage, targets, links
     )
-    route = route.renamed(mapping)
     ids = names
-    renumbered = target_numbers(
-        targets, {sid: n for n, sid in enumerate(route.table["station_id"])}
-    )
-    targets, links, route = _targets_renamed(renumbered, targets, links, route)
+    visit = {mapping[sid]: n for n, sid in enumerate(route.table["station_id"]) if sid in mapping}
+    renumbered = target_numbers(targets, visit)
+    targets, links = rename_targets(renumbered, targets, links)
+    route = route.renamed(mapping, renumbered)
     numbers = [n for n in map(_station_number, ids) if n is not None]
-    wb.last_station = max([wb.last_station, *numbers]) if edited else max([0, *numbers])
+    wb.last_station = max([wb.last_station, *numbers])  # (never lowered: no id given twice)
     timings["route"] = time.perf_counter() - t
     if net is not None:
         messages.append(f"Registration: {net.message}.")

@@ -178,7 +178,8 @@ def _prepare(
     messages += zones.messages
     # the search radius: the farthest any requirement (the site-wide one, a zone's) reaches
     reach = max(reach_m(sc, r, st) for r in [req, *zones.requirements])
-    st = st.for_scanner(sc, req, reach)  # the scan step and preset, decided once
+    spacing = [r.max_spacing_mm for r in [req, *zones.requirements] if r.max_spacing_mm]
+    st = st.for_scanner(sc, min(spacing, default=None), reach)  # step and preset, once
     cand = candidate_grid(site, fac, reach, st.grid_m, st.clearance_m)
     ctx = Context.build(site, fac, sc, req, st, reach, sample_req)
     pairs = ctx.pair_count(cand)

@@ -767,24 +767,27 @@ class PlanSettings:
         ]
         return "full 3-D propagation" + (f" with {' and '.join(terms)}" if terms else "")
 
-    def for_scanner(self, scanner: Scanner, req: Requirements, reach: float) -> PlanSettings:
+    def for_scanner(
+        self, scanner: Scanner, max_spacing_mm: float | None, reach: float
+    ) -> PlanSettings:
         """These settings with the scan step and preset the plan uses with ``scanner``,
-        decided once: a ``step_mm_at_10m`` given stands (with the preset of that step, if
-        the scanner has one); a ``preset`` given gives its step; else, of the scanner's
-        presets, the coarsest whose spacing step·D/10 m at the search radius ``reach`` [m]
-        stays within ``req.max_spacing_mm``, or without a spacing requirement the
-        scanner's default. A scanner without presets plans at its profile's step."""
+        decided once: a ``step_mm_at_10m`` given stands (with the ``preset`` given, where
+        its step is that one, else the scanner's preset of that step, if any); a ``preset``
+        given gives its step; else, of the scanner's presets, the coarsest whose spacing
+        step·D/10 m at the search radius ``reach`` [m] stays within ``max_spacing_mm`` (the
+        strictest spacing required anywhere), or without one the scanner's usual setting. A
+        scanner without presets plans at its profile's step."""
         if self.step_mm_at_10m is not None:
             same = [
                 p for p in scanner.presets if abs(p.step_mm_at_10m - self.step_mm_at_10m) < 0.05
             ]
-            return replace(self, preset=same[0].name if same else None)
+            named = [p for p in same if self.preset and p.name == self.preset]
+            return replace(self, preset=(named or same)[0].name if same else None)
         if self.preset is not None:
             chosen = scanner.preset(self.preset)
-        elif req.max_spacing_mm is not None:
-            chosen = scanner.choose_preset(req.max_spacing_mm * 10.0 / max(reach, 1e-9))
         else:
-            chosen = scanner.preset(None)
+            limit = None if max_spacing_mm is None else max_spacing_mm * 10.0 / max(reach, 1e-9)
+            chosen = scanner.choose_preset(limit)
         if chosen is None:
             return self
         return replace(self, preset=chosen.name, step_mm_at_10m=chosen.step_mm_at_10m)

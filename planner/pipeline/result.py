@@ -115,6 +115,11 @@ class Plan:
         """Coverage of the samples that are demanded (not on party walls)."""
         return self.coverage[~self.coverage["party_wall"]]
 
+    @property
+    def scan_stations(self) -> pd.DataFrame:
+        """The stations that scan (the total station's traverse set-ups left out)."""
+        return self.stations[self.stations["purpose"] != "traverse"]
+
     def facade_table(self) -> pd.DataFrame:
         """The per-facade summary as shown to a surveyor (indexed by facade id)."""
         return self.facades.set_index("facade_id")[FACADE_TABLE_COLUMNS].round(2)
@@ -140,13 +145,13 @@ class Plan:
         solver = f"({s.status}; objective {s.objective}"
         if s.gap is not None:
             solver += f", lower bound {s.lower_bound:g}, gap {100 * s.gap:.1f} %"
-        scans = int((self.stations["purpose"] != "traverse").sum())
+        scans = len(self.scan_stations)
         if self.settings.computes_registration and scans > s.objective and s.blocks == 0:
             # the bound is the scanner's cover's: the stations the registration added beyond
             # it are said, not left to contradict it
             solver += (
                 f" for the cover by the scanner's error alone; {scans - s.objective} more "
-                "for the registration error"
+                "for the registration (its error, its links)"
             )
         if s.greedy_objective is not None:
             solver += f"; greedy {s.greedy_objective}"

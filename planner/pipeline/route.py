@@ -41,7 +41,7 @@ from scipy.spatial import cKDTree
 
 from planner.fieldwork import scan_points, scan_time_s
 from planner.pipeline.requirements import PlanSettings
-from planner.pipeline.schema import KIT_COLUMNS, ROUTE_COLUMNS
+from planner.pipeline.schema import KIT_COLUMNS, ROUTE_COLUMNS, id_key
 from planner.scanner import Scanner
 from planner.site import Site
 from planner.spacing import resolve_step_mm
@@ -112,18 +112,25 @@ class FieldRoute:
             )
         return out
 
-    def renamed(self, mapping: dict[str, str]) -> FieldRoute:
-        """The route with its stations renamed (``mapping``: old id → new; others kept)."""
+    def renamed(
+        self, stations: dict[str, str], targets: dict[str, str] | None = None
+    ) -> FieldRoute:
+        """The route with its stations and targets renamed (old id → new; others kept),
+        every list of ids in id order."""
+        targets = targets or {}
 
-        def ids(text: str) -> str:
-            return " ".join(sorted(mapping.get(s, s) for s in text.split(" ") if s))
+        def ids(text: str, names: dict[str, str]) -> str:
+            return " ".join(sorted((names.get(s, s) for s in text.split(" ") if s), key=id_key))
 
-        t = self.table.assign(
-            station_id=self.table["station_id"].map(lambda s: mapping.get(s, s)),
-            links_to=self.table["links_to"].map(ids),
-            registers_to=self.table["registers_to"].map(ids),
+        t = self.table
+        t = t.assign(
+            station_id=t["station_id"].map(lambda s: stations.get(s, s)),
+            links_to=t["links_to"].map(lambda v: ids(v, stations)),
+            registers_to=t["registers_to"].map(lambda v: ids(v, stations)),
+            targets_to_set=t["targets_to_set"].map(lambda v: ids(v, targets)),
+            targets_to_collect=t["targets_to_collect"].map(lambda v: ids(v, targets)),
         )
-        kit = self.kit.assign(at_station=self.kit["at_station"].map(lambda s: mapping.get(s, s)))
+        kit = self.kit.assign(at_station=self.kit["at_station"].map(lambda s: stations.get(s, s)))
         return replace(self, table=t, kit=kit)
 
     @property

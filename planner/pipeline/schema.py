@@ -29,6 +29,7 @@ __all__ = [
     "ROUTE_COLUMNS",
     "STAKEOUT_COLUMNS",
     "STATION_COLUMNS",
+    "STATION_ID",
     "STATION_PURPOSES",
     "SYMBOLS",
     "TARGET_COLUMNS",
@@ -53,6 +54,9 @@ STATION_PURPOSES = {
 }
 
 STATION_COLUMNS = ["station_id", "x", "y", "instrument_height_m", "purpose"]
+
+#: A scanner station's id: S01, S02 … in visiting order (beyond 99, more digits).
+STATION_ID = "S{:02d}"
 
 #: The symbol of each kind of point on every map: the dashboard, the booklet and the drawing
 #: (DXF) speak one symbol language.

@@ -7,6 +7,7 @@ the summary prints (:data:`planner.pipeline.schema`'s columns).
 
 from __future__ import annotations
 
+import itertools
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -48,6 +49,7 @@ __all__ = [
     "facade_summary",
     "registration_messages",
     "rename_stations",
+    "rename_targets",
     "target_numbers",
     "targets_and_links",
     "unmet_messages",
@@ -218,7 +220,24 @@ def target_numbers(targets: pd.DataFrame, visit: dict[str, int]) -> dict[str, st
     ours = [k for k, t in enumerate(targets["type"]) if t != "control"]
     ours.sort(key=lambda k: first[k])  # (stable: the network's order among equals)
     ids = targets["target_id"].astype(str).tolist()
-    return {ids[k]: f"T{n:02d}" for n, k in enumerate(ours, start=1)}
+    taken = {ids[k] for k in range(len(ids)) if k not in set(ours)}  # control points' own
+    names = (f"T{n:02d}" for n in itertools.count(1))
+    free = (t for t in names if t not in taken)
+    return {ids[k]: next(free) for k in ours}
+
+
+def rename_targets(
+    mapping: dict[str, str], targets: pd.DataFrame, links: pd.DataFrame
+) -> tuple[pd.DataFrame, pd.DataFrame]:
+    """The targets and links with the targets renamed (``mapping``: old id → new; an id not
+    in it is kept)."""
+    targets = targets.assign(target_id=targets["target_id"].map(lambda t: mapping.get(t, t)))
+    links = links.assign(
+        target_ids=links["target_ids"].map(
+            lambda ids: ";".join(mapping.get(t, t) for t in str(ids).split(";") if t)
+        )
+    )
+    return targets, links
 
 
 def rename_stations(
@@ -230,8 +249,8 @@ def rename_stations(
 ) -> tuple[pd.DataFrame, pd.DataFrame, pd.DataFrame, pd.DataFrame]:
     """The plan's tables with its stations renamed (``mapping``: old id → new; an id not in
     it is kept): the stations, the coverage (its reasons written again from their data), the
-    stations that see each target and the links. The one place a station's id is
-    rewritten."""
+    stations that see each target and the links. The one place a station's id is rewritten
+    in the tables (the route's: :meth:`~planner.pipeline.route.FieldRoute.renamed`)."""
 
     def one(s: str) -> str:
         return mapping.get(s, s)

@@ -56,17 +56,19 @@ def evaluate_stations(
     again)."""
     t0 = time.perf_counter()
     wb = _workbench(p)
-    xy = free_positions(wb, xy, "station")
-    scans = p.stations[p.stations["purpose"] != "traverse"]
+    xy = np.asarray(xy, dtype=float).reshape(-1, 2)
+    scans = p.scan_stations
     old_xy = scans[["x", "y"]].to_numpy(dtype=float)
     by_id = dict(zip(scans["station_id"], range(len(scans)), strict=True))
     if ids is None:
-        ids = [
-            next((str(scans["station_id"].iloc[j]) for j in np.flatnonzero(near)), None)
-            for near in (np.abs(old_xy[None, :, :] - xy[:, None, :]).max(axis=2) < 1e-3)
-        ]
+        ids = _ids_at(p, xy)
     if len(ids) != len(xy):
         raise InputError(f"{len(ids)} station ids for {len(xy)} positions: give one per position")
+    # a traverse's set-ups are the total station's: planned again with the network, not here
+    traverse = set(p.stations["station_id"]) - set(scans["station_id"])
+    keep = [sid not in traverse for sid in ids]
+    xy, ids = xy[keep], [sid for sid, k in zip(ids, keep, strict=True) if k]
+    xy = free_positions(wb, xy, "station")
     _apart(xy, ids)
     idx = wb.add_positions(xy)
     kept, hand = {}, []
@@ -99,6 +101,19 @@ def _apart(xy: np.ndarray, ids) -> None:
             f"{names[1]} would stand {d[a, b]:.2f} m from {names[0]} (closer than "
             f"{MIN_STATION_SEPARATION_M:g} m: one set-up twice); put it elsewhere"
         )
+
+
+def _ids_at(p: Plan, xy: np.ndarray) -> list[str | None]:
+    """The id of the plan's station at each position (to the millimetre; each id once, a
+    scanning station before a traverse set-up on the same spot), None where it has none."""
+    order = p.stations.sort_values("purpose", key=lambda s: s.eq("traverse"), kind="stable")
+    at = order[["x", "y"]].to_numpy(dtype=float)
+    names = order["station_id"].astype(str).tolist()
+    out: list[str | None] = []
+    for q in np.asarray(xy, dtype=float).reshape(-1, 2):
+        near = [names[k] for k in np.flatnonzero(np.abs(at - q).max(axis=1) < 1e-3)]
+        out.append(next((n for n in near if n not in out), None))  # each id once
+    return out
 
 
 def _judged(
@@ -204,7 +219,7 @@ def edit_targets(
                 control_rms_mm=np.full(len(rows), np.nan),
             )
         )
-    scans = p.stations[p.stations["purpose"] != "traverse"]
+    scans = p.scan_stations
     idx = wb.add_positions(scans[["x", "y"]].to_numpy(dtype=float))
     kept = {
         i: (str(sid), str(pu))
@@ -235,11 +250,6 @@ def reoptimise(p: Plan, locked_xy: np.ndarray, progress: Progress | None = None)
     time budget)."""
     wb = _workbench(p)
     locked_xy = np.asarray(locked_xy, dtype=float).reshape(-1, 2)
-    scans = p.stations[p.stations["purpose"] != "traverse"]
-    old_xy = scans[["x", "y"]].to_numpy(dtype=float)
-    names = {}
-    for q in locked_xy:
-        near = np.flatnonzero(np.abs(old_xy - q).max(axis=1) < 1e-3)
-        if len(near):
-            names[tuple(q)] = str(scans["station_id"].iloc[near[0]])
+    names = {tuple(q): sid for q, sid in zip(locked_xy, _ids_at(p, locked_xy), strict=True)}
+    names = {q: sid for q, sid in names.items() if sid is not None}
     return choose_stations(wb, progress, locked=locked_xy, locked_ids=names)
