@@ -32,12 +32,18 @@ STATION_PX = 10
 
 
 def _stations(page) -> list[dict]:
-    return page.evaluate(
+    """Screen centres of the station marks in view (below the toolbar), nearest the
+    middle of the map first."""
+    marks = page.evaluate(
         """(lo) => [...document.querySelectorAll('.planner-whatif-map g.object_grp path.dot')]
             .map(d => d.getBoundingClientRect()).filter(r => r.width > lo)
             .map(r => ({x: r.x + r.width / 2, y: r.y + r.height / 2}))""",
         STATION_PX,
     )
+    box = page.locator(".planner-whatif-map").bounding_box()
+    mid = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+    seen = [m for m in marks if 150 < m["y"] < page.viewport_size["height"] - 40]
+    return sorted(seen, key=lambda m: abs(m["x"] - mid[0]) + abs(m["y"] - mid[1]))
 
 
 def _timed(page, act) -> tuple[float, float]:
@@ -47,13 +53,27 @@ def _timed(page, act) -> tuple[float, float]:
     t0 = time.perf_counter()
     act()
     page.wait_for_function(
-        "(old) => { const t = document.querySelector('.planner-whatif-status').innerText;"
-        " return t !== old && t.includes('judged again'); }",
+        "(old) => document.querySelector('.planner-whatif-status').innerText !== old",
         arg=old,
-        timeout=60_000,
+        timeout=10_000,
     )
     seen = time.perf_counter() - t0
+    if "judged again" not in status.inner_text():  # refused (on a building): not an edit
+        raise RuntimeError(status.inner_text())
     return seen, float(page.locator(".planner-edit-s").inner_text())
+
+
+def _first(page, into: list, attempts: list) -> None:
+    """Time the first of ``attempts`` (actions) the page takes as an edit (one refused — a
+    drag into a building, a click beside the mark — or not taken: the next)."""
+    from playwright.sync_api import TimeoutError as NotTaken
+
+    for act in attempts:
+        try:
+            into.append(_timed(page, act))
+            return
+        except (RuntimeError, NotTaken):
+            page.wait_for_timeout(300)
 
 
 def main() -> None:
@@ -77,9 +97,8 @@ def main() -> None:
             page.locator(".planner-whatif-map").scroll_into_view_if_needed()
             page.wait_for_timeout(1500)
             for _ in range(args.repeats):
-                b = _stations(page)[0]
 
-                def drag(b=b):
+                def drag(b):
                     page.mouse.move(b["x"], b["y"])
                     page.mouse.down()
                     page.mouse.move(b["x"] + 12, b["y"] + 8, steps=5)
@@ -87,27 +106,19 @@ def main() -> None:
 
                 page.get_by_role("button", name="Move (drag)", exact=True).click()
                 page.wait_for_timeout(800)
-                results["drag"].append(_timed(page, drag))
+                _first(page, results["drag"], [lambda b=b: drag(b) for b in _stations(page)])
                 page.get_by_role("button", name="Add station", exact=True).click()
                 page.wait_for_timeout(800)
-                for dx, dy in ((30, 30), (-30, 30), (30, -30), (-30, -30), (45, 0), (0, 45)):
-                    s = _stations(page)[0]
-                    try:
-                        results["add"].append(
-                            _timed(
-                                page,
-                                lambda s=s, dx=dx, dy=dy: page.mouse.click(
-                                    s["x"] + dx, s["y"] + dy
-                                ),
-                            )
-                        )
-                        break
-                    except Exception:  # refused (in a building) or on a mark: the next spot
-                        continue
+                c = _stations(page)[0]
+                spots = [(c["x"] + dx, c["y"] + dy) for dx in (30, -30, 45) for dy in (30, -30, 0)]
+                _first(page, results["add"], [lambda q=q: page.mouse.click(*q) for q in spots])
                 page.get_by_role("button", name="Delete", exact=True).click()
                 page.wait_for_timeout(800)
-                s = _stations(page)[-1]
-                results["delete"].append(_timed(page, lambda s=s: page.mouse.click(s["x"], s["y"])))
+                _first(
+                    page,
+                    results["delete"],
+                    [lambda s=s: page.mouse.click(s["x"], s["y"]) for s in _stations(page)],
+                )
                 print({k: v[-1] for k, v in results.items() if v}, flush=True)
             browser.close()
     finally:
