@@ -326,3 +326,18 @@ def test_report_describes_the_plan_that_plan_makes(tmp_path, monkeypatch):
         line for line in Path("plan/summary.txt").read_text().splitlines() if "Stations:" in line
     )
     assert "greedy" in summary and summary in Path("report.html").read_text()
+
+
+def test_the_dashboard_offers_the_chosen_scanners_settings():
+    """The scanner setting follows the scanner (its presets by the maker's names, the usual
+    one marked) and reaches the plan; imaging can be left out of the field time."""
+    from planner.app.dashboard import StationPlanner
+
+    ui = StationPlanner()
+    assert ui.preset.disabled and ui.preset.value is None  # the default profile has none
+    ui.scanner.value = "leica-rtc360"
+    assert [v for _, v in ui.preset.options] == [None, "low", "medium", "high"]
+    assert ("medium (usual)", "medium") in ui.preset.options
+    ui.preset.value, ui.imaging.value = "low", False
+    _site, _scanner, _req, settings = ui._inputs()
+    assert settings.preset == "low" and settings.imaging is False

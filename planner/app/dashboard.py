@@ -291,6 +291,9 @@ class StationPlanner:
             layout=_FULL,
         )
         self.scanner = scanner_dropdown()
+        self.preset = w.Dropdown(description="scanner setting", style=_STYLE, layout=_FULL)
+        self.scanner.observe(lambda _c: self._offer_presets(), "value")
+        self._offer_presets()
         self.max_x = _field_box(rq["max_xy_mm"], "largest m_x")
         self.max_y = _field_box(rq["max_xy_mm"], "largest m_y")
         self.max_z = _field_box(rq["max_z_mm"])
@@ -304,17 +307,21 @@ class StationPlanner:
         }
         self.registration_error = w.Checkbox(
             value=PlanSettings().registration_error,
-            description="count the registration error",
+            description=SITE_LABELS["--registration-error"],
             indent=False,
         )
+        self.imaging = w.Checkbox(
+            value=PlanSettings().imaging, description=SITE_LABELS["--imaging"], indent=False
+        )
         self.inventory = _inventory_box(
-            "targets you own (name, type, size mm)", _STYLE, w.Layout(width="98%", height="8em")
+            SITE_LABELS["--inventory"], _STYLE, w.Layout(width="98%", height="8em")
         )
         more = w.Accordion(
             children=[
                 w.VBox(
                     [
                         self.registration_error,
+                        self.imaging,
                         *self.more.values(),
                         self.inventory,
                     ]
@@ -437,6 +444,7 @@ class StationPlanner:
             self.make_valid,
             self.buildings,
             self.scanner,
+            self.preset,
             self.max_x,
             self.max_y,
             self.max_z,
@@ -449,6 +457,7 @@ class StationPlanner:
             self.processing,
             self.grid,
             self.registration_error,
+            self.imaging,
             self.inventory,
             *self.more.values(),
         ]
@@ -464,6 +473,7 @@ class StationPlanner:
                 self.buildings,
                 w.HTML("<h3>Scanner</h3>"),
                 self.scanner,
+                self.preset,
                 w.HTML("<h3>Requirements</h3>"),
                 self.max_x,
                 self.max_y,
@@ -622,11 +632,13 @@ class StationPlanner:
                 "model": self.model.value,
                 "registration": self.registration.value,
                 "registration_processing": self.processing.value,
+                "preset": self.preset.value,
                 "max_gamma_deg": self.max_gamma.value,
                 "max_spacing_mm": _field_value(self._specs["max_spacing_mm"], self.max_spacing),
                 "stations_per_sample": int(self.per_sample.value),
                 "grid_m": self.grid.value,
                 "registration_error": self.registration_error.value,
+                "imaging": self.imaging.value,
                 "inventory": parse_inventory(self.inventory.value),
             }
         )
@@ -636,6 +648,18 @@ class StationPlanner:
         if self.zone_editor.zones:
             site = replace(site, zones=[*site.zones, *self.zone_editor.zones])
         return site, scanner, req, settings
+
+    def _offer_presets(self) -> None:
+        """The chosen scanner's settings by the maker's names (the command line's
+        --preset), "chosen by the plan" first (the coarsest meeting the spacing, else the
+        usual one)."""
+        sc = Scanner.from_name(self.scanner.value)
+        self.preset.options = [("chosen by the plan", None)] + [
+            (p.name + (" (usual)" if p.name == sc.default_preset else ""), p.name)
+            for p in sc.presets
+        ]
+        self.preset.value = None
+        self.preset.disabled = not sc.presets
 
     def _show_class(self) -> None:
         """The chosen class, what it means and what it sets (the limit boxes follow it)."""

@@ -33,7 +33,9 @@ SITE_LABELS = {
     "--registration-processing": "registration processing",
     "--registration-error": "count the registration error",
     "--no-registration-error": "count the registration error",
-    "--inventory": "targets you own (name, type, size mm)",
+    "--inventory": "targets you own (name, type, size mm, count)",
+    "--preset": "scanner setting",
+    "--imaging": "count the images (HDR) in the field time",
     "--zone": "Zones",
     "--zones": "Zones",
 }
