@@ -334,9 +334,10 @@ def test_the_dashboard_offers_the_chosen_scanners_settings():
     from planner.app.dashboard import StationPlanner
 
     ui = StationPlanner()
-    assert ui.preset.disabled and ui.preset.value is None  # the default profile has none
+    assert ui.preset.disabled and ui.preset.label == "chosen by the plan"  # none to choose
+    assert ui._inputs()[3].preset is None
     ui.scanner.value = "leica-rtc360"
-    assert [v for _, v in ui.preset.options] == [None, "low", "medium", "high"]
+    assert [v for _, v in ui.preset.options] == ["", "low", "medium", "high"]
     assert ("medium (usual)", "medium") in ui.preset.options
     ui.preset.value, ui.imaging.value = "low", False
     _site, _scanner, _req, settings = ui._inputs()

@@ -632,7 +632,7 @@ class StationPlanner:
                 "model": self.model.value,
                 "registration": self.registration.value,
                 "registration_processing": self.processing.value,
-                "preset": self.preset.value,
+                "preset": self.preset.value or None,
                 "max_gamma_deg": self.max_gamma.value,
                 "max_spacing_mm": _field_value(self._specs["max_spacing_mm"], self.max_spacing),
                 "stations_per_sample": int(self.per_sample.value),
@@ -654,11 +654,11 @@ class StationPlanner:
         --preset), "chosen by the plan" first (the coarsest meeting the spacing, else the
         usual one)."""
         sc = Scanner.from_name(self.scanner.value)
-        self.preset.options = [("chosen by the plan", None)] + [
-            (p.name + (" (usual)" if p.name == sc.default_preset else ""), p.name)
-            for p in sc.presets
+        self.preset.options = [("chosen by the plan", "")] + [  # ("": no value, not None:
+            (p.name + (" (usual)" if p.name == sc.default_preset else ""), p.name)  # None
+            for p in sc.presets  # would leave the select showing nothing)
         ]
-        self.preset.value = None
+        self.preset.value = ""
         self.preset.disabled = not sc.presets
 
     def _show_class(self) -> None:
