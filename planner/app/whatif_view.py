@@ -133,6 +133,7 @@ class WhatIfMap:
             stroke="white",
             default_size=60,
             display_names=False,
+            tooltip=bq.Tooltip(fields=["name"], labels=["target"]),  # its id on hover
         )
         self.stations = bq.Scatter(
             x=[],
