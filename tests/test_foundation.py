@@ -342,3 +342,44 @@ def test_the_dashboard_offers_the_chosen_scanners_settings():
     ui.preset.value, ui.imaging.value = "low", False
     _site, _scanner, _req, settings = ui._inputs()
     assert settings.preset == "low" and settings.imaging is False
+
+
+def test_the_site_is_drawn_before_it_is_planned_and_buildings_are_picked_on_it(tmp_path):
+    """An uploaded site is drawn on the map at once, its buildings' ids on it, nothing
+    planned yet; a building's id clicked in "Pick buildings" mode plans it or leaves it out
+    (the list of buildings follows, and the plan on screen is marked out of date)."""
+    import datetime
+
+    from planner.app.dashboard import EDIT_TAB, StationPlanner
+    from planner.synthetic import town, town_geojson
+
+    ui = StationPlanner()
+    ui.run()
+    assert ui.plan is not None
+    site = town(3, seed=0)
+    data = json.dumps(town_geojson(site)).encode()
+    ui.upload.value = (
+        {
+            "name": "town.geojson",
+            "type": "",
+            "size": len(data),
+            "content": data,
+            "last_modified": datetime.datetime(2026, 1, 1),
+        },
+    )
+    m = ui.whatif
+    ids = [b.id for b in site.buildings]
+    assert list(m.picks.names) == ids  # drawn at once, before any plan
+    assert len(m.stations.x) == 0 and "The site: " in m.status.value
+    assert ui.tabs.selected_index == EDIT_TAB
+    m.mode.value = "pick"
+    m._picked({"data": {"index": 1}})
+    assert ui.buildings.value == ids[1]
+    assert "Out of date" in ui.stale.value
+    m._picked({"data": {"index": 2}})
+    assert ui.buildings.value == f"{ids[1]}, {ids[2]}"
+    m._picked({"data": {"index": 1}})
+    assert ui.buildings.value == ids[2]
+    m.mode.value = "move"
+    m._picked({"data": {"index": 0}})  # outside "Pick buildings" a click picks nothing
+    assert ui.buildings.value == ids[2]

@@ -238,6 +238,19 @@ _MAIN_FIELDS = {
     "max_pairs",
 }
 
+#: The result tabs, in order; the site is drawn, and edited by hand, on "Edit stations".
+TABS = [
+    "Plan map",
+    "Edit stations",
+    "Coverage",
+    "Facades",
+    "Registration",
+    "Unmet",
+    "Stations & field work",
+    "Downloads",
+]
+EDIT_TAB = TABS.index("Edit stations")
+
 _CSS = """<style>
 .planner-toolbar { position: sticky; top: 0; z-index: 50; background: white;
   border-bottom: 1px solid #ddd; padding: 4px 0 2px 0; }
@@ -399,6 +412,7 @@ class StationPlanner:
         )
         self.field_out = w.Output()
         self.whatif = WhatIfMap(self.evaluate_by_hand, self.reoptimise, self.edit_targets_by_hand)
+        self.whatif.on_pick = self._toggle_building
         self.booklet_button = w.Button(description="Make field booklet (PDF)")
         self.booklet_status = w.HTML("")
         self.downloads = w.HTML("")
@@ -423,17 +437,7 @@ class StationPlanner:
                 ),
             ]
         )
-        titles = [
-            "Plan map",
-            "Edit stations",
-            "Coverage",
-            "Facades",
-            "Registration",
-            "Unmet",
-            "Stations & field work",
-            "Downloads",
-        ]
-        for i, title in enumerate(titles):
+        for i, title in enumerate(TABS):
             self.tabs.set_title(i, title)
         self.inputs = [
             self.site_source,
@@ -578,6 +582,7 @@ class StationPlanner:
             )
         self.site_source.value = "Upload a file"
         self._offer_facades()
+        self.tabs.selected_index = EDIT_TAB  # the site uploaded, drawn at once
 
     def _site(self, near_m: float = DEFAULT_NEAR_M):
         """The site chosen (default or uploaded), without the editor's zones; problems
@@ -607,12 +612,25 @@ class StationPlanner:
         )
 
     def _offer_facades(self) -> None:
-        """The zone editor offers the facades of the site chosen (quietly nothing while the
-        site cannot be read: the plan says why)."""
+        """The zone editor offers the facades of the site chosen and the map draws it, before
+        any plan (quietly nothing while the site cannot be read: the plan says why)."""
         try:
-            self.zone_editor.show_facades(self._site())
+            site = self._site()
         except PlannerError:
             self.zone_editor.facade.options = []
+            return
+        self.zone_editor.show_facades(site)
+        self.whatif.show_site(site)  # (a plan on screen is out of date: the site changed)
+
+    def _toggle_building(self, building_id: str) -> None:
+        """A building picked on the map: planned, or left out (the list of buildings to plan
+        follows; an empty list plans them all)."""
+        ids = [s.strip() for s in self.buildings.value.split(",") if s.strip()]
+        if building_id in ids:
+            ids.remove(building_id)
+        else:
+            ids.append(building_id)
+        self.buildings.value = ", ".join(ids)
 
     # -- actions -----------------------------------------------------------------------------
     def _inputs(self):

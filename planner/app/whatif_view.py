@@ -34,6 +34,7 @@ MODES = [
     ("Add target", "add-target"),
     ("Delete", "delete"),
     ("Lock / unlock", "lock"),
+    ("Pick buildings", "pick"),
 ]
 
 
@@ -158,6 +159,18 @@ class WhatIfMap:
                 label_offset="65px",
             ),
         ]
+        self.picks = bq.Scatter(  # each building's id at its centre: picked in "pick" mode
+            x=[],
+            y=[],
+            names=[],
+            display_names=True,
+            scales=scales,
+            marker="square",
+            colors=["white"],
+            stroke="#333",
+            default_size=16,  # (smaller than a target's mark: never mistaken for one)
+            tooltip=bq.Tooltip(fields=["name"], labels=["building"]),
+        )
         self.notice = bq.Label(  # why a click was refused, where it was made
             x=[],
             y=[],
@@ -175,6 +188,7 @@ class WhatIfMap:
                 self.buildings,
                 self.passages,
                 self.samples,
+                self.picks,
                 self.targets,
                 self.stations,
                 self.notice,
@@ -193,6 +207,8 @@ class WhatIfMap:
         self.status = w.HTML("", layout=w.Layout(min_height="4.6em"))
         self.status.add_class("planner-whatif-status")
         self._framed = None  # the site the map's view was fitted to (kept through edits)
+        self.on_pick: Callable[[str], None] = lambda _id: None  # the page's: plan it or not
+        self._pick_ids: list[str] = []
         self.locked: list[bool] = []
         self._xy = np.empty((0, 2))
         self._ids: list[str | None] = []  # the station each position is (None: added)
@@ -206,6 +222,7 @@ class WhatIfMap:
         self.targets.on_drag_end(lambda _m, e: self._target_dragged(e))
         self.targets.on_element_click(lambda _m, e: self._target_clicked(e))
         self.targets.observe(lambda _c: self._maybe_target_added(), names=["x"])
+        self.picks.on_element_click(lambda _m, e: self._picked(e))
         self.reopt.on_click(lambda _b: self._reoptimise(self._xy[np.asarray(self.locked, bool)]))
         self.widget = w.VBox(
             [
@@ -227,11 +244,9 @@ class WhatIfMap:
             ]
         )
 
-    # -- showing a plan ------------------------------------------------------------------------
-    def show_plan(self, p: Plan, message: str = "") -> None:
-        """Draw ``p``: site, samples (met / unmet), targets, stations (locks kept by position)."""
-        old = {tuple(np.round(xy, 3)): lk for xy, lk in zip(self._xy, self.locked, strict=True)}
-        site = p.site
+    # -- showing a site and a plan -------------------------------------------------------------
+    def _draw_site(self, site) -> None:
+        """Buildings (planned dark, others light), obstacles, passages, the buildings' ids."""
         xs, ys = _rings(b.footprint for b in site.planned)
         self.buildings.x, self.buildings.y = xs, ys
         others = [b.footprint for b in site.buildings if not b.planned]
@@ -240,6 +255,45 @@ class WhatIfMap:
         self.others.x, self.others.y = xs, ys
         xs, ys = _rings(a.geometry for a in site.passages)
         self.passages.x, self.passages.y = xs, ys
+        centres = [b.footprint.representative_point() for b in site.buildings]
+        self._pick_ids = [b.id for b in site.buildings]
+        with self.picks.hold_sync():
+            self.picks.x = [c.x for c in centres]
+            self.picks.y = [c.y for c in centres]
+            self.picks.names = self._pick_ids
+
+    def show_site(self, site) -> None:
+        """Draw a site before it is planned: its buildings with their ids (a click on an id
+        in "Pick buildings" mode plans the building or leaves it out), nothing planned yet."""
+        self._draw_site(site)
+        self._quiet = True
+        self.samples.x, self.samples.y, self.samples.color = [], [], []
+        self._xy, self._ids, self.locked = np.empty((0, 2)), [], []
+        self._target_ids, self._target_xy = [], np.empty((0, 2))
+        with self.stations.hold_sync():
+            self.stations.x, self.stations.y, self.stations.names = [], [], []
+        self._draw_targets()
+        self._quiet = False
+        self._say_at(None)
+        x0, y0, x1, y1 = shapely.union_all([b.footprint for b in site.buildings]).bounds
+        self._frame((x0 + x1) / 2, (y0 + y1) / 2, max(x1 - x0, y1 - y0) / 2 + 10.0)
+        self._framed = site
+        n = len(site.planned)
+        self.status.value = (
+            f"The site: {len(site.buildings)} buildings, {n} to plan (dark). <b>Pick "
+            "buildings</b>, then click a building's id to plan it or leave it out; "
+            "<b>Plan</b> places the stations."
+        )
+
+    def _picked(self, event) -> None:
+        k = int(event.get("data", {}).get("index", -1))
+        if self.mode.value == "pick" and 0 <= k < len(self._pick_ids):
+            self.on_pick(self._pick_ids[k])
+
+    def show_plan(self, p: Plan, message: str = "") -> None:
+        """Draw ``p``: site, samples (met / unmet), targets, stations (locks kept by position)."""
+        old = {tuple(np.round(xy, 3)): lk for xy, lk in zip(self._xy, self.locked, strict=True)}
+        self._draw_site(p.site)
         cov = p.scanned
         self.samples.x, self.samples.y = cov["x"].to_numpy(), cov["y"].to_numpy()
         self.samples.color = (~cov["meets"].to_numpy()).astype(float)
@@ -269,10 +323,14 @@ class WhatIfMap:
         pts = [p.scanned[["x", "y"]].to_numpy(), self._xy, self._target_xy]
         allxy = np.vstack([q for q in pts if len(q)])
         lo, hi = allxy.min(axis=0), allxy.max(axis=0)
-        centre, half = (lo + hi) / 2, max(float((hi - lo).max()) / 2 + 10.0, 20.0)
-        # a square extent on a figure kept square: one metre is as long across as up
-        self.sx.min, self.sx.max = float(centre[0] - half), float(centre[0] + half)
-        self.sy.min, self.sy.max = float(centre[1] - half), float(centre[1] + half)
+        centre = (lo + hi) / 2
+        self._frame(centre[0], centre[1], float((hi - lo).max()) / 2 + 10.0)
+
+    def _frame(self, x: float, y: float, half: float) -> None:
+        """A square view round (x, y) on a figure kept square: a metre as long across as up."""
+        half = max(half, 20.0)
+        self.sx.min, self.sx.max = float(x - half), float(x + half)
+        self.sy.min, self.sy.max = float(y - half), float(y + half)
         self.figure.min_aspect_ratio = self.figure.max_aspect_ratio = 1.0
 
     # -- edits -----------------------------------------------------------------------------------
