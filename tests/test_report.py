@@ -91,7 +91,15 @@ def _text(html_page: str) -> str:
     return html_.unescape(re.sub(r"<[^>]+>", " ", no_img))
 
 
-def test_the_reports_numbers_are_the_files_numbers(tmp_path):
+@pytest.fixture(scope="module")
+def strict_plan():
+    """The default site at 3 / 3 mm: some samples unmet (one plan for the module)."""
+    from planner import Requirements, plan
+
+    return plan(requirements=Requirements(max_xy_mm=3, max_z_mm=3))
+
+
+def test_the_reports_numbers_are_the_files_numbers(strict_plan):
     """The report says what the plan's files hold: stations, targets, samples met and not,
     the field time, the visiting order, the solver's bound and gap, every station's
     purpose kept through an edit by hand; no NaN, no None; the site's notes linked to
@@ -100,12 +108,11 @@ def test_the_reports_numbers_are_the_files_numbers(tmp_path):
 
     import pandas as pd
 
-    from planner import Requirements, plan
     from planner.app.report import render_html
     from planner.pipeline.export import render
     from planner.pipeline.whatif import evaluate_stations
 
-    p = plan(requirements=Requirements(max_xy_mm=3, max_z_mm=3))
+    p = strict_plan
     xy = p.stations[["x", "y"]].to_numpy().copy()
     xy[0] += [0.5, 0.0]  # one station moved by hand: it alone becomes "hand"
     q = evaluate_stations(p, xy, list(p.stations["station_id"]))
@@ -135,15 +142,14 @@ def test_the_reports_numbers_are_the_files_numbers(tmp_path):
     assert not re.search(r"\bNaN\b|\bnan\b|\bNone\b", text)
 
 
-def test_every_table_of_the_report_fits_the_page(tmp_path):
+def test_every_table_of_the_report_fits_the_page(tmp_path, strict_plan):
     """Opened in Chromium at 1280 px, no table of the report is wider than the page."""
     from test_dashboard_browser import CHROMIUM, FLAGS, _need_browser
 
-    from planner import Requirements, plan
     from planner.app.report import make_report
 
     sync = _need_browser()
-    out = make_report(plan(requirements=Requirements(max_xy_mm=3, max_z_mm=3)), tmp_path / "r.html")
+    out = make_report(strict_plan, tmp_path / "r.html")
     with sync.sync_playwright() as pw:
         b = pw.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
         page = b.new_page(viewport={"width": 1280, "height": 900})
