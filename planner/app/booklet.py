@@ -35,7 +35,7 @@ from planner.crs import name_of as crs_name
 from planner.pipeline.result import Plan
 from planner.pipeline.route import view_sectors
 from planner.pipeline.schema import STATION_PURPOSES
-from planner.pipeline.setout import compass_word, corner_ties, wall_place, walls_scanned
+from planner.pipeline.setout import CornerTies, compass_word, wall_place, walls_scanned
 
 __all__ = ["booklet_pdf", "compass", "kit_list", "target_places"]
 
@@ -75,12 +75,13 @@ def booklet(p: Plan, deadline: float = math.inf) -> tuple[bytes, list[str]]:
     with plt.rc_context({"pdf.fonttype": 42}), PdfPages(buf, metadata=meta) as pdf:
         pdf.savefig(_overview(p))
         sectors = view_sectors(p.stations, p.coverage, p.targets)  # once, not per page
+        ties = CornerTies(p.site)  # (the corners too)
         for n in range(len(order)):  # figures outside pyplot: nothing to close
             if time.monotonic() > deadline:
                 left = order[n:]
                 pdf.savefig(_left_out_page(left))
                 break
-            pdf.savefig(_station_page(p, n, sectors))
+            pdf.savefig(_station_page(p, n, sectors, ties))
     return buf.getvalue(), left
 
 
@@ -169,7 +170,12 @@ def _wrap(text: str, width: int) -> str:
     return "\n".join(textwrap.wrap(text, width)) or text
 
 
-def _station_page(p: Plan, n: int, sectors: dict[str, tuple[float, float, float]]) -> Figure:
+def _station_page(
+    p: Plan,
+    n: int,
+    sectors: dict[str, tuple[float, float, float]],
+    ties: CornerTies | None = None,
+) -> Figure:
     r = _route(p).iloc[n]
     sid = r["station_id"]
     st = p.stations.set_index("station_id").loc[sid]
@@ -193,10 +199,11 @@ def _station_page(p: Plan, n: int, sectors: dict[str, tuple[float, float, float]
     walk = "start here" if n == 0 else f"{r['walk_m']:.0f} m, {r['walk_min']:.0f} min"
     if r["walk_note"]:
         walk += f" ({r['walk_note']})"
-    (ties,) = corner_ties(p.site, np.array([[st["x"], st["y"]]]))
+    ties = ties or CornerTies(p.site)
+    (set_out,) = ties(np.array([[st["x"], st["y"]]]))
     facts = [
         ("Easting / Northing", f"{st['x']:.3f} / {st['y']:.3f} m"),
-        ("Set out (tape)", "; ".join(t.text() for t in ties) or "no building corner in sight"),
+        ("Set out (tape)", "; ".join(t.text() for t in set_out) or "no building corner in sight"),
         (
             "Instrument height, why here",
             f"{st['instrument_height_m']:.2f} m above the ground; "
@@ -238,7 +245,7 @@ def _station_page(p: Plan, n: int, sectors: dict[str, tuple[float, float, float]
     _station_map(p, sid, ax, sectors.get(sid, (0.0, 0.0, 20.0)))
     table_ax = fig.add_axes(TABLE_BOX)
     table_ax.axis("off")
-    _targets_table(p, sid, r, table_ax)
+    _targets_table(p, sid, r, table_ax, ties)
     return fig
 
 
@@ -336,7 +343,7 @@ def _station_map(p: Plan, sid: str, ax, sector: tuple[float, float, float]) -> N
     ax.legend(loc="lower left", fontsize=6.5, framealpha=0.9)
 
 
-def target_places(p: Plan, target_ids: list[str]) -> list[str]:
+def target_places(p: Plan, target_ids: list[str], ties: CornerTies | None = None) -> list[str]:
     """Where each target goes, in a crew's words: a wall target by its building, wall,
     distance from the wall's end and height; a stand by tape ties from building corners; a
     control point as the mark it is."""
@@ -344,9 +351,8 @@ def target_places(p: Plan, target_ids: list[str]) -> list[str]:
     fac = p.facades.set_index("facade_id")
     on_wall = (tg["type"] == "flat") & tg["facade_id"].isin(fac.index)
     loose = tg[~on_wall & (tg["type"] != "control")]
-    ties = dict(
-        zip(loose.index, corner_ties(p.site, loose[["x", "y"]].to_numpy(float)), strict=True)
-    )
+    tied = (ties or CornerTies(p.site))(loose[["x", "y"]].to_numpy(float))
+    by_target = dict(zip(loose.index, tied, strict=True))
     out = []
     for (tid, t), wall in zip(tg.iterrows(), on_wall, strict=True):
         if wall:
@@ -354,13 +360,13 @@ def target_places(p: Plan, target_ids: list[str]) -> list[str]:
         elif t["type"] == "control":
             out.append("control point: its mark is already there")
         else:
-            near = "; ".join(x.text() for x in ties[tid][:2]) or "see its coordinates"
+            near = "; ".join(x.text() for x in by_target[tid][:2]) or "see its coordinates"
             where = "on a stand" if t["type"] != "flat" else "on its wall"
             out.append(f"{t['type']} {where}, {t['z']:.1f} m high: {near}")
     return out
 
 
-def _targets_table(p: Plan, sid: str, r: pd.Series, ax) -> None:
+def _targets_table(p: Plan, sid: str, r: pd.Series, ax, ties: CornerTies) -> None:
     ids = [t for t in str(r["targets_to_set"]).split(" ") if t]
     collect = [t for t in str(r.get("targets_to_collect", "")).split(" ") if t]
     ax.set_title(
@@ -375,7 +381,7 @@ def _targets_table(p: Plan, sid: str, r: pd.Series, ax) -> None:
         return
     tg = p.targets.set_index("target_id").loc[ids]
     rows = []
-    for (tid, t), where in zip(tg.iterrows(), target_places(p, ids), strict=True):
+    for (tid, t), where in zip(tg.iterrows(), target_places(p, ids, ties), strict=True):
         size = "" if t["size_mm"] is None or not np.isfinite(t["size_mm"]) else f"{t['size_mm']:g}"
         item = t["item"] if isinstance(t.get("item"), str) and t["item"] else str(t["type"])
         rows.append([tid, item, size, _wrap(where, 66), f"{t['x']:.3f}", f"{t['y']:.3f}", ""])

@@ -14,10 +14,11 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 import shapely
+from scipy.spatial import cKDTree
 
 from planner.site import Site
 
-__all__ = ["Tie", "compass_word", "corner_ties", "wall_place", "walls_scanned"]
+__all__ = ["CornerTies", "Tie", "compass_word", "corner_ties", "wall_place", "walls_scanned"]
 
 _WORDS = ("north", "north-east", "east", "south-east", "south", "south-west", "west", "north-west")
 _SHORT = ("N", "NE", "E", "SE", "S", "SW", "W", "NW")
@@ -82,28 +83,48 @@ def _corners(site: Site) -> tuple[np.ndarray, list[str]]:
     return np.array(xy, dtype=float).reshape(-1, 2), names
 
 
+class CornerTies:
+    """The tape ties of a site, its corners found once (for every station and target of a
+    booklet, not once a page): call it with points for each point's nearest corners in
+    plain sight."""
+
+    def __init__(self, site: Site) -> None:
+        self.corners, self.names = _corners(site)
+        self._tree = cKDTree(self.corners) if len(self.corners) else None
+        self._walls = shapely.union_all([b.footprint for b in site.buildings]).buffer(-0.01)
+        shapely.prepare(self._walls)
+
+    def __call__(self, points: np.ndarray, n: int = 2) -> list[list[Tie]]:
+        """For each point (``(k, 2)`` [m]), the ``n`` nearest building corners in plain sight
+        of it (the line to the corner crosses no building), as tape ties; fewer where fewer
+        are in sight."""
+        points = np.asarray(points, dtype=float).reshape(-1, 2)
+        if self._tree is None:
+            return [[] for _ in points]
+        out = []
+        for p in points:
+            ties: list[Tie] = []
+            k_near = min(len(self.corners), 8 * n)
+            while True:  # the nearest few first; all of them where those are out of sight
+                d, near = (np.atleast_1d(a) for a in self._tree.query(p, k=k_near))
+                order = np.lexsort((near, d))  # nearest first, equals in the corners' order
+                for dk, k in zip(d[order], near[order], strict=True):
+                    if len(ties) == n:
+                        break
+                    c = self.corners[k]
+                    if dk < 0.01 or self._walls.intersects(shapely.LineString([c, p])):
+                        continue
+                    ties.append(Tie(self.names[k], *c, float(dk), _azimuth(*(p - c))))
+                if len(ties) == n or k_near == len(self.corners):
+                    break
+                ties, k_near = [], len(self.corners)
+            out.append(ties)
+        return out
+
+
 def corner_ties(site: Site, points: np.ndarray, n: int = 2) -> list[list[Tie]]:
-    """For each point (``(k, 2)`` [m]), the ``n`` nearest building corners in plain sight of
-    it (the line to the corner crosses no building), as tape ties; fewer where fewer are
-    in sight."""
-    corners, names = _corners(site)
-    points = np.asarray(points, dtype=float).reshape(-1, 2)
-    if not len(corners):
-        return [[] for _ in points]
-    walls = shapely.union_all([b.footprint for b in site.buildings]).buffer(-0.01)
-    out = []
-    for p in points:
-        d = np.hypot(*(corners - p).T)
-        ties: list[Tie] = []
-        for k in np.argsort(d, kind="stable"):
-            if len(ties) == n:
-                break
-            if d[k] < 0.01 or walls.intersects(shapely.LineString([corners[k], p])):
-                continue
-            dx, dy = p - corners[k]
-            ties.append(Tie(names[k], *corners[k], float(d[k]), _azimuth(dx, dy)))
-        out.append(ties)
-    return out
+    """:class:`CornerTies` of ``site`` at ``points`` (for one call; a booklet keeps one)."""
+    return CornerTies(site)(points, n)
 
 
 def wall_place(facade: pd.Series, x: float, y: float, z: float) -> str:
