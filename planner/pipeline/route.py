@@ -480,6 +480,7 @@ def field_route(
             if kind != "control":
                 last_visit.setdefault(max(seen_by), []).append(str(tid))
                 life[str(tid)] = (min(seen_by), max(seen_by))
+    standing = _standing(list(life.values()), len(order))
     spacing = coverage.groupby("station_id")["spacing_mm"].max()
     rows, session, used, elapsed = [], 1, 0.0, 0.0
     limit = settings.session_h * 60.0
@@ -520,7 +521,7 @@ def field_route(
                 "targets_min": round(t_min, 1),
                 "targets_to_collect": " ".join(to_collect),
                 "collect_min": round(c_min, 1),
-                "targets_standing": sum(a <= n <= b for a, b in life.values()),
+                "targets_standing": int(standing[n]),
                 "setup_min": settings.setup_min,
                 "sector_start_deg": round(start, 1),
                 "sector_deg": round(width, 1),
@@ -545,6 +546,16 @@ def field_route(
     return route
 
 
+def _standing(spans: list[tuple[int, int]], stops: int) -> np.ndarray:
+    """How many targets stand at each of ``stops`` stops, each standing from its first
+    stop to its last (``spans``, both counted)."""
+    count = np.zeros(stops + 1, dtype=np.int64)
+    for a, b in spans:
+        count[a] += 1
+        count[b + 1] -= 1
+    return np.cumsum(count)[:stops]
+
+
 def _kit(
     settings: PlanSettings,
     targets: pd.DataFrame,
@@ -556,7 +567,7 @@ def _kit(
     rows = []
     for item, group in targets[targets["type"] != "control"].groupby("item", sort=True):
         spans = [life[t] for t in group["target_id"].astype(str) if t in life]
-        standing = [sum(a <= n <= b for a, b in spans) for n in range(len(visited))]
+        standing = _standing(spans, len(visited))
         peak = int(max(standing, default=0))
         at = visited[int(np.argmax(standing))] if peak else ""
         inv = items.get(str(item))
