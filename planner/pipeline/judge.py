@@ -306,8 +306,8 @@ def assemble(
         mapping, stations, coverage, targets, links
     )
     ids = names
-    visit = {mapping[sid]: n for n, sid in enumerate(route.table["station_id"]) if sid in mapping}
-    renumbered = target_numbers(targets, visit)
+    place = {mapping[sid]: n for n, sid in enumerate(route.table["station_id"]) if sid in mapping}
+    renumbered = target_numbers(targets, place)
     targets, links = rename_targets(renumbered, targets, links)
     route = route.renamed(mapping, renumbered)
     numbers = [n for n in map(_station_number, ids) if n is not None]

@@ -223,13 +223,13 @@ def choose_stations(
     progress: Progress | None = None,
     *,
     locked: np.ndarray | None = None,
-    locked_ids: dict[tuple[float, float], str] | None = None,
+    locked_ids: list[str | None] | None = None,
     deadline: float | None = None,
     t0: float | None = None,
 ) -> Plan:
-    """The fewest stations (with ``locked`` positions kept, those in ``locked_ids`` under
-    their ids) and their registration network, for what ``wb`` holds; the plan's time budget
-    runs from ``deadline``."""
+    """The fewest stations (with ``locked`` positions kept, each under its id in
+    ``locked_ids`` where one is given) and their registration network, for what ``wb``
+    holds; the plan's time budget runs from ``deadline``."""
     t0 = time.perf_counter() if t0 is None else t0
     ctx, st = wb.ctx, wb.settings
     fac = wb.facades
@@ -239,6 +239,8 @@ def choose_stations(
     forced = np.empty(0, dtype=np.int64)
     if locked is not None and len(np.asarray(locked).reshape(-1, 2)):
         forced = wb.add_positions(free_positions(wb, locked, "locked station"))
+    named = zip(forced, locked_ids, strict=True) if locked_ids is not None else []
+    kept = {int(i): (sid, "hand") for i, sid in named if sid}  # pool index → its id
     cand, seen = wb.pool, wb.seen
     # stations and registration chosen together (docs/science.md): the fewest stations by
     # the scanner's error, their network, every sample judged on the total; while the
@@ -355,11 +357,6 @@ def choose_stations(
             "adding stations and choosing again)."
         )
     hand = np.setdiff1d(forced, best_effort)
-    kept = {
-        int(i): (sid, "hand")
-        for q, sid in (locked_ids or {}).items()
-        for i in wb.add_positions(np.array(q, dtype=float))
-    }
     return assemble(
         wb,
         r,
@@ -520,9 +517,7 @@ def _optimise(
         sol.chosen = np.union1d(sol.chosen, forced)
         sol.objective = len(sol.chosen)
         if sol.lower_bound is not None:  # the bound of the others plus the forced ones
-            sol.lower_bound = (
-                float(sol.lower_bound) + len(sol.chosen) - len(np.setdiff1d(sol.chosen, forced))
-            )
+            sol.lower_bound = float(sol.lower_bound) + len(np.unique(forced))
             sol.gap = max(0.0, (sol.objective - sol.lower_bound) / max(sol.objective, 1))
     if (ctx.stations_needed > 1).any():
         spread = spread_views(ok, demand, sol.chosen, cand, fac.xy, req.min_view_angle_deg)

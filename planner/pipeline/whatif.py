@@ -250,6 +250,4 @@ def reoptimise(p: Plan, locked_xy: np.ndarray, progress: Progress | None = None)
     time budget)."""
     wb = _workbench(p)
     locked_xy = np.asarray(locked_xy, dtype=float).reshape(-1, 2)
-    names = {tuple(q): sid for q, sid in zip(locked_xy, _ids_at(p, locked_xy), strict=True)}
-    names = {q: sid for q, sid in names.items() if sid is not None}
-    return choose_stations(wb, progress, locked=locked_xy, locked_ids=names)
+    return choose_stations(wb, progress, locked=locked_xy, locked_ids=_ids_at(p, locked_xy))
