@@ -589,7 +589,7 @@ class StationPlanner:
         farther than ``near_m`` from the buildings to plan are noted, not refused."""
         from planner.siteio import default_site, read_site
 
-        ids = [s.strip() for s in self.buildings.value.split(",") if s.strip()] or None
+        ids = self._building_ids() or None
         if self.site_source.value == "Default site":
             return default_site(buildings=ids)
         files = self.upload.value
@@ -622,10 +622,14 @@ class StationPlanner:
         self.zone_editor.show_facades(site)
         self.whatif.show_site(site)  # (a plan on screen is out of date: the site changed)
 
+    def _building_ids(self) -> list[str]:
+        """The ids in "Buildings to plan" (empty: all of the file's)."""
+        return [s.strip() for s in self.buildings.value.split(",") if s.strip()]
+
     def _toggle_building(self, building_id: str) -> None:
         """A building picked on the map: planned, or left out (the list of buildings to plan
         follows; an empty list plans them all)."""
-        ids = [s.strip() for s in self.buildings.value.split(",") if s.strip()]
+        ids = self._building_ids()
         if building_id in ids:
             ids.remove(building_id)
         else:
@@ -672,9 +676,10 @@ class StationPlanner:
         --preset), "chosen by the plan" first (the coarsest meeting the spacing, else the
         usual one)."""
         sc = Scanner.from_name(self.scanner.value)
-        self.preset.options = [("chosen by the plan", "")] + [  # ("": no value, not None:
-            (p.name + (" (usual)" if p.name == sc.default_preset else ""), p.name)  # None
-            for p in sc.presets  # would leave the select showing nothing)
+        # "" for the plan's choice: a None value would leave the select showing nothing
+        self.preset.options = [("chosen by the plan", "")] + [
+            (p.name + (" (usual)" if p.name == sc.default_preset else ""), p.name)
+            for p in sc.presets
         ]
         self.preset.value = ""
         self.preset.disabled = not sc.presets
