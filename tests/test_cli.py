@@ -124,3 +124,33 @@ def test_every_command_prints_its_help():
         assert out.startswith("usage: planner " + name), name
     code, out, _ = run("plan", "--help")
     assert "Autodesk ReCap asks more than 20 %) [%] (default 20)" in " ".join(out.split())
+
+
+def test_plan_help_shows_every_setting_under_its_group():
+    """The settings' groups (PlanSettings' fields, one declaration) are the help's sections:
+    every setting's option stands under its group's title, none elsewhere."""
+    from dataclasses import fields
+
+    from planner.pipeline.requirements import SETTING_GROUPS, PlanSettings, setting_groups
+
+    assert {f.metadata.get("group") for f in fields(PlanSettings)} == set(SETTING_GROUPS)
+    code, out, _ = run("plan", "--help")
+    assert code == 0
+    sections: dict[str, str] = {}
+    title = "options"
+    for line in out.splitlines():
+        if line and not line.startswith(" ") and line.endswith(":"):
+            title = line[:-1]
+        sections[title] = sections.get(title, "") + line + "\n"
+    flags = {"incidence_noise": "--no-incidence-noise", "beam_footprint": "--no-beam-footprint"}
+    flags |= {"registration_error": "--no-registration-error"}
+    for key, names in setting_groups().items():
+        text = sections[SETTING_GROUPS[key].lower()]
+        for name in names:
+            flag = flags.get(name, "--" + name.replace("_", "-"))
+            assert f"  {flag} " in text or f"  {flag}\n" in text or f"  {flag}," in text, (
+                key,
+                flag,
+            )
+    assert "--grid-m" not in sections["registration and targets"]
+    assert "--max-z-mm" in sections["requirements"]

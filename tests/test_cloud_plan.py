@@ -129,7 +129,7 @@ def _corner_network(min_overlap_pct: float):
         int(np.argmin(np.hypot(*(cand - np.array([E0 + x, N0 + y])).T)))
         for x, y in ((-6.0, -6.0), (-62.0, -62.0))
     ]
-    return round_network(wb.ctx, cand, wb.seen, np.array(ends), {})
+    return round_network(wb.ctx, cand, wb.seen, np.array(ends))
 
 
 def test_scans_that_overlap_too_little_are_chained_by_linking_stations_cloud_to_cloud():

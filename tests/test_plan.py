@@ -295,6 +295,32 @@ def test_party_walls_are_not_evaluated_and_never_count_as_cut_short():
     assert np.array_equal(late.evaluated, party)  # only the party wall counts as done
 
 
+def test_a_context_copied_with_other_limits_shares_one_count_of_the_kept_clear_heights():
+    """The best-effort relaxation copies the plan's context with other limits; the clear
+    heights both keep are one store with one count, so the cap (MAX_KEPT_CLEAR) holds for
+    the plan, not once per copy."""
+    from dataclasses import replace
+
+    from planner.pipeline import evaluate as ev_mod
+
+    a = Building("A", rect(0, 0, 20, 10), 12.0)
+    st = PlanSettings(sample_spacing_m=2.0, sample_height_step_m=2.0)
+    site, req = Site([a]), Requirements(max_xy_mm=6, max_z_mm=6)
+    fac = build_facades(site, st.sample_spacing_m, st.sample_height_step_m)
+    ctx = Context.build(site, fac, PAPER, req, st, reach_m(PAPER, req, st))
+    relaxed = replace(ctx, limits={k: v * 2 for k, v in ctx.limits.items()})
+    cand = np.array([[E0 + 10.0, N0 - 15.0], [E0 + 5.0, N0 - 10.0]])
+    ctx.clear_heights(0, cand, keep=True)
+    relaxed.clear_heights(1, cand, keep=True)
+    assert relaxed._clear is ctx._clear
+    cols = len(ctx.cols_of[0]) + len(ctx.cols_of[1])
+    assert ctx._clear.values == 2 * cols  # both counted once, in one place
+    store = ev_mod.ClearanceStore()
+    store.values = ev_mod.MAX_KEPT_CLEAR - 1
+    store.keep((0, b""), ctx.clear_heights(0, cand), 2)
+    assert not store.kept  # over the cap: not kept
+
+
 def test_many_short_edges_and_multipolygons():
     tower = Site([Building("tower", shapely.Point(E0, N0).buffer(10.0, quad_segs=16), 20.0)])
     fac = build_facades(tower)

@@ -514,6 +514,7 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         MODELS,
         REGISTRATION_MODES,
         REGISTRATION_PROCESSING,
+        SETTING_GROUPS,
         PlanSettings,
         Requirements,
         field_specs,
@@ -568,29 +569,21 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         metavar="NAME|FILE.toml",
         help=f"catalogue name ('planner scanners') or a profile file (default {DEFAULT_SCANNER})",
     )
+    req = pl.add_argument_group("requirements")
+    group = {key: pl.add_argument_group(title.lower()) for key, title in SETTING_GROUPS.items()}
     pairs = {"max_xy_mm": "X[,Y]", "station_rms_mm": "MXC[,MYC]"}
     for cls in (Requirements, PlanSettings):
         for name, spec in field_specs(cls).items():
             kind = _xy if name in pairs else int if isinstance(spec.default, int) else float
             default = "none" if spec.default is None else f"{spec.default:g}"
-            pl.add_argument(
+            (group[spec.group] if spec.group else req).add_argument(
                 spec.flag,
                 type=kind,
                 default=None,
                 metavar=pairs.get(name, name.rsplit("_", 1)[-1].upper()),
                 help=_argparse_text(f"{spec.help} [{spec.unit}] (default {default})"),
             )
-    from planner.site import SiteLimits
-
-    for f in fields(SiteLimits):
-        pl.add_argument(
-            "--" + f.name.replace("_", "-"),
-            type=float,
-            default=None,
-            metavar="M",
-            help=f"refuse a site beyond this (default {f.default:g} m): raise it for a real one",
-        )
-    pl.add_argument(
+    req.add_argument(
         "--class",
         dest="accuracy_class",
         default=None,
@@ -598,15 +591,17 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         help="an accuracy class instead of --max-xy-mm/--max-z-mm: DIN 18710-1 OGL0-5 "
         "(position) / OGH0-5 (height), e.g. OGL4/OGH3, or USIBD LOA20-50 (at 95 %%)",
     )
-    pl.add_argument("--method", choices=METHODS, default=None, help="station optimiser")
-    pl.add_argument(
+    group["solver"].add_argument(
+        "--method", choices=METHODS, default=None, help="station optimiser"
+    )
+    group["model"].add_argument(
         "--model",
         choices=MODELS,
         default=None,
         help="accuracy model: 3d, the full 3-D propagation (default), or paper, eq. 2 and 4 "
         "of Voroshilov & Karachentsev",
     )
-    pl.add_argument(
+    group["registration"].add_argument(
         "--registration",
         choices=REGISTRATION_MODES,
         default=None,
@@ -614,7 +609,7 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         "the scans share), hybrid (cloud links, targets where a link is weak), or auto: the "
         "scanner profile's usual workflow, else targets (default)",
     )
-    pl.add_argument(
+    group["registration"].add_argument(
         "--registration-processing",
         choices=REGISTRATION_PROCESSING,
         default=None,
@@ -622,7 +617,7 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         + "; or ".join(f"{k}, {v}" for k, v in REGISTRATION_PROCESSING.items())
         + " (default adjustment)",
     )
-    pl.add_argument(
+    group["sampling"].add_argument(
         "--preset",
         default=None,
         metavar="NAME",
@@ -630,27 +625,27 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         "scanners --verbose' lists them); default the coarsest that meets --max-spacing-mm, "
         "else the scanner's usual one. --step-mm-at-10m wins",
     )
-    pl.add_argument(
+    group["field"].add_argument(
         "--imaging",
         action=argparse.BooleanOptionalAction,
         default=None,
         help="each station also takes its HDR images (counted in the field time; default on)",
     )
-    pl.add_argument(
+    group["model"].add_argument(
         "--no-incidence-noise",
         dest="incidence_noise",
         action="store_false",
         default=None,
         help="3-D model without the ranging noise's growth with incidence",
     )
-    pl.add_argument(
+    group["model"].add_argument(
         "--no-beam-footprint",
         dest="beam_footprint",
         action="store_false",
         default=None,
         help="3-D model without the beam footprint in the spacing check",
     )
-    pl.add_argument(
+    group["registration"].add_argument(
         "--no-registration-error",
         dest="registration_error",
         action="store_false",
@@ -658,7 +653,18 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         help="judge samples by the scanner's error alone (the paper's eq. 2 and 4 without "
         "m_xc, m_yc); the registration network is still planned",
     )
-    pl.add_argument(
+    from planner.site import SiteLimits
+
+    limits = pl.add_argument_group("site limits (a unit slip is refused)")
+    for f in fields(SiteLimits):
+        limits.add_argument(
+            "--" + f.name.replace("_", "-"),
+            type=float,
+            default=None,
+            metavar="M",
+            help=f"refuse a site beyond this (default {f.default:g} m): raise it for a real one",
+        )
+    req.add_argument(
         "--zones",
         metavar="ZONES.csv",
         default=None,
@@ -666,7 +672,7 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         "id, facade_id (or building_id), from_m, to_m, z_from_m, z_to_m (or elevation_wkt), "
         "and max_xy_mm, max_z_mm, class, max_spacing_mm, stations_per_sample, sample_spacing_m…",
     )
-    pl.add_argument(
+    req.add_argument(
         "--zone",
         action="append",
         default=None,
@@ -674,14 +680,14 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         help="one zone without a file (repeatable), e.g. "
         "facade=main-f00,from=4,to=10,z=0-6,max_xy_mm=3,sample_spacing_m=0.5",
     )
-    pl.add_argument(
+    group["registration"].add_argument(
         "--control",
         metavar="CONTROL.csv",
         default=None,
         help="control points with known coordinates (site CRS): id,x,y,z[,rms_mm]; stations "
         "that see three of them are tied to the site network (the datum)",
     )
-    pl.add_argument(
+    group["registration"].add_argument(
         "--inventory",
         metavar="FILE",
         default=None,

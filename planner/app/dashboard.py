@@ -28,11 +28,13 @@ from planner.app.wording import SITE_LABELS, for_dashboard
 from planner.errors import PlannerError
 from planner.pipeline.requirements import (
     REGISTRATION_PROCESSING,
+    SETTING_GROUPS,
     FieldSpec,
     PlanSettings,
     Requirements,
     field_specs,
     requirements_and_settings,
+    setting_groups,
 )
 from planner.polar import slope_distance_m
 from planner.scanner import DEFAULT_SCANNER, Scanner
@@ -329,18 +331,20 @@ class StationPlanner:
         self.inventory = _inventory_box(
             SITE_LABELS["--inventory"], _STYLE, w.Layout(width="98%", height="8em")
         )
-        more = w.Accordion(
-            children=[
-                w.VBox(
-                    [
-                        self.registration_error,
-                        self.imaging,
-                        *self.more.values(),
-                        self.inventory,
-                    ]
-                )
+        # the settings in their groups (one order for the page and the command line's help)
+        extra = {"registration_error": self.registration_error, "imaging": self.imaging}
+        extra["inventory"] = self.inventory
+        sections: list[w.Widget] = [w.HTML("<b>Requirements</b>")]
+        sections += [self.more[n] for n in rq if n in self.more]
+        for key, title in SETTING_GROUPS.items():
+            boxes = [
+                self.more.get(n) or extra[n]
+                for n in setting_groups()[key]
+                if n in self.more or n in extra
             ]
-        )
+            if boxes:
+                sections += [w.HTML(f"<b>{title}</b>"), *boxes]
+        more = w.Accordion(children=[w.VBox(sections)])
         more.set_title(0, "More settings (as on the command line)")
         more.selected_index = None
         self.zone_editor = ZoneEditor()

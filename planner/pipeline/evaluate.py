@@ -63,6 +63,21 @@ PAIR_CHUNK = 65_536
 MAX_KEPT_CLEAR = 10_000_000
 
 
+class ClearanceStore:
+    """Clear heights kept between the evaluations of a plan, at most
+    :data:`MAX_KEPT_CLEAR` values in all."""
+
+    def __init__(self) -> None:
+        self.kept: dict[tuple[int, bytes], Clearance] = {}
+        self.values = 0
+
+    def keep(self, key: tuple[int, bytes], clearance: Clearance, size: int) -> None:
+        """Keep ``clearance`` (``size`` values) under ``key`` while the cap allows."""
+        if self.values + size <= MAX_KEPT_CLEAR:
+            self.kept[key] = clearance
+            self.values += size
+
+
 @dataclass(kw_only=True)
 class Context:
     """Everything the evaluation needs, prepared once per plan."""
@@ -85,9 +100,9 @@ class Context:
     limits: dict[str, np.ndarray]  # per check key: (N,) limit of every sample (±inf: none)
     stations_needed: np.ndarray  # (N,) stations (separate views) each sample needs
     #: clear heights of the candidate chunks evaluated on every sample of a facade, kept for
-    #: the plan's next evaluation of all candidates (:meth:`clear_heights`)
-    _clear: dict[tuple[int, bytes], Clearance] = field(default_factory=dict, repr=False)
-    _kept: int = field(default=0, repr=False)  # values in ``_clear``
+    #: the plan's next evaluation of all candidates (:meth:`clear_heights`); one store, with
+    #: its count, shared by a context copied with other limits (the best-effort relaxation)
+    _clear: ClearanceStore = field(default_factory=lambda: ClearanceStore(), repr=False)
 
     @classmethod
     def build(
@@ -163,8 +178,8 @@ class Context:
         (:func:`~planner.pipeline.visibility.bridge_interval`). ``keep`` keeps it for the
         same facade and candidates again (while :data:`MAX_KEPT_CLEAR` values are kept)."""
         key = (f, cand_xy.tobytes())
-        if key in self._clear:
-            return self._clear[key]
+        if key in self._clear.kept:
+            return self._clear.kept[key]
         fac, cols = self.facades, self.cols_of[f]
         em = self.edge_mask[f]
         if len(em):
@@ -185,9 +200,8 @@ class Context:
             if near.any():
                 lo, up = bridge_interval(src, hi, dst, b_edges[near], bottoms[near], tops[near])
                 out = Clearance(zc, lo.reshape(c, k), up.reshape(c, k))
-        if keep and self._kept + zc.size <= MAX_KEPT_CLEAR:
-            self._clear[key] = out
-            self._kept += zc.size
+        if keep:
+            self._clear.keep(key, out, zc.size)
         return out
 
     def pair_count(self, cand_xy: np.ndarray) -> int:

@@ -21,6 +21,7 @@ import shapely
 
 from planner.errors import InputError
 from planner.pipeline.candidates import blocked_ground
+from planner.pipeline.clock import Clock
 from planner.pipeline.control import tie_groups, tie_messages, traverse_setups
 from planner.pipeline.evaluate import (
     Assignment,
@@ -230,8 +231,7 @@ def assemble(
     r: Round,
     solver: SolverReport,
     messages: list[str],
-    timings: dict[str, float],
-    t0: float,
+    clock: Clock,
     *,
     progress: Progress | None = None,
     hand: np.ndarray | None = None,
@@ -241,7 +241,7 @@ def assemble(
 ) -> Plan:
     """The plan of the stations of round ``r`` (pool indices; those in ``hand`` placed by
     hand, those in ``best_effort`` for samples no position meets): coverage, targets, links,
-    route, messages.
+    route, messages (those given first; the list given is not changed).
 
     Station ids follow the visiting order (:func:`name_stations`); a station in ``kept``
     (pool index → its id and purpose) keeps both, and where the plan is ``edited`` by hand
@@ -250,6 +250,7 @@ def assemble(
     ctx, st, ev, cand = wb.ctx, wb.settings, wb.evaluation, wb.pool
     net, assignment = r.net, r.judged.assignment
     kept = kept or {}
+    messages = list(messages)
     say(0.93, "coverage of the chosen stations")
     t = time.perf_counter()
     station_idx = net.stations if net is not None else np.asarray(r.cover, dtype=np.int64)
@@ -289,7 +290,7 @@ def assemble(
         stations = pd.concat([stations, setups], ignore_index=True)
     tc = net.candidates if net is not None else wb.tc  # with any planned control points
     targets, links = targets_and_links(ctx, tc, net, ids, coverage)
-    timings["coverage"] = time.perf_counter() - t
+    clock.note("coverage", time.perf_counter() - t)
     say(0.97, "visiting order and field time")
     t = time.perf_counter()
     route = field_route(wb.site, wb.scanner, st, stations, targets, coverage, links)
@@ -312,7 +313,7 @@ def assemble(
     route = route.renamed(mapping, renumbered)
     numbers = [n for n in map(_station_number, ids) if n is not None]
     wb.last_station = max([wb.last_station, *numbers])  # (never lowered: no id given twice)
-    timings["route"] = time.perf_counter() - t
+    clock.note("route", time.perf_counter() - t)
     if net is not None:
         messages.append(f"Registration: {net.message}.")
         messages.extend(enclosed_messages(untied_places(ctx, net), ids))
@@ -336,7 +337,6 @@ def assemble(
         pairs=wb.pairs,
     )
     messages.insert(0, f"Accuracy model: {st.model_description()}.")
-    timings["total"] = time.perf_counter() - t0
     say(1.0, "plan ready")
     return Plan(
         site=wb.site,
@@ -354,7 +354,7 @@ def assemble(
         route=route,
         solver=solver,
         messages=messages,
-        timings_s=timings,
+        timings_s=clock.timings(),
         workbench=wb,
     )
 
@@ -389,15 +389,15 @@ def round_network(
     cand: np.ndarray,
     seen: SightCache,
     chosen: np.ndarray,
-    timings: dict[str, float],
-    deadline: float = math.inf,
+    clock: Clock | None = None,
     datum: int | None = None,
 ) -> Network | None:
     """The registration network of the stations ``chosen`` (candidate indices), each
-    probed at the facade points it serves best by the scanner's error; after ``deadline``
-    without looking for linking stations."""
+    probed at the facade points it serves best by the scanner's error; once the ``clock``
+    has run out (default: none), without looking for linking stations."""
     if not len(chosen):
         return None
+    clock = Clock.unbounded() if clock is None else clock
     t = time.perf_counter()
     fac = ctx.facades
     scanner_only = assign_stations(ctx, cand[chosen])
@@ -414,17 +414,17 @@ def round_network(
         weak_mm=WEAK_LINK * tightest,
         cache=seen,
         datum=datum,
-        deadline=deadline,
+        deadline=clock.deadline,
     )
     if not net.tied.all() and net.tied.any():  # groups no target reaches: planned control
-        net = tie_groups(ctx, cand, seen, net, REGISTRATION_GOAL * tightest, deadline)
-    timings["registration"] = timings.get("registration", 0.0) + time.perf_counter() - t
+        net = tie_groups(ctx, cand, seen, net, REGISTRATION_GOAL * tightest, clock.deadline)
+    clock.note("registration", time.perf_counter() - t)
     if net.datum is not None and seen.tc.is_control.any() and not net.ties:
         # control points given but no station sees three of them: a station that does,
         # nearest the others, ties the network to the site's control (else it is said)
         tie = _control_station(seen, cand, chosen)
         if tie is not None and tie not in chosen:
-            return round_network(ctx, cand, seen, np.append(chosen, tie), timings, deadline)
+            return round_network(ctx, cand, seen, np.append(chosen, tie), clock)
     return net
 
 
@@ -451,15 +451,14 @@ def prune(
     cand: np.ndarray,
     seen: SightCache,
     r: Round,
-    deadline: float,
-    timings: dict[str, float],
+    clock: Clock,
     keep: np.ndarray | None = None,
 ) -> Round:
     """Drop stations the final judgement gives no sample and no other station is registered
     to (chosen for an estimate the exact network did not bear out), one at a time, each kept
     out only if no sample is lost; the ``keep`` candidates (locked by hand) are never dropped."""
     keep = np.empty(0, dtype=np.int64) if keep is None else keep
-    while time.monotonic() < deadline:
+    while not clock.over:
         served = np.bincount(
             r.judged.assignment.station[r.judged.assignment.station >= 0],
             minlength=len(r.net.stations),
@@ -473,9 +472,7 @@ def prune(
         for k in idle:
             chosen = np.delete(r.net.stations, k)
             trial = Round(cover=np.setdiff1d(r.cover, r.net.stations[k]), added=r.added)
-            trial.net = round_network(
-                ctx, cand, seen, chosen, timings, deadline, r.net.datum_station
-            )
+            trial.net = round_network(ctx, cand, seen, chosen, clock, r.net.datum_station)
             if trial.net is None:
                 continue
             trial.judged = judge(ctx, cand, trial)
@@ -492,8 +489,7 @@ def stations_for(
     cand: np.ndarray,
     net: Network,
     short: np.ndarray,
-    deadline: float,
-    timings: dict[str, float],
+    clock: Clock,
 ) -> np.ndarray:
     """Candidates to add so that the ``short`` samples meet the total: each candidate judged
     with the registration error it would have in ``net`` (:meth:`Network.estimate`), the
@@ -502,13 +498,13 @@ def stations_for(
     estimate = estimate_registration(ctx, net, cand)
     if estimate is None:
         return np.empty(0, dtype=np.int64)
-    ev = evaluate_candidates(ctx, cand, deadline=deadline, registration=estimate, only=short)
+    ev = evaluate_candidates(ctx, cand, deadline=clock.deadline, registration=estimate, only=short)
     keep = np.ones(len(cand))
     keep[net.stations] = 0.0  # the network's own stations do not meet them already
     ok = sp.csr_matrix((ev.ok[np.flatnonzero(short)] @ sp.diags(keep)) > 0)
     demand = np.minimum(1, np.asarray(ok.sum(axis=1)).ravel())
     sol = solve_cover(ok, demand, 0.0, "greedy")
-    timings["evaluate"] += time.perf_counter() - t
+    clock.note("evaluate", time.perf_counter() - t)
     return np.asarray(sol.chosen, dtype=np.int64)
 
 
@@ -560,8 +556,7 @@ def datum_round(
     cand: np.ndarray,
     seen: SightCache,
     r: Round,
-    timings: dict[str, float],
-    deadline: float,
+    clock: Clock,
     say: Progress,
 ) -> Round | None:
     """Round ``r`` with a datum station nearer the middle (:func:`datum_station`), its
@@ -573,7 +568,7 @@ def datum_round(
     say(0.85, "registration: a datum station nearer the middle of the site")
     trial = Round(cover=r.cover, added=np.union1d(r.added, [middle]))
     chosen = np.concatenate([r.net.stations, [middle]])
-    trial.net = round_network(ctx, cand, seen, chosen, timings, deadline)
+    trial.net = round_network(ctx, cand, seen, chosen, clock)
     trial.judged = judge(ctx, cand, trial)
     gain = trial.judged.n_met - r.judged.n_met
     return trial if gain > DATUM_SHARE * (~ctx.facades.party_wall).sum() else None

@@ -22,6 +22,7 @@ from planner.accuracy import reach_bound_m
 from planner.accuracy3d import reach_bound_3d_m
 from planner.errors import InputError
 from planner.pipeline.candidates import candidate_grid
+from planner.pipeline.clock import Clock
 from planner.pipeline.evaluate import (
     CandidateEvaluation,
     Context,
@@ -140,8 +141,7 @@ def plan(
             f"{type(scanner).__name__}"
         )
     st = settings or PlanSettings()
-    if deadline is None:
-        deadline = time.monotonic() + st.time_limit_s
+    clock = Clock.budget(st.time_limit_s, deadline=deadline, started=t0)
     wb = _prepare(
         site or default_site(),
         load_scanner(scanner or DEFAULT_SCANNER),
@@ -149,7 +149,7 @@ def plan(
         st,
         progress or (lambda _f, _m: None),
     )
-    return choose_stations(wb, progress, locked=locked, deadline=deadline, t0=t0)
+    return choose_stations(wb, progress, locked=locked, clock=clock)
 
 
 def _prepare(
@@ -224,18 +224,16 @@ def choose_stations(
     *,
     locked: np.ndarray | None = None,
     locked_ids: list[str | None] | None = None,
-    deadline: float | None = None,
-    t0: float | None = None,
+    clock: Clock | None = None,
 ) -> Plan:
     """The fewest stations (with ``locked`` positions kept, each under its id in
     ``locked_ids`` where one is given) and their registration network, for what ``wb``
-    holds; the plan's time budget runs from ``deadline``."""
-    t0 = time.perf_counter() if t0 is None else t0
+    holds, within the time budget of ``clock`` (default: the settings' from now)."""
     ctx, st = wb.ctx, wb.settings
     fac = wb.facades
     say = progress or (lambda _f, _m: None)
-    deadline = time.monotonic() + st.time_limit_s if deadline is None else deadline
-    timings: dict[str, float] = {"setup": wb.setup_s}
+    clock = Clock.budget(st.time_limit_s) if clock is None else clock
+    clock.note("setup", wb.setup_s)
     forced = np.empty(0, dtype=np.int64)
     if locked is not None and len(np.asarray(locked).reshape(-1, 2)):
         forced = wb.add_positions(free_positions(wb, locked, "locked station"))
@@ -249,9 +247,7 @@ def choose_stations(
     # built and judged again; once none is short, the fewest stations are chosen again with
     # every candidate's estimated registration error, the network's backbone kept
     cut: list[str] = []  # what the time budget cut short, in words
-    now = time.monotonic()
-    evaluated_by = now + EVALUATION_SHARE * max(0.0, deadline - now)
-    ev = _evaluate(ctx, cand, say, min(deadline, evaluated_by), timings)
+    ev = _evaluate(ctx, cand, say, clock, by=clock.share(EVALUATION_SHARE))
     demanded = ~fac.party_wall
     if not ev.evaluated[demanded].all():
         cut.append(
@@ -261,31 +257,31 @@ def choose_stations(
     wb.evaluation = ev
     # the diagnosis before the optimiser: the optimiser takes a share of the time left, and
     # what it leaves must not decide what the plan says of the samples no position meets
-    wb.diagnosis = _diagnose(ctx, cand, ev, deadline, timings)
+    wb.diagnosis = _diagnose(ctx, cand, ev, clock)
     if len(wb.diagnosis.samples) and not np.all(wb.diagnosis.best["done"]):
         cut.append("the diagnosis of the samples no position meets")
-    sol = _optimise(ctx, cand, ev, say, deadline, timings, forced=forced)
-    if len(wb.diagnosis.samples) and time.monotonic() > deadline:
+    sol = _optimise(ctx, cand, ev, say, clock, forced=forced)
+    if len(wb.diagnosis.samples) and clock.over:
         cut.append("the best-effort stations for the samples no position meets")
-    best_effort, relaxed_by = _best_effort(ctx, cand, sol.chosen, wb.diagnosis, deadline)
+    best_effort, relaxed_by = _best_effort(ctx, cand, sol.chosen, wb.diagnosis, clock)
+    cover = np.union1d(sol.chosen, best_effort) if len(best_effort) else sol.chosen
     if len(best_effort):
-        sol.chosen = np.union1d(sol.chosen, best_effort)
         forced = np.union1d(forced, best_effort)
         say(0.8, f"best effort: {len(best_effort)} station(s) for what no position meets")
-    r = Round(cover=sol.chosen, net=round_network(ctx, cand, seen, sol.chosen, timings, deadline))
+    r = Round(cover=cover, net=round_network(ctx, cand, seen, cover, clock))
     r.judged = judge(ctx, cand, r)
     best, rounds, adds, resolved, moved = r, 0, 0, False, False
     while st.computes_registration and rounds < MAX_REGISTRATION_ROUNDS:
         if r.net is None:
             break
-        if time.monotonic() > deadline:
+        if clock.over:
             if r.judged.short_by_registration.any() or not resolved:
                 cut.append(f"the registration rounds (after {rounds})")
             break
         short = r.judged.short_by_registration
         if short.any() and not moved:  # once: a datum nearer the middle, kept if better
             moved = True
-            trial = datum_round(ctx, cand, seen, r, timings, deadline, say)
+            trial = datum_round(ctx, cand, seen, r, clock, say)
             if trial is not None:  # else: as if untried
                 rounds += 1
                 r = trial
@@ -294,33 +290,31 @@ def choose_stations(
         more = np.empty(0, dtype=np.int64)
         if short.any() and (resolved or adds < ADD_ROUNDS):
             say(0.85, f"registration: {int(short.sum())} samples short; adding stations")
-            more = stations_for(ctx, cand, r.net, short, deadline, timings)
+            more = stations_for(ctx, cand, r.net, short, clock)
         grown_from = r.net
         if len(more):
             adds += 1
             chosen = np.concatenate([r.net.stations, more])
             r = Round(cover=r.cover, added=np.union1d(r.added, more))
-        elif not resolved and len(r.net.stations) > len(sol.chosen):
+        elif not resolved and len(r.net.stations) > len(cover):
             say(0.9, "registration: choosing the fewest stations again")
             resolved = True
             backbone = np.union1d(r.net.backbone, forced)
             estimate = estimate_registration(ctx, r.net, cand)
-            _, again = _choose(
-                ctx, cand, say, deadline, timings, estimate, forced=backbone, scanner_ok=ev.ok
-            )
-            chosen = again.chosen
+            again = _evaluate(ctx, cand, say, clock, estimate=estimate)
+            chosen = _optimise(ctx, cand, again, say, clock, backbone, scanner_ok=ev.ok).chosen
             r = Round(cover=chosen)
         else:
             break
         rounds += 1
         keep = grown_from.datum_station if len(more) else None
-        r.net = round_network(ctx, cand, seen, chosen, timings, deadline, keep)
+        r.net = round_network(ctx, cand, seen, chosen, clock, keep)
         r.judged = judge(ctx, cand, r)
         if r.judged.better_than(best.judged):
             best = r
     r = best
     if st.computes_registration and r.net is not None:
-        r = prune(ctx, cand, seen, r, deadline, timings, keep=forced)
+        r = prune(ctx, cand, seen, r, clock, keep=forced)
     if any(n.cut_short for n in (r.net,) if n is not None):
         cut.append("the search for linking stations")
     messages = list(wb.messages)
@@ -362,8 +356,7 @@ def choose_stations(
         r,
         solver,
         messages,
-        timings,
-        t0,
+        clock,
         progress=say,
         hand=hand,
         best_effort=best_effort,
@@ -376,20 +369,16 @@ def choose_stations(
 BEST_EFFORT_SLACK = 1.02
 
 
-def _diagnose(
-    ctx: Context,
-    cand: np.ndarray,
-    ev: CandidateEvaluation,
-    deadline: float,
-    timings: dict[str, float],
-) -> Diagnosis:
+def _diagnose(ctx: Context, cand: np.ndarray, ev: CandidateEvaluation, clock: Clock) -> Diagnosis:
     """Diagnose the demanded, evaluated samples fewer candidates meet than they need."""
-    t = time.perf_counter()
-    n_ok = np.asarray(ev.ok.sum(axis=1)).ravel()
-    hopeless = np.flatnonzero(~ctx.facades.party_wall & (n_ok < ctx.stations_needed) & ev.evaluated)
-    best = best_achievable(ctx, cand, hopeless, deadline) if len(hopeless) else {"done": []}
-    roof = lower_roof_in_front(ctx.site, ctx.facades, hopeless)
-    timings["diagnosis"] = time.perf_counter() - t
+    with clock.timed("diagnosis"):
+        n_ok = np.asarray(ev.ok.sum(axis=1)).ravel()
+        demanded = ~ctx.facades.party_wall & ev.evaluated
+        hopeless = np.flatnonzero(demanded & (n_ok < ctx.stations_needed))
+        best = (
+            best_achievable(ctx, cand, hopeless, clock.deadline) if len(hopeless) else {"done": []}
+        )
+        roof = lower_roof_in_front(ctx.site, ctx.facades, hopeless)
     return Diagnosis(hopeless, best, ev.n_view[hopeless], roof)
 
 
@@ -398,7 +387,7 @@ def _best_effort(
     cand: np.ndarray,
     chosen: np.ndarray,
     diagnosis: Diagnosis,
-    deadline: float,
+    clock: Clock,
 ) -> tuple[np.ndarray, float]:
     """Candidates (not among ``chosen``) for the samples no candidate meets, and the factor
     they meet them within: the smallest uniform relaxation of the limits under which every
@@ -408,7 +397,7 @@ def _best_effort(
     not zero stations. The samples stay unmet. None is spent on the samples beyond the
     ground's reach (:attr:`Diagnosis.elevated`): they need an elevated station."""
     none = np.empty(0, dtype=np.int64), 1.0
-    if not len(diagnosis.samples) or time.monotonic() > deadline:
+    if not len(diagnosis.samples) or clock.over:
         return none
     best = diagnosis.best
     good = best["done"] & np.isfinite(best["score"]) & ~diagnosis.elevated
@@ -422,13 +411,13 @@ def _best_effort(
     relaxed = replace(ctx, limits=limits, stations_needed=np.ones_like(ctx.stations_needed))
     only = np.zeros(len(ctx.facades.z), dtype=bool)
     only[diagnosis.samples[good]] = True
-    ok = evaluate_candidates(relaxed, cand, deadline=deadline, only=only).ok
+    ok = evaluate_candidates(relaxed, cand, deadline=clock.deadline, only=only).ok
     ok = sp.csr_matrix(ok[np.flatnonzero(only)])
     served = np.asarray(ok[:, chosen].sum(axis=1)).ravel() > 0 if len(chosen) else False
     demand = ((np.asarray(ok.sum(axis=1)).ravel() > 0) & ~served).astype(np.int64)
     if not demand.any():
         return none
-    sol = solve_cover(ok, demand, _solver_time(ctx, deadline), ctx.settings.method)
+    sol = solve_cover(ok, demand, _solver_time(ctx, clock), ctx.settings.method)
     return np.asarray(sol.chosen, dtype=np.int64), factor
 
 
@@ -439,42 +428,24 @@ MAX_REGISTRATION_ROUNDS = 4
 ADD_ROUNDS = 2
 
 
-def _choose(
-    ctx: Context,
-    cand: np.ndarray,
-    say: Progress,
-    deadline: float,
-    timings: dict[str, float],
-    estimate: Registration | None = None,
-    forced: np.ndarray | None = None,
-    scanner_ok: sp.csr_matrix | None = None,
-) -> tuple[CandidateEvaluation, CoverSolution]:
-    """Evaluate every candidate (:func:`_evaluate`) and choose the fewest stations
-    (:func:`_optimise`)."""
-    ev = _evaluate(ctx, cand, say, deadline, timings, estimate)
-    return ev, _optimise(ctx, cand, ev, say, deadline, timings, forced, scanner_ok)
-
-
 def _evaluate(
     ctx: Context,
     cand: np.ndarray,
     say: Progress,
-    deadline: float,
-    timings: dict[str, float],
+    clock: Clock,
     estimate: Registration | None = None,
+    by: float | None = None,
 ) -> CandidateEvaluation:
     """Every candidate against every sample on the scanner's error (plus the ``estimate`` of
-    its registration error), until ``deadline``."""
-    t = time.perf_counter()
-    ev = evaluate_candidates(
-        ctx,
-        cand,
-        progress=lambda f, m: say(0.05 + 0.6 * f, m),
-        deadline=deadline,
-        registration=estimate,
-    )
-    timings["evaluate"] = timings.get("evaluate", 0.0) + time.perf_counter() - t
-    return ev
+    its registration error), until the clock's deadline or ``by``, the earlier."""
+    with clock.timed("evaluate"):
+        return evaluate_candidates(
+            ctx,
+            cand,
+            progress=lambda f, m: say(0.05 + 0.6 * f, m),
+            deadline=clock.deadline if by is None else min(by, clock.deadline),
+            registration=estimate,
+        )
 
 
 def _optimise(
@@ -482,8 +453,7 @@ def _optimise(
     cand: np.ndarray,
     ev: CandidateEvaluation,
     say: Progress,
-    deadline: float,
-    timings: dict[str, float],
+    clock: Clock,
     forced: np.ndarray | None = None,
     scanner_ok: sp.csr_matrix | None = None,
 ) -> CoverSolution:
@@ -506,7 +476,7 @@ def _optimise(
             ok = sp.csr_matrix(mixed > 0)
             n_ok = np.where(lost, n_scanner, n_ok)
     demand = cover_demand(ctx, n_ok)
-    remaining = _solver_time(ctx, deadline)
+    remaining = _solver_time(ctx, clock)
     if forced is None or not len(forced):
         sol = solve_cover(ok, demand, remaining, st.method)
     else:  # the others for what the forced stations leave
@@ -525,16 +495,16 @@ def _optimise(
             sol.status += f"; {len(spread) - len(sol.chosen)} added for separate views"
             sol.chosen, sol.objective = spread, len(spread)
             sol.gap = (sol.objective - sol.lower_bound) / sol.objective
-    timings["optimise"] = timings.get("optimise", 0.0) + time.perf_counter() - t
+    clock.note("optimise", time.perf_counter() - t)
     return sol
 
 
-def _solver_time(ctx: Context, deadline: float) -> float:
+def _solver_time(ctx: Context, clock: Clock) -> float:
     """The optimiser's time limit [s]: what is left of the plan's budget, or its
     :data:`SOLVER_SHARE` when the registration network is still to be built and judged;
     never under :data:`MIN_SOLVER_S`."""
     share = SOLVER_SHARE if ctx.settings.computes_registration else 1.0
-    return max(MIN_SOLVER_S, share * (deadline - time.monotonic()))
+    return max(MIN_SOLVER_S, share * clock.left_s())
 
 
 def cover_demand(ctx: Context, n_ok: np.ndarray) -> np.ndarray:

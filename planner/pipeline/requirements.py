@@ -53,10 +53,12 @@ def _spec(
     optional: bool = False,
     step: float = 1.0,
     help: str = "",
+    group: str = "",
 ) -> Any:
-    """A dataclass field carrying its unit, valid range and label (read by validation,
-    the command line and the widgets)."""
+    """A dataclass field carrying its unit, valid range, label and group (read by
+    validation, the command line and the widgets)."""
     meta = {
+        "group": group,
         "unit": unit,
         "label": label,
         "lo": lo,
@@ -83,6 +85,7 @@ class FieldSpec:
     optional: bool
     step: float
     help: str
+    group: str = ""
 
     @property
     def flag(self) -> str:
@@ -417,12 +420,39 @@ DISTRICT_SAMPLES = 8000
 WORKER_MEMORY = "2GB"
 
 
+#: The groups of :class:`PlanSettings`' fields (key → title), in the order the command line's
+#: help and the dashboard's "More settings" show them; each field names its group.
+SETTING_GROUPS = {
+    "sampling": "Samples, candidate stations and the scan",
+    "model": "Accuracy model",
+    "registration": "Registration and targets",
+    "field": "Field work and documents",
+    "solver": "Optimiser, time budget and work limits",
+}
+
+
+def setting_groups() -> dict[str, list[str]]:
+    """The names of :class:`PlanSettings`' fields by group (:data:`SETTING_GROUPS`' keys),
+    in their order.
+
+    >>> setting_groups()["solver"]
+    ['method', 'time_limit_s', 'max_samples', 'max_pairs']
+    """
+    out: dict[str, list[str]] = {g: [] for g in SETTING_GROUPS}
+    for f in fields(PlanSettings):
+        out[f.metadata["group"]].append(f.name)
+    return out
+
+
 @dataclass(frozen=True, kw_only=True)
 class PlanSettings:
-    """How the planner samples the site and solves (sensible defaults for a building).
+    """How the planner samples the site, models the errors, registers the scans, schedules
+    the field work and solves (sensible defaults for a building). The fields come in the
+    groups of :data:`SETTING_GROUPS` (:func:`setting_groups`); the command line's help and
+    the dashboard's "More settings" show them so.
 
-    Parameters
-    ----------
+    Samples, candidate stations and the scan
+    ----------------------------------------
     grid_m : float, default 2
         Spacing of candidate stations [m], >= 0.25.
     clearance_m : float, default 1
@@ -431,45 +461,16 @@ class PlanSettings:
         Facade sample spacing along the facade and up its height [m].
     instrument_height_m : float, default 1.5
         Scanner centre above the ground [m].
-    station_rms_mm : float or (float, float), default 0
-        Station / registration RMS m_xc, m_yc added to eq. 2 [mm].
     step_mm_at_10m : float, optional
         Scan step in use [mm at 10 m]; default the scanner's.
-    inventory : targets the surveyor owns (default: Sossa's practice).
-    target_height_m : float, default 1.6
-        Height of targets on stands and on walls [m].
-    target_spacing_m : float, default 6
-        Spacing of candidate target positions along facades and on free ground [m].
-    max_target_incidence_deg : float, default 60
-        Beyond this incidence a flat target is not used.
-    traverse_mm, gnss_mm : float, default 2 and 15
-        The accuracy of planned control (:mod:`planner.pipeline.control`), per coordinate
-        [mm]: what one leg of a total-station traverse adds, and a GNSS (network RTK) point.
-    setup_min, target_setup_min, target_collect_min : float, default 5, 2 and 1
-        Field time to set up a station, to place a target and to collect it once the last
-        station that uses it is scanned [min] (targets leap-frog along the visiting order
-        within the inventory's counts).
-    walk_speed_m_s : float, default 0.8
-        Walking speed between stations, carrying the kit [m/s].
-    session_h : float, default 4
-        Longest field session [h]; the visiting order is split into sessions.
-    scan_rate_hz : float, default 500 000
-        Measurement rate [points/s] for scan times when the scanner's profile gives none.
-    drawing_scale : int, default 500
-        The drawing (DXF) is made for the scale 1 : ``drawing_scale``: its lettering 2.5 mm
-        and its symbols 3 mm on paper at that scale.
-    time_limit_s : float, default 60
-        Time budget of the whole plan: reading, evaluation (at most 60 %), optimiser (at
-        most half of what is left when it starts), registration rounds and documents share
-        it; when it runs out, the best plan found so far is kept and says what was cut.
-    max_samples, max_pairs : float, default 1 000 000 and 10⁹
-        The work the planner accepts before it starts: facade samples, and candidate ×
-        sample evaluations (about 20 million a second). Beyond them the plan is refused with
-        the estimate; raise them explicitly for a site that needs it.
-    method : "auto", "milp" or "greedy"
-        ``auto``: the integer program, greedy set cover when it finds nothing in time;
-        ``milp``: the integer program only (an error if it finds no plan in time);
-        ``greedy``: greedy set cover only.
+    preset : str or None, default None
+        The scanner's resolution / quality setting (the maker's name, from the catalogue's
+        presets). None: the coarsest whose point spacing meets ``max_spacing_mm`` straight
+        on at the search radius, else the scanner's default setting
+        (:meth:`PlanSettings.for_scanner` decides it once). A ``step_mm_at_10m`` given wins.
+
+    Accuracy model
+    --------------
     model : "3d" or "paper", default "3d"
         ``3d``: the full 3-D propagation (:mod:`planner.accuracy3d`); ``paper``: eq. 2 and
         4 of Voroshilov & Karachentsev as printed. ``docs/science.md`` says why 3-D is the
@@ -477,6 +478,9 @@ class PlanSettings:
     incidence_noise, beam_footprint : bool, default True
         The 3-D model's optional terms: ranging noise growing with the 3-D incidence, and
         the beam's footprint bounding the detail a scan resolves (in the spacing check).
+
+    Registration and targets
+    ------------------------
     registration : "auto", "targets", "cloud" or "hybrid", default "auto"
         How the scans are registered: by common targets; cloud to cloud (ICP on the
         surfaces two scans share, :mod:`planner.cloud_registration`); or hybrid (cloud links,
@@ -487,30 +491,76 @@ class PlanSettings:
         surfaces adjusted together (a registration program's network or bundle adjustment),
         or each scan registered on its own to the one before it along the plan's links
         (errors add up along the chain; the plan then judges, and adds stations, by that).
-    preset : str or None, default None
-        The scanner's resolution / quality setting (the maker's name, from the catalogue's
-        presets). None: the coarsest whose point spacing meets ``max_spacing_mm`` straight
-        on at the search radius, else the scanner's default setting
-        (:meth:`PlanSettings.for_scanner` decides it once). A ``step_mm_at_10m`` given wins.
-    imaging : bool, default True
-        Whether each station also takes its images (HDR panorama); the field time counts the
-        scanner's ``imaging_s`` for it.
-    min_overlap_pct, cloud_floor_mm : float, default 20 and 1
-        A cloud link needs this overlap (as registration software counts it); what a patch's
-        plane fit does not see.
     registration_error : bool, default True
         Judge every sample by the scanner's error plus the registration's, propagated from
         the targets (:mod:`planner.registration_error`). A ``station_rms_mm`` given
         replaces the computed registration error by the paper's fixed m_xc, m_yc.
+    station_rms_mm : float or (float, float), default 0
+        Station / registration RMS m_xc, m_yc added to eq. 2 [mm].
+    inventory : targets the surveyor owns (default: Sossa's practice).
+    target_height_m : float, default 1.6
+        Height of targets on stands and on walls [m].
     high_target_height_m, min_points_per_quadrant, min_points_on_sphere, target_rms_mm,
     target_floor_mm, max_targets_per_link
         Target planning: a second row of wall targets, the practice sizing rules, the
         centre RMS (a figure of your own, or the model with its floor), the most targets a
         link takes.
+    target_spacing_m : float, default 6
+        Spacing of candidate target positions along facades and on free ground [m].
+    max_target_incidence_deg : float, default 45
+        Beyond this incidence a flat target is not used.
+    min_overlap_pct, cloud_floor_mm : float, default 20 and 1
+        A cloud link needs this overlap (as registration software counts it); what a patch's
+        plane fit does not see.
+    traverse_mm, gnss_mm : float, default 2 and 15
+        The accuracy of planned control (:mod:`planner.pipeline.control`), per coordinate
+        [mm]: what one leg of a total-station traverse adds, and a GNSS (network RTK) point.
+
+    Field work and documents
+    ------------------------
+    setup_min, target_setup_min, target_collect_min : float, default 5, 2 and 1
+        Field time to set up a station, to place a target and to collect it once the last
+        station that uses it is scanned [min] (targets leap-frog along the visiting order
+        within the inventory's counts).
+    walk_speed_m_s : float, default 0.8
+        Walking speed between stations, carrying the kit [m/s].
+    session_h : float, default 4
+        Longest field session [h]; the visiting order is split into sessions.
+    scan_rate_hz : float, default 500 000
+        Measurement rate [points/s] for scan times when the scanner's profile gives none.
+    imaging : bool, default True
+        Whether each station also takes its images (HDR panorama); the field time counts the
+        scanner's ``imaging_s`` for it.
+    drawing_scale : int, default 500
+        The drawing (DXF) is made for the scale 1 : ``drawing_scale``: its lettering 2.5 mm
+        and its symbols 3 mm on paper at that scale.
+
+    Optimiser, time budget and work limits
+    --------------------------------------
+    method : "auto", "milp" or "greedy"
+        ``auto``: the integer program, greedy set cover when it finds nothing in time;
+        ``milp``: the integer program only (an error if it finds no plan in time);
+        ``greedy``: greedy set cover only.
+    time_limit_s : float, default 60
+        Time budget of the whole plan: reading, evaluation (at most 60 %), optimiser (at
+        most half of what is left when it starts), registration rounds and documents share
+        it; when it runs out, the best plan found so far is kept and says what was cut.
+    max_samples, max_pairs : float, default 1 000 000 and 10⁹
+        The work the planner accepts before it starts: facade samples, and candidate ×
+        sample evaluations (about 20 million a second). Beyond them the plan is refused with
+        the estimate; raise them explicitly for a site that needs it.
     """
 
+    # -- samples, candidate stations and the scan (SETTING_GROUPS['sampling'])
     grid_m: float = _spec(
-        2.0, "m", "candidate grid", lo=0.25, open_lo=False, step=0.5, help="candidate grid spacing"
+        2.0,
+        "m",
+        "candidate grid",
+        lo=0.25,
+        open_lo=False,
+        step=0.5,
+        help="candidate grid spacing",
+        group="sampling",
     )
     clearance_m: float = _spec(
         1.0,
@@ -519,24 +569,31 @@ class PlanSettings:
         open_lo=False,
         step=0.5,
         help="free space kept around buildings and obstacles for the tripod",
+        group="sampling",
     )
     sample_spacing_m: float = _spec(
-        2.0, "m", "sample spacing along", step=0.5, help="facade sample spacing along the facade"
+        2.0,
+        "m",
+        "sample spacing along",
+        step=0.5,
+        help="facade sample spacing along the facade",
+        group="sampling",
     )
     sample_height_step_m: float = _spec(
-        2.0, "m", "sample spacing up", step=0.5, help="facade sample spacing up the facade"
+        2.0,
+        "m",
+        "sample spacing up",
+        step=0.5,
+        help="facade sample spacing up the facade",
+        group="sampling",
     )
     instrument_height_m: float = _spec(
-        1.5, "m", "instrument height", step=0.1, help="scanner centre above the ground"
-    )
-    station_rms_mm: float | tuple[float, float] = _spec(
-        0.0,
-        "mm",
-        "station RMS m_xc, m_yc",
-        open_lo=False,
-        step=0.5,
-        help="a fixed station / registration RMS m_xc, m_yc (the paper's) in place of the "
-        "registration error computed from the targets; 0: computed",
+        1.5,
+        "m",
+        "instrument height",
+        step=0.1,
+        help="scanner centre above the ground",
+        group="sampling",
     )
     step_mm_at_10m: float | None = _spec(
         None,
@@ -545,10 +602,37 @@ class PlanSettings:
         optional=True,
         step=0.5,
         help="scan step in use at 10 m (default: the scanner's)",
+        group="sampling",
     )
-    inventory: tuple[TargetItem, ...] = field(default=DEFAULT_INVENTORY)
+    preset: str | None = field(default=None, metadata={"group": "sampling"})
+    # -- accuracy model (SETTING_GROUPS['model'])
+    model: str = field(default="3d", metadata={"group": "model"})
+    incidence_noise: bool = field(default=True, metadata={"group": "model"})
+    beam_footprint: bool = field(default=True, metadata={"group": "model"})
+    # -- registration and targets (SETTING_GROUPS['registration'])
+    registration: str = field(default="auto", metadata={"group": "registration"})
+    registration_processing: str = field(default="adjustment", metadata={"group": "registration"})
+    registration_error: bool = field(default=True, metadata={"group": "registration"})
+    station_rms_mm: float | tuple[float, float] = _spec(
+        0.0,
+        "mm",
+        "station RMS m_xc, m_yc",
+        open_lo=False,
+        step=0.5,
+        help="a fixed station / registration RMS m_xc, m_yc (the paper's) in place of the "
+        "registration error computed from the targets; 0: computed",
+        group="registration",
+    )
+    inventory: tuple[TargetItem, ...] = field(
+        metadata={"group": "registration"}, default=DEFAULT_INVENTORY
+    )
     target_height_m: float = _spec(
-        1.6, "m", "target height", step=0.1, help="height of targets on stands and on walls"
+        1.6,
+        "m",
+        "target height",
+        step=0.1,
+        help="height of targets on stands and on walls",
+        group="registration",
     )
     high_target_height_m: float | None = _spec(
         3.0,
@@ -557,6 +641,7 @@ class PlanSettings:
         optional=True,
         step=0.5,
         help="height of a second row of wall targets, so that a link's targets spread in height",
+        group="registration",
     )
     target_spacing_m: float = _spec(
         6.0,
@@ -564,6 +649,7 @@ class PlanSettings:
         "target spacing",
         step=1.0,
         help="spacing of candidate target positions along facades and on free ground",
+        group="registration",
     )
     max_target_incidence_deg: float = _spec(
         45.0,
@@ -573,6 +659,7 @@ class PlanSettings:
         step=5.0,
         help="beyond this incidence a flat (checkerboard) target is not used (FARO's guidance "
         "for targets in SCENE: 45°)",
+        group="registration",
     )
     min_points_per_quadrant: float = _spec(
         4,
@@ -580,6 +667,7 @@ class PlanSettings:
         "points per checkerboard quadrant",
         step=1,
         help="each quadrant of a flat target must hold this many scan points",
+        group="registration",
     )
     min_points_on_sphere: float = _spec(
         20,
@@ -587,6 +675,7 @@ class PlanSettings:
         "points on a sphere",
         step=1,
         help="a sphere's visible cap must hold this many scan points for its centre fit",
+        group="registration",
     )
     target_rms_mm: float | None = _spec(
         None,
@@ -595,6 +684,7 @@ class PlanSettings:
         optional=True,
         step=0.1,
         help="your figure for a target centre's RMS per axis (default: the model)",
+        group="registration",
     )
     target_floor_mm: float = _spec(
         0.5,
@@ -603,6 +693,7 @@ class PlanSettings:
         open_lo=False,
         step=0.1,
         help="what a centre fit does not see (printing, turning, centring), per axis",
+        group="registration",
     )
     max_targets_per_link: float = _spec(
         6,
@@ -613,93 +704,7 @@ class PlanSettings:
         hi=20,
         step=1,
         help="the most common targets a registration of two stations takes",
-    )
-    traverse_mm: float = _spec(
-        2.0,
-        "mm",
-        "traverse, per leg",
-        step=0.5,
-        help="RMS per coordinate that one leg of a total-station traverse adds to planned "
-        "control (a 1\u2033 instrument over legs up to 80 m)",
-    )
-    gnss_mm: float = _spec(
-        15.0,
-        "mm",
-        "GNSS point",
-        step=1.0,
-        help="RMS per coordinate of a planned control point fixed by GNSS (network RTK)",
-    )
-    setup_min: float = _spec(
-        5.0,
-        "min",
-        "set-up per station",
-        step=1.0,
-        help="field time to set up, level and take down the scanner at a station",
-    )
-    target_setup_min: float = _spec(
-        2.0,
-        "min",
-        "set-up per target",
-        open_lo=False,
-        step=0.5,
-        help="field time to place one target (stand or wall) before the first scan that sees it",
-    )
-    target_collect_min: float = _spec(
-        1.0,
-        "min",
-        "collecting per target",
-        open_lo=False,
-        step=0.5,
-        help="field time to collect one target once the last station that uses it is scanned",
-    )
-    walk_speed_m_s: float = _spec(
-        0.8, "m/s", "walking speed", step=0.1, help="walking speed carrying the kit"
-    )
-    session_h: float = _spec(
-        4.0,
-        "h",
-        "session length",
-        step=0.5,
-        help="longest field session (a battery set, half a day); the route is split into these",
-    )
-    scan_rate_hz: float = _spec(
-        500_000.0,
-        "points/s",
-        "measurement rate if unknown",
-        step=50_000.0,
-        help="measurement rate for the scan time when the scanner profile gives none",
-    )
-    drawing_scale: int = _spec(
-        500,
-        "1:N",
-        "drawing scale",
-        lo=1,
-        open_lo=False,
-        step=50,
-        help="the drawing's scale 1:N (plan.dxf): lettering 2.5 mm and symbols 3 mm on paper",
-    )
-    time_limit_s: float = _spec(
-        60.0,
-        "s",
-        "time limit",
-        step=5.0,
-        help="time budget of the whole plan (reading, evaluation, optimiser, registration, "
-        "documents); when it runs out the best plan so far is kept, and says so",
-    )
-    max_samples: float = _spec(
-        1_000_000,
-        "samples",
-        "most facade samples",
-        step=100_000,
-        help="refuse a site that needs more facade samples than this (raise it explicitly)",
-    )
-    max_pairs: float = _spec(
-        1e9,
-        "pairs",
-        "most candidate × sample pairs",
-        step=1e8,
-        help="refuse a plan that needs more station × sample evaluations than this (about "
-        "20 million a second)",
+        group="registration",
     )
     min_overlap_pct: float = _spec(
         DEFAULT_MIN_OVERLAP_PCT,
@@ -709,6 +714,7 @@ class PlanSettings:
         step=5.0,
         help="the overlap a cloud-to-cloud link needs, as registration software counts it "
         "(Autodesk ReCap asks more than 20 %)",
+        group="registration",
     )
     cloud_floor_mm: float = _spec(
         DEFAULT_CLOUD_FLOOR_MM,
@@ -718,16 +724,110 @@ class PlanSettings:
         step=0.5,
         help="what the plane fit of a 2 m surface patch does not see (roughness, edges, "
         "calibration), per scan",
+        group="registration",
     )
-    method: str = "auto"
-    model: str = "3d"
-    registration: str = "auto"
-    registration_processing: str = "adjustment"
-    preset: str | None = None
-    imaging: bool = True
-    incidence_noise: bool = True
-    beam_footprint: bool = True
-    registration_error: bool = True
+    traverse_mm: float = _spec(
+        2.0,
+        "mm",
+        "traverse, per leg",
+        step=0.5,
+        help="RMS per coordinate that one leg of a total-station traverse adds to planned "
+        "control (a 1\u2033 instrument over legs up to 80 m)",
+        group="registration",
+    )
+    gnss_mm: float = _spec(
+        15.0,
+        "mm",
+        "GNSS point",
+        step=1.0,
+        help="RMS per coordinate of a planned control point fixed by GNSS (network RTK)",
+        group="registration",
+    )
+    # -- field work and documents (SETTING_GROUPS['field'])
+    setup_min: float = _spec(
+        5.0,
+        "min",
+        "set-up per station",
+        step=1.0,
+        help="field time to set up, level and take down the scanner at a station",
+        group="field",
+    )
+    target_setup_min: float = _spec(
+        2.0,
+        "min",
+        "set-up per target",
+        open_lo=False,
+        step=0.5,
+        help="field time to place one target (stand or wall) before the first scan that sees it",
+        group="field",
+    )
+    target_collect_min: float = _spec(
+        1.0,
+        "min",
+        "collecting per target",
+        open_lo=False,
+        step=0.5,
+        help="field time to collect one target once the last station that uses it is scanned",
+        group="field",
+    )
+    walk_speed_m_s: float = _spec(
+        0.8, "m/s", "walking speed", step=0.1, help="walking speed carrying the kit", group="field"
+    )
+    session_h: float = _spec(
+        4.0,
+        "h",
+        "session length",
+        step=0.5,
+        help="longest field session (a battery set, half a day); the route is split into these",
+        group="field",
+    )
+    scan_rate_hz: float = _spec(
+        500_000.0,
+        "points/s",
+        "measurement rate if unknown",
+        step=50_000.0,
+        help="measurement rate for the scan time when the scanner profile gives none",
+        group="field",
+    )
+    imaging: bool = field(default=True, metadata={"group": "field"})
+    drawing_scale: int = _spec(
+        500,
+        "1:N",
+        "drawing scale",
+        lo=1,
+        open_lo=False,
+        step=50,
+        help="the drawing's scale 1:N (plan.dxf): lettering 2.5 mm and symbols 3 mm on paper",
+        group="field",
+    )
+    # -- optimiser, time budget and work limits (SETTING_GROUPS['solver'])
+    method: str = field(default="auto", metadata={"group": "solver"})
+    time_limit_s: float = _spec(
+        60.0,
+        "s",
+        "time limit",
+        step=5.0,
+        help="time budget of the whole plan (reading, evaluation, optimiser, registration, "
+        "documents); when it runs out the best plan so far is kept, and says so",
+        group="solver",
+    )
+    max_samples: float = _spec(
+        1_000_000,
+        "samples",
+        "most facade samples",
+        step=100_000,
+        help="refuse a site that needs more facade samples than this (raise it explicitly)",
+        group="solver",
+    )
+    max_pairs: float = _spec(
+        1e9,
+        "pairs",
+        "most candidate × sample pairs",
+        step=1e8,
+        help="refuse a plan that needs more station × sample evaluations than this (about "
+        "20 million a second)",
+        group="solver",
+    )
 
     def __post_init__(self) -> None:
         station_rms_pair(self.station_rms_mm)

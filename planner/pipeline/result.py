@@ -1,14 +1,14 @@
 """The result of planning: :class:`Plan` — stations, targets, coverage and diagnostics.
 
-The plan's files (CSV, GeoJSON, summary) are written by :mod:`planner.pipeline.export`;
-:meth:`Plan.save` is a shortcut to it.
+The plan's files (CSV, GeoJSON, summary) are written by :mod:`planner.pipeline.export`
+(``export.save(plan, folder)``).
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING
 
 import pandas as pd
 
@@ -17,6 +17,12 @@ from planner.pipeline.requirements import PlanSettings, Requirements
 from planner.pipeline.schema import FACADE_TABLE_COLUMNS, STATION_PURPOSES, ZONE_COLUMNS
 from planner.scanner import Scanner
 from planner.site import Site
+
+if TYPE_CHECKING:  # (these modules build plans: imported here only for the annotations)
+    from planner.pipeline.district import KeptNetwork
+    from planner.pipeline.judge import Workbench
+    from planner.pipeline.registration import Network
+    from planner.pipeline.route import FieldRoute
 
 __all__ = ["Plan", "SolverReport"]
 
@@ -89,16 +95,16 @@ class Plan:
     candidates: pd.DataFrame
     solver: SolverReport
     zones: pd.DataFrame = field(default_factory=lambda: pd.DataFrame(columns=ZONE_COLUMNS))
-    network: Any = None  # the registration network (planner.pipeline.registration.Network)
-    route: Any = None  # visiting order and field time (planner.pipeline.route.FieldRoute)
+    network: Network | None = None  # the registration network
+    route: FieldRoute | None = None  # visiting order and field time
     messages: list[str] = field(default_factory=list)
     timings_s: dict[str, float] = field(default_factory=dict)
     #: What the plan was made from, for what-if edits (planner.pipeline.whatif); not saved,
     #: and dropped when a plan is sent between processes.
-    workbench: Any = field(default=None, repr=False, compare=False)
+    workbench: Workbench | None = field(default=None, repr=False, compare=False)
     #: A district block's network as the stitch ties it to its neighbours'
     #: (:func:`planner.pipeline.district.keep_frame`); None elsewhere.
-    block_frame: Any = field(default=None, repr=False, compare=False)
+    block_frame: KeptNetwork | None = field(default=None, repr=False, compare=False)
 
     @property
     def unmet(self) -> pd.DataFrame:

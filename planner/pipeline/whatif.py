@@ -22,6 +22,7 @@ from dataclasses import replace
 import numpy as np
 
 from planner.errors import InputError
+from planner.pipeline.clock import Clock
 from planner.pipeline.evaluate import Progress
 from planner.pipeline.judge import Round, Workbench, assemble, free_positions, judge, round_network
 from planner.pipeline.planning import choose_stations
@@ -127,11 +128,11 @@ def _judged(
 ) -> Plan:
     """The plan of the stations ``idx`` (pool indices; ``hand`` placed by hand; ``kept``
     those that keep their id and purpose), their network built and every sample judged."""
-    timings: dict[str, float] = {"setup": 0.0}
+    clock = Clock(started=t0)  # (an edit is judged whole: no deadline)
     r = Round(cover=idx)
     datum = p.network.datum_station if p.network is not None else None  # kept where it stays
     datum = datum if datum is not None and datum in set(np.asarray(idx).tolist()) else None
-    r.net = round_network(wb.ctx, wb.pool, wb.seen, idx, timings, datum=datum) if len(idx) else None
+    r.net = round_network(wb.ctx, wb.pool, wb.seen, idx, clock, datum) if len(idx) else None
     r.judged = judge(wb.ctx, wb.pool, r)
     bound = p.solver.lower_bound
     n = len(r.net.stations) if r.net is not None else 0
@@ -143,7 +144,7 @@ def _judged(
         gap=None if bound is None or n == 0 else max(0.0, (n - bound) / n),
     )
     messages = [*wb.messages, message]
-    return assemble(wb, r, solver, messages, timings, t0, hand=hand, kept=kept, edited=True)
+    return assemble(wb, r, solver, messages, clock, hand=hand, kept=kept, edited=True)
 
 
 def _target_index(wb: Workbench, p: Plan, target_id: str) -> int:
