@@ -71,6 +71,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike
+from scipy import sparse
 
 from planner.accuracy3d import INCIDENCE_NOISE_EXPONENT, MIN_COS_INCIDENCE
 from planner.errors import InputError
@@ -492,8 +493,6 @@ def datum_tilt_cov(
 def _eliminate_planes(n_mat, tilt_rhs, planes, station_xyz, tied, s_col, par, levelled) -> None:
     """Add the patches' observations to the poses' normal equations (and, levelled, to the
     tilts' right-hand side), their offsets eliminated: :func:`adjust`. In place."""
-    from scipy import sparse
-
     xyz, normal, var = planes
     obs = [(j, p, v) for (j, p), v in var.items() if tied[j] and np.isfinite(v)]
     if not obs:

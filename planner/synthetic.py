@@ -15,6 +15,7 @@ Examples
 
 from __future__ import annotations
 
+import json
 from itertools import pairwise
 
 import numpy as np
@@ -195,7 +196,6 @@ def town_geojson(site: Site) -> dict:
     """A generated town as a GeoJSON FeatureCollection the site readers take (in
     :data:`TOWN_CRS`): its buildings with their heights and its passages (role passage,
     their clear height) — for tests and benchmarks that plan it from a file."""
-    import json
 
     def feature(props: dict, geom) -> dict:
         return {

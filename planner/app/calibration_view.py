@@ -31,6 +31,7 @@ from planner.app.widgets import (
     upload_folder,
 )
 from planner.calibration import (
+    BaselineResult,
     axis_errors,
     baseline_calibration,
     lab_test,
@@ -316,8 +317,6 @@ class CalibrationDashboard:
     # -- the profile -------------------------------------------------------------------------
     def _profile(self) -> None:
         """The profile of the chosen figures; nothing to download while it cannot be made."""
-        from planner.calibration import BaselineResult
-
         self._withdraw()
         baseline = self.results.get("distances")
         try:

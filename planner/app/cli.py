@@ -4,6 +4,11 @@ Exit codes (one meaning each): 0 success; 1 plan written, some samples unmet (``
 only); 2 bad input or an unusable output place (a message on stderr, nothing written);
 3 an internal error (a bug: a one-line message and the log file with the details);
 130 stopped by Ctrl+C.
+
+A command imports the part of the package it needs when it runs (the imports inside the
+``cmd_*`` functions): ``planner --help``, ``planner scanners`` and a refused input answer in
+under a second instead of loading the planner's NumPy/SciPy/shapely/Numba stack (about 1 s
+more) first.
 """
 
 from __future__ import annotations

@@ -14,6 +14,7 @@ import threading
 import time
 import traceback
 import zipfile
+from dataclasses import replace
 from pathlib import Path
 
 import ipywidgets as w
@@ -22,10 +23,21 @@ import numpy as np
 import pandas as pd
 from IPython.display import display
 
+from planner.accuracy import max_distance_m
+from planner.accuracy3d import max_distance_3d_m
+from planner.app.booklet import booklet_pdf
+from planner.app.figures import plot_height, plot_models, plot_planimetric, plot_target_sizes
+from planner.app.maps import plot_coverage, plot_plan_map
+from planner.app.report import make_report
 from planner.app.whatif_view import WhatIfMap
 from planner.app.widgets import download_link, error_html, scanner_dropdown, show, upload_folder
 from planner.app.wording import SITE_LABELS, for_dashboard
+from planner.classes import class_limits, parse_class
 from planner.errors import PlannerError
+from planner.pipeline.explain import explain_unmet, suggestions
+from planner.pipeline.export import render
+from planner.pipeline.facades import build_facades
+from planner.pipeline.planning import plan, reach_m
 from planner.pipeline.requirements import (
     REGISTRATION_PROCESSING,
     SETTING_GROUPS,
@@ -36,12 +48,20 @@ from planner.pipeline.requirements import (
     requirements_and_settings,
     setting_groups,
 )
+from planner.pipeline.whatif import edit_targets, evaluate_stations, reoptimise
 from planner.polar import slope_distance_m
+from planner.reference import compare_table1, compare_table2
 from planner.scanner import DEFAULT_SCANNER, Scanner
 from planner.site import DEFAULT_NEAR_M
-from planner.siteio import DEFAULT_STOREY_HEIGHT_M
-from planner.tables import SOSSA_DISTANCES_M, height_table, planimetric_table
-from planner.targets import DEFAULT_INVENTORY, SOSSA_STEP_MM_AT_10M
+from planner.siteio import DEFAULT_STOREY_HEIGHT_M, default_site, read_site
+from planner.tables import SOSSA_DISTANCES_M, height_table, planimetric_table, target_size_table
+from planner.targets import (
+    DEFAULT_INVENTORY,
+    SOSSA_STEP_MM_AT_10M,
+    parse_inventory,
+    recommend_targets,
+)
+from planner.zones import Zone
 
 __all__ = ["AccuracyExplorer", "StationPlanner", "TargetExplorer"]
 
@@ -158,8 +178,6 @@ class ZoneEditor:
 
     def show_facades(self, site) -> None:
         """Offer the facades of ``site`` (ids as facades.csv names them)."""
-        from planner.pipeline.facades import build_facades
-
         fac = build_facades(site, 2.0, 2.0)
         self._sizes = {
             str(fid): (float(length), float(h))
@@ -178,8 +196,6 @@ class ZoneEditor:
             slider.value = (0.0, round(top, 1))
 
     def add_zone(self) -> None:
-        from planner.zones import Zone
-
         if not self.facade.value:
             self.listing.value = error_html("choose a facade first")
             return
@@ -591,8 +607,6 @@ class StationPlanner:
     def _site(self, near_m: float = DEFAULT_NEAR_M):
         """The site chosen (default or uploaded), without the editor's zones; problems
         farther than ``near_m`` from the buildings to plan are noted, not refused."""
-        from planner.siteio import default_site, read_site
-
         ids = self._building_ids() or None
         if self.site_source.value == "Default site":
             return default_site(buildings=ids)
@@ -642,11 +656,6 @@ class StationPlanner:
 
     # -- actions -----------------------------------------------------------------------------
     def _inputs(self):
-        from dataclasses import replace
-
-        from planner.pipeline.planning import reach_m
-        from planner.targets import parse_inventory
-
         cls = self.accuracy_class.value.strip() or None
         more = {name: _field_value(self._specs[name], box) for name, box in self.more.items()}
         req, settings = requirements_and_settings(
@@ -690,8 +699,6 @@ class StationPlanner:
 
     def _show_class(self) -> None:
         """The chosen class, what it means and what it sets (the limit boxes follow it)."""
-        from planner.classes import class_limits, parse_class
-
         text = self.accuracy_class.value.strip()
         for box in (self.max_x, self.max_y, self.max_z):
             box.disabled = bool(text)
@@ -771,8 +778,6 @@ class StationPlanner:
     def _planner(self):
         """The work of Plan for the inputs on screen (read now, so that edits made while it
         runs mark the result out of date)."""
-        from planner.pipeline.planning import plan
-
         try:
             site, sc, req, st = self._inputs()
         except (PlannerError, ValueError) as exc:
@@ -826,15 +831,11 @@ class StationPlanner:
     def evaluate_by_hand(self, xy, ids=None) -> None:
         """The plan with the stations at ``xy`` (the what-if map's edit; ``ids`` the station
         each position is, None for one added), judged at once."""
-        from planner.pipeline.whatif import evaluate_stations
-
         self._by_hand(lambda p: evaluate_stations(p, xy, ids))
 
     def edit_targets_by_hand(self, **edits) -> None:
         """The plan with its targets ruled out, moved or added (the what-if map's edit),
         judged at once (:func:`planner.pipeline.whatif.edit_targets`)."""
-        from planner.pipeline.whatif import edit_targets
-
         self._by_hand(lambda p: edit_targets(p, **edits))
 
     def _by_hand(self, edit) -> None:
@@ -857,8 +858,6 @@ class StationPlanner:
 
     def reoptimise(self, locked_xy) -> None:
         """Keep the locked stations, choose the fewest others around them (background)."""
-        from planner.pipeline.whatif import reoptimise
-
         base = self.plan
         if base is None:
             self.whatif.status.value = error_html("make a plan first")
@@ -870,10 +869,6 @@ class StationPlanner:
     def _show_results(self, whatif: bool = True, fresh: bool = True) -> None:
         """Show the plan in every tab; ``fresh`` — made from the inputs on screen (clears
         the out-of-date mark; an edit by hand or a re-optimisation keeps the plan's inputs)."""
-        from planner.app.maps import plot_plan_map
-        from planner.pipeline.explain import explain_unmet, suggestions
-        from planner.pipeline.export import render
-
         p = self.plan
         if fresh:
             self.stale.value = ""
@@ -952,13 +947,10 @@ class StationPlanner:
 
     def _show_coverage(self) -> None:
         if self.plan is not None:
-            from planner.app.maps import plot_coverage
-
             show(self.cov_out, plot_coverage(self.plan, self.quantity.value))
 
     def make_report(self) -> None:
         """Render the static HTML report of the current inputs and offer it for download."""
-        from planner.app.report import make_report
 
         def build(p) -> bytes:
             out = Path(self._tmp.name) / "report.html"
@@ -975,8 +967,6 @@ class StationPlanner:
 
     def make_booklet(self) -> None:
         """Render the field booklet of the plan on screen and offer it for download."""
-        from planner.app.booklet import booklet_pdf
-
         self._make(
             "booklet.pdf",
             booklet_pdf,
@@ -1103,10 +1093,6 @@ class AccuracyExplorer:
         )
 
     def update(self) -> None:
-        from planner.accuracy import max_distance_m
-        from planner.accuracy3d import max_distance_3d_m
-        from planner.app.figures import plot_height, plot_models, plot_planimetric
-
         self.error.value = ""
         try:
             sc = self.current_scanner()
@@ -1161,8 +1147,6 @@ class AccuracyExplorer:
             t2.round(2),
         ]
         if sc.name == DEFAULT_SCANNER:
-            from planner.reference import compare_table1, compare_table2
-
             mis = pd.concat(
                 [
                     compare_table1().query("misprint").reset_index().assign(table="Table 1"),
@@ -1222,10 +1206,6 @@ class TargetExplorer:
         self.widget = w.VBox([self.step, self.max_distance, self.inventory, self.error, self.out])
 
     def update(self) -> None:
-        from planner.app.figures import plot_target_sizes
-        from planner.tables import target_size_table
-        from planner.targets import parse_inventory, recommend_targets
-
         self.error.value = ""
         try:
             items = parse_inventory(self.inventory.value)

@@ -7,6 +7,7 @@ functions take an optional ``ax`` so the notebooks reuse them.
 
 from __future__ import annotations
 
+import io
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -16,7 +17,11 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from planner.accuracy import height_rms, planimetric_rms
+from planner.accuracy3d import point_rms_3d
+from planner.app.maps import plot_coverage, plot_plan_map
 from planner.atomic import write_bytes_atomic
+from planner.pipeline.planning import plan
+from planner.polar import horizontal_distance_m
 from planner.reference import (
     SOSSA_TABLE2,
     compare_table1,
@@ -140,9 +145,6 @@ def plot_models(
     """m_x, m_y and m_z vs the slope distance for one beam geometry (γ, ν), by the paper's
     eq. 2 and 4 (dashed) and by the full 3-D model (solid; with the incidence term dotted
     when ``incidence_noise``) — the two models side by side."""
-    from planner.accuracy3d import point_rms_3d
-    from planner.polar import horizontal_distance_m
-
     if axes is None:
         fig, axes = plt.subplots(1, 3, figsize=(13, 3.8), sharey=True, layout="constrained")
     fig = axes[0].figure
@@ -232,8 +234,6 @@ def plot_target_sizes(
 
 
 def _save(fig: Figure, path: Path) -> Path:
-    import io
-
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=110, metadata={"Software": None})
     plt.close(fig)
@@ -244,9 +244,6 @@ def make_figures(out_dir: str | Path = "figures") -> list[Path]:
     """Regenerate the README figures in ``out_dir``; returns the files written."""
     out = Path(out_dir)
     paper = Scanner.from_name(DEFAULT_SCANNER)
-    from planner.app.maps import plot_coverage, plot_plan_map
-    from planner.pipeline.planning import plan
-
     default_plan = plan()
     written = [
         _save(plot_planimetric(paper, paper=True), out / "table1_planimetric_rms.png"),

@@ -15,8 +15,11 @@ import shapely
 from matplotlib.axes import Axes
 from matplotlib.collections import PatchCollection
 from matplotlib.figure import Figure
-from matplotlib.patches import PathPatch, Wedge
+from matplotlib.patches import FancyArrowPatch, PathPatch, Rectangle, Wedge
+from matplotlib.patches import Polygon as MplPolygon
 from matplotlib.path import Path as MplPath
+from matplotlib.ticker import FuncFormatter, MaxNLocator
+from mpl_toolkits.axes_grid1.anchored_artists import AnchoredSizeBar
 from shapely.geometry.base import BaseGeometry
 
 from planner.crs import name_of as crs_name
@@ -358,9 +361,6 @@ def _nice_length(span: float) -> float:
 def survey_frame(ax: Axes, crs: str | None) -> None:
     """What makes a plot a survey drawing: absolute coordinates on both axes (no offset),
     a light coordinate grid, a scale bar and a grid-north arrow."""
-    from matplotlib.ticker import FuncFormatter, MaxNLocator
-    from mpl_toolkits.axes_grid1.anchored_artists import AnchoredSizeBar
-
     fmt = FuncFormatter(lambda v, _: f"{v:,.0f}".replace(",", " "))
     for axis in (ax.xaxis, ax.yaxis):
         axis.set_major_formatter(fmt)
@@ -480,8 +480,6 @@ def _draw_links(p: Plan, ax: Axes, labels: list) -> None:
     relation, not a way: curved so it does not read as a line through a building —
     coloured and labelled by the link's own predicted error; the control points as black
     triangles."""
-    from matplotlib.patches import FancyArrowPatch
-
     st = p.stations.set_index("station_id")
     tg = p.targets.set_index("target_id")
     ctl = p.targets[p.targets["type"] == "control"]
@@ -541,9 +539,6 @@ def _draw_links(p: Plan, ax: Axes, labels: list) -> None:
 
 def _draw_zones(p: Plan, ax: Axes, off: dict, f) -> None:
     """The zones outlined on the facade strips (dashed), labelled with their id."""
-    from matplotlib.patches import Polygon as MplPolygon
-    from matplotlib.patches import Rectangle
-
     for z in p.site.zones:
         if z.facade_id is not None:
             facades = [z.facade_id] if z.facade_id in off else []

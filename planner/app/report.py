@@ -17,10 +17,14 @@ import io
 import pickle
 from pathlib import Path
 
+import matplotlib.pyplot as plt
 import pandas as pd
-from IPython.display import HTML
+from IPython.display import HTML, display
 
+from planner.app.maps import plot_coverage, plot_plan_map
 from planner.atomic import write_text_atomic
+from planner.classes import parse_class
+from planner.pipeline.planning import plan
 from planner.pipeline.requirements import PlanSettings, field_specs
 from planner.pipeline.result import Plan
 from planner.pipeline.schema import in_id_order
@@ -131,8 +135,6 @@ class ReportContent:
 
     def show(self) -> None:
         """Display the report section by section (the report notebook's one cell)."""
-        from IPython.display import display
-
         for n, (heading, words, pieces) in enumerate(self.parts()):
             tag = "h1" if n == 0 else "h2"
             display(
@@ -148,8 +150,6 @@ class ReportContent:
         """The plan pickled at ``plan_path`` by :func:`make_report`; None: the default site
         planned with the default requirements (when the notebook is run on its own)."""
         if plan_path is None:
-            from planner.pipeline.planning import plan
-
             return cls(plan())
         with open(plan_path, "rb") as fh:
             return cls(pickle.load(fh))
@@ -220,8 +220,6 @@ class ReportContent:
             ("requirement", req.describe()),
         ]
         if req.accuracy_class:
-            from planner.classes import parse_class
-
             for c in parse_class(req.accuracy_class):
                 rows.append((f"class {c.name}", f"{c.describe()} — {c.source}"))
         rows.append(("accuracy model", st.model_description()))
@@ -283,13 +281,9 @@ class ReportContent:
         return msg[0] if msg else "No registration network."
 
     def plan_map(self):
-        from planner.app.maps import plot_plan_map
-
         return _closed(plot_plan_map(self.plan))
 
     def coverage(self, quantity: str):
-        from planner.app.maps import plot_coverage
-
         return _closed(plot_coverage(self.plan, quantity))
 
     def facades(self) -> pd.DataFrame:
@@ -366,8 +360,6 @@ class ReportContent:
 
 def _closed(fig):
     """Close a figure so it is shown once, as the cell's value (not again by pyplot)."""
-    import matplotlib.pyplot as plt
-
     plt.close(fig)
     return fig
 

@@ -33,6 +33,8 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 
 import numpy as np
+import scipy.sparse as sp
+from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
 from planner.cloud_registration import weakest_direction
@@ -624,19 +626,11 @@ def _linkable(sight: Sight, tc: TargetCandidates, a: int, b: int) -> np.ndarray:
 
 
 def _components(k: int, edges: Sequence[tuple[int, int]]) -> np.ndarray:
-    parent = list(range(k))
-
-    def find(x: int) -> int:
-        while parent[x] != x:
-            parent[x] = parent[parent[x]]
-            x = parent[x]
-        return x
-
-    for a, b in edges:
-        parent[find(a)] = find(b)
-    roots = {find(i) for i in range(k)}
-    order = {r: n for n, r in enumerate(sorted(roots))}
-    return np.array([order[find(i)] for i in range(k)])
+    """The group (0, 1, …, by each group's lowest station) of each of ``k`` stations joined
+    by ``edges`` (scipy's connected components)."""
+    pairs = np.asarray(list(edges), dtype=np.int64).reshape(-1, 2)
+    graph = sp.coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(k, k))
+    return connected_components(graph, directed=False)[1]
 
 
 #: Common targets closer than this to one line do not fix a registration [m].
