@@ -23,6 +23,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from planner._array import as_float_array
+from planner.atomic import write_text_atomic
 from planner.errors import InputError
 
 __all__ = [
@@ -401,8 +402,6 @@ class Scanner:
 
     def save(self, path: str | Path) -> Path:
         """Write this profile as a TOML file (atomically: a good file is never half-replaced)."""
-        from planner.atomic import write_text_atomic
-
         return write_text_atomic(path, self.profile_file_text())
 
 

@@ -15,7 +15,10 @@ from collections.abc import Iterator
 from typing import Any
 
 import numpy as np
+import pandas as pd
+import shapely
 
+from planner.crs import to_wgs84
 from planner.pipeline.result import Plan
 from planner.pipeline.route import view_sectors
 from planner.pipeline.schema import (
@@ -222,8 +225,6 @@ def _same_bytes(ezdxf: Any) -> Iterator[None]:
 
 
 def _lower_left(p: Plan) -> tuple[float, float]:
-    import shapely
-
     xy = shapely.get_coordinates([b.footprint for b in p.site.buildings])
     return float(xy[:, 0].min()), float(xy[:, 1].min())
 
@@ -237,8 +238,6 @@ def _info(p: Plan) -> str:
 
 
 def _wgs84(p: Plan, coords: np.ndarray) -> np.ndarray:
-    from planner.crs import to_wgs84
-
     lon, lat = to_wgs84(p.site.crs, coords[:, 0], coords[:, 1])
     return np.column_stack([lon, lat])
 
@@ -325,8 +324,6 @@ def stakeout_csv(p: Plan) -> str:
     """Stations and targets to set out: point id, easting, northing, height and code
     (:data:`STAKEOUT_COLUMNS`), in the site's CRS; height above the site's ground (a
     station: its ground mark, 0; a target: its centre)."""
-    import pandas as pd
-
     rows: list[dict[str, Any]] = [
         {
             "point_id": r.station_id,

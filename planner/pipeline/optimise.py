@@ -29,6 +29,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.sparse as sp
+from scipy.sparse.csgraph import connected_components
 
 from planner.errors import PlannerError
 from planner.pipeline.reduce import reduce_cover
@@ -304,8 +305,6 @@ def _set_start(h, highspy, x0: np.ndarray) -> None:
 
 def _components(a: sp.csr_matrix) -> np.ndarray:
     """Label each row by its independent part (0, 1, …; rows joined through shared columns)."""
-    from scipy.sparse.csgraph import connected_components
-
     graph = sp.bmat([[None, a], [a.T, None]]).tocsr()
     _, label = connected_components(graph, directed=False)
     return np.unique(label[: a.shape[0]], return_inverse=True)[1]

@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING, Any, Literal
 import numpy as np
 
 from planner.accuracy import station_rms_pair
+from planner.classes import class_limits, parse_class
 from planner.cloud_registration import DEFAULT_CLOUD_FLOOR_MM, DEFAULT_MIN_OVERLAP_PCT
 from planner.errors import InputError
 from planner.targets import DEFAULT_INVENTORY, TargetItem, as_inventory
@@ -258,8 +259,6 @@ class Requirements:
     def _apply_class(self) -> None:
         """Set the limits the accuracy class implies; a different explicit limit for the
         same quantity is a conflict (give one or the other)."""
-        from planner.classes import class_limits, parse_class
-
         names = "/".join(c.name for c in parse_class(self.accuracy_class))
         object.__setattr__(self, "accuracy_class", names)
         for key, value in class_limits(names).items():
@@ -287,8 +286,6 @@ class Requirements:
         limits in ``overrides`` replace this requirement's class."""
         base = {f.name: getattr(self, f.name) for f in fields(self)}
         if overrides.get("accuracy_class"):
-            from planner.classes import class_limits
-
             specs = field_specs(Requirements)
             for key in class_limits(overrides["accuracy_class"]):
                 base[key] = specs[key].default

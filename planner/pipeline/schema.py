@@ -10,10 +10,12 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import pandas as pd
+import shapely
 
 if TYPE_CHECKING:
     from planner.pipeline.result import Plan
@@ -242,8 +244,6 @@ def in_id_order(df: pd.DataFrame, column: str) -> pd.DataFrame:
 
 def id_key(text: str) -> tuple[str, int, str]:
     """The sort key of an id as a surveyor reads a list (:func:`in_id_order`)."""
-    import re
-
     m = re.fullmatch(r"(.*?)(\d+)", text)
     return (m.group(1), int(m.group(2)), text) if m else (text, -1, text)
 
@@ -258,8 +258,6 @@ def to_csv(df: pd.DataFrame) -> str:
 
 def geometry_json(geom: Any) -> dict:
     """A shapely geometry as a GeoJSON geometry (coordinates to the millimetre)."""
-    import shapely
-
     return json.loads(shapely.to_geojson(shapely.set_precision(geom, 0.001)))
 
 

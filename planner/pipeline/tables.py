@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pandas as pd
 
+from planner.classes import achieved_class, parse_class
 from planner.pipeline.evaluate import Assignment, CandidateEvaluation, Context
 from planner.pipeline.facades import FacadeSet
 from planner.pipeline.registration import Network, TargetCandidates
@@ -171,8 +172,6 @@ def coverage_table(
     named[fac.party_wall] = None
     extra = {}
     if class_family:  # the class each sample achieves, beside pass/fail
-        from planner.classes import achieved_class
-
         extra["class_achieved"] = achieved_class(
             picked["m_x_mm"], picked["m_y_mm"], picked["m_z_mm"], class_family
         )
@@ -388,8 +387,6 @@ def enclosed_messages(places: dict[int, str], ids: list[str]) -> list[str]:
 
 def class_family(req: Requirements, zones: ZoneTable) -> str | None:
     """The family of the accuracy class asked for (site-wide or in a zone), if any."""
-    from planner.classes import parse_class
-
     for r in [req, *zones.requirements]:
         if r.accuracy_class:
             return parse_class(r.accuracy_class)[0].family
