@@ -4,7 +4,7 @@ part of the test suite).
     .venv/bin/python benchmarks/edit_latency.py [--repeats 3]
 
 Serves the station planner as ``planner serve`` does, opens it in headless Chromium at
-1500 × 1100, and on the "Edit stations" tab drags a station, adds one on free ground and
+1500 × 1100, and on the "Map" tab drags a station, adds one on free ground and
 deletes one, ``--repeats`` times each: from the mouse-up (or click) to the what-if status
 saying the plan was judged again, beside the kernel's own time for the edit (the status
 prints it). Writes the ``edit-latency`` section of benchmarks/RESULTS.md.
@@ -35,12 +35,12 @@ def _stations(page) -> list[dict]:
     """Screen centres of the station marks in view (below the toolbar), nearest the
     middle of the map first."""
     marks = page.evaluate(
-        """(lo) => [...document.querySelectorAll('.planner-whatif-map g.object_grp path.dot')]
+        """(lo) => [...document.querySelectorAll('.planner-map g.object_grp path.dot')]
             .map(d => d.getBoundingClientRect()).filter(r => r.width > lo)
             .map(r => ({x: r.x + r.width / 2, y: r.y + r.height / 2}))""",
         STATION_PX,
     )
-    box = page.locator(".planner-whatif-map").bounding_box()
+    box = page.locator(".planner-map").bounding_box()
     mid = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
     seen = [m for m in marks if 150 < m["y"] < page.viewport_size["height"] - 40]
     return sorted(seen, key=lambda m: abs(m["x"] - mid[0]) + abs(m["y"] - mid[1]))
@@ -48,12 +48,12 @@ def _stations(page) -> list[dict]:
 
 def _timed(page, act) -> tuple[float, float]:
     """Seconds from ``act`` to the status changing, and the kernel's seconds it reports."""
-    status = page.locator(".planner-whatif-status")
+    status = page.locator(".planner-map-status")
     old = status.inner_text()
     t0 = time.perf_counter()
     act()
     page.wait_for_function(
-        "(old) => document.querySelector('.planner-whatif-status').innerText !== old",
+        "(old) => document.querySelector('.planner-map-status').innerText !== old",
         arg=old,
         timeout=10_000,
     )
@@ -93,8 +93,10 @@ def main() -> None:
             page = browser.new_page(viewport={"width": 1500, "height": 1100})
             page.goto(f"http://127.0.0.1:{port}/", timeout=180_000)
             page.locator(".station-count").wait_for(timeout=180_000)
-            page.get_by_text("Edit stations", exact=True).click()
-            page.locator(".planner-whatif-map").scroll_into_view_if_needed()
+            page.locator(".lm-TabBar-tabLabel:text-is('Map')").click()
+            page.evaluate(
+                "() => document.querySelector('.planner-map').scrollIntoView({block: 'end'})"
+            )
             page.wait_for_timeout(1500)
             for _ in range(args.repeats):
 

@@ -133,6 +133,23 @@ class Passage:
     geometry: Polygonal
     clear_height_m: float = DEFAULT_PASSAGE_HEIGHT_M
 
+    @classmethod
+    def along(
+        cls,
+        id: str,
+        line: BaseGeometry,
+        width_m: float = DEFAULT_PASSAGE_WIDTH_M,
+        clear_height_m: float = DEFAULT_PASSAGE_HEIGHT_M,
+    ) -> Passage:
+        """A passage drawn as a line through the building, ``width_m`` wide (square ends:
+        it stops where the line does).
+
+        >>> Passage.along("G1", shapely.LineString([(0, 0), (10, 0)]), 4.0).geometry.bounds
+        (0.0, -2.0, 10.0, 2.0)
+        """
+        geom = line.buffer(width_m / 2.0, cap_style="flat", join_style="mitre")
+        return cls(id, geom, clear_height_m)
+
 
 #: A control point farther than this from every building is not on the site [m].
 MAX_CONTROL_DISTANCE_M = 1000.0

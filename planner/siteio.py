@@ -441,16 +441,16 @@ def _passage(f: Feature, geom: BaseGeometry) -> Passage:
     ``clear_height_m``, OpenStreetMap's ``maxheight`` or ``height`` (default
     :data:`~planner.site.DEFAULT_PASSAGE_HEIGHT_M`)."""
     low = {k.lower(): k for k in f.props}
-    if geom.geom_type in ("LineString", "MultiLineString"):
-        width = _number_in(f.props[low["width"]]) if "width" in low else None
-        width = width if width and width > 0 else DEFAULT_PASSAGE_WIDTH_M
-        geom = geom.buffer(width / 2.0, cap_style="flat", join_style="mitre")
     clear = DEFAULT_PASSAGE_HEIGHT_M
     for key in ("clear_height_m", "maxheight", "height"):
         v = _number_in(f.props[low[key]]) if key in low else None
         if v is not None:
             clear = v
             break
+    if geom.geom_type in ("LineString", "MultiLineString"):
+        width = _number_in(f.props[low["width"]]) if "width" in low else None
+        width = width if width and width > 0 else DEFAULT_PASSAGE_WIDTH_M
+        return Passage.along(f.ident, geom, width, clear)
     return Passage(f.ident, geom, clear)
 
 

@@ -99,6 +99,9 @@ def _set_number(page, label: str, value: str) -> None:
     box.press("Enter")
 
 
+#: The toolbar (Plan, status) stays at the top of the window over this many px of the page.
+TOOLBAR_PX = 120
+
 #: Requests the shared page made to anything not on this machine.
 EXTERNAL: list[str] = []
 #: The station count of the first plan the page showed (the default site's).
@@ -151,15 +154,12 @@ def test_no_label_is_cut_off(page, width):
     more = page.get_by_text("More settings (as on the command line)")
     if width == 1280:
         more.click()  # opened once, stays open
-    page.get_by_text("Plan map", exact=True).click()
+    _open_map(page)
     page.wait_for_timeout(500)
     cut = _cut_off(page)
     page.screenshot(path=str(ARTIFACTS / f"dashboard-{width}px.png"), full_page=True)
-    page.get_by_text("Edit stations", exact=True).click()
-    page.locator(".planner-whatif-map").wait_for(timeout=30_000)
-    page.wait_for_timeout(500)
-    cut += _cut_off(page)
-    page.screenshot(path=str(ARTIFACTS / f"dashboard-edit-{width}px.png"), full_page=True)
+    page.locator(".planner-map").scroll_into_view_if_needed()
+    page.screenshot(path=str(ARTIFACTS / f"dashboard-map-{width}px.png"))
     page.set_viewport_size({"width": 1500, "height": 1100})
     assert cut == [], f"cut off at {width} px: {cut}"
 
@@ -263,7 +263,6 @@ def _station_boxes(page) -> list[dict]:
 def _station_in_the_clear(page) -> dict:
     """The station mark on screen farthest from every other mark (a click on it reaches
     it, not a target drawn beside it)."""
-    page.locator(".planner-whatif-map").scroll_into_view_if_needed()
     everything = _marks(page, 0, 1e9)
     view = page.viewport_size
 
@@ -274,17 +273,33 @@ def _station_in_the_clear(page) -> dict:
     shown = [
         b
         for b in _station_boxes(page)
-        if 0 < b["x"] < view["width"] and 0 < b["y"] < view["height"]
+        if 0 < b["x"] < view["width"] and TOOLBAR_PX < b["y"] < view["height"]
     ]
     return max(shown, key=room)
 
 
+def _open_map(page) -> None:
+    """Open the Map tab (the one map of the site, the plan and the edits)."""
+    page.locator(".lm-TabBar-tabLabel:text-is('Map')").click()
+    page.locator(".planner-map").wait_for(timeout=30_000)
+    # the whole map in the window, below the toolbar that stays at the top
+    page.evaluate("() => document.querySelector('.planner-map').scrollIntoView({block: 'end'})")
+    page.wait_for_timeout(300)
+
+
+def _mode(page, name: str) -> None:
+    """Choose what a click on the map does (the button is above the map: clicking it
+    scrolls the page; the map is brought back whole into the window)."""
+    page.get_by_role("button", name=name, exact=True).click()
+    page.evaluate("() => document.querySelector('.planner-map').scrollIntoView({block: 'end'})")
+    page.wait_for_timeout(300)
+
+
 def _edit_tab_stations(page) -> list[dict]:
-    """Open the Edit stations tab; the screen centres of its station marks, one for each
-    station the plan's count says."""
+    """Open the Map tab; the screen centres of its station marks, one for each station
+    the plan's count says."""
     n = int(page.locator(".station-count").inner_text().split()[0])
-    page.get_by_text("Edit stations", exact=True).click()
-    page.locator(".planner-whatif-map").wait_for(timeout=30_000)
+    _open_map(page)
     page.wait_for_timeout(1000)
     boxes = _station_boxes(page)
     assert len(boxes) == n
@@ -292,30 +307,44 @@ def _edit_tab_stations(page) -> list[dict]:
 
 
 def test_dragging_a_station_changes_the_coverage(page):
+    """A station dragged onto free ground is judged again; one dragged into a building or
+    a no-go area is refused, saying why, and snaps back (the next station is tried)."""
     boxes = _edit_tab_stations(page)
-    b = boxes[0]
-    page.mouse.move(b["x"], b["y"])
-    page.mouse.down()
-    page.mouse.move(b["x"] + 30, b["y"] + 20, steps=8)
-    t0 = time.perf_counter()
-    page.mouse.up()
-    status = page.locator(".planner-whatif-status")
-    page.wait_for_function(
-        "() => document.querySelector('.planner-whatif-status').innerText.includes('judged')",
-        timeout=30_000,
-    )
-    seen_s = time.perf_counter() - t0
-    text = status.inner_text()
+    status = page.locator(".planner-map-status")
+    view = page.viewport_size
+    for k in range(len(boxes)):
+        b = boxes[k]
+        if not (TOOLBAR_PX < b["y"] < view["height"] - 40 and b["x"] < view["width"] - 40):
+            continue  # (under the toolbar, or its drag would leave the window)
+        old = status.inner_text()
+        page.mouse.move(b["x"], b["y"])
+        page.mouse.down()
+        page.mouse.move(b["x"] + 30, b["y"] + 20, steps=8)
+        t0 = time.perf_counter()
+        page.mouse.up()
+        page.wait_for_function(
+            "(old) => { const t = document.querySelector('.planner-map-status').innerText;"
+            " return t !== old && (t.includes('judged') || t.includes('Not moved')); }",
+            arg=old,
+            timeout=30_000,
+        )
+        seen_s = time.perf_counter() - t0
+        text = status.inner_text()
+        if "judged" in text:
+            break
+        assert text.startswith("Not moved: ") and "move it onto free ground" in text, text
+    else:
+        pytest.fail("no station could be dragged onto free ground")
     edit_s = float(page.locator(".planner-edit-s").inner_text())
     print(f"re-evaluation after a drag: {edit_s:.2f} s in the kernel, {seen_s:.2f} s on screen")
     assert "samples meet the requirement" in text
     assert edit_s < 5.0  # s: generous for a loaded CI machine; the benchmark measures it
     for _ in range(25):  # the marks are redrawn just after the status: wait for them
         moved = _station_boxes(page)
-        if abs(moved[0]["x"] - b["x"]) > 10 or abs(moved[0]["y"] - b["y"]) > 10:  # px
+        if abs(moved[k]["x"] - b["x"]) > 10 or abs(moved[k]["y"] - b["y"]) > 10:  # px
             break
         page.wait_for_timeout(200)
-    assert abs(moved[0]["x"] - b["x"]) > 10 or abs(moved[0]["y"] - b["y"]) > 10  # px
+    assert abs(moved[k]["x"] - b["x"]) > 10 or abs(moved[k]["y"] - b["y"]) > 10  # px
     page.screenshot(path=str(ARTIFACTS / "dashboard-edit-stations.png"), full_page=True)
 
 
@@ -324,7 +353,7 @@ def _marks(page, lo: float, hi: float) -> list[dict]:
     (stations are the large triangles, targets the middle-sized diamonds, samples small)."""
     return page.evaluate(
         """([lo, hi]) => {
-        const fig = document.querySelector('.planner-whatif-map');
+        const fig = document.querySelector('.planner-map');
         return [...fig.querySelectorAll('g.object_grp path.dot')]
             .map(d => d.getBoundingClientRect())
             .filter(r => r.width > lo && r.width <= hi)
@@ -336,11 +365,11 @@ def _marks(page, lo: float, hi: float) -> list[dict]:
 
 def _status_after(page, action, timeout_ms: int = 30_000) -> str:
     """Run ``action`` and return the what-if status once it has changed."""
-    old = page.locator(".planner-whatif-status").inner_text()
+    old = page.locator(".planner-map-status").inner_text()
     action()
     try:
         page.wait_for_function(
-            "(old) => document.querySelector('.planner-whatif-status').innerText !== old",
+            "(old) => document.querySelector('.planner-map-status').innerText !== old",
             arg=old,
             timeout=timeout_ms,
         )
@@ -348,7 +377,7 @@ def _status_after(page, action, timeout_ms: int = 30_000) -> str:
         page.screenshot(path=str(ARTIFACTS / "dashboard-status-unchanged.png"), full_page=True)
         raise
     page.wait_for_timeout(1000)  # the marks are drawn after the status
-    return page.locator(".planner-whatif-status").inner_text()
+    return page.locator(".planner-map-status").inner_text()
 
 
 def _screen_of(page):
@@ -356,7 +385,7 @@ def _screen_of(page):
     labels: two linear fits."""
     ticks = page.evaluate(
         """() => {
-        const fig = document.querySelector('.planner-whatif-map');
+        const fig = document.querySelector('.planner-map');
         return [...fig.querySelectorAll('g.tick')].map(t => {
             const r = t.querySelector('text').getBoundingClientRect();
             return {v: parseFloat(t.textContent.replace(/[^0-9.-]/g, '')),
@@ -364,7 +393,7 @@ def _screen_of(page):
         }).filter(t => isFinite(t.v));
     }"""
     )
-    xs = [t for t in ticks if t["v"] < 1e6]  # eastings (6 digits), northings (7)
+    xs = [t for t in ticks if 1e5 <= t["v"] < 1e6]  # eastings (6 digits), northings (7)
     ys = [t for t in ticks if t["v"] >= 1e6]
     ax = np.polyfit([t["v"] for t in xs], [t["x"] for t in xs], 1)
     ay = np.polyfit([t["v"] for t in ys], [t["y"] for t in ys], 1)
@@ -379,7 +408,7 @@ def test_adding_deleting_and_locking_by_hand(page):
     """Add a station where clicked, delete one, rule a target out, lock a station and
     re-optimise around it: each judged again, the locked station kept where it stood."""
     boxes = _edit_tab_stations(page)
-    page.get_by_role("button", name="Add station", exact=True).click()
+    _mode(page, "Add station")
     # a click inside a building is refused, and the map says why where it was clicked
     to_screen = _screen_of(page)
     inside = to_screen(691040.0, 5335028.0)  # in the default site's main building
@@ -392,7 +421,7 @@ def test_adding_deleting_and_locking_by_hand(page):
             continue
     assert "Not added" in text and "inside building main" in text, text
     notice = page.evaluate(
-        """() => [...document.querySelectorAll('.planner-whatif-map text')]
+        """() => [...document.querySelectorAll('.planner-map text')]
             .map(t => t.textContent).filter(t => t.startsWith('not added'))"""
     )
     assert notice == ["not added: inside building main"], notice
@@ -417,13 +446,13 @@ def test_adding_deleting_and_locking_by_hand(page):
     assert _screen_of(page)(691040.0, 5335028.0) == pytest.approx(inside, abs=1.0)  # px
     # delete: the station clicked goes
     before = _stations_in(text)
-    page.get_by_role("button", name="Delete", exact=True).click()
+    _mode(page, "Delete")
     b = _station_in_the_clear(page)
     text = _status_after(page, lambda: page.mouse.click(b["x"], b["y"]))
     assert _stations_in(text) == before - 1, text
     # a target clicked in Delete mode is ruled out: no target is drawn there any more
     targets_before = _marks(page, 5, 10)
-    box = page.locator(".planner-whatif-map").bounding_box()
+    box = page.locator(".planner-map").bounding_box()
     mid = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
     t = min(targets_before, key=lambda q: abs(q["x"] - mid[0]) + abs(q["y"] - mid[1]))
     text = _status_after(page, lambda: page.mouse.click(t["x"], t["y"]))
@@ -433,9 +462,9 @@ def test_adding_deleting_and_locking_by_hand(page):
     assert all(abs(q["x"] - t["x"]) + abs(q["y"] - t["y"]) > 2 for q in left)  # px
     # lock one station, re-optimise the rest around it
     before_rows = list(_station_rows(page).values())
-    page.get_by_text("Edit stations", exact=True).click()
+    _open_map(page)
     page.wait_for_timeout(500)
-    page.get_by_role("button", name="Lock / unlock", exact=True).click()
+    _mode(page, "Lock / unlock")
     b = _station_in_the_clear(page)
     text = _status_after(page, lambda: page.mouse.click(b["x"], b["y"]))
     assert "1 station(s) locked" in text
@@ -466,6 +495,72 @@ def _station_rows(page) -> dict[str, tuple[float, float]]:
         named = dict(zip(heads, cells, strict=False))
         out[named["station_id"]] = (float(named["x"]), float(named["y"]))
     return out
+
+
+def _station_labels(page) -> list[dict]:
+    """The station ids written on the map, with their boxes on screen."""
+    return page.evaluate(
+        """() => [...document.querySelectorAll('.planner-map text')]
+            .filter(t => /^S\\d+/.test(t.textContent))
+            .map(t => { const r = t.getBoundingClientRect();
+                        return {t: t.textContent, x0: r.left, x1: r.right, y0: r.top,
+                                y1: r.bottom}; })"""
+    )
+
+
+def test_the_map_zooms_keeps_labels_apart_picks_a_facade_and_draws_a_passage(page):
+    """The one map: station ids never written over each other; the wheel zooms in Pan /
+    zoom mode and "Fit to the plan" frames it again; a click beside a wall in "Pick a
+    facade" mode picks that wall for a zone; two clicks across a building in "Draw a
+    passage" mode add a gateway, and the plan is out of date."""
+    from planner.pipeline.facades import build_facades
+    from planner.siteio import default_site
+
+    _open_map(page)
+    labels = _station_labels(page)
+    assert labels, "no station id on the map"
+    for i, a in enumerate(labels):
+        for b in labels[i + 1 :]:
+            apart = (
+                a["x1"] <= b["x0"] or b["x1"] <= a["x0"] or a["y1"] <= b["y0"] or b["y1"] <= a["y0"]
+            )
+            assert apart, (a, b)
+    to_screen = _screen_of(page)
+    span = to_screen(691040.0, 0)[0] - to_screen(691000.0, 0)[0]  # px for 40 m
+    _mode(page, "Pan / zoom")
+    box = page.locator(".planner-map").bounding_box()
+    page.mouse.move(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+    page.mouse.wheel(0, -400)
+    page.wait_for_timeout(1500)
+    zoomed = _screen_of(page)
+    assert zoomed(691040.0, 0)[0] - zoomed(691000.0, 0)[0] > 1.2 * span  # px: zoomed in
+    page.get_by_role("button", name="Fit to the plan").click()
+    page.evaluate("() => document.querySelector('.planner-map').scrollIntoView({block: 'end'})")
+    page.wait_for_timeout(1500)
+    fitted = _screen_of(page)
+    assert fitted(691040.0, 0)[0] - fitted(691000.0, 0)[0] == pytest.approx(span, abs=2.0)  # px
+    # a facade picked beside its wall: the one nearest the click
+    fac = build_facades(default_site(), 2.0, 2.0)
+    k = 0
+    a, b = fac.start[k], fac.end[k]
+    at = a + 0.5 * (b - a) + 1.5 * fac.normal[k]  # 1.5 m out from the middle of the wall
+    _mode(page, "Pick a facade")
+    to_screen = _screen_of(page)
+    text = _status_after(page, lambda: page.mouse.click(*to_screen(*at)))
+    assert str(fac.facade_id[k]) in text and "picked for a zone" in text, text
+    select = page.locator(".widget-inline-hbox:has(label:text-is('facade')) select")
+    assert select.input_value() == str(fac.facade_id[k])
+    # a passage drawn through main's south wing into its courtyard
+    _mode(page, "Draw a passage")
+    to_screen = _screen_of(page)
+    page.mouse.click(*to_screen(691005.0, 5334999.0))
+    page.wait_for_timeout(800)
+    text = _status_after(page, lambda: page.mouse.click(*to_screen(691005.0, 5335009.0)))
+    assert "Passage drawn-1 drawn" in text, text
+    page.locator(".planner-stale-banner").wait_for(timeout=30_000)
+    page.screenshot(path=str(ARTIFACTS / "dashboard-map-passage.png"))
+    page.get_by_role("button", name="Remove the passages drawn").click()
+    _mode(page, "Move (drag)")
 
 
 def test_an_unmet_requirement_explains_itself(page):
@@ -528,10 +623,13 @@ def test_stricter_plan_then_bad_upload(page, tmp_path):
         page.locator(".widget-upload").click()
     chooser.value.set_files(str(bad))
     page.get_by_role("button", name="Plan", exact=True).click()
-    error = page.locator(".planner-error")
+    error = page.locator(".planner-toolbar .planner-error")
     error.wait_for(timeout=60_000)
     text = error.inner_text()
     assert "not a valid polygon" in text and "Self-intersection" in text
+    # the map draws the file as far as it can, the building that stops the plan outlined
+    drawn = page.locator(".planner-map-status .planner-error").inner_text()
+    assert "outlined in red" in drawn and "Self-intersection" in drawn
     assert "Traceback" not in page.content()
     # the error replaces the old plan: no result, no downloads of the old plan
     assert page.locator(".station-count").count() == 0

@@ -344,42 +344,160 @@ def test_the_dashboard_offers_the_chosen_scanners_settings():
     assert settings.preset == "low" and settings.imaging is False
 
 
-def test_the_site_is_drawn_before_it_is_planned_and_buildings_are_picked_on_it(tmp_path):
-    """An uploaded site is drawn on the map at once, its buildings' ids on it, nothing
-    planned yet; a building's id clicked in "Pick buildings" mode plans it or leaves it out
-    (the list of buildings follows, and the plan on screen is marked out of date)."""
+def _upload(ui, name: str, data: bytes) -> None:
     import datetime
 
-    from planner.app.dashboard import EDIT_TAB, StationPlanner
-    from planner.synthetic import town, town_geojson
-
-    ui = StationPlanner()
-    ui.run()
-    assert ui.plan is not None
-    site = town(3, seed=0)
-    data = json.dumps(town_geojson(site)).encode()
     ui.upload.value = (
         {
-            "name": "town.geojson",
+            "name": name,
             "type": "",
             "size": len(data),
             "content": data,
             "last_modified": datetime.datetime(2026, 1, 1),
         },
     )
-    m = ui.whatif
+
+
+def _click_ground(m, x: float, y: float) -> None:
+    """A click on the map's background as the browser sends it in a mode that wants the
+    click's place (the catcher scatter's new point, x and y in one message)."""
+    with m.catch.hold_trait_notifications():
+        m.catch.x, m.catch.y = [x], [y]
+
+
+def test_the_site_is_drawn_before_it_is_planned_and_buildings_are_picked_on_it(tmp_path):
+    """An uploaded site is drawn on the map at once, its buildings' ids on it, nothing
+    planned yet; a building clicked in "Pick buildings" mode (its id mark or anywhere on its
+    outline) plans it or leaves it out (the list of buildings follows, and the plan on screen
+    is marked out of date)."""
+    from planner.app.dashboard import MAP_TAB, StationPlanner
+    from planner.synthetic import town, town_geojson
+
+    ui = StationPlanner()
+    ui.run()
+    assert ui.plan is not None
+    site = town(3, seed=0)
+    _upload(ui, "town.geojson", json.dumps(town_geojson(site)).encode())
+    m = ui.map
     ids = [b.id for b in site.buildings]
-    assert list(m.picks.names) == ids  # drawn at once, before any plan
+    assert m._pick_ids == ids  # drawn at once, before any plan
+    assert sorted(m.building_labels.text) == sorted(ids)  # three apart: every id shown
     assert len(m.stations.x) == 0 and "The site: " in m.status.value
-    assert ui.tabs.selected_index == EDIT_TAB
+    assert ui.tabs.selected_index == MAP_TAB
     m.mode.value = "pick"
     m._picked({"data": {"index": 1}})
     assert ui.buildings.value == ids[1]
     assert "Out of date" in ui.stale.value
-    m._picked({"data": {"index": 2}})
+    inside = site.buildings[2].footprint.representative_point()
+    _click_ground(m, inside.x, inside.y)  # anywhere on the building
     assert ui.buildings.value == f"{ids[1]}, {ids[2]}"
     m._picked({"data": {"index": 1}})
     assert ui.buildings.value == ids[2]
+    _click_ground(m, inside.x + 500.0, inside.y)  # nothing there: said where clicked
+    assert list(m.notice.text) == ["no building here"] and ui.buildings.value == ids[2]
     m.mode.value = "move"
     m._picked({"data": {"index": 0}})  # outside "Pick buildings" a click picks nothing
     assert ui.buildings.value == ids[2]
+
+
+def test_a_facade_is_picked_on_the_map_and_its_range_dragged_along_the_wall():
+    """In "Pick a facade" mode a click next to a wall picks it for a zone (the zone editor
+    follows), the range's ends dragged on the map set the editor's range (projected onto
+    the wall, to the decimetre), the zone added is drawn along its wall, and the plan is out
+    of date."""
+    from planner.app.dashboard import StationPlanner
+
+    ui = StationPlanner()
+    ui.run()
+    m = ui.map
+    m.mode.value = "facade"
+    ids, a, b = m._facades
+    k = ids.index("main-f02")
+    length = float(np.hypot(*(b[k] - a[k])))
+    u = (b[k] - a[k]) / length
+    normal = np.array([u[1], -u[0]])
+    click = a[k] + 0.5 * length * u + 1.5 * normal  # 1.5 m off the wall's middle
+    _click_ground(m, *click)
+    assert ui.zone_editor.facade.value == "main-f02"
+    assert ui.zone_editor.along.value == pytest.approx((0.0, round(length, 1)), abs=0.05)  # m
+    assert m.handles.visible and len(m.handles.x) == 2
+    ends = np.column_stack([m.handles.x, m.handles.y])
+    # drag the first end 4 m along the wall and 2 m off it: it lands on the wall at 4 m
+    moved = ends[0] + 4.0 * u + 2.0 * normal
+    with m.handles.hold_trait_notifications():
+        m.handles.x, m.handles.y = [moved[0], ends[1, 0]], [moved[1], ends[1, 1]]
+    m._handle_dragged({})
+    assert ui.zone_editor.along.value == pytest.approx((4.0, round(length, 1)), abs=0.05)  # m
+    line = np.column_stack([np.ravel(m.facade_line.x), np.ravel(m.facade_line.y)])
+    assert np.hypot(*(line[0] - (a[k] + 4.0 * u))) == pytest.approx(0.0, abs=0.01)  # m
+    ui.zone_editor.add_zone()
+    zone = ui.zone_editor.zones[-1]
+    assert zone.facade_id == "main-f02" and zone.along_m == pytest.approx((4.0, length), abs=0.05)
+    drawn = np.column_stack([np.ravel(m.zone_lines.x), np.ravel(m.zone_lines.y)])
+    assert np.hypot(*(drawn[0] - (a[k] + 4.0 * u))) == pytest.approx(0.0, abs=0.01)  # m
+    assert "Out of date" in ui.stale.value
+    far = a[k] + 40.0 * normal  # nowhere near a wall: refused where clicked
+    _click_ground(m, *far)
+    assert list(m.notice.text) == ["click on a wall"]
+
+
+def test_a_passage_is_drawn_across_a_building_and_planned_with():
+    """In "Draw a passage" mode two clicks across a building make a gateway of the width
+    and clear height given; the site drawn (and planned next) has it, the plan on screen is
+    kept, dimmed, out of date; a passage through no building is refused where clicked,
+    saying why."""
+    from planner.app.dashboard import StationPlanner
+
+    ui = StationPlanner()
+    ui.run()
+    m = ui.map
+    n_stations = len(m.stations.x)
+    m.mode.value = "passage"
+    m.passage_width.value, m.passage_height.value = 4.0, 3.5
+    x0, y0, _x1, _y1 = next(b for b in ui.plan.site.buildings if b.id == "main").footprint.bounds
+    _click_ground(m, x0 + 5.0, y0 - 1.0)  # south of main's south wing
+    assert "other side" in next(iter(m.notice.text))
+    _click_ground(m, x0 + 5.0, y0 + 9.0)  # into its courtyard
+    (gate,) = ui.drawn_passages
+    assert gate.clear_height_m == 3.5 and gate.geometry.area == pytest.approx(40.0, rel=1e-6)
+    assert "Out of date" in ui.stale.value
+    assert len(m.stations.x) == n_stations and list(m.stations.opacities) == [0.3]
+    site, _sc, _req, _st = ui._inputs()
+    assert [p.id for p in site.passages] == ["drawn-1"]
+    _click_ground(m, x0 - 60.0, y0 - 60.0)  # two clicks on open ground
+    _click_ground(m, x0 - 50.0, y0 - 60.0)
+    assert len(ui.drawn_passages) == 1
+    assert "No passage drawn" in m.status.value and "does not pass through" in m.status.value
+    assert next(iter(m.notice.text)).startswith("no passage: ")
+    m.clear_passages.click()
+    assert ui.drawn_passages == [] and ui._inputs()[0].passages == []
+
+
+def test_an_upload_that_cannot_be_planned_is_drawn_with_its_problems_marked():
+    """A file whose buildings lack heights and overlap is drawn at once as far as it can be
+    read, the features that stop the plan outlined in red and crossed where they are (their
+    problem on hover), and the error says what is wrong; a file that cannot be read at all
+    leaves an empty map saying why."""
+    from planner.app.dashboard import StationPlanner
+
+    def square(x, y, s):
+        return [[[x, y], [x + s, y], [x + s, y + s], [x, y + s], [x, y]]]
+
+    crs = {"type": "name", "properties": {"name": "EPSG:25832"}}
+    feats = [
+        {"type": "Feature", "properties": {"id": "A", "height": 10},
+         "geometry": {"type": "Polygon", "coordinates": square(500000, 5500000, 20)}},
+        {"type": "Feature", "properties": {"id": "B"},
+         "geometry": {"type": "Polygon", "coordinates": square(500040, 5500000, 20)}},
+    ]  # fmt: skip
+    ui = StationPlanner()
+    _upload(ui, "site.geojson", json.dumps(
+        {"type": "FeatureCollection", "crs": crs, "features": feats}
+    ).encode())  # fmt: skip
+    m = ui.map
+    assert m._pick_ids == ["A", "B"]  # drawn, as far as it can be
+    assert "cannot be planned" in m.status.value and "B" in m.status.value
+    assert list(m.marked.names) and "height" in m.marked.names[0]
+    assert np.nanmin(np.ravel(m.problems.x)) == pytest.approx(500040.0, abs=0.01)  # B: m
+    _upload(ui, "broken.geojson", b"{ not json")
+    assert m._pick_ids == [] and "cannot be drawn" in m.status.value

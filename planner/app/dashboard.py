@@ -21,15 +21,16 @@ import ipywidgets as w
 import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
+import shapely
 from IPython.display import display
 
 from planner.accuracy import max_distance_m
 from planner.accuracy3d import max_distance_3d_m
 from planner.app.booklet import booklet_pdf
 from planner.app.figures import plot_height, plot_models, plot_planimetric, plot_target_sizes
-from planner.app.maps import plot_coverage, plot_plan_map
+from planner.app.maps import plot_coverage
+from planner.app.plan_map import PlanMap
 from planner.app.report import make_report
-from planner.app.whatif_view import WhatIfMap
 from planner.app.widgets import download_link, error_html, scanner_dropdown, show, upload_folder
 from planner.app.wording import SITE_LABELS, for_dashboard
 from planner.classes import class_limits, parse_class
@@ -52,7 +53,7 @@ from planner.pipeline.whatif import edit_targets, evaluate_stations, reoptimise
 from planner.polar import slope_distance_m
 from planner.reference import compare_table1, compare_table2
 from planner.scanner import DEFAULT_SCANNER, Scanner
-from planner.site import DEFAULT_NEAR_M
+from planner.site import DEFAULT_NEAR_M, Passage
 from planner.siteio import DEFAULT_STOREY_HEIGHT_M, default_site, read_site
 from planner.tables import SOSSA_DISTANCES_M, height_table, planimetric_table, target_size_table
 from planner.targets import (
@@ -139,6 +140,17 @@ def _field_value(spec: FieldSpec, box: w.Widget):
     return None if spec.optional and not box.value else box.value
 
 
+def _note_words(note) -> str:
+    """A repair of the site in a few words (its row of site_repairs.csv)."""
+    return f"{', '.join(note.ids)}: {note.kind} {note.action}" + (
+        f" ({note.detail})" if note.detail else ""
+    )
+
+
+def _placed(note) -> bool:
+    return bool(np.isfinite(note.x) and np.isfinite(note.y))
+
+
 class ZoneEditor:
     """Add zones without editing files: pick a facade, drag (or type) the along-facade and
     height ranges, give the requirement and the finer spacing, Add. The zones are checked
@@ -158,8 +170,13 @@ class ZoneEditor:
         self.listing = w.HTML("<small>No zones: one requirement everywhere.</small>")
         self.zones: list = []
         self.on_change = lambda: None  # the page's: a zone added or removed dates the plan
+        self.on_range = lambda _facade, _lo, _hi: None  # the map's: the range on its wall
+        self.on_zones = lambda: None  # the map's: the zones' stretches of wall
         self._sizes: dict[str, tuple[float, float]] = {}
+        #: each facade's ends (E, N [m]): where its range lies on the map
+        self.ends: dict[str, tuple[np.ndarray, np.ndarray]] = {}
         self.facade.observe(lambda _c: self._fit_ranges(), "value")
+        self.along.observe(lambda _c: self._range_changed(), "value")
         self.add.on_click(lambda _b: self.add_zone())
         self.clear.on_click(lambda _b: self.remove_all())
         self.widget = w.VBox(
@@ -183,9 +200,27 @@ class ZoneEditor:
             str(fid): (float(length), float(h))
             for fid, length, h in zip(fac.facade_id, fac.length_m, fac.height_m, strict=True)
         }
+        self.ends = {
+            str(fid): (a, b) for fid, a, b in zip(fac.facade_id, fac.start, fac.end, strict=True)
+        }
+        kept = self.facade.value if self.facade.value in self._sizes else None
         self.facade.options = list(self._sizes)
-        self.facade.value = next(iter(self._sizes), None)
+        self.facade.value = kept or next(iter(self._sizes), None)
         self._fit_ranges()
+
+    def segments(self) -> list[np.ndarray]:
+        """Each zone added as its stretch of wall on the map (E, N [m])."""
+        out = []
+        for z in self.zones:
+            if z.facade_id in self.ends and z.along_m is not None:
+                a, b = self.ends[z.facade_id]
+                u = (b - a) / max(float(np.hypot(*(b - a))), 1e-9)
+                out.append(np.array([a + z.along_m[0] * u, a + z.along_m[1] * u]))
+        return out
+
+    def _range_changed(self) -> None:
+        if self.facade.value:
+            self.on_range(self.facade.value, *self.along.value)
 
     def _fit_ranges(self) -> None:
         size = self._sizes.get(self.facade.value)
@@ -216,6 +251,7 @@ class ZoneEditor:
         self.zones.append(zone)
         self._list()
         self.on_change()
+        self.on_zones()
 
     def remove_all(self) -> None:
         had = bool(self.zones)
@@ -223,6 +259,7 @@ class ZoneEditor:
         self._list()
         if had:
             self.on_change()
+            self.on_zones()
 
     def _list(self) -> None:
         if not self.zones:
@@ -256,10 +293,13 @@ _MAIN_FIELDS = {
     "max_pairs",
 }
 
-#: The result tabs, in order; the site is drawn, and edited by hand, on "Edit stations".
+#: The height a building without one is drawn with (only drawn: the plan asks for one) [m].
+DRAWING_HEIGHT_M = 10.0
+
+#: The result tabs, in order; the site, the plan and its coverage are drawn, and edited by
+#: hand, on the "Map" (:class:`planner.app.plan_map.PlanMap`).
 TABS = [
-    "Plan map",
-    "Edit stations",
+    "Map",
     "Coverage",
     "Facades",
     "Registration",
@@ -267,7 +307,7 @@ TABS = [
     "Stations & field work",
     "Downloads",
 ]
-EDIT_TAB = TABS.index("Edit stations")
+MAP_TAB = TABS.index("Map")
 
 _CSS = """<style>
 .planner-toolbar { position: sticky; top: 0; z-index: 50; background: white;
@@ -427,12 +467,18 @@ class StationPlanner:
             value="m_x_mm",
             description="Colour by",
         )
-        self.map_out, self.cov_out, self.fac_out, self.unmet_out, self.reg_out = (
-            w.Output() for _ in range(5)
-        )
+        self.cov_out, self.fac_out, self.unmet_out, self.reg_out = (w.Output() for _ in range(4))
         self.field_out = w.Output()
-        self.whatif = WhatIfMap(self.evaluate_by_hand, self.reoptimise, self.edit_targets_by_hand)
-        self.whatif.on_pick = self._toggle_building
+        self.map = PlanMap(self.evaluate_by_hand, self.reoptimise, self.edit_targets_by_hand)
+        self.map.on_pick = self._toggle_building
+        self.map.on_facade = self._pick_facade
+        self.map.on_range = self._drag_range
+        self.map.on_passage = self._draw_passage
+        self.map.clear_passages.on_click(lambda _b: self._clear_passages())
+        self.zone_editor.on_range = self.map.show_zone_range
+        self.zone_editor.on_zones = lambda: self.map.show_zones(self.zone_editor.segments())
+        #: passages drawn on the map (gateways the file does not show), added to the site
+        self.drawn_passages: list[Passage] = []
         self.booklet_button = w.Button(description="Make field booklet (PDF)")
         self.booklet_status = w.HTML("")
         self.downloads = w.HTML("")
@@ -440,8 +486,7 @@ class StationPlanner:
         self.report_status = w.HTML("")
         self.tabs = w.Tab(
             children=[
-                self.map_out,
-                self.whatif.widget,
+                self.map.widget,
                 w.VBox([self.quantity, self.cov_out]),
                 self.fac_out,
                 self.reg_out,
@@ -577,18 +622,28 @@ class StationPlanner:
             "this plan was made. Press <b>Plan</b> to plan with them; the plan below is for "
             "the previous inputs.</div>"
         )
-        self.results.add_class("planner-stale")
+        self._dim(True)
+
+    def _dim(self, stale: bool) -> None:
+        """Dim (or not) what shows the plan: the summary, the tabs but the map, and on the
+        map the plan's marks — not the site drawn there, which is the inputs'."""
+        for box in [self.summary, *self.tabs.children[1:]]:
+            if stale:
+                box.add_class("planner-stale")
+            else:
+                box.remove_class("planner-stale")
+        self.map.set_stale(stale)
 
     def _clear_results(self) -> None:
         """No plan on screen (after an error: the error replaces the old plan)."""
         self.plan = None
         self._files = {}
         self.stale.value = ""
-        self.results.remove_class("planner-stale")
+        self._dim(False)
         self.summary.value = ""
-        for out in (self.map_out, self.cov_out, self.fac_out, self.unmet_out, self.reg_out):
+        for out in (self.cov_out, self.fac_out, self.unmet_out, self.reg_out, self.field_out):
             show(out)
-        show(self.field_out)
+        self._offer_facades()  # the site alone on the map (or why it cannot be drawn)
         self.downloads.value = "<p>No plan: nothing to download.</p>"
         self.report_status.value = self.booklet_status.value = ""
 
@@ -602,43 +657,145 @@ class StationPlanner:
             )
         self.site_source.value = "Upload a file"
         self._offer_facades()
-        self.tabs.selected_index = EDIT_TAB  # the site uploaded, drawn at once
+        self.tabs.selected_index = MAP_TAB  # the site uploaded, drawn at once
 
-    def _site(self, near_m: float = DEFAULT_NEAR_M):
-        """The site chosen (default or uploaded), without the editor's zones; problems
-        farther than ``near_m`` from the buildings to plan are noted, not refused."""
+    def _site(self, near_m: float = DEFAULT_NEAR_M, drawing: bool = False):
+        """The site chosen (default or uploaded) with the passages drawn on the map, without
+        the editor's zones; problems farther than ``near_m`` from the buildings to plan are
+        noted, not refused. ``drawing``: read only to draw it (repaired where it can be,
+        buildings without a height given :data:`DRAWING_HEIGHT_M`)."""
         ids = self._building_ids() or None
         if self.site_source.value == "Default site":
-            return default_site(buildings=ids)
-        files = self.upload.value
-        if not files:
-            raise PlannerError(
-                "choose a footprint file (.geojson, .wkt, .csv, .gpkg, .kml or .kmz) to upload "
-                "first"
+            site = default_site(buildings=ids)
+        else:
+            files = self.upload.value
+            if not files:
+                raise PlannerError(
+                    "choose a footprint file (.geojson, .wkt, .csv, .gpkg, .kml or .kmz) to "
+                    "upload first"
+                )
+            f = files[0]
+            path = Path(self._tmp.name) / Path(f["name"]).name
+            path.write_bytes(bytes(f["content"]))
+            site = read_site(
+                path,
+                default_height_m=self.height.value or (DRAWING_HEIGHT_M if drawing else None),
+                buildings=ids,
+                repair=self.make_valid.value or drawing,
+                crs=self.crs.value.strip() or None,
+                storey_height_m=self.storey.value,
+                near_m=near_m,
             )
-        f = files[0]
-        path = Path(self._tmp.name) / Path(f["name"]).name
-        path.write_bytes(bytes(f["content"]))
-        return read_site(
-            path,
-            default_height_m=self.height.value or None,
-            buildings=ids,
-            repair=self.make_valid.value,
-            crs=self.crs.value.strip() or None,
-            storey_height_m=self.storey.value,
-            near_m=near_m,
-        )
+        if self.drawn_passages:
+            site = replace(site, passages=[*site.passages, *self.drawn_passages])
+        return site
 
     def _offer_facades(self) -> None:
         """The zone editor offers the facades of the site chosen and the map draws it, before
-        any plan (quietly nothing while the site cannot be read: the plan says why)."""
+        any plan. A site that cannot be planned is drawn as far as it can be read, the
+        features that stop it outlined in red and named on hover (the error says the rest);
+        repairs made are crossed where they were made. Drawing never breaks the page: what
+        it cannot draw, the map says."""
+        try:
+            self._draw_site()
+        except Exception as exc:  # (a bug in drawing: said on the map, the page works on)
+            traceback.print_exc()
+            self.map.show_nothing(
+                error_html(f"{type(exc).__name__}: {exc}", head="The site cannot be drawn")
+            )
+
+    def _draw_site(self) -> None:
         try:
             site = self._site()
-        except PlannerError:
+        except PlannerError as exc:
             self.zone_editor.facade.options = []
+            self.map.show_facades([], np.empty((0, 2)), np.empty((0, 2)))
+            self._draw_problems(exc)
             return
         self.zone_editor.show_facades(site)
-        self.whatif.show_site(site)  # (a plan on screen is out of date: the site changed)
+        ends = self.zone_editor.ends
+        starts, stops = (
+            np.array([a for a, _ in ends.values()]),
+            np.array([b for _, b in ends.values()]),
+        )
+        self.map.show_facades(list(ends), starts, stops)
+        if self.zone_editor.facade.value:  # the facade picked stays picked on the new site
+            self.map.show_zone_range(self.zone_editor.facade.value, *self.zone_editor.along.value)
+        same = self.plan is not None and {b.id for b in site.buildings} == {
+            b.id for b in self.plan.site.buildings
+        }
+        self.map.show_site(site, keep_plan=same)  # (a plan kept is out of date: dimmed)
+        self.map.mark_problems([], [(n.x, n.y, _note_words(n)) for n in site.notes if _placed(n)])
+        self.map.show_zones(self.zone_editor.segments())
+
+    def _draw_problems(self, exc: PlannerError) -> None:
+        """The site as far as it can be read, with the features ``exc`` names outlined; or,
+        where it cannot be read at all, the reason on the map."""
+        problems = getattr(exc, "problems", [])
+        try:
+            site = self._site(drawing=True) if problems else None
+        except PlannerError:
+            site = None
+        if site is None:
+            self.map.show_nothing(error_html(str(exc), head="The site cannot be drawn"))
+            return
+        named = {i for pr in problems for i in pr.ids}
+        features = [
+            *((b.id, b.footprint) for b in site.buildings),
+            *((o.id, o.geometry) for o in site.obstacles),
+            *((a.id, a.geometry) for a in site.passages),
+        ]
+        bad = [(i, g) for i, g in features if i in named]
+        words = {i: pr.text for pr in problems for i in pr.ids}
+        notes = [(g.representative_point().x, g.representative_point().y, words[i]) for i, g in bad]
+        self.map.show_site(
+            site,
+            message=error_html(
+                str(exc),
+                head=f"The site cannot be planned ({len(problems)} "
+                f"problem{'' if len(problems) == 1 else 's'}, outlined in red on the map)",
+            ),
+        )
+        self.map.mark_problems([g for _, g in bad], notes)
+
+    def _pick_facade(self, facade_id: str) -> None:
+        """A wall picked on the map: the zone editor takes it, its whole length the range."""
+        self.zone_editor.facade.value = facade_id
+        self.map.status.value = (
+            f"Facade <b>{html.escape(facade_id)}</b> picked for a zone: drag the orange ends "
+            "along the wall to set its range, give its requirement under <b>Zones</b> and "
+            "<b>Add zone</b>."
+        )
+
+    def _drag_range(self, from_m: float, to_m: float) -> None:
+        """The zone's range dragged on the map: the editor's slider follows."""
+        self.zone_editor.along.value = (from_m, to_m)
+
+    def _draw_passage(self, xy0: np.ndarray, xy1: np.ndarray) -> None:
+        """A passage drawn across a building on the map: checked with the site (a
+        :class:`~planner.errors.PlannerError` says why it cannot be one), then kept."""
+        taken = {a.id for a in self.drawn_passages}
+        n = next(k for k in range(1, len(taken) + 2) if f"drawn-{k}" not in taken)
+        line = shapely.LineString([tuple(xy0), tuple(xy1)])
+        if line.length < 1.0:
+            raise PlannerError("a passage needs two clicks at least 1 m apart, across a building")
+        passage = Passage.along(
+            f"drawn-{n}", line, self.map.passage_width.value, self.map.passage_height.value
+        )
+        replace(self._site(), passages=[*self._site().passages, passage])  # the site's checks
+        self.drawn_passages.append(passage)
+        self._offer_facades()
+        self._mark_stale()
+        self.map.status.value = (
+            f"Passage <b>{passage.id}</b> drawn ({self.map.passage_width.value:g} m wide, "
+            f"{self.map.passage_height.value:g} m clear): <b>Plan</b> to plan with it."
+        )
+
+    def _clear_passages(self) -> None:
+        if self.drawn_passages:
+            self.drawn_passages = []
+            self._offer_facades()
+            self._mark_stale()
 
     def _building_ids(self) -> list[str]:
         """The ids in "Buildings to plan" (empty: all of the file's)."""
@@ -742,7 +899,7 @@ class StationPlanner:
         self.error.value = ""
         self.progress.value = 0.0
         self.plan_button.disabled = True
-        self.whatif.reopt.disabled = True
+        self.map.reopt.disabled = True
         self.cancel_button.disabled = False
         return time.perf_counter()
 
@@ -800,7 +957,7 @@ class StationPlanner:
 
     def _end(self) -> None:
         self.plan_button.disabled = False
-        self.whatif.reopt.disabled = False
+        self.map.reopt.disabled = False
         self.cancel_button.disabled = True
 
     def start(self, make=None, label: str = "planning", fresh: bool = True) -> threading.Thread:
@@ -847,7 +1004,7 @@ class StationPlanner:
         self.plan = p
         met, n = int(p.scanned["meets"].sum()), len(p.scanned)
         mine = [m for m in p.messages if m.startswith("Targets placed or moved by hand")]
-        self.whatif.show_plan(
+        self.map.show_plan(
             p,
             f"<b>{len(p.stations)} stations, {len(p.targets)} targets</b>: {met} of {n} "
             "samples meet the requirement (registration included) — judged again in "
@@ -860,7 +1017,7 @@ class StationPlanner:
         """Keep the locked stations, choose the fewest others around them (background)."""
         base = self.plan
         if base is None:
-            self.whatif.status.value = error_html("make a plan first")
+            self.map.status.value = error_html("make a plan first")
             return
         self.start(
             lambda progress: reoptimise(base, locked_xy, progress), "re-optimising", fresh=False
@@ -872,7 +1029,7 @@ class StationPlanner:
         p = self.plan
         if fresh:
             self.stale.value = ""
-            self.results.remove_class("planner-stale")
+            self._dim(False)
         n_met = int(p.scanned["meets"].sum())
         n_all = len(p.scanned)
         best_effort = any(m.startswith("Best effort") for m in p.messages)
@@ -894,9 +1051,8 @@ class StationPlanner:
             f"<details><summary>Summary</summary><pre style='white-space:pre-wrap;"
             f"font-size:85%'>{html.escape(for_dashboard(p.summary()))}</pre></details>"
         )
-        show(self.map_out, plot_plan_map(p))
         if whatif:
-            self.whatif.show_plan(p, "")
+            self.map.show_plan(p, "")
         self._show_coverage()
         show(self.fac_out, p.facade_table())
         network = [m for m in p.messages if m.startswith(("Registration", "Weakest link"))]
