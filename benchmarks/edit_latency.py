@@ -1,11 +1,11 @@
-"""On-screen latency of the what-if map's edits on the default site (run by hand; never
+"""On-screen latency of the map's edits by hand on the default site (run by hand; never
 part of the test suite).
 
     .venv/bin/python benchmarks/edit_latency.py [--repeats 3]
 
 Serves the station planner as ``planner serve`` does, opens it in headless Chromium at
 1500 × 1100, and on the "Map" tab drags a station, adds one on free ground and
-deletes one, ``--repeats`` times each: from the mouse-up (or click) to the what-if status
+deletes one, ``--repeats`` times each: from the mouse-up (or click) to the map's status
 saying the plan was judged again, beside the kernel's own time for the edit (the status
 prints it). Writes the ``edit-latency`` section of benchmarks/RESULTS.md.
 """
@@ -139,7 +139,7 @@ def main() -> None:
             "",
             f"`benchmarks/edit_latency.py --repeats {args.repeats}`, {machine()}; headless "
             "Chromium at 1500 × 1100, default site: from the mouse-up (drag) or click (add, "
-            "delete) to the what-if status saying the plan was judged again.",
+            "delete) to the map's status saying the plan was judged again.",
             "",
             "| edit | runs | median on screen | max on screen | median in the kernel |",
             "|---|---|---|---|---|",

@@ -131,6 +131,11 @@ class SiteNote:
     x: float = math.nan
     y: float = math.nan
 
+    def words(self) -> str:
+        """This note in the summary's words, for its features (a map's hover)."""
+        one = NOTE_WORDS.get((self.kind, self.action), (f"{self.kind}: {self.action}",))[0]
+        return f"{' and '.join(self.ids)}: {one}" + (f" ({self.detail})" if self.detail else "")
+
     @property
     def key(self) -> tuple[str, tuple[str, ...], str]:
         return (self.kind, self.ids, self.action)

@@ -70,7 +70,14 @@ from planner.site import (
 from planner.sitecheck import SiteNote, SiteProblem, SiteProblems, near_mask, resolve_overlaps
 from planner.zones import ALIASES, ZONE_KEYS, Zone, zone_from_row
 
-__all__ = ["default_site", "read_control", "read_site", "site_from_features", "site_from_geojson"]
+__all__ = [
+    "default_site",
+    "read_control",
+    "read_outlines",
+    "read_site",
+    "site_from_features",
+    "site_from_geojson",
+]
 
 ROLES = ("building", "obstacle", "no-go", "boundary", "control", "passage")
 _ROLE_ALIASES = {
@@ -631,10 +638,16 @@ def site_from_geojson(obj: dict | str, **kwargs: Any) -> Site:
             except json.JSONDecodeError as exc:
                 raise InputError(f"the text is not valid JSON: {exc}") from None
         features, crs = _geojson_features(obj, origin)
-        crs = kwargs.pop("crs", None) or crs
-        if crs is None and _in_degree_range(_coordinates(features)):
-            crs = GEOJSON_DEFAULT  # RFC 7946: GeoJSON without a CRS is longitude/latitude
+        crs = _geojson_crs(features, kwargs.pop("crs", None) or crs)
         return site_from_features(features, crs=crs, origin=origin, **kwargs)
+
+
+def _geojson_crs(features: Sequence[Feature], crs: str | None) -> str | None:
+    """A GeoJSON's CRS: the one given or labelled, else longitude/latitude where every
+    vertex could be (RFC 7946: GeoJSON without a CRS is longitude/latitude)."""
+    if crs is None and _in_degree_range(_coordinates(features)):
+        return GEOJSON_DEFAULT
+    return crs
 
 
 # -- WKT ----------------------------------------------------------------------------------
@@ -820,6 +833,41 @@ def read_site(
 
     Every problem of the file is reported at once (:class:`planner.sitecheck.SiteProblems`).
     """
+    p = Path(path) if isinstance(path, str | os.PathLike) else path
+    features, file_crs = _file_features(p, crs)
+    return site_from_features(
+        features,
+        default_height_m=default_height_m,
+        buildings=buildings,
+        repair=repair,
+        name=Path(p).stem,
+        limits=limits,
+        crs=file_crs,
+        storey_height_m=storey_height_m,
+        near_m=near_m,
+        origin=Path(p).name,
+    )
+
+
+def read_outlines(path: str | Path, crs: str | None = None) -> list[tuple[str, str, BaseGeometry]]:
+    """The outlines of a site file as drawn, not validated: ``(id, role, geometry)`` of
+    every feature with a geometry, in metres (longitude/latitude projected as
+    :func:`read_site` does). For a drawing of a site that cannot be planned: its problems
+    shown where they are. A file that cannot be read at all raises as :func:`read_site`."""
+    p = Path(path) if isinstance(path, str | os.PathLike) else path
+    features, file_crs = _file_features(p, crs)
+    _to_metres(features, file_crs, [])
+    return [
+        (f.ident, _role_of(f.props) or "building", f.geometry)
+        for f in features
+        if f.geometry is not None and not f.geometry.is_empty
+    ]
+
+
+def _file_features(path: Any, crs: str | None) -> tuple[list[Feature], str | None]:
+    """The features of a site file, parsed but not validated, and their CRS (``crs`` given
+    wins over the file's label; GeoJSON without one in the degree range is
+    longitude/latitude, RFC 7946)."""
     if not isinstance(path, str | os.PathLike):
         raise InputError(f"a site file is named by a path; got {type(path).__name__} {path!r}")
     p = Path(path)
@@ -838,22 +886,10 @@ def read_site(
             f"{p.name} is {p.stat().st_size / 1e6:.0f} MB; a site file of more than "
             f"{MAX_FILE_BYTES / 1e6:.0f} MB is not a site — split it, or plan parts of it"
         )
-    kw: dict[str, Any] = {
-        "default_height_m": default_height_m,
-        "buildings": buildings,
-        "repair": repair,
-        "name": p.stem,
-        "limits": limits,
-        "crs": crs,
-        "storey_height_m": storey_height_m,
-        "near_m": near_m,
-        "origin": p.name,
-    }
     if kind in GIS_KINDS:
         with _reading(p.name, kind):
             features, file_crs = _gis_features(p, kind)
-            kw["crs"] = crs or file_crs
-            return site_from_features(features, **kw)
+        return features, crs or file_crs
     raw = p.read_bytes()
     if b"\x00" in raw[:4096]:
         raise InputError(f"{p.name} is a binary file, not {kind.upper()} text")
@@ -875,11 +911,12 @@ def read_site(
                 raise InputError(
                     f"{p.name} is not valid JSON (line {exc.lineno}: {exc.msg})"
                 ) from None
-            return site_from_geojson(obj, **kw)
+            features, file_crs = _geojson_features(obj, p.name)
+            return features, _geojson_crs(features, crs or file_crs)
         parse: Callable[[str, str], list[Feature]] = (
             _wkt_features if kind == "wkt" else _csv_features
         )
-        return site_from_features(parse(text, p.name), **kw)
+        return parse(text, p.name), crs
 
 
 # -- GeoPackage, Shapefile, KML/KMZ (GDAL through pyogrio) -----------------------------------

@@ -256,7 +256,7 @@ def test_field_work_tab_shows_the_visiting_order(page):
 
 
 def _station_boxes(page) -> list[dict]:
-    """Screen centres of the station triangles of the what-if map (the large marks)."""
+    """Screen centres of the station triangles of the map (the large marks)."""
     return _marks(page, 10, 1e9)
 
 
@@ -349,7 +349,7 @@ def test_dragging_a_station_changes_the_coverage(page):
 
 
 def _marks(page, lo: float, hi: float) -> list[dict]:
-    """Screen centres of the what-if map's marks between ``lo`` and ``hi`` px wide
+    """Screen centres of the map's marks between ``lo`` and ``hi`` px wide
     (stations are the large triangles, targets the middle-sized diamonds, samples small)."""
     return page.evaluate(
         """([lo, hi]) => {
@@ -364,7 +364,7 @@ def _marks(page, lo: float, hi: float) -> list[dict]:
 
 
 def _status_after(page, action, timeout_ms: int = 30_000) -> str:
-    """Run ``action`` and return the what-if status once it has changed."""
+    """Run ``action`` and return the map's status once it has changed."""
     old = page.locator(".planner-map-status").inner_text()
     action()
     try:
@@ -511,8 +511,9 @@ def _station_labels(page) -> list[dict]:
 def test_the_map_zooms_keeps_labels_apart_picks_a_facade_and_draws_a_passage(page):
     """The one map: station ids never written over each other; the wheel zooms in Pan /
     zoom mode and "Fit to the plan" frames it again; a click beside a wall in "Pick a
-    facade" mode picks that wall for a zone; two clicks across a building in "Draw a
-    passage" mode add a gateway, and the plan is out of date."""
+    facade" mode picks that wall for a zone and the end of its range dragged along the wall
+    sets the zone's range; two clicks across a building in "Draw a passage" mode add a
+    gateway, and the plan is out of date."""
     from planner.pipeline.facades import build_facades
     from planner.siteio import default_site
 
@@ -550,6 +551,25 @@ def test_the_map_zooms_keeps_labels_apart_picks_a_facade_and_draws_a_passage(pag
     assert str(fac.facade_id[k]) in text and "picked for a zone" in text, text
     select = page.locator(".widget-inline-hbox:has(label:text-is('facade')) select")
     assert select.input_value() == str(fac.facade_id[k])
+    # its range's start dragged 4 m along the wall (and off it): the zone's range follows
+    page.evaluate("() => document.querySelector('.planner-map').scrollIntoView({block: 'end'})")
+    page.wait_for_timeout(500)
+    to_screen = _screen_of(page)
+    length = float(np.hypot(*(b - a)))
+    start = to_screen(*a)
+    end = to_screen(*(a + 4.0 * (b - a) / length + 1.0 * fac.normal[k]))
+    readout = page.locator(".widget-inline-hbox:has(label:text-is('along [m]')) .widget-readout")
+    before = readout.inner_text()
+    page.mouse.move(*start)
+    page.mouse.down()
+    page.mouse.move(*end, steps=8)
+    page.mouse.up()
+    for _ in range(50):  # the slider follows once the kernel has the drag
+        if readout.inner_text() != before:
+            break
+        page.wait_for_timeout(200)
+    lo, hi = (float(v) for v in readout.inner_text().replace("–", " ").split())
+    assert lo == pytest.approx(4.0, abs=0.3) and hi == pytest.approx(length, abs=0.1)  # m
     # a passage drawn through main's south wing into its courtyard
     _mode(page, "Draw a passage")
     to_screen = _screen_of(page)

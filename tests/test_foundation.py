@@ -385,19 +385,27 @@ def test_the_site_is_drawn_before_it_is_planned_and_buildings_are_picked_on_it(t
     assert len(m.stations.x) == 0 and "The site: " in m.status.value
     assert ui.tabs.selected_index == MAP_TAB
     m.mode.value = "pick"
-    m._picked({"data": {"index": 1}})
+    one, two = (site.buildings[k].footprint.representative_point() for k in (1, 2))
+    _click_ground(m, one.x, one.y)  # anywhere on the building
     assert ui.buildings.value == ids[1]
     assert "Out of date" in ui.stale.value
-    inside = site.buildings[2].footprint.representative_point()
-    _click_ground(m, inside.x, inside.y)  # anywhere on the building
+    _click_ground(m, two.x, two.y)
     assert ui.buildings.value == f"{ids[1]}, {ids[2]}"
-    m._picked({"data": {"index": 1}})
+    _click_ground(m, one.x, one.y)  # picked again: left out
     assert ui.buildings.value == ids[2]
-    _click_ground(m, inside.x + 500.0, inside.y)  # nothing there: said where clicked
+    _click_ground(m, two.x + 500.0, two.y)  # nothing there: said where clicked
     assert list(m.notice.text) == ["no building here"] and ui.buildings.value == ids[2]
     m.mode.value = "move"
-    m._picked({"data": {"index": 0}})  # outside "Pick buildings" a click picks nothing
+    _click_ground(m, one.x, one.y)  # outside "Pick buildings" a click picks nothing
     assert ui.buildings.value == ids[2]
+    # the map holds no plan for this site: an edit is refused, saying why, not made on the
+    # previous site's plan
+    m.mode.value = "add"
+    with m.stations.hold_trait_notifications():
+        m.stations.x, m.stations.y = [one.x + 30.0], [one.y]
+    assert "no plan on the map" in m.status.value and len(m.stations.x) == 0
+    m._reoptimise_locked()
+    assert "no plan on the map" in m.status.value and ui.plan.site.buildings[0].id == "main"
 
 
 def test_a_facade_is_picked_on_the_map_and_its_range_dragged_along_the_wall():
@@ -420,7 +428,8 @@ def test_a_facade_is_picked_on_the_map_and_its_range_dragged_along_the_wall():
     _click_ground(m, *click)
     assert ui.zone_editor.facade.value == "main-f02"
     assert ui.zone_editor.along.value == pytest.approx((0.0, round(length, 1)), abs=0.05)  # m
-    assert m.handles.visible and len(m.handles.x) == 2
+    assert m.mode.value == "range"  # the range's ends to drag next
+    assert m.handles.visible and m.handles.enable_move and len(m.handles.x) == 2
     ends = np.column_stack([m.handles.x, m.handles.y])
     # drag the first end 4 m along the wall and 2 m off it: it lands on the wall at 4 m
     moved = ends[0] + 4.0 * u + 2.0 * normal
@@ -436,9 +445,13 @@ def test_a_facade_is_picked_on_the_map_and_its_range_dragged_along_the_wall():
     drawn = np.column_stack([np.ravel(m.zone_lines.x), np.ravel(m.zone_lines.y)])
     assert np.hypot(*(drawn[0] - (a[k] + 4.0 * u))) == pytest.approx(0.0, abs=0.01)  # m
     assert "Out of date" in ui.stale.value
+    m.mode.value = "facade"
     far = a[k] + 40.0 * normal  # nowhere near a wall: refused where clicked
     _click_ground(m, *far)
     assert list(m.notice.text) == ["click on a wall"]
+    ui.buildings.value = "main"  # the site drawn again: the facade and its ranges stay
+    assert ui.zone_editor.facade.value == "main-f02"
+    assert ui.zone_editor.along.value == pytest.approx((4.0, length), abs=0.05)  # m
 
 
 def test_a_passage_is_drawn_across_a_building_and_planned_with():
@@ -469,8 +482,20 @@ def test_a_passage_is_drawn_across_a_building_and_planned_with():
     assert len(ui.drawn_passages) == 1
     assert "No passage drawn" in m.status.value and "does not pass through" in m.status.value
     assert next(iter(m.notice.text)).startswith("no passage: ")
+    # an edit by hand of the out-of-date plan: judged, still dimmed, the passage still drawn
+    xy = np.column_stack([m.stations.x, m.stations.y])
+    xy[0] += 1.0
+    ui.evaluate_by_hand(xy, list(m._ids))
+    assert "judged again" in m.status.value and list(m.stations.opacities) == [0.3]
+    assert "Out of date" in ui.stale.value and np.isfinite(np.ravel(m.passages.x)).any()
     m.clear_passages.click()
     assert ui.drawn_passages == [] and ui._inputs()[0].passages == []
+    # passages drawn on one site are dropped when another is chosen, and it is said
+    _click_ground(m, x0 + 5.0, y0 - 1.0)
+    _click_ground(m, x0 + 5.0, y0 + 9.0)
+    assert len(ui.drawn_passages) == 1
+    ui.site_source.value = "Upload a file"
+    assert ui.drawn_passages == [] and "dropped" in m.status.value
 
 
 def test_an_upload_that_cannot_be_planned_is_drawn_with_its_problems_marked():
@@ -499,5 +524,17 @@ def test_an_upload_that_cannot_be_planned_is_drawn_with_its_problems_marked():
     assert "cannot be planned" in m.status.value and "B" in m.status.value
     assert list(m.marked.names) and "height" in m.marked.names[0]
     assert np.nanmin(np.ravel(m.problems.x)) == pytest.approx(500040.0, abs=0.01)  # B: m
+    # overlapping buildings (no site can be made of them): the outlines as drawn
+    feats.append(
+        {"type": "Feature", "properties": {"id": "C", "height": 8},
+         "geometry": {"type": "Polygon", "coordinates": square(500005, 5500005, 20)}}
+    )  # fmt: skip
+    _upload(ui, "overlap.geojson", json.dumps(
+        {"type": "FeatureCollection", "crs": crs, "features": feats}
+    ).encode())  # fmt: skip
+    assert m._pick_ids == ["A", "B", "C"] and "cannot be planned" in m.status.value
+    names = sorted(str(n) for n in m.marked.names)  # each feature named, its problem on hover
+    assert len(names) == 3 and "'A' and 'C' overlap" in names[-1] and "no height" in names[0]
     _upload(ui, "broken.geojson", b"{ not json")
     assert m._pick_ids == [] and "cannot be drawn" in m.status.value
+    assert list(m.building_labels.text) == []  # nothing of the previous drawing left

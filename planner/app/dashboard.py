@@ -54,7 +54,7 @@ from planner.polar import slope_distance_m
 from planner.reference import compare_table1, compare_table2
 from planner.scanner import DEFAULT_SCANNER, Scanner
 from planner.site import DEFAULT_NEAR_M, Passage
-from planner.siteio import DEFAULT_STOREY_HEIGHT_M, default_site, read_site
+from planner.siteio import DEFAULT_STOREY_HEIGHT_M, default_site, read_outlines, read_site
 from planner.tables import SOSSA_DISTANCES_M, height_table, planimetric_table, target_size_table
 from planner.targets import (
     DEFAULT_INVENTORY,
@@ -140,13 +140,6 @@ def _field_value(spec: FieldSpec, box: w.Widget):
     return None if spec.optional and not box.value else box.value
 
 
-def _note_words(note) -> str:
-    """A repair of the site in a few words (its row of site_repairs.csv)."""
-    return f"{', '.join(note.ids)}: {note.kind} {note.action}" + (
-        f" ({note.detail})" if note.detail else ""
-    )
-
-
 def _placed(note) -> bool:
     return bool(np.isfinite(note.x) and np.isfinite(note.y))
 
@@ -175,7 +168,7 @@ class ZoneEditor:
         self._sizes: dict[str, tuple[float, float]] = {}
         #: each facade's ends (E, N [m]): where its range lies on the map
         self.ends: dict[str, tuple[np.ndarray, np.ndarray]] = {}
-        self.facade.observe(lambda _c: self._fit_ranges(), "value")
+        self.facade.observe(lambda _c: self.fit_ranges(), "value")
         self.along.observe(lambda _c: self._range_changed(), "value")
         self.add.on_click(lambda _b: self.add_zone())
         self.clear.on_click(lambda _b: self.remove_all())
@@ -204,9 +197,12 @@ class ZoneEditor:
             str(fid): (a, b) for fid, a, b in zip(fac.facade_id, fac.start, fac.end, strict=True)
         }
         kept = self.facade.value if self.facade.value in self._sizes else None
+        ranges = (self.along.value, self.height.value)
         self.facade.options = list(self._sizes)
         self.facade.value = kept or next(iter(self._sizes), None)
-        self._fit_ranges()
+        self.fit_ranges()
+        if kept:  # the same facade on the redrawn site: the ranges set on it stay
+            self.along.value, self.height.value = ranges
 
     def segments(self) -> list[np.ndarray]:
         """Each zone added as its stretch of wall on the map (E, N [m])."""
@@ -222,7 +218,8 @@ class ZoneEditor:
         if self.facade.value:
             self.on_range(self.facade.value, *self.along.value)
 
-    def _fit_ranges(self) -> None:
+    def fit_ranges(self) -> None:
+        """The facade's whole length and height as the ranges."""
         size = self._sizes.get(self.facade.value)
         if size is None:
             return
@@ -324,7 +321,7 @@ _CSS = """<style>
 
 
 class StationPlanner:
-    """The station-planner dashboard: site, scanner, requirements, Plan, results, what-if
+    """The station-planner dashboard: site, scanner, requirements, Plan, results on one map,
     edits, downloads. The plan on screen always matches the inputs shown: changing an input
     marks it out of date, an error replaces it."""
 
@@ -472,13 +469,16 @@ class StationPlanner:
         self.map = PlanMap(self.evaluate_by_hand, self.reoptimise, self.edit_targets_by_hand)
         self.map.on_pick = self._toggle_building
         self.map.on_facade = self._pick_facade
-        self.map.on_range = self._drag_range
+        self.map.on_range_dragged = self._drag_range
         self.map.on_passage = self._draw_passage
         self.map.clear_passages.on_click(lambda _b: self._clear_passages())
         self.zone_editor.on_range = self.map.show_zone_range
         self.zone_editor.on_zones = lambda: self.map.show_zones(self.zone_editor.segments())
         #: passages drawn on the map (gateways the file does not show), added to the site
         self.drawn_passages: list[Passage] = []
+        self._upload_path: Path | None = None  # the uploaded file, written once
+        #: one drawing of the site at a time (the kernel's and the planning thread's)
+        self._drawing = threading.Lock()
         self.booklet_button = w.Button(description="Make field booklet (PDF)")
         self.booklet_status = w.HTML("")
         self.downloads = w.HTML("")
@@ -598,7 +598,7 @@ class StationPlanner:
         self.quantity.observe(lambda _c: self._show_coverage(), "value")
         self.report_button.on_click(lambda _b: self.make_report())
         self.booklet_button.on_click(lambda _b: self.make_booklet())
-        self.site_source.observe(lambda _c: self._offer_facades(), "value")
+        self.site_source.observe(lambda _c: self._source_changed(), "value")
         self.buildings.observe(lambda _c: self._offer_facades(), "value")
         for widget in self.inputs:
             widget.observe(lambda _c: self._mark_stale(), "value")
@@ -627,7 +627,8 @@ class StationPlanner:
     def _dim(self, stale: bool) -> None:
         """Dim (or not) what shows the plan: the summary, the tabs but the map, and on the
         map the plan's marks — not the site drawn there, which is the inputs'."""
-        for box in [self.summary, *self.tabs.children[1:]]:
+        tabs = [t for k, t in enumerate(self.tabs.children) if k != MAP_TAB]
+        for box in [self.summary, *tabs]:
             if stale:
                 box.add_class("planner-stale")
             else:
@@ -655,8 +656,13 @@ class StationPlanner:
                 f"<small class='planner-file'>{html.escape(f['name'])} "
                 f"({len(bytes(f['content'])) / 1024:.1f} kB)</small>"
             )
+            path = Path(self._tmp.name) / Path(f["name"]).name
+            path.write_bytes(bytes(f["content"]))
+            self._upload_path = path
+        dropped = self._drop_passages()
         self.site_source.value = "Upload a file"
         self._offer_facades()
+        self._say_dropped(dropped)
         self.tabs.selected_index = MAP_TAB  # the site uploaded, drawn at once
 
     def _site(self, near_m: float = DEFAULT_NEAR_M, drawing: bool = False):
@@ -668,15 +674,7 @@ class StationPlanner:
         if self.site_source.value == "Default site":
             site = default_site(buildings=ids)
         else:
-            files = self.upload.value
-            if not files:
-                raise PlannerError(
-                    "choose a footprint file (.geojson, .wkt, .csv, .gpkg, .kml or .kmz) to "
-                    "upload first"
-                )
-            f = files[0]
-            path = Path(self._tmp.name) / Path(f["name"]).name
-            path.write_bytes(bytes(f["content"]))
+            path = self._uploaded_file()
             site = read_site(
                 path,
                 default_height_m=self.height.value or (DRAWING_HEIGHT_M if drawing else None),
@@ -690,6 +688,32 @@ class StationPlanner:
             site = replace(site, passages=[*site.passages, *self.drawn_passages])
         return site
 
+    def _uploaded_file(self) -> Path:
+        if self._upload_path is None:
+            raise PlannerError(
+                "choose a footprint file (.geojson, .wkt, .csv, .gpkg, .kml or .kmz) to upload "
+                "first"
+            )
+        return self._upload_path
+
+    def _source_changed(self) -> None:
+        dropped = self._drop_passages()
+        self._offer_facades()
+        self._say_dropped(dropped)
+
+    def _drop_passages(self) -> int:
+        """Passages drawn on one site do not pass to another: dropped (how many)."""
+        n = len(self.drawn_passages)
+        self.drawn_passages = []
+        return n
+
+    def _say_dropped(self, n: int) -> None:
+        if n:
+            self.map.status.value += (
+                f"<br>{n} passage(s) drawn on the previous site dropped: draw them again on "
+                "this one."
+            )
+
     def _offer_facades(self) -> None:
         """The zone editor offers the facades of the site chosen and the map draws it, before
         any plan. A site that cannot be planned is drawn as far as it can be read, the
@@ -697,7 +721,8 @@ class StationPlanner:
         repairs made are crossed where they were made. Drawing never breaks the page: what
         it cannot draw, the map says."""
         try:
-            self._draw_site()
+            with self._drawing:
+                self._draw_site()
         except Exception as exc:  # (a bug in drawing: said on the map, the page works on)
             traceback.print_exc()
             self.map.show_nothing(
@@ -725,41 +750,55 @@ class StationPlanner:
             b.id for b in self.plan.site.buildings
         }
         self.map.show_site(site, keep_plan=same)  # (a plan kept is out of date: dimmed)
-        self.map.mark_problems([], [(n.x, n.y, _note_words(n)) for n in site.notes if _placed(n)])
+        self.map.mark_repairs([(n.x, n.y, n.words()) for n in site.notes if _placed(n)])
         self.map.show_zones(self.zone_editor.segments())
 
     def _draw_problems(self, exc: PlannerError) -> None:
-        """The site as far as it can be read, with the features ``exc`` names outlined; or,
-        where it cannot be read at all, the reason on the map."""
+        """The site as far as it can be read, with the features ``exc`` names outlined: as a
+        site (repaired where it can be, heights filled in), else the file's outlines as
+        drawn; where nothing can be read, the reason on the map."""
         problems = getattr(exc, "problems", [])
+        named = {i for pr in problems for i in pr.ids}
+        words = {i: pr.text for pr in problems for i in pr.ids}
+        n = len(problems)
+        message = error_html(
+            str(exc),
+            head=f"The site cannot be planned ({n} problem{'' if n == 1 else 's'}, outlined in "
+            "red on the map)",
+        )
         try:
             site = self._site(drawing=True) if problems else None
         except PlannerError:
             site = None
-        if site is None:
-            self.map.show_nothing(error_html(str(exc), head="The site cannot be drawn"))
-            return
-        named = {i for pr in problems for i in pr.ids}
-        features = [
-            *((b.id, b.footprint) for b in site.buildings),
-            *((o.id, o.geometry) for o in site.obstacles),
-            *((a.id, a.geometry) for a in site.passages),
-        ]
+        if site is not None:
+            features = [
+                *((b.id, b.footprint) for b in site.buildings),
+                *((o.id, o.geometry) for o in site.obstacles),
+                *((a.id, a.geometry) for a in site.passages),
+            ]
+            self.map.show_site(site, message=message, heights_known=False)
+        else:
+            try:
+                outlines = (
+                    read_outlines(self._uploaded_file(), crs=self.crs.value.strip() or None)
+                    if self.site_source.value != "Default site"
+                    else []
+                )
+            except PlannerError:
+                outlines = []
+            if not outlines:
+                self.map.show_nothing(error_html(str(exc), head="The site cannot be drawn"))
+                return
+            features = [(i, g) for i, _role, g in outlines]
+            self.map.show_outlines(outlines, message)
         bad = [(i, g) for i, g in features if i in named]
-        words = {i: pr.text for pr in problems for i in pr.ids}
-        notes = [(g.representative_point().x, g.representative_point().y, words[i]) for i, g in bad]
-        self.map.show_site(
-            site,
-            message=error_html(
-                str(exc),
-                head=f"The site cannot be planned ({len(problems)} "
-                f"problem{'' if len(problems) == 1 else 's'}, outlined in red on the map)",
-            ),
-        )
-        self.map.mark_problems([g for _, g in bad], notes)
+        spots = [(g.representative_point(), words[i]) for i, g in bad]
+        self.map.mark_problems([g for _, g in bad], [(q.x, q.y, t) for q, t in spots])
 
     def _pick_facade(self, facade_id: str) -> None:
         """A wall picked on the map: the zone editor takes it, its whole length the range."""
+        if self.zone_editor.facade.value == facade_id:
+            self.zone_editor.fit_ranges()  # (picked again: its whole length again)
         self.zone_editor.facade.value = facade_id
         self.map.status.value = (
             f"Facade <b>{html.escape(facade_id)}</b> picked for a zone: drag the orange ends "
@@ -782,7 +821,8 @@ class StationPlanner:
         passage = Passage.along(
             f"drawn-{n}", line, self.map.passage_width.value, self.map.passage_height.value
         )
-        replace(self._site(), passages=[*self._site().passages, passage])  # the site's checks
+        site = self._site()
+        replace(site, passages=[*site.passages, passage])  # the site's checks, or why not
         self.drawn_passages.append(passage)
         self._offer_facades()
         self._mark_stale()
@@ -986,12 +1026,12 @@ class StationPlanner:
         self.status.value = "<i>cancelling…</i>"
 
     def evaluate_by_hand(self, xy, ids=None) -> None:
-        """The plan with the stations at ``xy`` (the what-if map's edit; ``ids`` the station
+        """The plan with the stations at ``xy`` (the map's edit; ``ids`` the station
         each position is, None for one added), judged at once."""
         self._by_hand(lambda p: evaluate_stations(p, xy, ids))
 
     def edit_targets_by_hand(self, **edits) -> None:
-        """The plan with its targets ruled out, moved or added (the what-if map's edit),
+        """The plan with its targets ruled out, moved or added (the map's edit),
         judged at once (:func:`planner.pipeline.whatif.edit_targets`)."""
         self._by_hand(lambda p: edit_targets(p, **edits))
 
@@ -1010,6 +1050,7 @@ class StationPlanner:
             "samples meet the requirement (registration included) — judged again in "
             f"<span class='planner-edit-s'>{self.last_edit_s:.2f}</span> s"
             + "".join(f"<br>{html.escape(m)}" for m in mine),
+            stale=bool(self.stale.value),  # (an out-of-date plan edited stays out of date)
         )
         self._show_results(whatif=False, fresh=False)
 
@@ -1052,7 +1093,9 @@ class StationPlanner:
             f"font-size:85%'>{html.escape(for_dashboard(p.summary()))}</pre></details>"
         )
         if whatif:
-            self.map.show_plan(p, "")
+            self.map.show_plan(p, "", stale=not fresh and bool(self.stale.value))
+        if not fresh and self.stale.value:
+            self._dim(True)
         self._show_coverage()
         show(self.fac_out, p.facade_table())
         network = [m for m in p.messages if m.startswith(("Registration", "Weakest link"))]

@@ -32,6 +32,7 @@ from planner.app.maps import COLOURS
 from planner.errors import PlannerError
 from planner.pipeline.result import Plan
 from planner.pipeline.schema import SYMBOLS
+from planner.site import DEFAULT_PASSAGE_HEIGHT_M, DEFAULT_PASSAGE_WIDTH_M
 
 __all__ = ["COLOUR_BY", "MODES", "PlanMap", "declutter"]
 
@@ -59,8 +60,14 @@ MODES = [
     (
         "Pick a facade",
         "facade",
-        "Click a wall to pick it for a zone (Zones, on the left); drag the orange ends "
-        "along the wall to set its range.",
+        "Click beside a wall to pick it for a zone (Zones, on the left); then drag the "
+        "orange ends of its range along the wall.",
+    ),
+    (
+        "Zone range",
+        "range",
+        "Drag the orange ends along the wall to set the zone's range (its facade is the one "
+        "chosen under Zones, on the left).",
     ),
     (
         "Draw a passage",
@@ -180,13 +187,24 @@ def _columns(scanned: pd.DataFrame, quantity: str) -> pd.DataFrame:
             for c, u, n in zip(out.index, unmet, out["n"], strict=True)
         ]
         return out
-    g = scanned.assign(column=col).groupby("column", sort=False)
-    out = g.agg(x=("x", "first"), y=("y", "first"), value=(quantity, "max"), n=("x", "size"))
+    unseen = ~np.isfinite(scanned[quantity].to_numpy(dtype=float))
+    g = scanned.assign(column=col, unseen=unseen).groupby("column", sort=False)
+    out = g.agg(
+        x=("x", "first"),
+        y=("y", "first"),
+        value=(quantity, "max"),
+        n=("x", "size"),
+        unseen=("unseen", "sum"),
+    )
     name = dict((q, label) for label, q in COLOUR_BY)[quantity]
     out["text"] = [
-        f"{c}: {name} {v:.2f} mm (the worst of {n} heights)" if np.isfinite(v) else f"{c}: unseen"
-        for c, v, n in zip(out.index, out["value"], out["n"], strict=True)
+        f"{c}: {name} unseen at all {n} heights"
+        if u == n
+        else f"{c}: {name} {v:.2f} mm, the worst of {n - u} heights seen"
+        + (f"; {u} unseen" if u else "")
+        for c, v, n, u in zip(out.index, out["value"], out["n"], out["unseen"], strict=True)
     ]
+    out.loc[out["unseen"] > 0, "value"] = np.nan  # (drawn as beyond the limit)
     return out
 
 
@@ -195,8 +213,9 @@ class PlanMap:
 
     The page gives the callbacks that run the pipeline: ``evaluate(xy, ids)``,
     ``reoptimise(locked_xy)``, ``edit_targets(remove=, move=, add_xy=)``; and, set after,
-    ``on_pick(building_id)``, ``on_facade(facade_id)``, ``on_range(from_m, to_m)`` and
-    ``on_passage(xy0, xy1)``. This class only holds the map, the modes and the marks."""
+    ``on_pick(building_id)``, ``on_facade(facade_id)``, ``on_range_dragged(from_m, to_m)``
+    and ``on_passage(xy0, xy1)``. Edits need a plan on the map: without one (a new site
+    drawn) they are refused, saying so. This class only holds the map, the modes and the marks."""
 
     def __init__(
         self,
@@ -207,7 +226,7 @@ class PlanMap:
         self._evaluate, self._reoptimise, self._edit_targets = evaluate, reoptimise, edit_targets
         self.on_pick: Callable[[str], None] = lambda _id: None
         self.on_facade: Callable[[str], None] = lambda _id: None
-        self.on_range: Callable[[float, float], None] = lambda _a, _b: None
+        self.on_range_dragged: Callable[[float, float], None] = lambda _a, _b: None
         self.on_passage: Callable[[np.ndarray, np.ndarray], None] = lambda _a, _b: None
         self.sx, self.sy = bq.LinearScale(), bq.LinearScale()
         sc = {"x": self.sx, "y": self.sy}
@@ -251,11 +270,18 @@ class PlanMap:
             default_size=16,  # (smaller than a target's mark: never mistaken for one)
             tooltip=bq.Tooltip(fields=["name"], labels=["building"]),
         )
-        self.marked = dots(  # where a site problem or a repair is (red crosses)
+        self.marked = dots(  # where a site problem is (red crosses)
             marker="cross",
             colors=["#c0392b"],
             default_size=90,
             tooltip=bq.Tooltip(fields=["name"], labels=["problem"]),
+        )
+        self.repaired = dots(  # where the site was repaired (site_repairs.csv)
+            marker="diamond",
+            colors=["#d4ac0d"],
+            stroke="#7d6608",
+            default_size=40,
+            tooltip=bq.Tooltip(fields=["name"], labels=["repaired"]),
         )
         target_marks = {}
         for kind, colour in (("flat", "#8e44ad"), ("sphere", "#8e44ad"), ("control", "#17202a")):
@@ -305,7 +331,7 @@ class PlanMap:
             colors=["#17202a"],
             default_size=11,
             x_offset=6,
-            y_offset=4,
+            y_offset=-4,
         )
         self.notice = bq.Label(  # why a click was refused, where it was made
             x=[],
@@ -357,6 +383,7 @@ class PlanMap:
                 self.samples,
                 self.picks,
                 self.marked,
+                self.repaired,
                 *target_marks.values(),
                 self.stations,
                 self.handles,
@@ -404,10 +431,20 @@ class PlanMap:
             box.layout.width = "8em"
         narrow = {"style": {"description_width": "initial"}, "layout": w.Layout(width="15em")}
         self.passage_width = w.BoundedFloatText(
-            value=3.0, min=0.5, max=30.0, step=0.5, description="passage width [m]", **narrow
+            value=DEFAULT_PASSAGE_WIDTH_M,
+            min=0.5,
+            max=30.0,
+            step=0.5,
+            description="passage width [m]",
+            **narrow,
         )
         self.passage_height = w.BoundedFloatText(
-            value=3.0, min=1.0, max=20.0, step=0.5, description="clear height [m]", **narrow
+            value=DEFAULT_PASSAGE_HEIGHT_M,
+            min=1.0,
+            max=20.0,
+            step=0.5,
+            description="clear height [m]",
+            **narrow,
         )
         self.clear_passages = w.Button(
             description="Remove the passages drawn", layout=w.Layout(width="auto")
@@ -419,6 +456,7 @@ class PlanMap:
         self.status.add_class("planner-map-status")
         self.legend = w.HTML(_legend())
         self._framed = None  # the site the map's view was fitted to (kept through edits)
+        self._framed_ids: set[str] = set()  # its buildings (the same site read again)
         self._site = None
         self._plan: Plan | None = None
         self._cand_shown = None  # the candidates table on the map (sent once per plan)
@@ -447,18 +485,17 @@ class PlanMap:
             mark.on_drag_end(lambda _m, e, k=kind: self._target_dragged(k, e))
             mark.on_element_click(lambda _m, e, k=kind: self._target_clicked(k, e))
             mark.observe(lambda _c, k=kind: self._maybe_target_added(k), names=["x"])
-        self.picks.on_element_click(lambda _m, e: self._picked(e))
         self.catch.observe(lambda _c: self._ground_clicked(), names=["x"])
         self.handles.on_drag_end(lambda _m, e: self._handle_dragged(e))
         self.fit.on_click(lambda _b: self.fit_view())
         self.whole.on_click(lambda _b: self.whole_view())
-        self.reopt.on_click(lambda _b: self._reoptimise(self._xy[np.asarray(self.locked, bool)]))
+        self.reopt.on_click(lambda _b: self._reoptimise_locked())
         self.colour_by.observe(lambda _c: self._draw_samples(), "value")
         self.show_links.observe(lambda _c: self._layers(), "value")
         self.show_route.observe(lambda _c: self._layers(), "value")
         self.show_candidates.observe(lambda _c: self._layers(), "value")
-        for scale in (self.sx, self.sy):
-            scale.observe(lambda _c: self._draw_labels(), names=["min", "max"])
+        # once per view change (a pan or zoom moves both scales, and max last)
+        self.sx.observe(lambda _c: self._draw_labels(), names=["max"])
         self.widget = w.VBox(
             [
                 w.HTML(_CSS),
@@ -485,9 +522,10 @@ class PlanMap:
         self._set_mode()
 
     # -- showing a site and a plan -------------------------------------------------------------
-    def _draw_site(self, site) -> None:
+    def _draw_site(self, site, heights_known: bool = True) -> None:
         """Buildings (planned dark, others light), obstacles, passages, the buildings' ids
-        (the problems marked are the previous site's: cleared)."""
+        (with their heights where ``heights_known``; the problems marked are the previous
+        site's: cleared)."""
         self._site = site
         xs, ys = _rings(b.footprint for b in site.planned)
         self.buildings.x, self.buildings.y = xs, ys
@@ -503,30 +541,35 @@ class PlanMap:
             self.picks.x = [c.x for c in centres]
             self.picks.y = [c.y for c in centres]
             self.picks.names = [
-                f"{b.id} ({b.height_m:g} m{'' if b.planned else ', not planned'})"
+                f"{b.id} ({f'{b.height_m:g} m' if heights_known else 'as drawn'}"
+                f"{'' if b.planned else ', not planned'})"
                 for b in site.buildings
             ]
         self.mark_problems([], [])
+        self.mark_repairs([])
         self._draw_labels()
 
-    def show_site(self, site, message: str = "", keep_plan: bool = False) -> None:
+    def show_site(
+        self, site, message: str = "", keep_plan: bool = False, heights_known: bool = True
+    ) -> None:
         """Draw a site before it is planned: its buildings with their ids (a click on one in
         "Pick buildings" mode plans the building or leaves it out), nothing planned yet — or,
         with ``keep_plan`` (the same buildings: one picked, a passage drawn), the plan on the
         map kept, dimmed: it is out of date."""
         if keep_plan and self._plan is not None:
-            self._draw_site(site)
-            self.set_stale(True)
-            self._framed = site
+            self._draw_site(site, heights_known)
+            self.set_stale(True)  # (the view stays the plan's)
             self.status.value = message
             return
         self._plan = None
-        self._draw_site(site)
+        self._draw_site(site, heights_known)
         self.show_site_marks_cleared()
         self.set_stale(False)
         self._say_at(None)
-        self.whole_view()
-        self._framed = site
+        ids = {b.id for b in site.buildings}
+        if ids != self._framed_ids:  # a new site is framed whole; the same one keeps the view
+            self.whole_view()
+        self._framed, self._framed_ids = site, ids
         n = len(site.planned)
         self.status.value = message or (
             f"The site: {len(site.buildings)} buildings, {n} to plan (dark). <b>Pick "
@@ -535,15 +578,40 @@ class PlanMap:
         )
         self._draw_labels()
 
+    def show_outlines(self, outlines: Sequence[tuple[str, str, object]], message: str) -> None:
+        """A site file's outlines as drawn, ``(id, role, geometry)`` (the file cannot be
+        read into a site): light, their ids on them; nothing can be picked or planned."""
+        self.show_nothing(message)
+        polygons = [(i, g) for i, _r, g in outlines if g.geom_type in ("Polygon", "MultiPolygon")]
+        xs, ys = _rings([g for _, g in polygons])
+        self.others.x, self.others.y = xs, ys
+        xs, ys = _rows(
+            [shapely.get_coordinates(g) for _, _r, g in outlines if "Line" in g.geom_type]
+        )
+        self.passages.x, self.passages.y = xs, ys
+        spots = [g.representative_point() for _, g in polygons]
+        self._pick_ids = [i for i, _ in polygons]
+        with self.picks.hold_sync():
+            self.picks.x, self.picks.y = [q.x for q in spots], [q.y for q in spots]
+            self.picks.names = [f"{i} (as drawn in the file)" for i, _ in polygons]
+        self._frame_points([shapely.get_coordinates(g) for _, _r, g in outlines])
+        self._draw_labels()
+
     def show_nothing(self, message: str) -> None:
         """No site to draw (it cannot be read): an empty map and why."""
-        self._site, self._plan, self._framed = None, None, None
+        self._site, self._plan, self._framed, self._framed_ids = None, None, None, set()
         nan2 = np.full((1, 2), np.nan)
-        for mark in (self.buildings, self.others, self.passages, self.problems):
+        for mark in (self.buildings, self.others, self.passages, self.problems, self.zone_lines):
             mark.x, mark.y = nan2, nan2
         self._pick_ids = []
         self.picks.x, self.picks.y, self.picks.names = [], [], []
+        self.repaired.x, self.repaired.y = [], []
+        self.show_facades([], np.empty((0, 2)), np.empty((0, 2)))
+        self._first = None
+        self.draft.x, self.draft.y = [], []
+        self._say_at(None)
         self.show_site_marks_cleared()
+        self.building_labels.x, self.building_labels.y, self.building_labels.text = [], [], []
         self.status.value = message
 
     def show_site_marks_cleared(self) -> None:
@@ -568,17 +636,21 @@ class PlanMap:
         ``notes`` (x, y, what is wrong there; its words on hover)."""
         xs, ys = _rings(geoms)
         self.problems.x, self.problems.y = xs, ys
-        with self.marked.hold_sync():
-            self.marked.x = [n[0] for n in notes]
-            self.marked.y = [n[1] for n in notes]
-            self.marked.names = [n[2] for n in notes]
+        _place(self.marked, notes)
 
-    def show_plan(self, p: Plan, message: str = "") -> None:
+    def mark_repairs(self, notes: Sequence[tuple[float, float, str]]) -> None:
+        """The places the site was repaired or a problem let pass (x, y, what was done;
+        its words on hover): not problems — the plan goes ahead."""
+        _place(self.repaired, notes)
+
+    def show_plan(self, p: Plan, message: str = "", stale: bool = False) -> None:
         """Draw ``p``: site, samples, links, route, targets, stations (locks kept by
-        position)."""
+        position). ``stale``: the inputs changed since ``p`` was made (an edit by hand of an
+        out-of-date plan) — the site drawn stays the inputs', the plan's marks dimmed."""
         old = {tuple(np.round(xy, 3)): lk for xy, lk in zip(self._xy, self.locked, strict=True)}
         self._plan = p
-        self._draw_site(p.site)
+        if not (stale and self._site is not None):
+            self._draw_site(p.site)
         self._draw_samples()
         self._targets = {}
         for kind in self.target_marks:
@@ -604,11 +676,11 @@ class PlanMap:
         self._quiet = False
         self._draw_links(p)
         self._draw_candidates()
-        self.set_stale(False)
+        self.set_stale(stale)
         self._say_at(None)
-        if self._framed is not p.site:  # a new site is framed; an edit keeps the view
+        if self._framed is not p.site:  # a new plan is framed; an edit keeps the view
             self.fit_view()
-            self._framed = p.site
+            self._framed, self._framed_ids = p.site, {b.id for b in p.site.buildings}
         self._draw_labels()
         self.status.value = message  # a status never outlives what it describes
 
@@ -707,10 +779,9 @@ class PlanMap:
         """A square view round (x, y) on a figure kept square: a metre as long across as up."""
         half = max(half, 20.0)
         with self.sx.hold_sync(), self.sy.hold_sync():
-            self.sx.min, self.sx.max = float(x - half), float(x + half)
             self.sy.min, self.sy.max = float(y - half), float(y + half)
+            self.sx.min, self.sx.max = float(x - half), float(x + half)  # (labels redrawn)
         self.figure.min_aspect_ratio = self.figure.max_aspect_ratio = 1.0
-        self._draw_labels()
 
     def _m_per_px(self) -> float:
         if self.sx.min is None or self.sx.max is None:
@@ -727,8 +798,6 @@ class PlanMap:
         with self.labels.hold_sync():
             self.labels.x, self.labels.y = xy[keep, 0], xy[keep, 1]
             self.labels.text = [t for t, k in zip(st, keep, strict=True) if k]
-        if self._site is None:
-            return
         bx = np.asarray(self.picks.x, dtype=float)
         by = np.asarray(self.picks.y, dtype=float)
         names = list(self._pick_ids)
@@ -741,6 +810,10 @@ class PlanMap:
             self.building_labels.text = [t for t, k in zip(names, both, strict=True) if k]
 
     # -- modes -----------------------------------------------------------------------------------
+    def _reoptimise_locked(self) -> None:
+        if not self._no_plan("re-optimised"):
+            self._reoptimise(self._xy[np.asarray(self.locked, bool)])
+
     def _set_mode(self) -> None:
         mode = self.mode.value
         self.hint.value = (
@@ -762,9 +835,9 @@ class PlanMap:
             self.figure.add_class("planner-map-ground")
         else:
             self.figure.remove_class("planner-map-ground")
-        picking = mode == "facade" and bool(self._facade)
-        self.handles.visible = self.handles.enable_move = picking
-        self.facade_line.visible = picking
+        ranging = mode == "range" and bool(self._facade)
+        self.handles.visible = self.handles.enable_move = ranging
+        self.facade_line.visible = mode in ("range", "facade") and bool(self._facade)
         self.passage_box.layout.display = "flex" if mode == "passage" else "none"
         if mode != "passage":
             self._first = None
@@ -801,11 +874,6 @@ class PlanMap:
                 return b.id
         return None
 
-    def _picked(self, event) -> None:
-        k = int(event.get("data", {}).get("index", -1))
-        if self.mode.value == "pick" and 0 <= k < len(self._pick_ids):
-            self.on_pick(self._pick_ids[k])
-
     # -- zones: a facade picked, its range dragged ----------------------------------------------
     def show_facades(self, ids: Sequence[str], start: np.ndarray, end: np.ndarray) -> None:
         """The facades a zone can be put on (as facades.csv names them), for picking."""
@@ -828,6 +896,7 @@ class PlanMap:
             return
         self._say_at(None)
         self.on_facade(ids[k])
+        self.mode.value = "range"  # its ends to drag next
 
     def show_zone_range(self, facade_id: str, from_m: float, to_m: float) -> None:
         """Mark the range ``from_m`` … ``to_m`` along ``facade_id`` (thick, with its two ends
@@ -843,8 +912,7 @@ class PlanMap:
         self.facade_line.x, self.facade_line.y = ends[None, :, 0], ends[None, :, 1]
         with self.handles.hold_sync():
             self.handles.x, self.handles.y = ends[:, 0], ends[:, 1]
-        picking = self.mode.value == "facade"
-        self.handles.visible = self.handles.enable_move = self.facade_line.visible = picking
+        self._set_mode()
 
     def show_zones(self, segments: Sequence[np.ndarray]) -> None:
         """The zones added, each as its segment along its facade."""
@@ -863,7 +931,7 @@ class PlanMap:
         along = np.clip((pts - a[k]) @ u, 0.0, length)
         lo, hi = float(min(along)), float(max(along))
         self.show_zone_range(self._facade, lo, hi)  # back onto the wall
-        self.on_range(round(lo, 1), round(hi, 1))
+        self.on_range_dragged(round(lo, 1), round(hi, 1))
 
     # -- passages ---------------------------------------------------------------------------------
     def _passage_click(self, xy: np.ndarray) -> None:
@@ -947,6 +1015,8 @@ class PlanMap:
             self._targets_edit("added", add_xy=xy)
 
     def _targets_edit(self, what: str, **edits) -> None:
+        if self._no_plan(what):
+            return
         try:
             self._edit_targets(**edits)
         except PlannerError as exc:
@@ -965,7 +1035,25 @@ class PlanMap:
                 self.notice.x, self.notice.y = [float(xy[0])], [float(xy[1])]
                 self.notice.text = [text]
 
+    def _no_plan(self, what: str) -> bool:
+        """Whether there is no plan on the map to edit (the site changed): said, and the
+        marks put back."""
+        if self._plan is not None:
+            return False
+        self.status.value = (
+            f"<span class='planner-error' style='color:#922'>Not {what}: there is no plan on "
+            "the map for this site yet; press <b>Plan</b> first.</span>"
+        )
+        self._quiet = True
+        self.stations.x, self.stations.y = self._xy[:, 0], self._xy[:, 1]
+        self._quiet = False
+        self._draw_targets()
+        return True
+
     def _edit(self, xy: np.ndarray, ids: list[str | None], what: str) -> None:
+        if self._no_plan(what):
+            self.locked = self.locked[: len(self._xy)]
+            return
         before, locks, names = self._xy, list(self.locked), self._ids
         self._xy, self._ids = xy, list(ids)  # the locks are aligned with the edited positions
         try:
@@ -983,6 +1071,14 @@ class PlanMap:
             self._draw_labels()
 
 
+def _place(mark: bq.Scatter, notes: Sequence[tuple[float, float, str]]) -> None:
+    """Put ``mark``'s points at the notes' places, their words on hover."""
+    with mark.hold_sync():
+        mark.x = [n[0] for n in notes]
+        mark.y = [n[1] for n in notes]
+        mark.names = [n[2] for n in notes]
+
+
 def _legend() -> str:
     """The map's symbols in words, under it (the same language as the printed maps)."""
     item = "<span style='margin-right:1.2em;white-space:nowrap'>{}</span>"
@@ -998,6 +1094,7 @@ def _legend() -> str:
         "<b style='color:#c71585'>╌</b> cloud-to-cloud link",
         f"<b style='color:{COLOURS['route']}'>╌</b> walking route",
         f"<b style='color:{COLOURS['passage']}'>▭</b> passage",
-        "<b style='color:#c0392b'>✕</b> site problem",
+        "<b style='color:#c0392b'>✕</b> site problem (stops the plan)",
+        "<b style='color:#d4ac0d'>◆</b> site repaired (site_repairs.csv)",
     ]
     return "<small>" + "".join(item.format(p) for p in parts) + "</small>"

@@ -102,7 +102,7 @@ class Context:
     #: clear heights of the candidate chunks evaluated on every sample of a facade, kept for
     #: the plan's next evaluation of all candidates (:meth:`clear_heights`); one store, with
     #: its count, shared by a context copied with other limits (the best-effort relaxation)
-    _clear: ClearanceStore = field(default_factory=lambda: ClearanceStore(), repr=False)
+    _clear: ClearanceStore = field(default_factory=ClearanceStore, repr=False)
 
     @classmethod
     def build(

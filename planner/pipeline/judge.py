@@ -241,7 +241,8 @@ def assemble(
 ) -> Plan:
     """The plan of the stations of round ``r`` (pool indices; those in ``hand`` placed by
     hand, those in ``best_effort`` for samples no position meets): coverage, targets, links,
-    route, messages (those given first; the list given is not changed).
+    route, messages (the accuracy model's line, those given, then the network's and the
+    unmet samples'; the list given is not changed).
 
     Station ids follow the visiting order (:func:`name_stations`); a station in ``kept``
     (pool index → its id and purpose) keeps both, and where the plan is ``edited`` by hand
