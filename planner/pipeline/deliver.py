@@ -114,7 +114,7 @@ def dxf_text(p: Plan) -> str:
     buildings labelled with their id and height; links, unmet samples, view sectors, route;
     the CRS, scanner and requirement on PLAN-INFO; the header's extents set (zoom extents)."""
     import ezdxf  # heavy: only when a DXF is written
-    from ezdxf import appsettings, bbox, zoom
+    from ezdxf import zoom
     from ezdxf.enums import TextEntityAlignment
 
     with _same_bytes(ezdxf):  # ezdxf stamps its metadata when the document is made
@@ -144,9 +144,11 @@ def dxf_text(p: Plan) -> str:
             )
     msp = doc.modelspace()
     scaled = {"xscale": paper, "yscale": paper, "zscale": paper}
+    drawn: list[np.ndarray] = []  # every point placed: the drawing's extents, at no cost
     for f in _features(p):
         props, geom = f["properties"], f["geometry"]
         layer = DXF_LAYERS[props["layer"]][0]
+        drawn.append(shapely.get_coordinates(shapely.geometry.shape(geom)))
         if props["layer"] == "station":
             x, y = geom["coordinates"][:2]
             ref = msp.add_blockref("STATION", (x, y, 0.0), dxfattribs={"layer": layer, **scaled})
@@ -192,21 +194,31 @@ def dxf_text(p: Plan) -> str:
             height=TEXT_MM * paper,
             dxfattribs={"layer": "BUILDING-LABELS"},
         ).set_placement((at.x, at.y), align=TextEntityAlignment.MIDDLE_CENTER)
+        drawn.append(np.array([[at.x, at.y]]))
     if p.site.boundary is not None:
         for ring in _rings(geometry_json(p.site.boundary)):
             msp.add_lwpolyline([tuple(c[:2]) for c in ring], dxfattribs={"layer": "BOUNDARY"})
+            drawn.append(np.asarray(ring, dtype=float)[:, :2])
     st = p.stations.set_index("station_id")
     for sid, (start, end, radius) in view_sectors(p.stations, p.coverage, p.targets).items():
         pts = _sector_points(st.at[sid, "x"], st.at[sid, "y"], start, end, radius)
         msp.add_lwpolyline(pts, close=True, dxfattribs={"layer": "VIEW-SECTORS"})
-    drawn = bbox.extents(msp, fast=True)  # the plan's information below all of it
-    x0, y0 = (drawn.extmin.x, drawn.extmin.y) if drawn.has_data else _lower_left(p)
-    msp.add_text(_info(p), height=TEXT_MM * paper, dxfattribs={"layer": "PLAN-INFO"}).set_placement(
-        (x0, y0 - 2.0 * TEXT_MM * paper), align=TextEntityAlignment.LEFT
+        drawn.append(np.asarray(pts, dtype=float)[:, :2])
+    xy = np.vstack([d[:, :2] for d in drawn if len(d)] or [np.array(_lower_left(p))[None]])
+    (x0, y0), (x1, y1) = xy.min(axis=0), xy.max(axis=0)
+    info, height = _info(p), TEXT_MM * paper  # the plan's information below all of it
+    y_info = y0 - 2.0 * height
+    msp.add_text(info, height=height, dxfattribs={"layer": "PLAN-INFO"}).set_placement(
+        (x0, y_info), align=TextEntityAlignment.LEFT
     )
-    box = appsettings.update_extents(doc)  # the header's extents: zoom extents works
-    if box.has_data:
-        zoom.center(msp, box.center, box.size)  # and the drawing opens on the plan
+    # the header's extents (zoom extents works) from the points placed, a symbol's size
+    # round them and the information's line (a letter about 0.8 of its height wide), and
+    # the drawing opened on them
+    margin = SYMBOL_MM * paper
+    lo = (float(x0 - margin), float(y_info - margin), 0.0)
+    hi = (float(max(x1, x0 + 0.8 * height * len(info)) + margin), float(y1 + margin), 0.0)
+    msp.dxf.extmin, msp.dxf.extmax = lo, hi  # (written to the header's $EXTMIN, $EXTMAX)
+    zoom.center(msp, ((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2), (hi[0] - lo[0], hi[1] - lo[1]))
     stream = io.StringIO()
     with _same_bytes(ezdxf):  # … and its header dates when it is written
         doc.write(stream)
