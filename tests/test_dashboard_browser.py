@@ -241,7 +241,8 @@ def test_field_work_tab_shows_the_visiting_order(page):
     rows = page.locator(".widget-output table").last.locator("tbody tr")
     assert rows.count() == n
     page.screenshot(path=str(ARTIFACTS / "dashboard-field-work.png"), full_page=True)
-    page.get_by_text("Downloads", exact=True).click()
+    page.get_by_text("Downloads", exact=True).click()  # (its files made when it opens)
+    page.locator("a.planner-download[download='route.csv']").first.wait_for(timeout=30_000)
     assert page.locator("a.planner-download[download='route.csv']").count() == 1
     page.get_by_role("button", name="Make field booklet (PDF)").click()
     booklet = page.locator("a.planner-download[download='booklet.pdf']")

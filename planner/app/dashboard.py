@@ -586,6 +586,8 @@ class StationPlanner:
         self.widget.add_class("planner-root")
         self.plan = None
         self._files: dict[str, bytes] = {}  # the downloads of the plan on screen
+        self._unshown: set[str] = set()  # tabs not yet drawn for the plan on screen
+        self._hints = ""  # what would meet the unmet samples, in the page's words
         self._cancel = threading.Event()
         self._changed = False
         self._worker: threading.Thread | None = None
@@ -595,7 +597,8 @@ class StationPlanner:
         self.plan_button.on_click(lambda _b: self.start())
         self.cancel_button.on_click(lambda _b: self.cancel())
         self.upload.observe(lambda _c: self._uploaded(), "value")
-        self.quantity.observe(lambda _c: self._show_coverage(), "value")
+        self.quantity.observe(lambda _c: self._recolour_coverage(), "value")
+        self.tabs.observe(lambda _c: self._draw_tab(), "selected_index")
         self.report_button.on_click(lambda _b: self.make_report())
         self.booklet_button.on_click(lambda _b: self.make_booklet())
         self.site_source.observe(lambda _c: self._source_changed(), "value")
@@ -638,7 +641,7 @@ class StationPlanner:
     def _clear_results(self) -> None:
         """No plan on screen (after an error: the error replaces the old plan)."""
         self.plan = None
-        self._files = {}
+        self._files, self._unshown = {}, set()
         self.stale.value = ""
         self._dim(False)
         self.summary.value = ""
@@ -1096,57 +1099,99 @@ class StationPlanner:
             self.map.show_plan(p, "", stale=not fresh and bool(self.stale.value))
         if not fresh and self.stale.value:
             self._dim(True)
-        self._show_coverage()
-        show(self.fac_out, p.facade_table())
+        self._hints = hints
+        # the other tabs, and the files to download, are drawn for this plan when opened
+        # (an edit by hand does not redraw every tab and every file): the one on screen now
+        self._unshown = {name for name in TABS if name != "Map"}
+        self._files = {}
+        self._draw_tab()
+        self.report_status.value = ""
+        self.booklet_status.value = ""
+        self.progress.value = 1.0
+
+    def _draw_tab(self) -> None:
+        """The tab on screen drawn for the plan on screen, once."""
+        name = TABS[self.tabs.selected_index or 0]
+        if self.plan is None or name not in self._unshown:
+            return
+        self._unshown.discard(name)
+        draw = {
+            "Coverage": self._draw_coverage,
+            "Facades": self._draw_facades,
+            "Registration": self._draw_registration,
+            "Unmet": self._draw_unmet,
+            "Stations & field work": self._draw_field_work,
+            "Downloads": self._offer_downloads,
+        }
+        draw[name]()
+
+    def _draw_facades(self) -> None:
+        show(self.fac_out, self.plan.facade_table())
+
+    def _draw_registration(self) -> None:
+        p = self.plan
         network = [m for m in p.messages if m.startswith(("Registration", "Weakest link"))]
         show(
             self.reg_out,
             w.HTML("".join(f"<p>{html.escape(m)}</p>" for m in network)),
             p.links.set_index(["station_a", "station_b"]).round(2),
         )
+
+    def _draw_unmet(self) -> None:
+        p = self.plan
         if p.unmet.empty:
             show(self.unmet_out, w.HTML("<p>Every sample meets the requirements.</p>"))
-        else:
-            show(
-                self.unmet_out,
-                w.HTML("<p><b>Which quantity fails, where, and the worst value there:</b></p>"),
-                explain_unmet(p).set_index("quantity"),
-                w.HTML(
-                    hints + "<p>Unmet samples by facade and reason (with the best achievable "
-                    "value):</p>"
-                ),
-                p.unmet_areas().set_index("facade_id"),
-            )
+            return
+        show(
+            self.unmet_out,
+            w.HTML("<p><b>Which quantity fails, where, and the worst value there:</b></p>"),
+            explain_unmet(p).set_index("quantity"),
+            w.HTML(
+                self._hints + "<p>Unmet samples by facade and reason (with the best achievable "
+                "value):</p>"
+            ),
+            p.unmet_areas().set_index("facade_id"),
+        )
+
+    def _draw_field_work(self) -> None:
+        p = self.plan
         if p.route is not None:
             show(
                 self.field_out,
                 w.HTML(f"<p>{html.escape(p.route.summary())}</p>"),
                 p.route.table.set_index("order").round({"x": 3, "y": 3}),
             )
-        self._files = {name: text.encode() for name, text in render(p).items()}
-        self._offer_downloads()
-        self.report_status.value = ""
-        self.booklet_status.value = ""
-        self.progress.value = 1.0
+
+    def _plan_files(self) -> dict[str, bytes]:
+        """The files of the plan on screen (made when first asked for), with the report and
+        the booklet once they are made."""
+        if self.plan is not None and not self._files:
+            self._files = {name: text.encode() for name, text in render(self.plan).items()}
+        return self._files
 
     def _offer_downloads(self) -> None:
         """A link per file of the plan on screen, and plan.zip of them all (with the report
         and the booklet once they are made)."""
-        files = self._files
+        files = self._plan_files()
         links = [download_link(n, data, _MIME[Path(n).suffix]) for n, data in files.items()]
         links.append(download_link("plan.zip", _zip(files), "application/zip"))
         self.downloads.value = "<p>" + "".join(links) + "</p>"
 
     def _add_download(self, name: str, data: bytes, status: w.HTML) -> None:
-        self._files[name] = data
+        self._plan_files()[name] = data
         self._offer_downloads()
         status.value = download_link(name, data, _MIME[Path(name).suffix]) + (
             "<small>(also in plan.zip)</small>"
         )
 
-    def _show_coverage(self) -> None:
+    def _draw_coverage(self) -> None:
         if self.plan is not None:
             show(self.cov_out, plot_coverage(self.plan, self.quantity.value))
+
+    def _recolour_coverage(self) -> None:
+        """Another quantity chosen: the coverage drawn again (at once where it is shown)."""
+        self._unshown.add("Coverage")
+        self._draw_tab()
 
     def make_report(self) -> None:
         """Render the static HTML report of the current inputs and offer it for download."""
