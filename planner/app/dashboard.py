@@ -28,7 +28,7 @@ from planner.accuracy import max_distance_m
 from planner.accuracy3d import max_distance_3d_m
 from planner.app.booklet import booklet_pdf
 from planner.app.figures import plot_height, plot_models, plot_planimetric, plot_target_sizes
-from planner.app.maps import plot_coverage
+from planner.app.maps import QUANTITIES, plot_coverage, quantity_label
 from planner.app.plan_map import PlanMap
 from planner.app.report import make_report
 from planner.app.widgets import download_link, error_html, scanner_dropdown, show, upload_folder
@@ -453,14 +453,7 @@ class StationPlanner:
         self.stale = w.HTML("")
         self.summary = w.HTML("")
         self.quantity = w.ToggleButtons(
-            options=[
-                ("m_x", "m_x_mm"),
-                ("m_y", "m_y_mm"),
-                ("m_z", "m_z_mm"),
-                ("registration x", "reg_m_x_mm"),
-                ("registration y", "reg_m_y_mm"),
-                ("registration z", "reg_m_z_mm"),
-            ],
+            options=[(quantity_label(q), q) for q in QUANTITIES],
             value="m_x_mm",
             description="Colour by",
         )

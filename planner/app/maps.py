@@ -49,6 +49,21 @@ QUANTITIES = {
 _LIMIT_OF = {"x": "max_x_mm", "y": "max_y_mm", "z": "max_z_mm"}
 
 
+def quantity_label(quantity: str) -> str:
+    """The short name of a coverage quantity, for a button (:data:`QUANTITIES`' words).
+
+    >>> quantity_label("m_x_mm"), quantity_label("reg_m_z_mm")
+    ('m_x', 'registration z')
+    """
+    words = QUANTITIES[quantity].removesuffix(" [mm]")
+    return words.replace("registration part of m_", "registration ")
+
+
+def quantity_limit(p: Plan, quantity: str) -> float:
+    """The site-wide limit a coverage quantity is coloured against [mm]."""
+    return float(getattr(p.requirements, _LIMIT_OF[quantity[-4]]))
+
+
 def _patch(geom, **kw) -> PathPatch:
     verts, codes = [], []
     for poly in shapely.get_parts(geom):
@@ -604,7 +619,7 @@ def plot_coverage(p: Plan, quantity: str = "m_x_mm", ax: Axes | None = None) -> 
         cov["y"] - f.loc[cov["facade_id"], "y0"].to_numpy(),
     )
     cov["u"] = along + cov["facade_id"].map(off)
-    limit = getattr(p.requirements, _LIMIT_OF[quantity[-4]])
+    limit = quantity_limit(p, quantity)
     ok = cov[~cov["party_wall"]]
     sc = ax.scatter(
         ok["u"],

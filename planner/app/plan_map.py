@@ -28,7 +28,7 @@ import numpy as np
 import pandas as pd
 import shapely
 
-from planner.app.maps import COLOURS
+from planner.app.maps import COLOURS, QUANTITIES, quantity_label, quantity_limit
 from planner.errors import PlannerError
 from planner.pipeline.result import Plan
 from planner.pipeline.schema import SYMBOLS
@@ -77,16 +77,9 @@ MODES = [
     ),
 ]
 
-#: What the facade samples are coloured by: (label, coverage column).
-COLOUR_BY = [
-    ("met / unmet", "meets"),
-    ("m_x", "m_x_mm"),
-    ("m_y", "m_y_mm"),
-    ("m_z", "m_z_mm"),
-    ("registration x", "reg_m_x_mm"),
-    ("registration y", "reg_m_y_mm"),
-    ("registration z", "reg_m_z_mm"),
-]
+#: What the facade samples are coloured by: (label, coverage column) — met or not, or the
+#: coverage plot's quantities.
+COLOUR_BY = [("met / unmet", "meets"), *((quantity_label(q), q) for q in QUANTITIES)]
 
 #: The map's side on screen assumed when labels are kept apart [px] (the browser does not
 #: tell the kernel; a larger map only keeps them farther apart than needed).
@@ -196,7 +189,7 @@ def _columns(scanned: pd.DataFrame, quantity: str) -> pd.DataFrame:
         n=("x", "size"),
         unseen=("unseen", "sum"),
     )
-    name = dict((q, label) for label, q in COLOUR_BY)[quantity]
+    name = quantity_label(quantity)
     out["text"] = [
         f"{c}: {name} unseen at all {n} heights"
         if u == n
@@ -697,12 +690,11 @@ class PlanMap:
             self.colour_scale.colors = [_GREEN, _RED]
             self.colour_axis.visible = False
         else:  # green to the site-wide limit, red beyond (as the coverage plot)
-            key = "max_z_mm" if quantity.endswith("z_mm") else "max_xy_mm"
-            limit = float(np.max(getattr(p.requirements, key)))
+            limit = quantity_limit(p, quantity)
             self.colour_scale.min, self.colour_scale.mid = 0.0, limit
             self.colour_scale.max = 2.0 * limit
             self.colour_scale.colors = [_GREEN, _YELLOW, _RED]
-            self.colour_axis.label = f"{dict((q, lb) for lb, q in COLOUR_BY)[quantity]} [mm]"
+            self.colour_axis.label = QUANTITIES[quantity]
             self.colour_axis.visible = True
         with self.samples.hold_sync():
             self.samples.x, self.samples.y = cols["x"].to_numpy(), cols["y"].to_numpy()
