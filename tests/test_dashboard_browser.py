@@ -486,8 +486,8 @@ def test_adding_deleting_and_locking_by_hand(page):
 
 def _station_rows(page) -> dict[str, tuple[float, float]]:
     """E and N of every station as the Stations & field work table prints them."""
-    page.get_by_text("Stations & field work", exact=True).click()
-    table = page.locator("table:has(th:text-is('station_id'))").last
+    page.get_by_text("Stations & field work", exact=True).click()  # (drawn as it opens)
+    table = page.locator("table:has(th:text-is('station_id')):has(th:text-is('x'))").last
     table.wait_for(timeout=30_000)
     heads = [h.strip() for h in table.locator("thead tr").first.locator("th").all_inner_texts()]
     out = {}
@@ -540,7 +540,8 @@ def test_the_map_zooms_keeps_labels_apart_picks_a_facade_and_draws_a_passage(pag
     page.evaluate("() => document.querySelector('.planner-map').scrollIntoView({block: 'end'})")
     page.wait_for_timeout(1500)
     fitted = _screen_of(page)
-    assert fitted(691040.0, 0)[0] - fitted(691000.0, 0)[0] == pytest.approx(span, abs=2.0)  # px
+    # framed on the plan again (the stations may have moved since: within a few per cent)
+    assert fitted(691040.0, 0)[0] - fitted(691000.0, 0)[0] == pytest.approx(span, rel=0.05)  # px
     # a facade picked beside its wall: the one nearest the click
     fac = build_facades(default_site(), 2.0, 2.0)
     k = 0

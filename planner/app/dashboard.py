@@ -1097,6 +1097,9 @@ class StationPlanner:
         # (an edit by hand does not redraw every tab and every file): the one on screen now
         self._unshown = {name for name in TABS if name != "Map"}
         self._files = {}
+        for out in (self.cov_out, self.fac_out, self.unmet_out, self.reg_out, self.field_out):
+            show(out)  # (nothing of the previous plan shows meanwhile)
+        self.downloads.value = ""
         self._draw_tab()
         self.report_status.value = ""
         self.booklet_status.value = ""
