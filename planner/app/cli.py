@@ -15,7 +15,12 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import os
+import signal
 import sys
+import tempfile
+import time
+import traceback
 from collections.abc import Callable, Sequence
 from dataclasses import fields
 from pathlib import Path
@@ -309,9 +314,6 @@ def command_started() -> float:
     >>> 0.0 <= time.monotonic() - command_started() < 600.0
     True
     """
-    import os
-    import time
-
     try:
         stat = Path("/proc/self/stat").read_text()
         ticks = int(stat.rsplit(")", 1)[1].split()[19])  # field 22: start time [ticks]
@@ -326,8 +328,6 @@ def run_plan(args: argparse.Namespace) -> int:
     command's start (reading the site included): planning ends with
     :data:`DOCUMENT_SHARE` of the budget left, and the booklet leaves out the pages there is
     no time for (said in the summary and on its last page)."""
-    import time
-
     from planner.pipeline.export import save
     from planner.pipeline.planning import plan
 
@@ -956,10 +956,6 @@ def build_parser() -> argparse.ArgumentParser:
 
 def _log_internal_error(exc: BaseException) -> Path | None:
     """Write the traceback of an unexpected error to a log file; its path, or None."""
-    import tempfile
-    import time
-    import traceback
-
     try:
         fd, name = tempfile.mkstemp(
             prefix=f"tls-planner-error-{time.strftime('%Y%m%d-%H%M%S')}-", suffix=".log"
@@ -976,7 +972,6 @@ def _log_internal_error(exc: BaseException) -> Path | None:
 def _stop_on_signals():
     """SIGTERM and SIGHUP end the command like Ctrl+C does: as an exception, so that every
     temporary file is removed on the way out (exit code 128 + the signal's number)."""
-    import signal
 
     def stop(signum: int, _frame: object) -> None:
         raise SystemExit(128 + signum)
@@ -995,8 +990,6 @@ def _stop_on_signals():
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command; the one boundary that turns every error into a message and an exit
     code (never a traceback): bad input 2, an unusable output place 2, a bug 3."""
-    import time
-
     # the command's start: the process's when this process is the command (argv from its
     # command line), else now (called in a running program)
     started = command_started() if argv is None else time.monotonic()

@@ -204,15 +204,9 @@ class ZoneEditor:
         if kept:  # the same facade on the redrawn site: the ranges set on it stay
             self.along.value, self.height.value = ranges
 
-    def segments(self) -> list[np.ndarray]:
-        """Each zone added as its stretch of wall on the map (E, N [m])."""
-        out = []
-        for z in self.zones:
-            if z.facade_id in self.ends and z.along_m is not None:
-                a, b = self.ends[z.facade_id]
-                u = (b - a) / max(float(np.hypot(*(b - a))), 1e-9)
-                out.append(np.array([a + z.along_m[0] * u, a + z.along_m[1] * u]))
-        return out
+    def ranges(self) -> list[tuple[str, float, float]]:
+        """Each zone added on a stretch of its facade: ``(facade_id, from_m, to_m)``."""
+        return [(z.facade_id, *z.along_m) for z in self.zones if z.along_m is not None]
 
     def _range_changed(self) -> None:
         if self.facade.value:
@@ -466,7 +460,7 @@ class StationPlanner:
         self.map.on_passage = self._draw_passage
         self.map.clear_passages.on_click(lambda _b: self._clear_passages())
         self.zone_editor.on_range = self.map.show_zone_range
-        self.zone_editor.on_zones = lambda: self.map.show_zones(self.zone_editor.segments())
+        self.zone_editor.on_zones = lambda: self.map.show_zones(self.zone_editor.ranges())
         #: passages drawn on the map (gateways the file does not show), added to the site
         self.drawn_passages: list[Passage] = []
         self._upload_path: Path | None = None  # the uploaded file, written once
@@ -747,7 +741,7 @@ class StationPlanner:
         }
         self.map.show_site(site, keep_plan=same)  # (a plan kept is out of date: dimmed)
         self.map.mark_repairs([(n.x, n.y, n.words()) for n in site.notes if _placed(n)])
-        self.map.show_zones(self.zone_editor.segments())
+        self.map.show_zones(self.zone_editor.ranges())
 
     def _draw_problems(self, exc: PlannerError) -> None:
         """The site as far as it can be read, with the features ``exc`` names outlined: as a

@@ -172,8 +172,8 @@ def _columns(scanned: pd.DataFrame, quantity: str) -> pd.DataFrame:
     col = scanned["sample_id"].str.rsplit("-", n=1).str[0]
     if quantity == "meets":
         g = scanned.assign(column=col, bad=~scanned["meets"]).groupby("column", sort=False)
-        out = g.agg(x=("x", "first"), y=("y", "first"), value=("bad", "mean"), n=("bad", "size"))
-        unmet = (out["value"] * out["n"]).round().astype(int)
+        out = g.agg(x=("x", "first"), y=("y", "first"), unmet=("bad", "sum"), n=("bad", "size"))
+        unmet = out["unmet"]
         out["value"] = (unmet > 0).astype(float)
         out["text"] = [
             f"{c}: {u} of {n} heights unmet" if u else f"{c}: all {n} heights met"
@@ -460,7 +460,6 @@ class PlanMap:
             np.empty((0, 2)),
         )
         self._facade = ""  # the facade picked for a zone
-        self._range = (0.0, 0.0)
         self._first: np.ndarray | None = None  # a passage's first click
         self.locked: list[bool] = []
         self._xy = np.empty((0, 2))
@@ -890,37 +889,49 @@ class PlanMap:
         self.on_facade(ids[k])
         self.mode.value = "range"  # its ends to drag next
 
-    def show_zone_range(self, facade_id: str, from_m: float, to_m: float) -> None:
-        """Mark the range ``from_m`` … ``to_m`` along ``facade_id`` (thick, with its two ends
-        to drag in "Pick a facade" mode)."""
+    def _wall(self, facade_id: str) -> tuple[np.ndarray, np.ndarray, float] | None:
+        """A facade's start, unit direction and length [m]; None where it is not on the map."""
         ids, a, b = self._facades
         if facade_id not in ids:
-            return
+            return None
         k = ids.index(facade_id)
-        self._facade, self._range = facade_id, (from_m, to_m)
         length = float(np.hypot(*(b[k] - a[k])))
-        u = (b[k] - a[k]) / max(length, 1e-9)
-        ends = np.array([a[k] + from_m * u, a[k] + to_m * u])
+        return a[k], (b[k] - a[k]) / max(length, 1e-9), length
+
+    def _stretch(self, facade_id: str, from_m: float, to_m: float) -> np.ndarray | None:
+        """The stretch ``from_m`` … ``to_m`` along a facade, its two ends (E, N [m])."""
+        wall = self._wall(facade_id)
+        if wall is None:
+            return None
+        start, u, _length = wall
+        return np.array([start + from_m * u, start + to_m * u])
+
+    def show_zone_range(self, facade_id: str, from_m: float, to_m: float) -> None:
+        """Mark the range ``from_m`` … ``to_m`` along ``facade_id`` (thick, with its two ends
+        to drag in "Zone range" mode)."""
+        ends = self._stretch(facade_id, from_m, to_m)
+        if ends is None:
+            return
+        self._facade = facade_id
         self.facade_line.x, self.facade_line.y = ends[None, :, 0], ends[None, :, 1]
         with self.handles.hold_sync():
             self.handles.x, self.handles.y = ends[:, 0], ends[:, 1]
         self._set_mode()
 
-    def show_zones(self, segments: Sequence[np.ndarray]) -> None:
-        """The zones added, each as its segment along its facade."""
-        self.zone_lines.x, self.zone_lines.y = _rows(list(segments))
+    def show_zones(self, ranges: Sequence[tuple[str, float, float]]) -> None:
+        """The zones added, each as its stretch of wall: ``(facade_id, from_m, to_m)``."""
+        stretches = [self._stretch(*r) for r in ranges]
+        self.zone_lines.x, self.zone_lines.y = _rows([q for q in stretches if q is not None])
 
     def _handle_dragged(self, _event) -> None:
-        ids, a, b = self._facades
-        if self._facade not in ids:
+        wall = self._wall(self._facade)
+        if wall is None:
             return
-        k = ids.index(self._facade)
-        length = float(np.hypot(*(b[k] - a[k])))
-        u = (b[k] - a[k]) / max(length, 1e-9)
+        start, u, length = wall
         pts = np.column_stack(
             [np.asarray(self.handles.x, float), np.asarray(self.handles.y, float)]
         )
-        along = np.clip((pts - a[k]) @ u, 0.0, length)
+        along = np.clip((pts - start) @ u, 0.0, length)
         lo, hi = float(min(along)), float(max(along))
         self.show_zone_range(self._facade, lo, hi)  # back onto the wall
         self.on_range_dragged(round(lo, 1), round(hi, 1))
