@@ -7,6 +7,8 @@ The scanners are read from the catalogue when the tests are collected, so a prof
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 import pytest
 
@@ -34,17 +36,19 @@ SWITCHES = {
 COARSE = {"sample_spacing_m": 4.0, "sample_height_step_m": 4.0, "grid_m": 3.0}
 
 
-@pytest.fixture(scope="module")
-def site():
-    return default_site()
+@functools.cache
+def _plan(name: str, switches: str):
+    """The default site planned with scanner ``name`` under ``switches`` (once for the
+    module: the footprint's test reads the plans of the first two)."""
+    st = PlanSettings(**SWITCHES[switches], **COARSE)
+    return plan(default_site(), Scanner.from_name(name), Requirements(), st), st
 
 
 @pytest.mark.parametrize("switches", list(SWITCHES), ids=list(SWITCHES))
 @pytest.mark.parametrize("name", sorted(catalogue()))
-def test_every_catalogue_scanner_plans_the_default_site(site, name, switches):
+def test_every_catalogue_scanner_plans_the_default_site(name, switches):
     sc = Scanner.from_name(name)
-    st = PlanSettings(**SWITCHES[switches], **COARSE)
-    p = plan(site, sc, Requirements(), st)
+    p, st = _plan(name, switches)
     cov = p.coverage[p.coverage["station_id"] != ""]
     assert len(p.stations) >= 1
     assert len(cov) > 100  # the stations scan the building
@@ -87,12 +91,13 @@ def test_every_catalogue_scanner_plans_the_default_site(site, name, switches):
 @pytest.mark.parametrize(
     "name", sorted(n for n, sc in catalogue().items() if sc.beam_divergence_mrad)
 )
-def test_the_beam_footprint_grows_with_distance_as_the_profile_says(site, name):
+def test_the_beam_footprint_grows_with_distance_as_the_profile_says(name):
     """Where the footprint is coarser than the point spacing it is the spacing reported, and
     footprint × cos θ against the slope distance is a line: the profile's exit diameter
-    [mm] plus its divergence [mrad = mm/m]."""
+    [mm] plus its divergence [mrad = mm/m]; with the footprint switched off, the spacing."""
     sc = Scanner.from_name(name)
-    p = plan(site, sc, Requirements(), PlanSettings(registration_error=False))
+    on, off = list(SWITCHES)[:2]  # the footprint on, and off
+    p = _plan(name, on)[0]
     cov = p.coverage[p.coverage["station_id"] != ""]
     s = cov["slope_distance_m"].to_numpy()
     cos_t = np.cos(np.radians(cov["incidence_deg"].to_numpy()))
@@ -110,10 +115,8 @@ def test_the_beam_footprint_grows_with_distance_as_the_profile_says(site, name):
     slope, exit_mm = np.polyfit(s[wide], width, 1)
     assert slope == pytest.approx(sc.beam_divergence_mrad, abs=1e-6)  # mm per m
     assert exit_mm == pytest.approx(sc.beam_exit_mm or 0.0, abs=1e-4)  # mm
-    off = plan(
-        site, sc, Requirements(), PlanSettings(registration_error=False, beam_footprint=False)
-    )
-    c2 = off.coverage[off.coverage["station_id"] != ""]
+    c2 = _plan(name, off)[0].coverage
+    c2 = c2[c2["station_id"] != ""]
     assert c2["spacing_mm"].to_numpy() == pytest.approx(
         facade_spacing_kernel(
             c2["distance_m"].to_numpy(),

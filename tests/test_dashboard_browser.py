@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 from planner.app.notebooks import notebook_path
-from planner.app.serve import server_state, voila_command
+from planner.app.serve import _stop, server_state, voila_command
 
 # one worker runs this module (scripts/test distributes by file): one dashboard server and
 # one page for all of its tests
@@ -66,7 +66,9 @@ def _serve(notebook: str, **env_extra: str):
     env.update(env_extra)
     # Voilà's log to a file: a pipe nobody reads fills up and stalls the server
     log = tempfile.TemporaryFile()
-    proc = subprocess.Popen(cmd, env=env, stdout=log, stderr=subprocess.STDOUT)
+    proc = subprocess.Popen(
+        cmd, env=env, stdout=log, stderr=subprocess.STDOUT, start_new_session=True
+    )
     url = f"http://127.0.0.1:{port}/"
     deadline = time.time() + 90
     while time.time() < deadline:
@@ -77,14 +79,10 @@ def _serve(notebook: str, **env_extra: str):
             break
         time.sleep(0.5)
     else:
-        proc.kill()
+        _stop(proc, grace_s=0.0)
         pytest.fail("voila did not answer within 90 s")
     yield url
-    proc.terminate()
-    try:
-        proc.wait(10)
-    except subprocess.TimeoutExpired:
-        proc.kill()
+    _stop(proc, grace_s=0.0)  # its kernels too, at once (stopping cleanly: test_serve)
     log.close()
 
 

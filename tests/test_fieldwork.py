@@ -169,8 +169,9 @@ def test_booklet_has_the_overview_and_a_page_per_station(default_plan):
     assert pdf.startswith(b"%PDF")
     pages = re.findall(rb"/Type\s*/Page\b(?!s)", pdf)
     assert len(pages) == 1 + len(default_plan.stations)
-    assert booklet_pdf(default_plan) == pdf  # the same plan, the same bytes
     assert b"CreationDate" not in pdf
+    small = plan(square_site())  # the same plan, the same bytes (a plan of a few pages)
+    assert booklet_pdf(small) == booklet_pdf(small)
 
 
 def test_compass_points():

@@ -57,7 +57,6 @@ def test_report_bad_input_exits_2(tmp_path):
     assert code == 2 and "must name an .html file" in err
 
 
-@pytest.mark.booklet
 def test_dashboard_report_and_booklet_join_plan_zip():
     """The dashboard's Make report / Make booklet buttons offer the file and add it to
     plan.zip with the plan's files; with no plan they say so."""

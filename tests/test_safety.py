@@ -216,8 +216,8 @@ def test_sigterm_at_every_write_point_before_the_switch_stops_cleanly(old_and_ne
 )
 def test_the_command_line_stopped_at_a_write_point(old_and_new, tmp_path, fault, exit_code):
     """End to end: ``planner plan`` stopped in the middle of writing its folder exits as
-    it should, says why without a traceback, and leaves the old plan and the user's files
-    (a kill's temporaries are tidied by the next write)."""
+    it should, says why without a traceback, and leaves the old plan and the user's files;
+    a stop it handles leaves no temporary, a kill's are tidied by the next write."""
     out, _, old, new, args = old_and_new
     done = _cli(*args, "--out", str(out), env={FAULT_ENV: fault})
     assert done.returncode == exit_code, done.stderr
@@ -226,6 +226,9 @@ def test_the_command_line_stopped_at_a_write_point(old_and_new, tmp_path, fault,
     _user_files_intact(out)
     if exit_code == 2:
         assert "No space left on device" in done.stderr
+    if exit_code != -signal.SIGKILL:
+        assert _leftovers(tmp_path) == []
+        return
     done = _cli(*args, "--out", str(out))
     assert done.returncode in (0, 1)
     assert _plan_files(out) == new

@@ -68,14 +68,25 @@ def _get(port: int, path: str = "/", host: str | None = None) -> int:
         return exc.code
 
 
+def _stops_whole(proc: subprocess.Popen, port: int, sig: int) -> None:
+    """``sig`` stops the server with exit code 0, its port closed and no process of its
+    family left running."""
+    family = _descendants(proc.pid)
+    proc.send_signal(sig)
+    assert proc.wait(60) == 0
+    time.sleep(0.5)
+    assert not _listening(port), "the port still answers after the stop"
+    alive = [p for p in family if Path(f"/proc/{p}").exists()]
+    assert alive == [], f"processes left running: {alive}"
+
+
 @pytest.mark.parametrize(
     ("sig", "notebook"),
     [
         (signal.SIGTERM, []),  # the station planner, served by default
-        (signal.SIGHUP, ["--notebook", "targets.ipynb"]),  # a lighter dashboard: the same
-        (signal.SIGINT, ["--notebook", "targets.ipynb"]),  # server, a shorter warm-up
-    ],
-    ids=["SIGTERM", "SIGHUP", "SIGINT"],
+        (signal.SIGINT, ["--notebook", "targets.ipynb"]),  # a lighter dashboard: the same
+    ],  # server, a shorter warm-up (SIGHUP: below)
+    ids=["SIGTERM", "SIGINT"],
 )
 def test_serve_is_ready_when_it_says_so_and_stops_whole_on_a_signal(sig, notebook):
     port = _free_port()
@@ -89,22 +100,21 @@ def test_serve_is_ready_when_it_says_so_and_stops_whole_on_a_signal(sig, noteboo
         deadline = time.time() + 30
         while len(_kernels(proc.pid)) < 2 and time.time() < deadline:
             time.sleep(0.2)
-        family = _descendants(proc.pid)
         assert len(_kernels(proc.pid)) == 2
-        proc.send_signal(sig)
-        assert proc.wait(60) == 0
-        time.sleep(0.5)
-        assert not _listening(port), "the port still answers after the stop"
-        alive = [p for p in family if Path(f"/proc/{p}").exists()]
-        assert alive == [], f"processes left running: {alive}"
+        _stops_whole(proc, port, sig)
     finally:
         if proc.poll() is None:
             proc.kill()
 
 
-def test_serve_refuses_other_host_names_and_a_taken_port():
+def test_serve_refuses_strangers_and_a_taken_port_and_frees_idle_kernels(tmp_path):
+    """One server for what needs no fresh one: other host names and a taken port refused;
+    page loads leave kernels, and with nobody connected they are culled after the idle time
+    — all but the one kept warm for the next page; SIGHUP stops it whole, and the upload
+    folder goes with it (the server gets a temporary folder of its own: other servers, of
+    other tests, may be running)."""
     port = _free_port()
-    proc, line = _start(port, "--notebook", "targets.ipynb")
+    proc, line = _start(port, "--notebook", "targets.ipynb", "--kernel-idle-s", "4", tmp=tmp_path)
     try:
         assert "ready" in line
         assert _get(port, "/", host="evil.example") == 403  # DNS rebinding
@@ -117,32 +127,19 @@ def test_serve_refuses_other_host_names_and_a_taken_port():
             timeout=60,
         )
         assert second.returncode == 2 and f"port {port} on 127.0.0.1 is taken" in second.stderr
-    finally:
-        proc.send_signal(signal.SIGTERM)
-        proc.wait(60)
-
-
-def test_kernels_of_pages_nobody_holds_are_shut_down(tmp_path):
-    """Page loads leave kernels; with nobody connected they are culled after the idle time
-    — all but the one kept warm for the next page — and the upload folder goes with the
-    server (the server gets a temporary folder of its own: other servers, of other tests,
-    may be running)."""
-    port = _free_port()
-    proc, line = _start(port, "--notebook", "targets.ipynb", "--kernel-idle-s", "4", tmp=tmp_path)
-    try:
-        assert "ready" in line
         for _ in range(2):
             assert _get(port) == 200
         assert len(_kernels(proc.pid)) >= 2  # the two pages' (and the next one warming)
         deadline = time.time() + 60
         while len(_kernels(proc.pid)) > 1 and time.time() < deadline:
-            time.sleep(1)
+            time.sleep(0.5)
         assert len(_kernels(proc.pid)) == 1
         uploads = [p for p in tmp_path.iterdir() if p.name.startswith("tls-planner-serve-")]
         assert uploads  # the server's upload folder exists while it runs …
+        _stops_whole(proc, port, signal.SIGHUP)
     finally:
-        proc.send_signal(signal.SIGTERM)
-        proc.wait(60)
+        if proc.poll() is None:
+            proc.kill()
     assert not any(p.exists() for p in uploads)  # … and goes with it
 
 

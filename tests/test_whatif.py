@@ -1,6 +1,8 @@
 """What-if by hand (planner.pipeline.whatif): stations moved, deleted, added or locked are
 judged again as a plan is, from what the plan keeps."""
 
+import copy
+
 import numpy as np
 import pytest
 
@@ -165,8 +167,8 @@ BY_HAND = "Targets placed or moved by hand in this plan's edits:"
 
 
 @pytest.fixture
-def own_plan():
-    return plan()
+def own_plan(default_plan):
+    return copy.deepcopy(default_plan)
 
 
 def _has(targets, xyz) -> bool:
