@@ -43,6 +43,16 @@ def _quick_booklet(request, monkeypatch):
 
 
 @pytest.fixture(scope="session")
+def default_plan():
+    """The plan of the defaults (site, scanner, requirements, settings), made once for the
+    session (each test worker): most modules read it. A test that edits a plan edits a
+    ``copy.deepcopy`` of it."""
+    from planner import plan
+
+    return plan()
+
+
+@pytest.fixture(scope="session")
 def paper_scanner() -> Scanner:
     """Voroshilov & Karachentsev's worked example: m_S = 4 mm, m_β = m_ν = 12.4″, station
     errors zero."""

@@ -80,10 +80,10 @@ def test_max_distance_3d_inverts_the_model(paper_scanner, component, gamma, nu):
         assert values[component] == pytest.approx(5.0, abs=1e-6)  # mm, at the limit
 
 
-def test_planning_reports_theta_and_bounds_it():
+def test_planning_reports_theta_and_bounds_it(default_plan):
     from planner.pipeline.planning import plan
 
-    free = plan()
+    free = default_plan
     theta = free.scanned["incidence_deg"]
     assert (theta >= free.scanned["gamma_deg"] - 1e-9).all()
     assert theta.max() > 60.0  # steep beams exist on the default plan …

@@ -4,7 +4,6 @@ that contradict the coordinates refused."""
 
 from __future__ import annotations
 
-import functools
 import io
 import json
 import xml.etree.ElementTree as ET
@@ -162,19 +161,12 @@ def _symbol(doc, name: str) -> tuple[str, int]:
     return outline.dxftype(), len(outline) if outline.dxftype() == "LWPOLYLINE" else 0
 
 
-@functools.cache
-def _default_plan():
-    from planner import plan
-
-    return plan()
-
-
 @pytest.mark.parametrize("scale", [500, 200])
-def test_dxf_speaks_the_maps_symbols_at_the_drawing_scale(tmp_path, scale):
+def test_dxf_speaks_the_maps_symbols_at_the_drawing_scale(tmp_path, scale, default_plan):
     """The drawing's conventions: the maps' symbols (station ▲, flat target ■, sphere ●,
     control ▼); the lettering 2.5 mm on paper at 1:scale; buildings labelled with id and
     height; the header's extents around the drawing; the view sectors' layer off."""
-    base = _default_plan()
+    base = default_plan
     p = replace(base, settings=replace(base.settings, drawing_scale=scale))  # (the DXF's own)
     doc = ezdxf.read(io.StringIO(render(p)["plan.dxf"]))
     msp = doc.modelspace()

@@ -22,11 +22,6 @@ from planner.site import Area, Building, Site
 from planner.siteio import default_site
 
 
-@pytest.fixture(scope="module")
-def default_plan():
-    return plan(default_site())
-
-
 def test_scan_points_and_time_of_a_full_panorama():
     # δ = 2 mm / 10 m = 0.2 mrad: 2π/δ = 31 416 columns, (135° in rad)/δ = 11 781 rows
     assert scan_points(360.0, 135.0, 2.0) == 31_416 * 11_781

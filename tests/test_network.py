@@ -19,11 +19,6 @@ from planner.synthetic import town
 
 
 @pytest.fixture(scope="module")
-def default_plan():
-    return plan()
-
-
-@pytest.fixture(scope="module")
 def block_plan():
     """A perimeter block of ten terraced buildings round a courtyard with a gateway."""
     return plan(town(10, seed=0), settings=PlanSettings(grid_m=3.0, sample_spacing_m=3.0))

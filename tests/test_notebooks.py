@@ -1,4 +1,5 @@
-"""Every notebook in notebooks/ runs without error (nbclient), and is committed clean."""
+"""Every notebook in notebooks/ runs without error (nbclient, one kernel for all, its names
+cleared before each), and is committed clean."""
 
 from __future__ import annotations
 
@@ -29,16 +30,31 @@ def test_notebook_is_committed_without_outputs(path):
             assert not cell.outputs and cell.execution_count is None
 
 
+@pytest.fixture(scope="module")
+def kernel(tmp_path_factory):
+    """One Python kernel for the module's notebooks (a kernel's start and the package's
+    imports are most of a small notebook's run), its names cleared before each."""
+    from jupyter_client.manager import KernelManager
+
+    km = KernelManager(kernel_name="python3")
+    km.start_kernel(cwd=str(tmp_path_factory.mktemp("notebooks")))
+    yield km
+    km.shutdown_kernel(now=True)
+
+
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
-def test_notebook_executes(path, tmp_path):
+def test_notebook_executes(path, kernel):
     nb = nbformat.read(path, as_version=4)
-    NotebookClient(  # a hang (a lost kernel message) fails in minutes, not at CI's limit
-        nb,
-        timeout=240,
-        startup_timeout=120,
-        kernel_name="python3",
-        resources={"metadata": {"path": str(tmp_path)}},
-    ).execute()
+    reset = nbformat.v4.new_code_cell("%reset -f")  # nothing left of the notebook before
+    nb.cells.insert(0, reset)
+    # a hang (a lost kernel message) fails in minutes, not at CI's limit
+    client = NotebookClient(nb, km=kernel, timeout=240, startup_timeout=120)
+    try:
+        client.execute()
+    finally:
+        if client.kc is not None:
+            client.kc.stop_channels()
+    nb.cells.remove(reset)
     errors = [
         o for c in nb.cells if c.cell_type == "code" for o in c.outputs if o.output_type == "error"
     ]

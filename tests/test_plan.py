@@ -552,8 +552,8 @@ def test_stations_per_sample():
     assert two.solver.objective > one.solver.objective
 
 
-def test_registration_targets_tie_the_default_plan(rich_plan):
-    p = plan()  # the defaults
+def test_registration_targets_tie_the_default_plan(rich_plan, default_plan):
+    p = default_plan
     assert p.meets_all and any("form one registration network" in m for m in p.messages)
     t = p.targets
     assert len(t) >= 3

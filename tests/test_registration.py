@@ -8,7 +8,6 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from planner.pipeline.planning import plan
 from planner.registration_error import (
     CONTROL,
     Link,
@@ -305,14 +304,16 @@ def test_control_targets_are_a_datum():
 
 
 # -- the whole chain of a real plan ---------------------------------------------------------
-def test_the_default_plans_registration_error_matches_a_monte_carlo_of_its_network():
+def test_the_default_plans_registration_error_matches_a_monte_carlo_of_its_network(
+    default_plan,
+):
     """The default site's plan, its network as planned (stations, targets, every station's
     observation of every placed target it sees, with its centre RMS), simulated end to end
     and adjusted together, every station's axis tilted (the datum's too); the empirical
     error of every facade sample scanned from a registered station, along the facade, across it
     and in height, against the registration RMS the coverage reports. Negative control:
     the same network without its rotations' lever arms (shift errors only) misses."""
-    p = plan()
+    p = default_plan
     net = p.network
     assert net is not None and net.datum is not None and len(net.links) >= 3
     ids = list(p.stations["station_id"])

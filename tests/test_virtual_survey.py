@@ -18,8 +18,8 @@ from planner.pipeline.requirements import PlanSettings
 
 
 @pytest.fixture(scope="module")
-def default_world():
-    return world_of(plan())
+def default_world(default_plan):
+    return world_of(default_plan)
 
 
 def test_the_default_plan_keeps_its_promise_in_a_virtual_survey(default_world):

@@ -7,13 +7,13 @@ import numpy as np
 import pytest
 
 from planner.errors import InputError
-from planner.pipeline.planning import plan
 from planner.pipeline.whatif import edit_targets, evaluate_stations, reoptimise
 
 
 @pytest.fixture(scope="module")
-def default_plan():
-    return plan()
+def default_plan(default_plan):
+    """The session's default plan, copied: the edits here add to a plan's workbench."""
+    return copy.deepcopy(default_plan)
 
 
 def _xy(p):
