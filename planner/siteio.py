@@ -833,19 +833,19 @@ def read_site(
 
     Every problem of the file is reported at once (:class:`planner.sitecheck.SiteProblems`).
     """
-    p = Path(path) if isinstance(path, str | os.PathLike) else path
-    features, file_crs = _file_features(p, crs)
+    features, file_crs = _file_features(path, crs)  # (a path: checked there)
+    p = Path(path)
     return site_from_features(
         features,
         default_height_m=default_height_m,
         buildings=buildings,
         repair=repair,
-        name=Path(p).stem,
+        name=p.stem,
         limits=limits,
         crs=file_crs,
         storey_height_m=storey_height_m,
         near_m=near_m,
-        origin=Path(p).name,
+        origin=p.name,
     )
 
 
@@ -854,8 +854,7 @@ def read_outlines(path: str | Path, crs: str | None = None) -> list[tuple[str, s
     every feature with a geometry, in metres (longitude/latitude projected as
     :func:`read_site` does). For a drawing of a site that cannot be planned: its problems
     shown where they are. A file that cannot be read at all raises as :func:`read_site`."""
-    p = Path(path) if isinstance(path, str | os.PathLike) else path
-    features, file_crs = _file_features(p, crs)
+    features, file_crs = _file_features(path, crs)
     _to_metres(features, file_crs, [])
     return [
         (f.ident, _role_of(f.props) or "building", f.geometry)
