@@ -92,6 +92,28 @@ def test_cloud_alone_says_which_stations_it_cannot_tie_and_why(modes):
     assert not c.meets_all
 
 
+def test_each_cloud_link_is_judged_by_its_own_error(modes):
+    """Links into one station from different parents each have their own error at its facade
+    points, whatever order they are asked in (a cache once kept the first one asked for every
+    parent: the layout depended on the order of the search)."""
+    from planner.pipeline.registration import _Layout
+
+    c = modes["cloud"]
+    wb, net = c.workbench, c.network
+    stations = [int(s) for s in net.stations]
+    lay = _Layout(wb.ctx, wb.seen, wb.pool, stations, {}, goal_mm=1.0)
+    checked = 0
+    for child in range(lay.k):
+        parents = [a for a in range(lay.k) if a != child and lay.cloud(a, child) is not None]
+        for a in reversed(parents):  # the other order from the tree search's
+            own = lay.error_at_probes(lay.cloud(a, child).cov, child)
+            assert lay.link(a, child)[1] == pytest.approx(own, rel=1e-12)  # mm
+        checked += len(parents) > 1
+        errors = {round(lay.link(a, child)[1], 6) for a in parents}
+        assert len(parents) < 2 or len(errors) > 1  # different parents, different errors
+    assert checked >= 3
+
+
 def test_the_scanner_profile_names_its_workflow():
     assert catalogue()["leica-rtc360"].registration == "hybrid"
     st = PlanSettings()

@@ -955,19 +955,19 @@ class _Layout:
         the goal and the targets do better."""
         cl = self.cloud(i, j)
         if cl is not None or self.mode == "cloud":
-            err = self._cloud_error(cl, j) if cl is not None else np.inf
+            err = self._cloud_error(cl, i, j) if cl is not None else np.inf
             if self.mode == "cloud" or err <= self.goal_mm:
                 return [], err
             by_targets = self._target_link(i, j, placed, stands)
             return by_targets if by_targets[1] < err else ([], err)
         return self._target_link(i, j, placed, stands)
 
-    def _cloud_error(self, cl: CloudLink, j: int) -> float:
-        """A cloud link's own error at the child's facade points [mm] (kept per link)."""
-        key = (cl.parent, j)
-        if key not in self._cloud_errors:
-            self._cloud_errors[key] = self.error_at_probes(cl.cov, j)
-        return self._cloud_errors[key]
+    def _cloud_error(self, cl: CloudLink, i: int, j: int) -> float:
+        """The cloud link of j to i: its own error at j's facade points [mm] (kept per
+        link; ``cl.parent`` is a position in the pair it was computed from, not i)."""
+        if (i, j) not in self._cloud_errors:
+            self._cloud_errors[(i, j)] = self.error_at_probes(cl.cov, j)
+        return self._cloud_errors[(i, j)]
 
     def error_at_probes(self, cov: np.ndarray, j: int) -> float:
         """The largest RMS [mm] a pose covariance ``cov`` (at station j) gives the facade
