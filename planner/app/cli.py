@@ -292,13 +292,14 @@ def _district(args: argparse.Namespace, site, settings) -> bool:
 #: planning ends before it — or before the files' estimated time, where that is longer.
 DOCUMENT_SHARE = 0.15
 #: Writing a plan's files takes about this long per coverage row and per station or
-#: target [s] (measured on a 50-building town, 11 201 rows, 61 stations, 163 targets:
-#: 1.6 s, the coverage CSV 0.4 s and the DXF 0.9 s of it); the booklet ends in time for
-#: them, and planning ends in time for half as much again.
-SAVE_S_PER_ROW = 1.2e-4
+#: target on an idle machine [s] (measured on a 50-building town, 11 201 rows, 40
+#: stations, 93 targets: 2.75 s, the coverage CSV 0.4 s and the DXF 1.7 s of it, a first
+#: use); the booklet ends in time for them, and planning ends in time for a fifth as much
+#: again — both stretched by the pace the command gets (:func:`~planner.pipeline.clock.pace`).
+SAVE_S_PER_ROW = 2e-4
 SAVE_S_PER_POINT = 4e-3
 #: The files' estimated time is reserved this many times over before planning ends.
-SAVE_MARGIN = 1.5
+SAVE_MARGIN = 1.2
 #: The booklet is drawn only when this long is left before the files are written: its
 #: overview page takes about that (a station's page about 0.5 s) [s].
 BOOKLET_OVERVIEW_S = 2.0
@@ -328,6 +329,7 @@ def run_plan(args: argparse.Namespace) -> int:
     command's start (reading the site included): planning ends with
     :data:`DOCUMENT_SHARE` of the budget left, and the booklet leaves out the pages there is
     no time for (said in the summary and on its last page)."""
+    from planner.pipeline.clock import pace
     from planner.pipeline.export import save
     from planner.pipeline.planning import plan
 
@@ -340,7 +342,12 @@ def run_plan(args: argparse.Namespace) -> int:
 
     deadline = started + settings.time_limit_s
     rows = estimate_samples(site, settings.sample_spacing_m, settings.sample_height_step_m)
-    reserve = max(DOCUMENT_SHARE * settings.time_limit_s, SAVE_MARGIN * SAVE_S_PER_ROW * rows)
+    # the files' time as measured on an idle machine, stretched by the pace this command
+    # has had so far (its start, imports and reading: a loaded machine slows all of it)
+    slow = pace(time.monotonic() - started, time.process_time())
+    reserve = max(
+        DOCUMENT_SHARE * settings.time_limit_s, slow * SAVE_MARGIN * SAVE_S_PER_ROW * rows
+    )
     planned_by = deadline - reserve
     if _district(args, site, settings):
         from planner.pipeline.district import plan_district
@@ -360,8 +367,9 @@ def run_plan(args: argparse.Namespace) -> int:
     else:
         result = plan(site, scanner, req, settings, progress=progress, deadline=planned_by)
     extra = {}
-    saving = SAVE_S_PER_ROW * len(result.coverage) + SAVE_S_PER_POINT * (
-        len(result.stations) + len(result.targets)
+    saving = slow * (
+        SAVE_S_PER_ROW * len(result.coverage)
+        + SAVE_S_PER_POINT * (len(result.stations) + len(result.targets))
     )
     if args.booklet and time.monotonic() + BOOKLET_OVERVIEW_S > deadline - saving:
         result.messages.append(

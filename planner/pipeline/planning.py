@@ -77,6 +77,11 @@ PAIRS_PER_S = 20e6
 #: The optimiser always gets at least this long, even when the evaluation used the budget
 #: (greedy set cover takes well under it) [s].
 MIN_SOLVER_S = 0.5
+#: The first evaluation gets at least this long, or until the plan's end where that comes
+#: sooner, even when the time kept for the plan's last round and tables is already taken (a
+#: loaded machine): a plan has stations for a few facades at least, and says what was left
+#: out [s].
+MIN_EVALUATION_S = 1.0
 #: The share of the time left that the optimiser may take when the registration network is
 #: still to be built and judged after it (its rounds need the rest of the budget).
 SOLVER_SHARE = 0.5
@@ -86,8 +91,9 @@ SOLVER_SHARE = 0.5
 FINISH_S_PER_SAMPLE = 1e-4
 #: The share of the plan's budget the first evaluation of every candidate may take: a site
 #: too large for its budget is evaluated in part, and the optimiser and the registration
-#: still get their time.
-EVALUATION_SHARE = 0.6
+#: still get their time (on a 50-building town given 12 s, the first network of the
+#: stations chosen takes about 3 s).
+EVALUATION_SHARE = 0.45
 
 
 def reach_m(scanner: Scanner, req: Requirements, settings: PlanSettings | None = None) -> float:
@@ -254,7 +260,9 @@ def choose_stations(
     # built and judged again; once none is short, the fewest stations are chosen again with
     # every candidate's estimated registration error, the network's backbone kept
     cut: list[str] = []  # what the time budget cut short, in words
-    ev = _evaluate(ctx, cand, say, clock, by=clock.share(EVALUATION_SHARE))
+    at_least = min(time.monotonic() + MIN_EVALUATION_S, whole.deadline)
+    by = max(clock.share(EVALUATION_SHARE), at_least)
+    ev = _evaluate(ctx, cand, say, clock, by=by)
     demanded = ~fac.party_wall
     if not ev.evaluated[demanded].all():
         cut.append(
@@ -444,13 +452,13 @@ def _evaluate(
     by: float | None = None,
 ) -> CandidateEvaluation:
     """Every candidate against every sample on the scanner's error (plus the ``estimate`` of
-    its registration error), until the clock's deadline or ``by``, the earlier."""
+    its registration error), until the clock's deadline, or until ``by`` where given."""
     with clock.timed("evaluate"):
         return evaluate_candidates(
             ctx,
             cand,
             progress=lambda f, m: say(0.05 + 0.6 * f, m),
-            deadline=clock.deadline if by is None else min(by, clock.deadline),
+            deadline=clock.deadline if by is None else by,
             registration=estimate,
         )
 

@@ -840,6 +840,7 @@ class _Layout:
         probes: dict[int, np.ndarray],
         goal_mm: float,
         datum: int | None = None,
+        deadline: float = math.inf,
     ) -> None:
         tc, st = seen.tc, ctx.settings
         self.ctx, self.tc, self.goal_mm, self.seen = ctx, tc, goal_mm, seen
@@ -886,22 +887,30 @@ class _Layout:
         kept = not roots and datum in stations  # kept from the network this one grows from
         if kept:
             roots = [stations.index(datum)]
-        best = self._best_tree(roots or range(k))
+        best = self._best_tree(roots or range(k), deadline)
         if kept and best is not None and len(best[3]) < k:  # it does not reach them all
-            free = self._best_tree(range(k))
+            free = self._best_tree(range(k), deadline)
             best = free if len(free[3]) > len(best[3]) else best
         self.datum, self.tree, self.cost = best[1:] if best else (None, [], {})
         self.worst_var = max(self.cost.values()) if self.cost else np.inf
 
-    def _best_tree(self, roots) -> tuple | None:
+    def _best_tree(self, roots: Sequence[int], deadline: float = math.inf) -> tuple | None:
         """(key, root, tree, cost) of the root whose tree reaches the most stations, then
         keeps the worst station's error smallest — with 6 parameters, its variance plus the
-        datum's lean at its facade points (:meth:`datum_tilt_var`)."""
+        datum's lean at its facade points (:meth:`datum_tilt_var`); ties go to the first
+        root. The most central root is tried first, and after ``deadline`` no other."""
+        roots = list(roots)
+        if len(roots) > 1:
+            first = roots.index(_central(self.station_xyz[roots]))
+            roots = [roots[first], *roots[:first], *roots[first + 1 :]]
         best = None
-        for root in roots:
+        for n, root in enumerate(roots):
+            if n and time.monotonic() > deadline:
+                break
             tree, cost = _tree(root, self.k, self.pairs, self.link)
             tilt = self.datum_tilt_var(root)
-            key = (-len(cost), max((c + tilt[j] for j, c in cost.items()), default=np.inf))
+            worst = max((c + tilt[j] for j, c in cost.items()), default=np.inf)
+            key = (-len(cost), worst, root)  # ties: the first root
             if best is None or key < best[0]:
                 best = (key, root, tree, cost)
         return best
@@ -1142,20 +1151,24 @@ def build_network(
     seen = cache if cache is not None else SightCache(ctx, tc, cand_xy)
     stations = [int(c) for c in chosen]
     n_cover = len(stations)
-    lay = _Layout(ctx, seen, cand_xy, stations, probes, goal_mm, datum)
+    lay = _Layout(ctx, seen, cand_xy, stations, probes, goal_mm, datum, deadline)
     groups = _components(lay.k, lay.pairs)
     cut_short = False
     if groups.max() > 0:  # stations neither targets nor clouds tie: linking stations
         hops = _hops(ctx, seen, cand_xy, stations, lay, deadline)
         extra, cut_short = _bridges(hops, groups, deadline) if hops else ([], True)
         if extra:
-            lay = _Layout(ctx, seen, cand_xy, stations + extra, probes, goal_mm, datum)
-    weak = lay.weak_groups(weak_mm) if np.isfinite(weak_mm) and lay.k > 1 else np.zeros(1)
-    if weak.max() > 0 and time.monotonic() <= deadline:  # too weak: a detour, if it helps
+            lay = _Layout(ctx, seen, cand_xy, stations + extra, probes, goal_mm, datum, deadline)
+    weak = np.zeros(1)
+    if np.isfinite(weak_mm) and lay.k > 1 and time.monotonic() <= deadline:
+        weak = lay.weak_groups(weak_mm)
+    if weak.max() > 0:  # too weak: a detour, if it helps
         hops = _hops(ctx, seen, cand_xy, lay.stations, lay, deadline)
         extra, _ = _bridges(hops, weak, deadline) if hops else ([], True)
         if extra:
-            trial = _Layout(ctx, seen, cand_xy, lay.stations + extra, probes, goal_mm, datum)
+            trial = _Layout(
+                ctx, seen, cand_xy, lay.stations + extra, probes, goal_mm, datum, deadline
+            )
             if len(trial.cost) >= len(lay.cost) and trial.worst_var < 0.8 * lay.worst_var:
                 lay = trial
     stations, sight, station_xyz, datum = lay.stations, lay.sight, lay.station_xyz, lay.datum
@@ -1315,6 +1328,13 @@ def _planes(surf: clouds.Surfaces | None) -> tuple | None:
         zip(zip(j.tolist(), p.tolist(), strict=True), surf.var_mm2[p, j].tolist(), strict=True)
     )
     return surf.xyz, surf.normal, var
+
+
+def _central(xyz: np.ndarray) -> int:
+    """The station nearest all others (the smallest farthest distance): the datum a
+    network grows from when there is no time to grow one from every station."""
+    d = np.hypot(*(xyz[:, None, :2] - xyz[None, :, :2]).transpose(2, 0, 1))
+    return int(np.argmin(d.max(axis=1)))
 
 
 def _tree(root: int, k: int, pairs: Sequence[tuple[int, int]], link) -> tuple[list, dict]:
