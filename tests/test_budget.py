@@ -27,7 +27,7 @@ def _allowed_s(budget_s: float) -> float:
 @pytest.mark.booklet
 @pytest.mark.parametrize(
     ("n", "budget_s", "mode"),
-    [(50, 12.0, ["--district", "off"]), (40, 16.0, ["--district", "on", "--block-m", "80"])],
+    [(50, 12.0, ["--district", "off"]), (40, 20.0, ["--district", "on", "--block-m", "80"])],
     ids=["one process", "district"],
 )
 def test_a_site_far_beyond_its_budget_ends_in_time_and_says_what_was_cut(
@@ -36,7 +36,8 @@ def test_a_site_far_beyond_its_budget_ends_in_time_and_says_what_was_cut(
     """50 buildings take about 45 s in one process (benchmarks/RESULTS.md, town-50), 40 in
     blocks of 80 m on Dask about 21 s (party walls no longer evaluated): given a fraction of
     that they stop in time, with a plan that says what it left out. (The district gets more:
-    its cluster and its workers' start take about 8 s of a loaded machine's time.)"""
+    on a loaded machine the command's start, the cluster's and its workers' imports take
+    about 9 s, the stitch and the files about 7 s.)"""
     site = tmp_path / "town.geojson"
     _write_town(site, n)
     out = tmp_path / "plan"
