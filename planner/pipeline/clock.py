@@ -100,8 +100,8 @@ class Clock:
         >>> 49.0 < c.share(0.5) - time.monotonic() <= 50.0
         True
         """
-        now = time.monotonic()
-        return min(self.deadline, now + fraction * max(0.0, self.deadline - now))
+        now, deadline = time.monotonic(), self.deadline  # (the pace read once)
+        return min(deadline, now + fraction * max(0.0, deadline - now))
 
     def sooner(self, seconds: float) -> Clock:
         """This clock running out ``seconds`` earlier — on an idle machine; as many times

@@ -36,6 +36,7 @@ import numpy as np
 import scipy.sparse as sp
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
+from scipy.spatial.distance import cdist
 
 from planner.cloud_registration import weakest_direction
 from planner.pipeline import clouds
@@ -897,11 +898,11 @@ class _Layout:
     def _best_tree(self, roots: Sequence[int], deadline: float = math.inf) -> tuple | None:
         """(key, root, tree, cost) of the root whose tree reaches the most stations, then
         keeps the worst station's error smallest — with 6 parameters, its variance plus the
-        datum's lean at its facade points (:meth:`datum_tilt_var`); ties go to the first
+        datum's lean at its facade points (:meth:`datum_tilt_var`); ties go to the lowest
         root. The most central root is tried first, and after ``deadline`` no other."""
         roots = list(roots)
         if len(roots) > 1:
-            first = roots.index(_central(self.station_xyz[roots]))
+            first = _central(self.station_xyz[roots])  # a position in roots
             roots = [roots[first], *roots[:first], *roots[first + 1 :]]
         best = None
         for n, root in enumerate(roots):
@@ -1333,8 +1334,7 @@ def _planes(surf: clouds.Surfaces | None) -> tuple | None:
 def _central(xyz: np.ndarray) -> int:
     """The station nearest all others (the smallest farthest distance): the datum a
     network grows from when there is no time to grow one from every station."""
-    d = np.hypot(*(xyz[:, None, :2] - xyz[None, :, :2]).transpose(2, 0, 1))
-    return int(np.argmin(d.max(axis=1)))
+    return int(np.argmin(cdist(xyz[:, :2], xyz[:, :2]).max(axis=1)))
 
 
 def _tree(root: int, k: int, pairs: Sequence[tuple[int, int]], link) -> tuple[list, dict]:
