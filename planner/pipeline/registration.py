@@ -421,6 +421,11 @@ def _probe_errors(n_mats: np.ndarray, g: np.ndarray) -> np.ndarray:
     (P, 3, p) the probes' design rows. Whether a matrix fixes the registration is for the
     caller to judge (:func:`_well_posed`)."""
     rows = g.reshape(-1, g.shape[-1])  # (3P, p)
+    return _row_errors(n_mats, rows)
+
+
+def _row_errors(n_mats: np.ndarray, rows: np.ndarray) -> np.ndarray:
+    """:func:`_probe_errors` with the design rows flattened (3P, p)."""
     var = ((rows @ np.linalg.inv(n_mats)) * rows).sum(axis=-1)  # (B, 3P)
     return np.sqrt(var.max(axis=1))
 
@@ -472,7 +477,8 @@ def _choose_link_targets(
     a = _a_matrix((xyz[common] - child_xyz) * 1000.0, levelled)  # (C, 3, p)
     contrib = np.einsum("cip,ciq->cpq", a, a) / sigma2[:, None, None]
     g = _a_matrix((_probes(probes, child_xyz) - child_xyz) * 1000.0, levelled)
-    reused = np.array([int(t) in placed for t in common])
+    rows = g.reshape(-1, g.shape[-1])
+    reused = np.isin(common, list(placed)) if placed else np.zeros(len(common), dtype=bool)
     chosen = [] if must is None else [int(c) for c in np.flatnonzero(must[common])]
     chosen = chosen[: int(max_targets)]
     n_mat = contrib[chosen].sum(axis=0) if chosen else np.zeros(prior.shape)
@@ -486,7 +492,7 @@ def _choose_link_targets(
         if not len(left):
             break
         mats = n_mat + contrib[left] + prior
-        trial = _probe_errors(mats, g)
+        trial = _row_errors(mats, rows)
         order = np.argsort(trial, kind="stable")
         best = _well_posed(mats, order)
         new_error = np.inf if best is None else float(trial[best])
@@ -685,11 +691,12 @@ def _target_hops(seen: SightCache, pool: np.ndarray, sight: Sight, deadline: flo
     if not parts:
         return None
     pool = pool[: sum(p.shape[1] for p in parts)]
-    u_pool = (np.hstack(parts) & ~tc.is_control[:, None]).astype(np.float32)
-    u_st = (sight.usable & ~tc.is_control[:, None]).astype(np.float32)
-    adj = (u_pool.T @ u_pool) >= 3  # common targets, exact in float32 below 2**24
-    to_st = (u_pool.T @ u_st) >= 3
-    u_pool, u_st = u_pool.astype(bool), u_st.astype(bool)
+    u_pool = np.hstack(parts) & ~tc.is_control[:, None]
+    u_st = sight.usable & ~tc.is_control[:, None]
+    rows = u_pool.any(axis=1)  # the targets no pool candidate sees count for no hop
+    pool_seen = u_pool[rows].astype(np.float32)
+    adj = (pool_seen.T @ pool_seen) >= 3  # common targets, exact in float32 below 2**24
+    to_st = (pool_seen.T @ u_st[rows].astype(np.float32)) >= 3
 
     def ok(i: int, j: int, to_station: bool) -> bool:
         other = u_st[:, j] if to_station else u_pool[:, j]
