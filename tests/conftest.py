@@ -8,6 +8,9 @@ import os
 import pytest
 
 from planner import Scanner
+from planner.app.voila_server import skip_iri_grammar
+
+skip_iri_grammar()  # nbformat and nbclient here import jsonschema as the server does
 
 
 @pytest.fixture(autouse=True, scope="session")

@@ -22,7 +22,7 @@ def test_there_are_notebooks():
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
 def test_notebook_is_committed_without_outputs(path):
-    import nbformat  # here, not at collection: it takes seconds to import (jsonschema's)
+    import nbformat  # here, not at collection (a second even without jsonschema's IRI grammar)
 
     nb = nbformat.read(path, as_version=4)
     for cell in nb.cells:

@@ -89,7 +89,17 @@ class LoopbackApplication(tornado.web.Application):
         return super().find_handler(request, **kwargs)
 
 
+def skip_iri_grammar() -> None:
+    """Keep jsonschema from importing ``rfc3987_syntax``: installed with Jupyter's
+    ``jsonschema[format-nongpl]``, it builds some 35 Earley grammars when imported, for the
+    "iri" format alone — 2 of the 3.3 s the server takes to import (python-jsonschema/
+    jsonschema#1428). No Jupyter schema uses that format; without the module jsonschema
+    leaves it unchecked."""
+    sys.modules.setdefault("rfc3987_syntax", None)  # type: ignore[arg-type]
+
+
 def main(argv: list[str]) -> None:
+    skip_iri_grammar()
     from voila.app import Voila
 
     tornado.web.Application = LoopbackApplication  # Voilà builds its application from this name
