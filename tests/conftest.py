@@ -86,28 +86,3 @@ try:  # property-based tests: the same examples on every CI run, fresh ones loca
     _hypothesis_settings.load_profile("ci" if os.environ.get("CI") else "dev")
 except ImportError:  # pragma: no cover - hypothesis is a dev dependency
     pass
-
-
-#: The modules that take longest (summed seconds of their tests, 2026-11-26), run first: the
-#: two workers (``--dist loadfile``) then end together instead of one waiting on the other's
-#: last long module. Only the order changes; a module not listed runs after these, as
-#: collected.
-LONG_MODULES = (
-    "test_dashboard_browser",
-    "test_serve",
-    "test_catalogue",
-    "test_district",
-    "test_safety",
-    "test_network",
-    "test_registration",
-    "test_properties",
-    "test_report",
-    "test_budget",
-    "test_fieldwork",
-    "test_cloud_registration",
-)
-
-
-def pytest_collection_modifyitems(items):
-    rank = {name: n for n, name in enumerate(LONG_MODULES)}
-    items.sort(key=lambda item: rank.get(item.path.stem, len(rank)))  # stable: else as collected

@@ -143,7 +143,7 @@ def test_the_class_each_point_achieves():
 
 
 def test_a_plan_to_a_class_reports_the_class_per_sample(tmp_path):
-    from test_cli import run
+    from sites import run_cli as run
 
     code, out, err = run("plan", "--class", "OGL4/OGH3", "--out", str(tmp_path / "p"), "-q")
     assert code in (0, 1), err

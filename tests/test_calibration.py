@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import pytest
-from test_cli import run
+from sites import run_cli as run
 
 from planner import InputError, Scanner
 from planner.calibration import (

@@ -18,7 +18,7 @@ import numpy as np
 import pandas as pd
 import pytest
 from sites import osm_like_export
-from test_cli import run
+from sites import run_cli as run
 
 import planner
 from planner.pipeline.evaluate import PairMetrics

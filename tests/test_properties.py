@@ -233,7 +233,7 @@ def test_a_site_that_reads_plans_completely(tmp_path_factory, text, strict):
 @given(text=st.one_of(small_site(), geojson_text()))
 def test_generated_sites_through_the_command_line(tmp_path_factory, text):
     """Generated sites end to end: exit 0/1 with a complete plan, or 2 with nothing."""
-    from test_cli import run
+    from sites import run_cli as run
 
     folder = tmp_path_factory.mktemp("cli")
     path = folder / "site.geojson"

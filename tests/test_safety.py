@@ -20,7 +20,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from test_cli import run
+from sites import run_cli as run
 
 import planner
 from planner.atomic import FAULT_ENV, write_text_atomic
