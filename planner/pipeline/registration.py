@@ -489,8 +489,8 @@ def _choose_link_targets(
     free[chosen] = False
     while len(chosen) < max_targets:
         left = np.flatnonzero(free)
-        if not len(left):
-            break
+        if not len(left) or (len(chosen) >= 3 and error <= goal_mm):
+            break  # (checked before the trials: met by three, no trial can go on)
         mats = n_mat + contrib[left] + prior
         trial = _row_errors(mats, rows)
         order = np.argsort(trial, kind="stable")
@@ -501,7 +501,7 @@ def _choose_link_targets(
             r = _well_posed(mats, order[reused[left][order]])
             if r is not None and trial[r] <= new_error * (1 + MIN_GAIN):
                 best, new_error = r, float(trial[r])
-        if len(chosen) >= 3 and (error <= goal_mm or new_error > error * (1 - MIN_GAIN)):
+        if len(chosen) >= 3 and new_error > error * (1 - MIN_GAIN):
             break
         chosen.append(int(left[best]))
         free[left[best]] = False
