@@ -542,9 +542,10 @@ def _eliminate_planes(n_mat, tilt_rhs, planes, station_xyz, tied, s_col, par, le
 MAX_CONDITION = 1e8
 
 
-def scaled_condition(n_mats: np.ndarray) -> np.ndarray:
+def scaled_condition(n_mats: np.ndarray) -> np.ndarray | np.float64:
     """Condition number of symmetric normal matrices (…, p, p) with their diagonal scaled to
-    one; inf where a diagonal element is not positive (a parameter nothing determines).
+    one; inf where a diagonal element is not positive (a parameter nothing determines). A
+    scalar for one (p, p) matrix.
 
     Examples
     --------
@@ -553,8 +554,9 @@ def scaled_condition(n_mats: np.ndarray) -> np.ndarray:
     (1000000000.0, 1.0)
     """
     n_mats = np.asarray(n_mats, dtype=float)
-    if n_mats.ndim == 2:  # one matrix (the greedy target choice asks for thousands): the
-        # same arithmetic in fewer array calls
+    # one matrix (the greedy target choice asks for thousands): the same arithmetic in
+    # fewer array calls
+    if n_mats.ndim == 2:
         diag = n_mats.diagonal()
         if not ((diag > 0).all() and np.isfinite(n_mats).all()):
             return np.float64(np.inf)

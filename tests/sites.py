@@ -57,6 +57,10 @@ __all__ = [
 ]
 
 
+#: The paper's scanner and 5 mm / 5 mm: the arguments most plan and report tests share.
+PAPER_5MM = ["--scanner", "leica-4mm-60urad", "--max-xy-mm", "5", "--max-z-mm", "5"]
+
+
 def run_cli(*argv: str) -> tuple[int, str, str]:
     """``planner ARGV`` in this process: (exit code, standard output, standard error)."""
     import io
@@ -68,7 +72,7 @@ def run_cli(*argv: str) -> tuple[int, str, str]:
     with redirect_stdout(out), redirect_stderr(err):
         try:
             code = main(list(argv))
-        except SystemExit as exc:
+        except SystemExit as exc:  # argparse usage errors
             code = int(exc.code or 0)
     return code, out.getvalue(), err.getvalue()
 

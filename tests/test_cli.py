@@ -10,9 +10,6 @@ import pandas as pd
 import pytest
 from sites import run_cli as run
 
-#: The paper's scanner and 5 mm / 5 mm: the arguments most plan and report tests share.
-PAPER_5MM = ["--scanner", "leica-4mm-60urad", "--max-xy-mm", "5", "--max-z-mm", "5"]
-
 
 def test_accuracy_prints_both_tables_for_the_paper_scanner():
     code, out, _ = run("accuracy", "--scanner", "leica-4mm-60urad")

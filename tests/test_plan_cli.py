@@ -6,8 +6,8 @@ import json
 
 import pandas as pd
 import pytest
+from sites import PAPER_5MM
 from sites import run_cli as run
-from test_cli import PAPER_5MM
 
 from planner.app.cli import main
 from planner.pipeline.schema import COVERAGE_COLUMNS, STATION_COLUMNS, TARGET_COLUMNS

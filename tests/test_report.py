@@ -5,8 +5,8 @@ from __future__ import annotations
 import re
 
 import pytest
+from sites import PAPER_5MM
 from sites import run_cli as run
-from test_cli import PAPER_5MM
 
 
 def test_report_html_is_self_contained(tmp_path):

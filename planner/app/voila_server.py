@@ -92,9 +92,10 @@ class LoopbackApplication(tornado.web.Application):
 def skip_iri_grammar() -> None:
     """Keep jsonschema from importing ``rfc3987_syntax``: installed with Jupyter's
     ``jsonschema[format-nongpl]``, it builds some 35 Earley grammars when imported, for the
-    "iri" format alone — 2 of the 3.3 s the server takes to import (python-jsonschema/
-    jsonschema#1428). No Jupyter schema uses that format; without the module jsonschema
-    leaves it unchecked."""
+    "iri" and "iri-reference" formats alone — 2 of the 3.3 s the server takes to import
+    (python-jsonschema/jsonschema#1428). No Jupyter schema uses those formats; jsonschema
+    imports the module under ``suppress(ImportError)`` and, without it, leaves them
+    unchecked."""
     sys.modules.setdefault("rfc3987_syntax", None)  # type: ignore[arg-type]
 
 

@@ -415,17 +415,11 @@ def _a_matrix(lever_mm: np.ndarray, levelled: bool) -> np.ndarray:
     return a[..., [0, 1, 2, 5]] if levelled else a
 
 
-def _probe_errors(n_mats: np.ndarray, g: np.ndarray) -> np.ndarray:
+def _probe_errors(n_mats: np.ndarray, rows: np.ndarray) -> np.ndarray:
     """Largest per-axis RMS [mm] of the child's error at the probe points, for a stack of
-    invertible normal matrices (B, p, p) of its registration (the link alone); ``g``
-    (P, 3, p) the probes' design rows. Whether a matrix fixes the registration is for the
+    invertible normal matrices (B, p, p) of its registration (the link alone); ``rows``
+    (3P, p) the probes' design rows. Whether a matrix fixes the registration is for the
     caller to judge (:func:`_well_posed`)."""
-    rows = g.reshape(-1, g.shape[-1])  # (3P, p)
-    return _row_errors(n_mats, rows)
-
-
-def _row_errors(n_mats: np.ndarray, rows: np.ndarray) -> np.ndarray:
-    """:func:`_probe_errors` with the design rows flattened (3P, p)."""
     var = ((rows @ np.linalg.inv(n_mats)) * rows).sum(axis=-1)  # (B, 3P)
     return np.sqrt(var.max(axis=1))
 
@@ -477,22 +471,22 @@ def _choose_link_targets(
     a = _a_matrix((xyz[common] - child_xyz) * 1000.0, levelled)  # (C, 3, p)
     contrib = np.einsum("cip,ciq->cpq", a, a) / sigma2[:, None, None]
     g = _a_matrix((_probes(probes, child_xyz) - child_xyz) * 1000.0, levelled)
-    rows = g.reshape(-1, g.shape[-1])
-    reused = np.isin(common, list(placed)) if placed else np.zeros(len(common), dtype=bool)
+    rows = g.reshape(-1, g.shape[-1])  # (3P, p): the probes' design rows
+    reused = np.isin(common, list(placed))
     chosen = [] if must is None else [int(c) for c in np.flatnonzero(must[common])]
     chosen = chosen[: int(max_targets)]
     n_mat = contrib[chosen].sum(axis=0) if chosen else np.zeros(prior.shape)
     error = np.inf
     if chosen and scaled_condition(n_mat + prior) < MAX_CONDITION:
-        error = float(_probe_errors((n_mat + prior)[None], g)[0])
+        error = float(_probe_errors((n_mat + prior)[None], rows)[0])
     free = np.ones(len(common), dtype=bool)
     free[chosen] = False
     while len(chosen) < max_targets:
         left = np.flatnonzero(free)
         if not len(left) or (len(chosen) >= 3 and error <= goal_mm):
-            break  # (checked before the trials: met by three, no trial can go on)
+            break  # three chosen and the goal met: whatever a trial gave, the loop ends here
         mats = n_mat + contrib[left] + prior
-        trial = _row_errors(mats, rows)
+        trial = _probe_errors(mats, rows)
         order = np.argsort(trial, kind="stable")
         best = _well_posed(mats, order)
         new_error = np.inf if best is None else float(trial[best])
@@ -509,7 +503,7 @@ def _choose_link_targets(
         error = new_error
     if len(chosen) < 3 or scaled_condition(n_mat) > MAX_CONDITION:
         return [], np.inf
-    return [int(common[c]) for c in chosen], float(_probe_errors(n_mat[None], g)[0])
+    return [int(common[c]) for c in chosen], float(_probe_errors(n_mat[None], rows)[0])
 
 
 @dataclass(kw_only=True)
