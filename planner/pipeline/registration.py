@@ -214,7 +214,11 @@ class Sight:
 
 def sights(ctx: Context, tc: TargetCandidates, station_xy: np.ndarray) -> Sight:
     """Which targets each station can use (seen: line of sight, range; a flat target in
-    front of its wall within ``max_target_incidence_deg``; an inventory item big enough)."""
+    front of its wall within ``max_target_incidence_deg``; an inventory item big enough).
+
+    The range and incidence of every pair are computed :data:`SIGHT_CHUNK` stations at a
+    time, the lines of sight station by station (each against the edges within its reach),
+    and the spacing and sizes once for every pair seen."""
     sc, st = ctx.scanner, ctx.settings
     t, k = len(tc.xyz), len(station_xy)
     shape = (t, k)
@@ -232,46 +236,63 @@ def sights(ctx: Context, tc: TargetCandidates, station_xy: np.ndarray) -> Sight:
     largest["control"] = np.inf  # a control point is a mark that is there: no size to choose
     hi = st.instrument_height_m
     cos_max = np.cos(np.radians(st.max_target_incidence_deg))
-    is_flat = tc.type == "flat"
-    for j, sxy in enumerate(station_xy):
-        rel = sxy - tc.xyz[:, :2]
-        d = np.hypot(rel[:, 0], rel[:, 1])
-        s = np.hypot(d, tc.xyz[:, 2] - hi)
-        cdot = (rel * tc.normal).sum(axis=1)
-        cand = (s >= sc.min_range_m) & (s <= sc.max_range_m)
-        cand &= ~is_flat | (cdot > cos_max * s)
-        idx = np.flatnonzero(cand)
-        if not len(idx):
-            continue
-        reach = float(s[idx].max())
-        e = ctx.edges
-        near = edges_in_box(e, (sxy[0] - reach, sxy[1] - reach, sxy[0] + reach, sxy[1] + reach))
-        end = tc.xyz[idx, :2] + SIGHT_OFFSET_M * tc.normal[idx]
-        src = np.broadcast_to(sxy, (len(idx), 2))
-        zc = clear_height(src, hi, end, e[near], ctx.edge_heights[near])
-        lo = up = None
-        b_edges, bottoms, tops = ctx.bridges
-        if len(b_edges):
-            lo, up = bridge_interval(src, hi, end, b_edges, bottoms, tops)
-        idx = idx[visible(tc.xyz[idx, 2], zc, lo, up)]
-        sp = point_spacing_mm(s[idx], step_mm_at_10m=ctx.step_mm_at_10m)
-        ci = np.where(is_flat[idx], cdot[idx] / s[idx], 1.0)
-        slope[idx, j], cos_inc[idx, j], spacing[idx, j] = s[idx], ci, sp
-        for ty in ("flat", "sphere"):
-            sel = tc.type[idx] == ty
-            if sel.any():
-                n_, r_ = size_rules(
-                    ty,
-                    sp[sel],
-                    ci[sel],
-                    points_per_quadrant=st.min_points_per_quadrant,
-                    points_on_sphere=st.min_points_on_sphere,
-                )
-                need[idx[sel], j], rule[idx[sel], j] = n_, r_
-        ctl = tc.type[idx] == "control"
-        need[idx[ctl], j], rule[idx[ctl], j] = 0.0, "control point"
+    of_type = {ty: tc.type == ty for ty in ("flat", "sphere", "control")}
+    is_flat = of_type["flat"]
+    xy, z = tc.xyz[:, :2], tc.xyz[:, 2]
+    ends = xy + SIGHT_OFFSET_M * tc.normal  # where the sight lines end
+    e = ctx.edges
+    b_edges, bottoms, tops = ctx.bridges
+    none = np.zeros(0, dtype=np.int64)
+    seen_t, seen_j, seen_s, seen_cdot = [none], [none], [none.astype(float)], [none.astype(float)]
+    for c0 in range(0, k, SIGHT_CHUNK):
+        chunk = station_xy[c0 : c0 + SIGHT_CHUNK]
+        rel = chunk[:, None, :] - xy[None, :, :]  # (C, T, 2)
+        s_all = np.hypot(np.hypot(rel[..., 0], rel[..., 1]), z - hi)
+        cdot_all = (rel * tc.normal).sum(axis=-1)
+        cand_all = (s_all >= sc.min_range_m) & (s_all <= sc.max_range_m)
+        cand_all &= ~is_flat | (cdot_all > cos_max * s_all)
+        for n, sxy in enumerate(chunk):
+            idx = np.flatnonzero(cand_all[n])
+            if not len(idx):
+                continue
+            s = s_all[n, idx]
+            reach = float(s.max())
+            box = (sxy[0] - reach, sxy[1] - reach, sxy[0] + reach, sxy[1] + reach)
+            near = edges_in_box(e, box)
+            src = np.broadcast_to(sxy, (len(idx), 2))
+            zc = clear_height(src, hi, ends[idx], e[near], ctx.edge_heights[near])
+            lo = up = None
+            if len(b_edges):
+                lo, up = bridge_interval(src, hi, ends[idx], b_edges, bottoms, tops)
+            keep = visible(z[idx], zc, lo, up)
+            seen_t.append(idx[keep])
+            seen_j.append(np.full(int(keep.sum()), c0 + n))
+            seen_s.append(s[keep])
+            seen_cdot.append(cdot_all[n, idx[keep]])
+    tt, jj = np.concatenate(seen_t), np.concatenate(seen_j)
+    s, cdot = np.concatenate(seen_s), np.concatenate(seen_cdot)
+    sp = point_spacing_mm(s, step_mm_at_10m=ctx.step_mm_at_10m)
+    ci = np.where(is_flat[tt], cdot / s, 1.0)
+    slope[tt, jj], cos_inc[tt, jj], spacing[tt, jj] = s, ci, sp
+    for ty in ("flat", "sphere"):
+        sel = of_type[ty][tt]
+        if sel.any():
+            n_, r_ = size_rules(
+                ty,
+                sp[sel],
+                ci[sel],
+                points_per_quadrant=st.min_points_per_quadrant,
+                points_on_sphere=st.min_points_on_sphere,
+            )
+            need[tt[sel], jj[sel]], rule[tt[sel], jj[sel]] = n_, r_
+    ctl = of_type["control"][tt]
+    need[tt[ctl], jj[ctl]], rule[tt[ctl], jj[ctl]] = 0.0, "control point"
     big = np.array([largest[ty] for ty in tc.type])[:, None]
     return Sight(np.isfinite(need) & (need <= big), need, rule, slope, cos_inc, spacing)
+
+
+#: :func:`sights` computes ranges and incidences this many stations at a time.
+SIGHT_CHUNK = 64
 
 
 class SightCache:
