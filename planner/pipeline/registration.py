@@ -899,6 +899,7 @@ class _Layout:
         # plan: a link depends on its two stations and the child's facade points only
         self._memo = seen.memo_for(goal_mm)
         self._links: dict[tuple[int, int], tuple[list[int], float]] = {}
+        self._sigma2 = np.full((k, len(tc.xyz)), np.nan)  # σ² of :meth:`sigma`, as asked
         # the datum: the control network if any station sees three control points, else the
         # station from which the tree of registrations accumulates the least error
         # (Dijkstra on the links' variances; with 6 parameters, plus the datum's tilt at
@@ -957,6 +958,14 @@ class _Layout:
             size = _item_size(self.ctx, self.tc, t, float(self.sight.need_mm[t, j]))
             self._memo[key] = centre_rms(self.ctx, self.tc, self.sight, t, j, size)
         return self._memo[key]
+
+    def sigma2(self, j: int, targets: np.ndarray) -> np.ndarray:
+        """:meth:`sigma` squared for each of ``targets`` from station j (kept by station: a
+        station's targets are asked again by each of its links)."""
+        row = self._sigma2[j]
+        for t in targets[np.isnan(row[targets])]:
+            row[t] = self.sigma(j, int(t)) ** 2
+        return row[targets]
 
     def probe(self, j: int) -> np.ndarray:
         """The facade points station j serves (a linking station: its targets' spread)."""
@@ -1031,7 +1040,7 @@ class _Layout:
         if i == CONTROL:
             s2 = np.array([tc.control_rms_mm[t] ** 2 + self.sigma(j, t) ** 2 for t in common])
         else:
-            s2 = np.array([self.sigma(i, t) ** 2 + self.sigma(j, t) ** 2 for t in common])
+            s2 = self.sigma2(i, common) + self.sigma2(j, common)
         out: tuple[list[int], float] = ([], np.inf)
         free = np.ones(len(common), dtype=bool)
         while free.sum() >= 3:
