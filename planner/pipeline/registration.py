@@ -900,6 +900,7 @@ class _Layout:
         self._memo = seen.memo_for(goal_mm)
         self._links: dict[tuple[int, int], tuple[list[int], float]] = {}
         self._sigma2 = np.full((k, len(tc.xyz)), np.nan)  # σ² of :meth:`sigma`, as asked
+        self._judged_at: dict[int, np.ndarray] = {}  # of :meth:`probes_of`, as asked
         # the datum: the control network if any station sees three control points, else the
         # station from which the tree of registrations accumulates the least error
         # (Dijkstra on the links' variances; with 6 parameters, plus the datum's tilt at
@@ -977,6 +978,13 @@ class _Layout:
             pts = self.tc.xyz[seen]
         return pts
 
+    def probes_of(self, j: int) -> np.ndarray:
+        """The points a link's error at station j is judged at (:func:`_probes` of
+        :meth:`probe`), made once for the layout."""
+        if j not in self._judged_at:
+            self._judged_at[j] = _probes(self.probe(j), self.station_xyz[j])
+        return self._judged_at[j]
+
     def cloud(self, i: int, j: int) -> CloudLink | None:
         """The cloud-to-cloud registration of j to i, if their scans overlap enough and their
         common surfaces fix it (None otherwise)."""
@@ -1015,7 +1023,7 @@ class _Layout:
         points j serves, along any axis; inf where the covariance leaves a direction free."""
         if not np.isfinite(np.diag(cov)).all():
             return np.inf
-        pts = _probes(self.probe(j), self.station_xyz[j])
+        pts = self.probes_of(j)
         g = _a_matrix((pts - self.station_xyz[j]) * 1000.0, levelled=False)
         return float(np.sqrt(np.einsum("nij,jk,nik->ni", g, cov, g).max()))
 
@@ -1025,7 +1033,7 @@ class _Layout:
         key = (i, j)
         if placed is None and key in self._links:
             return self._links[key]
-        probe = _probes(self.probe(j), self.station_xyz[j])
+        probe = self.probes_of(j)
         shared = (self.stations[i] if i != CONTROL else CONTROL, self.stations[j], probe.tobytes())
         if placed is None and shared in self._memo:
             self._links[key] = self._memo[shared]
