@@ -542,10 +542,9 @@ def _eliminate_planes(n_mat, tilt_rhs, planes, station_xyz, tied, s_col, par, le
 MAX_CONDITION = 1e8
 
 
-def scaled_condition(n_mats: np.ndarray) -> np.ndarray | np.float64:
+def scaled_condition(n_mats: np.ndarray) -> np.ndarray:
     """Condition number of symmetric normal matrices (…, p, p) with their diagonal scaled to
-    one; inf where a diagonal element is not positive (a parameter nothing determines). A
-    scalar for one (p, p) matrix.
+    one; inf where a diagonal element is not positive (a parameter nothing determines).
 
     Examples
     --------
@@ -554,23 +553,14 @@ def scaled_condition(n_mats: np.ndarray) -> np.ndarray | np.float64:
     (1000000000.0, 1.0)
     """
     n_mats = np.asarray(n_mats, dtype=float)
-    # one matrix (the greedy target choice asks for thousands): the same arithmetic in
-    # fewer array calls
-    if n_mats.ndim == 2:
-        diag = n_mats.diagonal()
-        if not ((diag > 0).all() and np.isfinite(n_mats).all()):
-            return np.float64(np.inf)
-        d = 1.0 / np.sqrt(diag)
-        w = np.abs(np.linalg.eigvalsh(n_mats * d[:, None] * d[None, :]))
-        with np.errstate(divide="ignore"):
-            return w.max() / w.min()
     diag = np.diagonal(n_mats, axis1=-2, axis2=-1)
     fine = (diag > 0).all(axis=-1) & np.isfinite(n_mats).all(axis=(-2, -1))
-    d = 1.0 / np.sqrt(np.where(fine[..., None], diag, 1.0))
-    scaled = n_mats * d[..., :, None] * d[..., None, :]
-    eye = np.eye(diag.shape[-1])
-    scaled = np.where(fine[..., None, None], scaled, eye)
-    w = np.abs(np.linalg.eigvalsh(scaled))  # symmetric: the singular values, faster
+    if not fine.all():  # (the usual case, every matrix fine, needs no masking)
+        diag = np.where(fine[..., None], diag, 1.0)
+        n_mats = np.where(fine[..., None, None], n_mats, np.eye(diag.shape[-1]))
+    d = 1.0 / np.sqrt(diag)
+    # symmetric: its eigenvalues' magnitudes are the singular values, and faster
+    w = np.abs(np.linalg.eigvalsh(n_mats * d[..., :, None] * d[..., None, :]))
     with np.errstate(divide="ignore"):
         return np.where(fine, w.max(axis=-1) / w.min(axis=-1), np.inf)
 
