@@ -57,6 +57,19 @@ def _need_browser():
     return pytest.importorskip("playwright.sync_api")
 
 
+#: The log (Voilà's and its kernels' output) of each server running, by its URL.
+LOGS: dict = {}
+
+
+def _log_tail(page, n: int = 3000) -> str:
+    """The end of the log of the server that serves ``page``."""
+    log = next((log for url, log in LOGS.items() if page.url.startswith(url)), None)
+    if log is None:
+        return "(no log)"
+    log.seek(0)
+    return log.read().decode(errors="replace")[-n:]
+
+
 def _serve(notebook: str, **env_extra: str):
     """Serve one shipped dashboard as ``planner serve --notebook`` does; yield its URL once
     its pre-started kernel has run the dashboard (as ``planner serve`` says "ready")."""
@@ -81,8 +94,10 @@ def _serve(notebook: str, **env_extra: str):
     else:
         _stop(proc, grace_s=0.0)
         pytest.fail("voila did not answer within 90 s")
+    LOGS[url] = log
     yield url
     _stop(proc, grace_s=0.0)  # its kernels too, at once (stopping cleanly: test_serve)
+    del LOGS[url]
     log.close()
 
 
@@ -134,16 +149,24 @@ def page(browser, dashboard_url):
 
 
 def _plan_and_wait(page) -> None:
-    """Press Plan and wait until the plan of the inputs on screen is shown."""
+    """Press Plan and wait until the plan of the inputs on screen is shown; if it is not,
+    the failure says what the page showed and what the server (and the kernel) logged."""
     status = page.locator(".planner-status")
+    error = page.locator(".planner-toolbar .planner-error")
     old = status.inner_text()
     page.get_by_role("button", name="Plan", exact=True).click()
-    page.wait_for_function(
-        "(old) => { const t = document.querySelector('.planner-status').innerText;"
-        " return t !== old && t.includes('planning: done'); }",
-        arg=old,
-        timeout=120_000,
-    )
+    try:
+        page.wait_for_function(
+            "(old) => { const t = document.querySelector('.planner-status').innerText;"
+            " return (t !== old && t.includes('planning: done'))"
+            " || document.querySelector('.planner-toolbar .planner-error') !== null; }",
+            arg=old,
+            timeout=120_000,
+        )
+    except Exception as exc:  # playwright's TimeoutError
+        page.screenshot(path=str(ARTIFACTS / "dashboard-plan-timeout.png"), full_page=True)
+        pytest.fail(f"{exc}\nstatus line: {status.inner_text()!r}\nserver log:\n{_log_tail(page)}")
+    assert error.count() == 0, f"{error.first.inner_text()}\nserver log:\n{_log_tail(page)}"
 
 
 @pytest.mark.parametrize("width", [1280, 1920])

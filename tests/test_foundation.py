@@ -538,3 +538,41 @@ def test_an_upload_that_cannot_be_planned_is_drawn_with_its_problems_marked():
     _upload(ui, "broken.geojson", b"{ not json")
     assert m._pick_ids == [] and "cannot be drawn" in m.status.value
     assert list(m.building_labels.text) == []  # nothing of the previous drawing left
+
+
+def test_the_status_line_ends_on_the_runs_last_line():
+    """The elapsed-time tick never reaches the page after a background run's last line: the
+    kernel sends each thread's widget updates in the order they are made, and a tick being
+    sent as the run ended stayed on screen as "planning… N s" over a finished run (a
+    browser test waited for "done" in vain). Here each tick's send takes 0.6 s, and the run
+    ends (refused, 1.4 s in) while the second tick is being sent."""
+    import threading
+    import time
+
+    from planner.app.dashboard import StationPlanner
+    from planner.errors import PlannerError
+
+    ui = StationPlanner()
+    sent: list[str] = []
+    send = ui.status.send_state
+
+    def slow_send(key=None):
+        text = ui.status.value
+        if "planning…" in text:
+            time.sleep(0.6)
+        sent.append(text)
+        send(key)
+
+    ui.status.send_state = slow_send
+
+    def refused(_progress):
+        time.sleep(1.4)
+        raise PlannerError("refused on purpose")
+
+    ui.start(refused).join(10)
+    time.sleep(1.0)  # a tick left running would have written by now
+    assert sum("planning…" in t for t in sent) >= 2  # the ticks were being sent
+    assert sent[-1] == "" and "refused on purpose" in ui.error.value
+    assert not any(t.name == "planner" for t in threading.enumerate())
+    ui.cancel()  # after the run: its last line stays
+    assert ui.status.value == "" and sent[-1] == ""

@@ -578,6 +578,9 @@ class StationPlanner:
         self._cancel = threading.Event()
         self._changed = False
         self._worker: threading.Thread | None = None
+        self._status_lock = threading.Lock()  # the status line: one writer at a time
+        self._ended = threading.Event()  # the background run's end (none yet: ended)
+        self._ended.set()
         self.last_edit_s: float | None = None
         self._tmp = upload_folder()
         # links: thin callbacks
@@ -913,14 +916,18 @@ class StationPlanner:
         self.progress.value = fraction
         self._step = message
 
-    def _tick(self, label: str, t0: float) -> None:
-        """Elapsed time and the current step, twice a second while the work runs."""
-        while self._worker is not None and self._worker.is_alive():
-            self.status.value = (
-                f"<i>{html.escape(label)}… {time.perf_counter() - t0:.0f} s — "
-                f"{html.escape(self._step)}</i>"
-            )
-            time.sleep(0.5)
+    def _tick(self, label: str, t0: float, ended: threading.Event) -> None:
+        """Elapsed time and the current step, twice a second until the run ``ended``."""
+        while True:
+            with self._status_lock:
+                if ended.is_set():
+                    return
+                self.status.value = (
+                    f"<i>{html.escape(label)}… {time.perf_counter() - t0:.0f} s — "
+                    f"{html.escape(self._step)}</i>"
+                )
+            if ended.wait(0.5):
+                return
 
     def _begin(self) -> float:
         self._cancel.clear()
@@ -933,34 +940,32 @@ class StationPlanner:
         self.cancel_button.disabled = False
         return time.perf_counter()
 
-    def _work(self, make, label: str, fresh: bool = True) -> None:
+    def _work(self, make, label: str, fresh: bool = True) -> str:
         """Run ``make(progress) -> Plan`` and show the result, an error (which replaces the
-        plan on screen) or the cancellation (which leaves the previous plan as it was)."""
+        plan on screen) or the cancellation (which leaves the previous plan as it was);
+        returns the status line that ends the run."""
         t0 = time.perf_counter()
         try:
             p = make(self._progress)
         except _Cancelled:
-            self.status.value = (
+            return (
                 f"<i>cancelled after {time.perf_counter() - t0:.1f} s; the plan on screen "
                 "is the previous one</i>"
             )
-            return
         except (PlannerError, ValueError) as exc:
             self._clear_results()
             self.error.value = error_html(str(exc))
-            self.status.value = ""
-            return
+            return ""
         except Exception as exc:  # never a dead widget: say what happened
             self._clear_results()
             self.error.value = error_html(f"unexpected {type(exc).__name__}: {exc}")
-            self.status.value = ""
             traceback.print_exc()
-            return
+            return ""
         self.plan = p
         self._show_results(fresh=fresh)
         if self._changed:
             self._show_stale()
-        self.status.value = f"<i>{html.escape(label)}: done in {time.perf_counter() - t0:.1f} s</i>"
+        return f"<i>{html.escape(label)}: done in {time.perf_counter() - t0:.1f} s</i>"
 
     def _planner(self):
         """The work of Plan for the inputs on screen (read now, so that edits made while it
@@ -981,7 +986,7 @@ class StationPlanner:
         first plan; the Plan button works in the background: :meth:`start`)."""
         self._begin()
         try:
-            self._work(self._planner(), "planned")
+            self.status.value = self._work(self._planner(), "planned")
         finally:
             self._end()
 
@@ -992,28 +997,40 @@ class StationPlanner:
 
     def start(self, make=None, label: str = "planning", fresh: bool = True) -> threading.Thread:
         """Plan in the background (the kernel stays free for Cancel), the elapsed time and
-        the current step shown twice a second."""
+        the current step shown twice a second.
+
+        The status line is written under one lock, and the run's last line ends the ticking
+        first: the kernel sends each thread's widget updates in the order they are made, so
+        a tick written while the last line was being written could otherwise arrive after it
+        and stay on screen as "planning… N s" over a finished plan."""
         if self._worker is not None and self._worker.is_alive():
             return self._worker
         make = make or self._planner()
         t0 = self._begin()
+        ended = self._ended = threading.Event()
 
         def work():
+            last = ""
             try:
-                self._work(make, label, fresh)
+                last = self._work(make, label, fresh)
             finally:
+                with self._status_lock:
+                    ended.set()
+                    self.status.value = last
                 self._worker = None
                 self._end()
 
         self._worker = threading.Thread(target=work, daemon=True, name="planner")
         self._worker.start()
-        threading.Thread(target=self._tick, args=(label, t0), daemon=True).start()
+        threading.Thread(target=self._tick, args=(label, t0, ended), daemon=True).start()
         return self._worker
 
     def cancel(self) -> None:
         """Stop the work at the next step it reports."""
         self._cancel.set()
-        self.status.value = "<i>cancelling…</i>"
+        with self._status_lock:
+            if not self._ended.is_set():  # (a run that has ended keeps its last line)
+                self.status.value = "<i>cancelling…</i>"
 
     def evaluate_by_hand(self, xy, ids=None) -> None:
         """The plan with the stations at ``xy`` (the map's edit; ``ids`` the station
