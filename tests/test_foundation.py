@@ -576,3 +576,36 @@ def test_the_status_line_ends_on_the_runs_last_line():
     assert not any(t.name == "planner" for t in threading.enumerate())
     ui.cancel()  # after the run: its last line stays
     assert ui.status.value == "" and sent[-1] == ""
+
+
+def test_an_input_changed_while_a_plan_is_made_marks_it_out_of_date():
+    """An input changed while a background run works (its inputs were read at the start)
+    marks what it leaves on screen out of date: the plan it made, or the previous plan
+    when it is cancelled; a run with no change leaves no mark."""
+    import time
+
+    from planner.app.dashboard import StationPlanner
+
+    ui = StationPlanner()
+    ui.run()
+    base = ui.plan
+
+    def made(progress):
+        time.sleep(0.5)
+        progress(0.5, "halfway")  # where Cancel takes effect
+        return base
+
+    ui.start(made).join(10)
+    assert ui.stale.value == ""
+    worker = ui.start(made)
+    ui.max_x.value = 4.5  # [mm]
+    worker.join(10)
+    assert "Out of date" in ui.stale.value and "done" in ui.status.value
+    ui.start(made).join(10)  # made again from the inputs on screen
+    assert ui.stale.value == ""
+    worker = ui.start(made)
+    ui.max_y.value = 4.5  # [mm]
+    ui.cancel()
+    worker.join(10)
+    assert "cancelled" in ui.status.value and ui.plan is not None
+    assert "Out of date" in ui.stale.value

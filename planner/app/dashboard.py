@@ -602,9 +602,10 @@ class StationPlanner:
     def _mark_stale(self) -> None:
         """The inputs changed since the plan on screen: say so and dim it (Plan makes it
         current again)."""
-        if self._worker is not None:  # the plan being made read the inputs before this change
-            self._changed = True
-            return
+        with self._status_lock:  # (the run's end takes the lock: no change is lost)
+            if not self._ended.is_set():  # the plan being made read the inputs before this
+                self._changed = True
+                return
         if self.plan is None:
             return
         self._show_stale()
@@ -963,8 +964,6 @@ class StationPlanner:
             return ""
         self.plan = p
         self._show_results(fresh=fresh)
-        if self._changed:
-            self._show_stale()
         return f"<i>{html.escape(label)}: done in {time.perf_counter() - t0:.1f} s</i>"
 
     def _planner(self):
@@ -1017,6 +1016,8 @@ class StationPlanner:
                 with self._status_lock:
                     ended.set()
                     self.status.value = last
+                    if self._changed and self.plan is not None:  # edited while it ran
+                        self._show_stale()
                 self._worker = None
                 self._end()
 
