@@ -13,6 +13,7 @@ from planner.pipeline.visibility import (
     STAND_RADIUS_M,
     bridge_interval,
     clear_height,
+    edges_in_box,
     stand_blocks,
     visible,
 )
@@ -51,6 +52,34 @@ def test_clear_height_matches_shapely_on_random_walls(seed):
     assert 30 < blocked.sum() < n_lines  # the random walls block some lines, not all
     np.testing.assert_array_equal(np.isfinite(got), blocked)
     np.testing.assert_allclose(got[blocked], want[blocked], rtol=0, atol=1e-6)  # m
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_grouped_lines_see_exactly_the_edges_in_their_box(seed):
+    """Lines in groups (many scanner positions in one call), each group seen past the edges
+    :func:`edges_in_box` selects for its box: the same heights, to the bit, as one call per
+    group with those edges; and a box that holds no edge sees nothing."""
+    rng = np.random.default_rng(seed)
+    n_groups, per, n_edges = 6, 40, 80
+    start = rng.uniform(0, 100, (n_edges, 2))
+    edges = np.column_stack([start, start + rng.uniform(-15, 15, (n_edges, 2))])
+    heights = rng.uniform(3.0, 30.0, n_edges)
+    centre = rng.uniform(20, 80, (n_groups, 2))
+    src = np.repeat(centre, per, axis=0)
+    dst = src + rng.uniform(-30, 30, (n_groups * per, 2))
+    zs = rng.uniform(1.0, 2.0, n_groups * per)
+    half = rng.uniform(5, 40, n_groups)
+    boxes = np.column_stack([centre - half[:, None], centre + half[:, None]])
+    boxes[0] = [500.0, 500.0, 510.0, 510.0]  # far from every edge
+    starts = np.arange(n_groups + 1) * per
+    got = clear_height(src, zs, dst, edges, heights, groups=(starts, boxes))
+    for g in range(n_groups):
+        lines = slice(starts[g], starts[g + 1])
+        near = edges_in_box(edges, tuple(boxes[g]))
+        want = clear_height(src[lines], zs[lines], dst[lines], edges[near], heights[near])
+        np.testing.assert_array_equal(got[lines], want)
+    assert np.all(got[:per] == -np.inf)
+    assert np.isfinite(got).sum() > 20  # the walls block some lines
 
 
 def test_clear_height_ignores_walls_the_line_only_touches_or_runs_along():

@@ -52,7 +52,6 @@ from planner.pipeline.facades import (
 from planner.pipeline.visibility import (
     bridge_interval,
     clear_height,
-    edges_in_box,
     stand_blocks,
     visible,
 )
@@ -216,9 +215,9 @@ def sights(ctx: Context, tc: TargetCandidates, station_xy: np.ndarray) -> Sight:
     """Which targets each station can use (seen: line of sight, range; a flat target in
     front of its wall within ``max_target_incidence_deg``; an inventory item big enough).
 
-    The range and incidence of every pair are computed :data:`SIGHT_CHUNK` stations at a
-    time, the lines of sight station by station (each against the edges within its reach),
-    and the spacing and sizes once for every pair seen."""
+    The ranges, incidences and lines of sight are computed :data:`SIGHT_CHUNK` stations at
+    a time (each station's lines against the edges within its reach), and the spacing and
+    sizes once for every pair seen."""
     sc, st = ctx.scanner, ctx.settings
     t, k = len(tc.xyz), len(station_xy)
     shape = (t, k)
@@ -251,24 +250,24 @@ def sights(ctx: Context, tc: TargetCandidates, station_xy: np.ndarray) -> Sight:
         cdot_all = (rel * tc.normal).sum(axis=-1)
         cand_all = (s_all >= sc.min_range_m) & (s_all <= sc.max_range_m)
         cand_all &= ~is_flat | (cdot_all > cos_max * s_all)
-        for n, sxy in enumerate(chunk):
-            idx = np.flatnonzero(cand_all[n])
-            if not len(idx):
-                continue
-            s = s_all[n, idx]
-            reach = float(s.max())
-            box = (sxy[0] - reach, sxy[1] - reach, sxy[0] + reach, sxy[1] + reach)
-            near = edges_in_box(e, box)
-            src = np.broadcast_to(sxy, (len(idx), 2))
-            zc = clear_height(src, hi, ends[idx], e[near], ctx.edge_heights[near])
-            lo = up = None
-            if len(b_edges):
-                lo, up = bridge_interval(src, hi, ends[idx], b_edges, bottoms, tops)
-            keep = visible(z[idx], zc, lo, up)
-            seen_t.append(idx[keep])
-            seen_j.append(np.full(int(keep.sum()), c0 + n))
-            seen_s.append(s[keep])
-            seen_cdot.append(cdot_all[n, idx[keep]])
+        at, idx = np.nonzero(cand_all)  # the sight lines, station by station
+        if not len(idx):
+            continue
+        s = s_all[at, idx]
+        # each station's lines against the edges within its farthest line's reach
+        reach = np.where(cand_all, s_all, -np.inf).max(axis=1)
+        boxes = np.column_stack([chunk - reach[:, None], chunk + reach[:, None]])
+        starts = np.searchsorted(at, np.arange(len(chunk) + 1))
+        src = chunk[at]
+        zc = clear_height(src, hi, ends[idx], e, ctx.edge_heights, groups=(starts, boxes))
+        lo = up = None
+        if len(b_edges):
+            lo, up = bridge_interval(src, hi, ends[idx], b_edges, bottoms, tops)
+        keep = visible(z[idx], zc, lo, up)
+        seen_t.append(idx[keep])
+        seen_j.append(c0 + at[keep])
+        seen_s.append(s[keep])
+        seen_cdot.append(cdot_all[at[keep], idx[keep]])
     tt, jj = np.concatenate(seen_t), np.concatenate(seen_j)
     s, cdot = np.concatenate(seen_s), np.concatenate(seen_cdot)
     sp = point_spacing_mm(s, step_mm_at_10m=ctx.step_mm_at_10m)
@@ -1052,18 +1051,7 @@ class _Layout:
         out: tuple[list[int], float] = ([], np.inf)
         free = np.ones(len(common), dtype=bool)
         while free.sum() >= 3:
-            out = _choose_link_targets(
-                common[free],
-                tc.xyz,
-                s2[free],
-                self.station_xyz[j],
-                probe,
-                placed or set(),
-                self.ctx.scanner.is_levelled,
-                self.ctx.settings.max_targets_per_link,
-                self.goal_mm,
-                self.by_hand,
-            )
+            out = self._choose(i, j, common[free], s2[free], probe, placed or set())
             hiding = stands.among((i, j), out[0]) if stands is not None else []
             if not hiding:  # no sphere of the choice hides another of it
                 break
@@ -1072,6 +1060,43 @@ class _Layout:
         if placed is None:
             self._links[key] = self._memo[shared] = out
         return out
+
+    def _choose(
+        self,
+        i: int,
+        j: int,
+        common: np.ndarray,
+        s2: np.ndarray,
+        probe: np.ndarray,
+        placed: set[int],
+    ) -> tuple[list[int], float]:
+        """:func:`_choose_link_targets` for the link of j to i over ``common`` (``s2`` their
+        variances), kept for the plan's layouts: the choice depends on the two stations, the
+        targets offered, which of them are placed and the points it is judged at only (the
+        rest is the memo's key: :meth:`SightCache.memo_for`)."""
+        key = (
+            "choose",
+            self.stations[i] if i != CONTROL else CONTROL,
+            self.stations[j],
+            probe.tobytes(),
+            common.tobytes(),
+            np.isin(common, list(placed)).tobytes(),
+        )
+        if key not in self._memo:
+            self._memo[key] = _choose_link_targets(
+                common,
+                self.tc.xyz,
+                s2,
+                self.station_xyz[j],
+                probe,
+                placed,
+                self.ctx.scanner.is_levelled,
+                self.ctx.settings.max_targets_per_link,
+                self.goal_mm,
+                self.by_hand,
+            )
+        targets, error = self._memo[key]
+        return list(targets), error
 
     def weak_groups(self, weak_mm: float) -> np.ndarray:
         """Groups of stations joined by links whose own error is at most ``weak_mm``."""

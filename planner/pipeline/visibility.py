@@ -75,6 +75,7 @@ def clear_height(
     edges: np.ndarray,
     heights: np.ndarray,
     clearance_m: float = SIGHT_CLEARANCE_M,
+    groups: tuple[np.ndarray, np.ndarray] | None = None,
 ) -> np.ndarray:
     """Lowest height [m] above ``dst_xy`` visible from each source; ``-inf`` if unobstructed.
 
@@ -91,11 +92,21 @@ def clear_height(
     clearance_m : float
         How far the line must pass from every edge, corner and roof edge [m] (the module's
         text; 0: the exact geometry).
+    groups : (starts, boxes), optional
+        The lines in G groups, group g being lines ``starts[g]:starts[g + 1]`` ((G + 1,)
+        ints), each seen past only the edges whose bounding box overlaps its box
+        ``boxes[g]`` = (xmin, ymin, xmax, ymax) ((G, 4); :func:`edges_in_box`): the lines of
+        many scanner positions in one call, each position's edges within its reach. None:
+        one group, every edge.
     """
     p = len(src_xy)
     out = np.full(p, -np.inf)
     if p == 0 or len(edges) == 0:
         return out
+    if groups is None:
+        starts, boxes = np.array([0, p]), np.array([[-np.inf, -np.inf, np.inf, np.inf]])
+    else:
+        starts, boxes = groups
     _clear_height_kernel(
         np.ascontiguousarray(src_xy, dtype=np.float64),
         np.ascontiguousarray(np.broadcast_to(np.asarray(src_z, dtype=np.float64), (p,))),
@@ -103,15 +114,18 @@ def clear_height(
         np.ascontiguousarray(edges, dtype=np.float64),
         np.ascontiguousarray(heights, dtype=np.float64),
         float(clearance_m),
+        np.ascontiguousarray(starts, dtype=np.int64),
+        np.ascontiguousarray(boxes, dtype=np.float64),
         out,
     )
     return out
 
 
 @njit(cache=True, nogil=True)
-def _clear_height_kernel(src, zs, dst, edges, heights, pad, out):  # pragma: no cover
+def _clear_height_kernel(src, zs, dst, edges, heights, pad, starts, boxes, out):  # pragma: no cover
     """Every (sight line, edge) pair whose boxes overlap, compiled (:func:`_crossing`),
-    each edge lengthened and raised by ``pad``; ``out`` holds ``-inf`` on entry."""
+    each edge lengthened and raised by ``pad``, a group's lines against the edges
+    overlapping its box only; ``out`` holds ``-inf`` on entry."""
     m = edges.shape[0]
     lo_x, hi_x = np.empty(m), np.empty(m)
     lo_y, hi_y = np.empty(m), np.empty(m)
@@ -121,17 +135,30 @@ def _clear_height_kernel(src, zs, dst, edges, heights, pad, out):  # pragma: no 
         hi_x[e] = max(edges[e, 0], edges[e, 2]) + pad
         lo_y[e] = min(edges[e, 1], edges[e, 3]) - pad
         hi_y[e] = max(edges[e, 1], edges[e, 3]) + pad
-    for i in range(src.shape[0]):
-        sx, sy, z0 = src[i, 0], src[i, 1], zs[i]
-        rx, ry = dst[i, 0] - sx, dst[i, 1] - sy
-        x_lo, x_hi = min(sx, dst[i, 0]), max(sx, dst[i, 0])
-        y_lo, y_hi = min(sy, dst[i, 1]), max(sy, dst[i, 1])
+    near = np.empty(m, dtype=np.int64)
+    for g in range(boxes.shape[0]):
+        n_near = 0  # the edges in the group's box, as edges_in_box selects them
         for e in range(m):
-            if hi_x[e] < x_lo or lo_x[e] > x_hi or hi_y[e] < y_lo or lo_y[e] > y_hi:
-                continue
-            t = _crossing(sx, sy, rx, ry, edges[e], reach[e])
-            if t > 0.0:
-                out[i] = max(out[i], z0 + (heights[e] + pad - z0) / t)
+            if (
+                max(edges[e, 0], edges[e, 2]) >= boxes[g, 0]
+                and min(edges[e, 0], edges[e, 2]) <= boxes[g, 2]
+                and max(edges[e, 1], edges[e, 3]) >= boxes[g, 1]
+                and min(edges[e, 1], edges[e, 3]) <= boxes[g, 3]
+            ):
+                near[n_near] = e
+                n_near += 1
+        for i in range(starts[g], starts[g + 1]):
+            sx, sy, z0 = src[i, 0], src[i, 1], zs[i]
+            rx, ry = dst[i, 0] - sx, dst[i, 1] - sy
+            x_lo, x_hi = min(sx, dst[i, 0]), max(sx, dst[i, 0])
+            y_lo, y_hi = min(sy, dst[i, 1]), max(sy, dst[i, 1])
+            for q in range(n_near):
+                e = near[q]
+                if hi_x[e] < x_lo or lo_x[e] > x_hi or hi_y[e] < y_lo or lo_y[e] > y_hi:
+                    continue
+                t = _crossing(sx, sy, rx, ry, edges[e], reach[e])
+                if t > 0.0:
+                    out[i] = max(out[i], z0 + (heights[e] + pad - z0) / t)
 
 
 @njit(cache=True, nogil=True)
