@@ -338,3 +338,27 @@ def test_a_datum_station_in_the_middle_keeps_the_block_s_heights(block_plan, mon
     met, met_without = int(p.scanned["meets"].sum()), int(without.scanned["meets"].sum())
     assert met >= met_without + 30 and len(p.stations) <= len(without.stations)
     assert met / len(p.scanned) > 0.97
+
+
+def test_a_search_over_many_candidates_keeps_one_bit_per_pair(default_plan):
+    """The search for linking stations asks which targets hundreds or thousands of
+    candidates can use: the answer is the full sights' usable field to the bit, for the
+    candidates kept as stations and the others alike, a barred target used by none; of the
+    others only that field is kept (town(30), default settings: peak memory 711 -> 440 MB)."""
+    from planner.pipeline.registration import sights
+
+    seen = default_plan.workbench.seen
+    mine = seen.fork(list(seen.column))  # (the session's plan keeps its own cache)
+    kept = list(mine.column)
+    step = max(1, len(mine.cand_xy) // 300)
+    others = [i for i in range(0, len(mine.cand_xy), step) if i not in mine.column]
+    idx = kept[:3] + others + kept[3:]
+    full = sights(mine.ctx, mine.tc, mine.cand_xy[idx]).usable
+    t = int(np.flatnonzero(full[:, 3 : 3 + len(others)].any(axis=1))[0])
+    mine.barred[t] = True
+    got = mine.usable(idx)
+    assert set(mine.column) == set(kept)  # no sights kept of the others
+    assert len(others) > 100 and got[:, 3 : 3 + len(others)].sum() > 100
+    full[t] = False
+    np.testing.assert_array_equal(got, full)
+    np.testing.assert_array_equal(mine.usable(idx), got)  # asked again: from what was kept

@@ -311,6 +311,11 @@ class SightCache:
         #: (for one goal and state of the targets: see :meth:`memo_for`)
         self._memo_key: tuple | None = None
         self._memo: dict = {}
+        #: which targets the candidates searched for linking stations can use, by candidate
+        #: (:meth:`usable`: the one field such a search needs, a bit per pair, not six
+        #: arrays of the candidates' sights)
+        self._searched: dict[int, int] = {}
+        self._searched_usable = np.zeros((len(tc.xyz), 0), dtype=bool)
 
     def memo_for(self, goal_mm: float) -> dict:
         """The table of link choices and centre RMS valid for ``goal_mm`` and the targets as
@@ -357,6 +362,7 @@ class SightCache:
             )
         self.barred = np.concatenate([self.barred, np.zeros(len(more.xyz), dtype=bool)])
         self.by_hand = np.concatenate([self.by_hand, np.ones(len(more.xyz), dtype=bool)])
+        self._searched, self._searched_usable = {}, np.zeros((len(self.tc.xyz), 0), dtype=bool)
         return np.arange(first, len(self.tc.xyz))
 
     def __call__(self, idx: Sequence[int] | np.ndarray) -> Sight:
@@ -370,11 +376,26 @@ class SightCache:
 
     def usable(self, idx: Sequence[int] | np.ndarray) -> np.ndarray:
         """(T, len(idx)) which targets candidates ``idx`` can use: the one field of
-        :meth:`__call__` a search over many candidates needs, without copying the rest."""
-        cols = self._columns(idx)
-        if self.sight is None:
-            return np.zeros((len(self.tc.xyz), 0), dtype=bool)
-        out = self.sight.usable[:, cols]
+        :meth:`__call__` a search over many candidates needs. Candidates whose sights are
+        not kept are computed and only this field is kept of them."""
+        idx = [int(i) for i in idx]
+        new = [i for i in dict.fromkeys(idx) if i not in self.column and i not in self._searched]
+        if new:
+            fresh = sights(self.ctx, self.tc, self.cand_xy[new]).usable
+            base = len(self._searched)
+            if base + len(new) > self._searched_usable.shape[1]:  # room to spare: copied a
+                grown = np.zeros((len(fresh), max(base + len(new), 2 * base)), dtype=bool)
+                grown[:, :base] = self._searched_usable[:, :base]  # logarithmic number of times
+                self._searched_usable = grown
+            self._searched_usable[:, base : base + len(new)] = fresh
+            self._searched.update({i: base + n for n, i in enumerate(new)})
+        out = np.empty((len(self.tc.xyz), len(idx)), dtype=bool)
+        kept = np.array([i in self.column for i in idx], dtype=bool)
+        if kept.any():
+            out[:, kept] = self.sight.usable[:, [self.column[i] for i in np.array(idx)[kept]]]
+        if not kept.all():
+            searched = [self._searched[i] for i in np.array(idx)[~kept]]
+            out[:, ~kept] = self._searched_usable[:, searched]
         out[self.barred] = False
         return out
 
