@@ -66,8 +66,8 @@ def _log_tail(page, n: int = 3000) -> str:
     log = next((log for url, log in LOGS.items() if page.url.startswith(url)), None)
     if log is None:
         return "(no log)"
-    log.seek(0)
-    return log.read().decode(errors="replace")[-n:]
+    size = os.fstat(log.fileno()).st_size  # read where the server is not writing: pread
+    return os.pread(log.fileno(), n, max(0, size - n)).decode(errors="replace")
 
 
 def _serve(notebook: str, **env_extra: str):
@@ -154,6 +154,7 @@ def _plan_and_wait(page) -> None:
     status = page.locator(".planner-status")
     error = page.locator(".planner-toolbar .planner-error")
     old = status.inner_text()
+    assert error.count() == 0, f"an error on the page before Plan: {error.first.inner_text()}"
     page.get_by_role("button", name="Plan", exact=True).click()
     try:
         page.wait_for_function(

@@ -918,13 +918,15 @@ class StationPlanner:
         self._step = message
 
     def _tick(self, label: str, t0: float, ended: threading.Event) -> None:
-        """Elapsed time and the current step, twice a second until the run ``ended``."""
+        """Elapsed time and the current step, twice a second until the run ``ended``
+        (after Cancel: that it is being cancelled, until the step it is in ends)."""
         while True:
             with self._status_lock:
                 if ended.is_set():
                     return
+                doing = "cancelling" if self._cancel.is_set() else label
                 self.status.value = (
-                    f"<i>{html.escape(label)}… {time.perf_counter() - t0:.0f} s — "
+                    f"<i>{html.escape(doing)}… {time.perf_counter() - t0:.0f} s — "
                     f"{html.escape(self._step)}</i>"
                 )
             if ended.wait(0.5):
@@ -1013,13 +1015,15 @@ class StationPlanner:
             try:
                 last = self._work(make, label, fresh)
             finally:
-                with self._status_lock:
-                    ended.set()
-                    self.status.value = last
-                    if self._changed and self.plan is not None:  # edited while it ran
-                        self._show_stale()
-                self._worker = None
-                self._end()
+                try:
+                    with self._status_lock:
+                        ended.set()
+                        self.status.value = last
+                        if self._changed and self.plan is not None:  # edited while it ran
+                            self._show_stale()
+                finally:
+                    self._worker = None
+                    self._end()
 
         self._worker = threading.Thread(target=work, daemon=True, name="planner")
         self._worker.start()

@@ -391,11 +391,11 @@ class SightCache:
             self._searched.update({i: base + n for n, i in enumerate(new)})
         out = np.empty((len(self.tc.xyz), len(idx)), dtype=bool)
         kept = np.array([i in self.column for i in idx], dtype=bool)
+        at = np.array(idx, dtype=np.int64)
         if kept.any():
-            out[:, kept] = self.sight.usable[:, [self.column[i] for i in np.array(idx)[kept]]]
+            out[:, kept] = self.sight.usable[:, [self.column[i] for i in at[kept]]]
         if not kept.all():
-            searched = [self._searched[i] for i in np.array(idx)[~kept]]
-            out[:, ~kept] = self._searched_usable[:, searched]
+            out[:, ~kept] = self._searched_usable[:, [self._searched[i] for i in at[~kept]]]
         out[self.barred] = False
         return out
 

@@ -107,6 +107,11 @@ def clear_height(
         starts, boxes = np.array([0, p]), np.array([[-np.inf, -np.inf, np.inf, np.inf]])
     else:
         starts, boxes = groups
+        if len(starts) != len(boxes) + 1 or starts[0] != 0 or starts[-1] != p:
+            raise ValueError(
+                f"groups: {len(boxes)} boxes need {len(boxes) + 1} starts from 0 to the "
+                f"{p} lines; got {len(starts)} from {starts[0]} to {starts[-1]}"
+            )
     _clear_height_kernel(
         np.ascontiguousarray(src_xy, dtype=np.float64),
         np.ascontiguousarray(np.broadcast_to(np.asarray(src_z, dtype=np.float64), (p,))),
@@ -137,6 +142,8 @@ def _clear_height_kernel(src, zs, dst, edges, heights, pad, starts, boxes, out):
         hi_y[e] = max(edges[e, 1], edges[e, 3]) + pad
     near = np.empty(m, dtype=np.int64)
     for g in range(boxes.shape[0]):
+        if starts[g] == starts[g + 1]:
+            continue  # no lines
         n_near = 0  # the edges in the group's box, as edges_in_box selects them
         for e in range(m):
             if (
