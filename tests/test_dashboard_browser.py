@@ -645,7 +645,7 @@ def test_stricter_plan_then_bad_upload(page, tmp_path):
     count = page.locator(".station-count")
     first = FIRST[0]
     assert first.endswith("stations")
-    # a stricter requirement needs more stations (4 mm: 13 stations, 2 samples unmet in
+    # a stricter requirement needs more stations (4 mm: 19 stations, 2 samples unmet in
     # 4 s; 3 mm would take 40 s to plan 184 stations)
     _set_number(page, "largest m_x [mm]", "4")
     _set_number(page, "largest m_y [mm]", "4")
