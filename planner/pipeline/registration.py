@@ -187,16 +187,7 @@ class Sight:
         a time is copied a logarithmic number of times, not at every batch."""
         need = used + other.usable.shape[1]
         fields = Sight.__dataclass_fields__
-        out = self
-        if need > self.usable.shape[1]:
-            cap = max(need, 2 * self.usable.shape[1])
-            grown = []
-            for f in fields:
-                old = getattr(self, f)
-                new = np.empty((old.shape[0], cap), dtype=old.dtype)
-                new[:, :used] = old[:, :used]
-                grown.append(new)
-            out = Sight(*grown)
+        out = Sight(*(_with_room(getattr(self, f), used, need) for f in fields))
         for f in fields:
             getattr(out, f)[:, used:need] = getattr(other, f)
         return out
@@ -209,6 +200,17 @@ class Sight:
                 for f in Sight.__dataclass_fields__
             )
         )
+
+
+def _with_room(old: np.ndarray, used: int, need: int) -> np.ndarray:
+    """``old`` if it has ``need`` columns, else its first ``used`` columns in an array with
+    room to spare (twice the columns): a cache growing a batch of columns at a time is
+    copied a logarithmic number of times, not at every batch."""
+    if need <= old.shape[1]:
+        return old
+    new = np.empty((old.shape[0], max(need, 2 * old.shape[1])), dtype=old.dtype)
+    new[:, :used] = old[:, :used]
+    return new
 
 
 def sights(ctx: Context, tc: TargetCandidates, station_xy: np.ndarray) -> Sight:
@@ -383,10 +385,7 @@ class SightCache:
         if new:
             fresh = sights(self.ctx, self.tc, self.cand_xy[new]).usable
             base = len(self._searched)
-            if base + len(new) > self._searched_usable.shape[1]:  # room to spare: copied a
-                grown = np.zeros((len(fresh), max(base + len(new), 2 * base)), dtype=bool)
-                grown[:, :base] = self._searched_usable[:, :base]  # logarithmic number of times
-                self._searched_usable = grown
+            self._searched_usable = _with_room(self._searched_usable, base, base + len(new))
             self._searched_usable[:, base : base + len(new)] = fresh
             self._searched.update({i: base + n for n, i in enumerate(new)})
         out = np.empty((len(self.tc.xyz), len(idx)), dtype=bool)
@@ -496,24 +495,24 @@ def _choose_link_targets(
     sigma2: np.ndarray,
     child_xyz: np.ndarray,
     probes: np.ndarray,
-    placed: set[int],
+    reused: np.ndarray,
     levelled: bool,
     max_targets: int,
     goal_mm: float,
     must: np.ndarray | None = None,
 ) -> tuple[list[int], float]:
     """Greedy choice among ``common`` targets (σ_i² + σ_j² per target in ``sigma2``):
-    each step adds the target that lowers the child's predicted error at ``probes`` most
-    (a target already placed wins within :data:`MIN_GAIN`), until three are chosen and the
+    each step adds the target that lowers the child's predicted error at ``probes`` (the
+    points :meth:`_Layout.probes_of` picks) most (a target already placed, flagged in
+    ``reused``, wins within :data:`MIN_GAIN`), until three are chosen and the
     goal is met, adding no longer helps, or ``max_targets`` are chosen. Targets flagged in
     ``must`` (placed by the surveyor) come first, whatever they add. Returns the targets
     and the link's error [mm] (inf if they cannot fix the registration)."""
     prior = _PRIOR if not levelled else _PRIOR[np.ix_([0, 1, 2, 5], [0, 1, 2, 5])]
     a = _a_matrix((xyz[common] - child_xyz) * 1000.0, levelled)  # (C, 3, p)
     contrib = np.einsum("cip,ciq->cpq", a, a) / sigma2[:, None, None]
-    g = _a_matrix((_probes(probes, child_xyz) - child_xyz) * 1000.0, levelled)
+    g = _a_matrix((probes - child_xyz) * 1000.0, levelled)
     rows = g.reshape(-1, g.shape[-1])  # (3P, p): the probes' design rows
-    reused = np.isin(common, list(placed))
     chosen = [] if must is None else [int(c) for c in np.flatnonzero(must[common])]
     chosen = chosen[: int(max_targets)]
     n_mat = contrib[chosen].sum(axis=0) if chosen else np.zeros(prior.shape)
@@ -1095,13 +1094,14 @@ class _Layout:
         variances), kept for the plan's layouts: the choice depends on the two stations, the
         targets offered, which of them are placed and the points it is judged at only (the
         rest is the memo's key: :meth:`SightCache.memo_for`)."""
+        reused = np.isin(common, list(placed))
         key = (
             "choose",
             self.stations[i] if i != CONTROL else CONTROL,
             self.stations[j],
             probe.tobytes(),
             common.tobytes(),
-            np.isin(common, list(placed)).tobytes(),
+            reused.tobytes(),
         )
         if key not in self._memo:
             self._memo[key] = _choose_link_targets(
@@ -1110,7 +1110,7 @@ class _Layout:
                 s2,
                 self.station_xyz[j],
                 probe,
-                placed,
+                reused,
                 self.ctx.scanner.is_levelled,
                 self.ctx.settings.max_targets_per_link,
                 self.goal_mm,
