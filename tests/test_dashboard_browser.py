@@ -76,6 +76,10 @@ def _serve(notebook: str, **env_extra: str):
     _need_browser()
     port = free_port()
     cmd, env = voila_command(notebook_path(notebook), port)
+    # one page per server here: the kernel the server would warm for a next page (the whole
+    # dashboard and its plan, beside the page's own work) is not started (test_serve
+    # checks that one is)
+    cmd.append("--VoilaKernelManager.fill_delay=86400")
     env.update(env_extra)
     # Voilà's log to a file: a pipe nobody reads fills up and stalls the server
     log = tempfile.TemporaryFile()

@@ -362,3 +362,36 @@ def test_a_search_over_many_candidates_keeps_one_bit_per_pair(default_plan):
     full[t] = False
     np.testing.assert_array_equal(got, full)
     np.testing.assert_array_equal(mine.usable(idx), got)  # asked again: from what was kept
+
+
+def test_links_made_only_when_the_tree_search_reaches_them_give_the_same_trees(block_plan):
+    """The tree search makes a link only when it comes first in its queue at its bound (the
+    error with every common target). On the ten-building block: every bound is at most its
+    link's error; from every root the tree and its variances are those of the search with
+    every link made at once; the best tree (other roots given up once beaten) is the best
+    of them all; and fewer links are made."""
+    from planner.pipeline.registration import _Layout, _tree
+
+    seen, p = block_plan.workbench.seen, block_plan
+    stations = [int(s) for s in p.network.stations]
+
+    def layout():  # a cache of its own each: no link known beforehand
+        mine = seen.fork(stations)
+        return _Layout(mine.ctx, mine, mine.cand_xy, stations, {}, goal_mm=2.0)
+
+    lazy, eager = layout(), layout()
+    made_lazily = len(lazy._links)  # the best tree's search, with bounds
+    trees = {r: _tree(r, eager.k, eager.pairs, eager.link) for r in range(eager.k)}
+    assert made_lazily < len(eager._links) == 2 * len(eager.pairs)
+    for r, (tree, cost) in trees.items():
+        assert _tree(r, lazy.k, lazy.pairs, lazy.link, lazy.bound) == (tree, cost)
+    bounds = np.array([[lazy.bound(i, j), eager.link(i, j)[1]] for i, j in eager._links])
+    finite = np.isfinite(bounds[:, 1])
+    assert (bounds[:, 0] <= bounds[:, 1]).all() and finite.sum() > 20
+    assert (bounds[finite, 0] < 0.95 * bounds[finite, 1]).any()  # a bound says something
+    keys = {}
+    for r, (_tree_r, cost) in trees.items():
+        tilt = eager.datum_tilt_var(r)
+        keys[r] = (-len(cost), max(c + tilt[j] for j, c in cost.items()), r)
+    best = min(keys, key=keys.get)
+    assert (lazy.datum, lazy.tree, lazy.cost) == (best, *trees[best])

@@ -489,6 +489,34 @@ def _probes(points: np.ndarray, station: np.ndarray) -> np.ndarray:
     return points[np.unique(np.concatenate([far, spread]))]
 
 
+#: How much below the error with every common target a link's bound is taken, so that the
+#: arithmetic's rounding (the matrices differ only in the order they are summed where a link
+#: takes them all) can never lift the bound over the link's own error.
+BOUND_MARGIN = 1e-3
+
+
+def _all_targets_error(
+    common: np.ndarray,
+    xyz: np.ndarray,
+    sigma2: np.ndarray,
+    child_xyz: np.ndarray,
+    probes: np.ndarray,
+    levelled: bool,
+) -> float:
+    """A lower bound [mm] of the error :func:`_choose_link_targets` gives a link over
+    ``common``: the error with every one of them. The targets a link chooses are some of
+    ``common``, and a target more only adds to the normal matrix (N_all ⪰ N_chosen, so
+    each probe's variance with N_all is the smaller); 0 where every common target together
+    does not fix the registration (that bound says nothing)."""
+    a = _a_matrix((xyz[common] - child_xyz) * 1000.0, levelled)
+    n_mat = np.einsum("cip,ciq->pq", a / sigma2[:, None, None], a)
+    if scaled_condition(n_mat) >= MAX_CONDITION:
+        return 0.0
+    g = _a_matrix((probes - child_xyz) * 1000.0, levelled)
+    error = float(_probe_errors(n_mat[None], g.reshape(-1, g.shape[-1]))[0])
+    return error * (1.0 - BOUND_MARGIN)
+
+
 def _choose_link_targets(
     common: np.ndarray,
     xyz: np.ndarray,
@@ -918,6 +946,7 @@ class _Layout:
         # plan: a link depends on its two stations and the child's facade points only
         self._memo = seen.memo_for(goal_mm)
         self._links: dict[tuple[int, int], tuple[list[int], float]] = {}
+        self._bounds: dict[tuple[int, int], float] = {}  # of :meth:`bound`
         self._sigma2 = np.full((k, len(tc.xyz)), np.nan)  # σ² of :meth:`sigma`, as asked
         self._judged_at: dict[int, np.ndarray] = {}  # of :meth:`probes_of`, as asked
         # the datum: the control network if any station sees three control points, else the
@@ -942,7 +971,9 @@ class _Layout:
         """(key, root, tree, cost) of the root whose tree reaches the most stations, then
         keeps the worst station's error smallest — with 6 parameters, its variance plus the
         datum's lean at its facade points (:meth:`datum_tilt_var`); ties go to the lowest
-        root. The most central root is tried first, and after ``deadline`` no other."""
+        root. The most central root is tried first, and after ``deadline`` no other. Once a
+        root's tree reaches every station, another root's search stops at the first station
+        worse than that tree's worst: it cannot win (and none of its links is made)."""
         roots = list(roots)
         if len(roots) > 1:
             first = _central(self.station_xyz[roots])  # a position in roots
@@ -951,8 +982,12 @@ class _Layout:
         for n, root in enumerate(roots):
             if n and time.monotonic() > deadline:
                 break
-            tree, cost = _tree(root, self.k, self.pairs, self.link)
             tilt = self.datum_tilt_var(root)
+            beaten = best[0][1] if best is not None and best[0][0] == -self.k else np.inf
+            grown = _tree(root, self.k, self.pairs, self.link, self.bound, (tilt, beaten))
+            if grown is None:
+                continue
+            tree, cost = grown
             worst = max((c + tilt[j] for j, c in cost.items()), default=np.inf)
             key = (-len(cost), worst, root)  # ties: the first root
             if best is None or key < best[0]:
@@ -1030,6 +1065,36 @@ class _Layout:
             return by_targets if by_targets[1] < err else ([], err)
         return self._target_link(i, j, placed, stands)
 
+    def bound(self, i: int, j: int) -> float:
+        """A lower bound [mm] of :meth:`link`'s error of j to i, cheap where the link is not
+        yet known: the error with every common target (:func:`_all_targets_error`). A link
+        known, cloud to cloud, or to the control network: its own error."""
+        key = (i, j)
+        if key not in self._bounds:
+            cached = key in self._links or (i != CONTROL and self._shared_key(i, j) in self._memo)
+            if cached or i == CONTROL or self.mode == "cloud" or self.cloud(i, j) is not None:
+                self._bounds[key] = self.link(i, j)[1]
+            else:
+                common = _linkable(self.sight, self.tc, i, j)
+                self._bounds[key] = (
+                    _all_targets_error(
+                        common,
+                        self.tc.xyz,
+                        self.sigma2(i, common) + self.sigma2(j, common),
+                        self.station_xyz[j],
+                        self.probes_of(j),
+                        self.ctx.scanner.is_levelled,
+                    )
+                    if len(common) >= 3
+                    else np.inf
+                )
+        return self._bounds[key]
+
+    def _shared_key(self, i: int, j: int) -> tuple:
+        """The key of the link of j to i in the memo the plan's layouts share."""
+        st_i = self.stations[i] if i != CONTROL else CONTROL
+        return (st_i, self.stations[j], self.probes_of(j).tobytes())
+
     def _cloud_error(self, cl: CloudLink, i: int, j: int) -> float:
         """The cloud link of j to i: its own error at j's facade points [mm] (kept per
         link; ``cl.parent`` is a position in the pair it was computed from, not i)."""
@@ -1053,7 +1118,7 @@ class _Layout:
         if placed is None and key in self._links:
             return self._links[key]
         probe = self.probes_of(j)
-        shared = (self.stations[i] if i != CONTROL else CONTROL, self.stations[j], probe.tobytes())
+        shared = self._shared_key(i, j)
         if placed is None and shared in self._memo:
             self._links[key] = self._memo[shared]
             return self._links[key]
@@ -1120,9 +1185,15 @@ class _Layout:
         return list(targets), error
 
     def weak_groups(self, weak_mm: float) -> np.ndarray:
-        """Groups of stations joined by links whose own error is at most ``weak_mm``."""
+        """Groups of stations joined by links whose own error is at most ``weak_mm`` (a link
+        whose bound is over it is not made)."""
         ok = [
-            (a, b) for a, b in self.pairs if min(self.link(a, b)[1], self.link(b, a)[1]) <= weak_mm
+            (a, b)
+            for a, b in self.pairs
+            if any(
+                self.bound(i, j) <= weak_mm and self.link(i, j)[1] <= weak_mm
+                for i, j in ((a, b), (b, a))
+            )
         ]
         return _components(self.k, ok)
 
@@ -1422,9 +1493,25 @@ def _central(xyz: np.ndarray) -> int:
     return int(np.argmin(cdist(xyz[:, :2], xyz[:, :2]).max(axis=1)))
 
 
-def _tree(root: int, k: int, pairs: Sequence[tuple[int, int]], link) -> tuple[list, dict]:
+def _tree(
+    root: int,
+    k: int,
+    pairs: Sequence[tuple[int, int]],
+    link,
+    bound=None,
+    beaten: tuple[np.ndarray, float] | None = None,
+) -> tuple[list, dict] | None:
     """Registrations from ``root`` reaching every station it can, each joined where its
-    accumulated error variance is smallest (Dijkstra); and that variance per station."""
+    accumulated error variance is smallest (Dijkstra); and that variance per station.
+
+    ``bound(i, j)``, a lower bound of ``link(i, j)``'s error, makes a link only when the
+    search reaches it: a link waits in the queue at its bound, and is made, and queued again
+    at its own error, when it comes first. The bound never passes the error, so the links
+    come out of the queue in the same order, and the tree is the same, as with every link
+    made at once (ties: the lower station, then the lower parent).
+
+    ``beaten`` (extra, worst): None as soon as a station's variance plus its extra passes
+    worst (the caller has a tree that is better)."""
     neighbours: dict[int, list[int]] = {i: [] for i in range(k)}
     for a, b in pairs:
         neighbours[a].append(b)
@@ -1436,20 +1523,28 @@ def _tree(root: int, k: int, pairs: Sequence[tuple[int, int]], link) -> tuple[li
     else:
         heap = [(0.0, root, None)]
         cost = {}
+    heap = [(*s, True) for s in heap]  # (variance, station, parent, made: not a bound)
     heapq.heapify(heap)
     tree = []
     while heap:
-        c, node, parent = heapq.heappop(heap)
+        c, node, parent, made = heapq.heappop(heap)
         if node in cost:
             continue
+        if not made:  # the link waited at its bound and comes first: make it
+            err = link(parent, node)[1]
+            if np.isfinite(err):
+                heapq.heappush(heap, (cost[parent] + err**2, node, parent, True))
+            continue
         cost[node] = c
+        if beaten is not None and c + beaten[0][node] > beaten[1]:
+            return None
         if parent is not None:
             tree.append((parent, node))
         for nb in neighbours[node]:
             if nb not in cost:
-                err = link(node, nb)[1]
+                err = link(node, nb)[1] if bound is None else bound(node, nb)
                 if np.isfinite(err):
-                    heapq.heappush(heap, (c + err**2, nb, node))
+                    heapq.heappush(heap, (c + err**2, nb, node, bound is None))
     return tree, cost
 
 
