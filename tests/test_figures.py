@@ -35,7 +35,7 @@ def test_accuracy_explorer_plots_are_legible(monkeypatch, gamma, nu):
     import matplotlib.pyplot as plt
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-    from planner.app import dashboard, widgets
+    from planner.app import explorers, widgets
 
     figures = []
     real = widgets.output
@@ -46,7 +46,7 @@ def test_accuracy_explorer_plots_are_legible(monkeypatch, gamma, nu):
             (figures.append(obj), real(obj))[1] if isinstance(obj, plt.Figure) else real(obj)
         ),
     )
-    ui = dashboard.AccuracyExplorer()
+    ui = explorers.AccuracyExplorer()
     ui.gamma.value, ui.nu.value = gamma, nu
     ui.update()
     fig = figures[-2]  # the last update's first figure: the paper's tables

@@ -1,9 +1,9 @@
 """Widgets of the notebooks / Voilà dashboards. Thin: they collect inputs, call the package,
 and show results; the science lives elsewhere.
 
-* :class:`StationPlanner` — the main dashboard (site, scanner, requirements → plan);
-* :class:`AccuracyExplorer` — m_x, m_y, m_z curves and tables for a scanner;
-* :class:`TargetExplorer` — target sizes vs distance and an inventory's reach.
+* :class:`StationPlanner` — the main dashboard (site, scanner, requirements → plan).
+
+The explorers of the accuracy figures and target sizes are in :mod:`planner.app.explorers`.
 """
 
 from __future__ import annotations
@@ -18,20 +18,22 @@ from dataclasses import replace
 from pathlib import Path
 
 import ipywidgets as w
-import matplotlib.pyplot as plt
 import numpy as np
-import pandas as pd
 import shapely
 from IPython.display import display
 
-from planner.accuracy import max_distance_m
-from planner.accuracy3d import max_distance_3d_m
 from planner.app.booklet import booklet_pdf
-from planner.app.figures import plot_height, plot_models, plot_planimetric, plot_target_sizes
 from planner.app.maps import QUANTITIES, plot_coverage, quantity_label
 from planner.app.plan_map import PlanMap
 from planner.app.report import make_report
-from planner.app.widgets import download_link, error_html, scanner_dropdown, show, upload_folder
+from planner.app.widgets import (
+    download_link,
+    error_html,
+    inventory_box,
+    scanner_dropdown,
+    show,
+    upload_folder,
+)
 from planner.app.wording import SITE_LABELS, for_dashboard
 from planner.classes import class_limits, parse_class
 from planner.errors import PlannerError
@@ -50,21 +52,15 @@ from planner.pipeline.requirements import (
     setting_groups,
 )
 from planner.pipeline.whatif import edit_targets, evaluate_stations, reoptimise
-from planner.polar import slope_distance_m
-from planner.reference import compare_table1, compare_table2
-from planner.scanner import DEFAULT_SCANNER, Scanner
+from planner.scanner import Scanner
 from planner.site import DEFAULT_NEAR_M, Passage
 from planner.siteio import DEFAULT_STOREY_HEIGHT_M, default_site, read_outlines, read_site
-from planner.tables import SOSSA_DISTANCES_M, height_table, planimetric_table, target_size_table
 from planner.targets import (
-    DEFAULT_INVENTORY,
-    SOSSA_STEP_MM_AT_10M,
     parse_inventory,
-    recommend_targets,
 )
 from planner.zones import Zone
 
-__all__ = ["AccuracyExplorer", "StationPlanner", "TargetExplorer"]
+__all__ = ["StationPlanner"]
 
 
 _MIME = {
@@ -118,21 +114,6 @@ def _field_box(spec: FieldSpec, label: str | None = None) -> w.Widget:
             value=value, min=int(lo), max=int(hi), description=text, style=_STYLE, layout=_FULL
         )
     return _number(float(value), lo, hi, spec.step, text)
-
-
-def _inventory_box(description: str, style: dict, layout: w.Layout) -> w.Textarea:
-    """The target inventory as text, one item a line (name, type, size mm, and how many the
-    crew has where it counts), starting from the default inventory (read by
-    :func:`planner.targets.parse_inventory`)."""
-    return w.Textarea(
-        value="\n".join(
-            f"{i.name}, {i.type}, {i.size_mm:g}" + (f", {i.count}" if i.count else "")
-            for i in DEFAULT_INVENTORY
-        ),
-        description=description,
-        style=style,
-        layout=layout,
-    )
 
 
 def _field_value(spec: FieldSpec, box: w.Widget):
@@ -375,7 +356,7 @@ class StationPlanner:
         self.imaging = w.Checkbox(
             value=PlanSettings().imaging, description=SITE_LABELS["--imaging"], indent=False
         )
-        self.inventory = _inventory_box(
+        self.inventory = inventory_box(
             SITE_LABELS["--inventory"], _STYLE, w.Layout(width="98%", height="8em")
         )
         # the settings in their groups (one order for the page and the command line's help)
@@ -1247,241 +1228,4 @@ class StationPlanner:
             button.disabled = False
 
     def show(self) -> None:
-        display(self.widget)
-
-
-class AccuracyExplorer:
-    """Curves and tables of m_x, m_y (eq. 2) and m_z (eq. 4) for a chosen or typed scanner."""
-
-    def __init__(self) -> None:
-        style = {"description_width": "12em"}
-        paper = Scanner.from_name(DEFAULT_SCANNER)  # typed figures start from the paper's
-        self.source = w.ToggleButtons(options=["Catalogue", "Typed figures"], value="Catalogue")
-        self.scanner = scanner_dropdown()
-        self.range_mm = w.BoundedFloatText(
-            value=paper.range_rms_mm,
-            min=0.01,
-            max=100,
-            step=0.1,
-            description="ranging a [mm]",
-            style=style,
-        )
-        self.range_ppm = w.BoundedFloatText(
-            value=paper.range_ppm,
-            min=0,
-            max=1000,
-            step=10,
-            description="ranging b [ppm]",
-            style=style,
-        )
-        self.h_angle = w.BoundedFloatText(
-            value=paper.angle_rms_arcsec,
-            min=0.01,
-            max=5000,
-            step=0.1,
-            description="H angle RMS [″]",
-            style=style,
-        )
-        self.v_angle = w.BoundedFloatText(
-            value=paper.tilt_rms_arcsec,
-            min=0.01,
-            max=5000,
-            step=0.1,
-            description="V angle RMS [″]",
-            style=style,
-        )
-        self.distance = w.FloatRangeSlider(
-            value=(0.0, 120.0),
-            min=0.0,
-            max=300.0,
-            step=5.0,
-            description="distance [m]",
-            style=style,
-            layout=w.Layout(width="95%"),
-        )
-        self.gamma = w.FloatSlider(
-            value=30.0, min=0.0, max=85.0, step=5.0, description="γ [deg]", style=style
-        )
-        self.nu = w.FloatSlider(
-            value=30.0, min=0.0, max=90.0, step=5.0, description="ν [deg]", style=style
-        )
-        self.limit = w.BoundedFloatText(
-            value=4.0, min=0.1, max=100, step=0.5, description="requirement [mm]", style=style
-        )
-        self.verdict = w.HTML()
-        self.plots = w.Output()
-        self.tables = w.Output()
-        self.error = w.HTML()
-        inputs = [
-            self.source,
-            self.scanner,
-            self.range_mm,
-            self.range_ppm,
-            self.h_angle,
-            self.v_angle,
-            self.distance,
-            self.gamma,
-            self.nu,
-            self.limit,
-        ]
-        for widget in inputs:
-            widget.observe(lambda _c: self.update(), "value")
-        self.widget = w.VBox(
-            [
-                w.HBox([w.VBox(inputs[:6]), w.VBox(inputs[6:])]),
-                self.error,
-                self.verdict,
-                self.plots,
-                self.tables,
-            ]
-        )
-
-    def current_scanner(self) -> Scanner:
-        if self.source.value == "Catalogue":
-            return Scanner.from_name(self.scanner.value)
-        return Scanner(
-            name="typed",
-            range_rms_mm=self.range_mm.value,
-            range_ppm=self.range_ppm.value,
-            angle_rms_arcsec=self.h_angle.value,
-            vertical_angle_rms_arcsec=self.v_angle.value,
-            label="typed figures",
-        )
-
-    def update(self) -> None:
-        self.error.value = ""
-        try:
-            sc = self.current_scanner()
-        except PlannerError as exc:
-            self.error.value = error_html(str(exc))
-            return
-        lo, hi = self.distance.value
-        hi = max(hi, lo + 5.0)
-        g, nu, limit = self.gamma.value, self.nu.value, self.limit.value
-        lines = []
-        for name in ("m_x", "m_y", "m_z"):
-            reach_paper = float(max_distance_m(limit, sc, name, nu if name == "m_z" else g))
-            if name != "m_z":  # eq. 2 works in the horizontal distance D = S·cos ν
-                reach_paper = slope_distance_m(reach_paper, nu)
-            reach_3d = float(max_distance_3d_m(limit, sc, name, g, nu, incidence_noise=True))
-            lines.append(
-                f"{name} ≤ {limit:g} mm at γ = {g:g}°, ν = {nu:g}°: "
-                f"paper {_reach_text(reach_paper, lo, hi)}; 3-D {_reach_text(reach_3d, lo, hi)}"
-            )
-        self.verdict.value = "<ul>" + "".join(f"<li>{html.escape(t)}</li>" for t in lines) + "</ul>"
-        fig, axes = plt.subplots(1, 3, figsize=(13, 3.8), layout="constrained")
-        plot_planimetric(
-            sc, sorted({0.0, 30.0, 60.0, g}), hi, axes=axes[:2], paper=sc.name == DEFAULT_SCANNER
-        )
-        plot_height(
-            sc,
-            sorted({0.0, 30.0, 60.0, 90.0, nu}),
-            hi,
-            ax=axes[2],
-            paper=sc.name == DEFAULT_SCANNER,
-        )
-        for ax in axes:
-            ax.axhline(limit, color="crimson", lw=0.8, ls="--")
-            ax.set_xlim(lo, hi)
-            ax.set_title(ax.get_title(), fontsize=10)
-        fig.suptitle(
-            f"The paper's tables for {sc.label}: eq. 2 (m_x, m_y vs D), eq. 4 (m_z vs S)",
-            fontsize=11,
-        )
-        models = plot_models(sc, g, nu, hi, limit_mm=limit)
-        for ax in models.axes:
-            ax.set_xlim(lo, hi)
-        show(self.plots, fig, models)
-        t1 = planimetric_table(sc)
-        t1.columns = [f"{a} γ={b:g}°" for a, b in t1.columns]
-        t2 = height_table(sc)
-        t2.columns = [f"m_z ν={v:g}°" for v in t2.columns]
-        items = [
-            w.HTML("<b>Table 1 layout (eq. 2), mm</b>"),
-            t1.round(2),
-            w.HTML("<b>Table 2 layout (eq. 4, S₀ = S), mm</b>"),
-            t2.round(2),
-        ]
-        if sc.name == DEFAULT_SCANNER:
-            mis = pd.concat(
-                [
-                    compare_table1().query("misprint").reset_index().assign(table="Table 1"),
-                    compare_table2().query("misprint").reset_index().assign(table="Table 2"),
-                ]
-            )
-            items += [
-                w.HTML(
-                    "<b>Cells of the paper that its own formulas do not give (the formula "
-                    "wins):</b>"
-                ),
-                mis.round(3),
-            ]
-        show(self.tables, *items)
-
-    def show(self) -> None:
-        self.update()
-        display(self.widget)
-
-
-def _reach_text(reach: float, lo: float, hi: float) -> str:
-    if np.isnan(reach) or reach < lo:
-        return f"exceeded already at {lo:.0f} m"
-    if reach >= hi:
-        return f"over the whole range to {hi:.0f} m"
-    return f"up to S = {reach:.1f} m"
-
-
-class TargetExplorer:
-    """Minimum target sizes (2d / 4d) vs distance, and how far each inventory item serves."""
-
-    def __init__(self) -> None:
-        style = {"description_width": "12em"}
-        self.step = w.BoundedFloatText(
-            value=SOSSA_STEP_MM_AT_10M,
-            min=0.1,
-            max=50.0,
-            step=0.1,
-            description="scan step at 10 m [mm]",
-            style=style,
-        )
-        self.max_distance = w.BoundedFloatText(
-            value=max(SOSSA_DISTANCES_M),
-            min=10,
-            max=2000,
-            step=10,
-            description="up to [m]",
-            style=style,
-        )
-        self.inventory = _inventory_box(
-            "inventory (name, type, size mm)", style, w.Layout(width="60%", height="7em")
-        )
-        self.error = w.HTML()
-        self.out = w.Output()
-        for widget in (self.step, self.max_distance, self.inventory):
-            widget.observe(lambda _c: self.update(), "value")
-        self.widget = w.VBox([self.step, self.max_distance, self.inventory, self.error, self.out])
-
-    def update(self) -> None:
-        self.error.value = ""
-        try:
-            items = parse_inventory(self.inventory.value)
-            fig = plot_target_sizes(self.step.value, self.max_distance.value, items)
-            table = target_size_table(step_mm_at_10m=self.step.value)
-            reach = recommend_targets(
-                self.max_distance.value, items, step_mm_at_10m=self.step.value
-            )
-        except (PlannerError, ValueError) as exc:
-            self.error.value = error_html(str(exc))
-            return
-        show(
-            self.out,
-            fig,
-            w.HTML("<b>Sossa's Table 2 layout (mm)</b>"),
-            table,
-            w.HTML("<b>Your inventory: the farthest distance each item qualifies</b>"),
-            reach[["name", "type", "size_mm", "max_distance_m"]].round(1),
-        )
-
-    def show(self) -> None:
-        self.update()
         display(self.widget)

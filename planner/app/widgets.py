@@ -17,6 +17,7 @@ import matplotlib.pyplot as plt
 from planner.app.serve import UPLOAD_ROOT_ENV
 from planner.app.wording import for_dashboard_html
 from planner.scanner import DEFAULT_SCANNER, catalogue, user_profiles
+from planner.targets import DEFAULT_INVENTORY
 
 __all__ = ["download_link", "error_html", "output", "scanner_dropdown", "show", "upload_folder"]
 
@@ -78,4 +79,19 @@ def scanner_dropdown() -> w.Dropdown:
         tooltip="the scanner profile (its catalogue name is the --scanner of the command line)",
         layout=w.Layout(width="98%"),
         style={"description_width": "initial"},
+    )
+
+
+def inventory_box(description: str, style: dict, layout: w.Layout) -> w.Textarea:
+    """The target inventory as text, one item a line (name, type, size mm, and how many the
+    crew has where it counts), starting from the default inventory (read by
+    :func:`planner.targets.parse_inventory`)."""
+    return w.Textarea(
+        value="\n".join(
+            f"{i.name}, {i.type}, {i.size_mm:g}" + (f", {i.count}" if i.count else "")
+            for i in DEFAULT_INVENTORY
+        ),
+        description=description,
+        style=style,
+        layout=layout,
     )
