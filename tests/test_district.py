@@ -92,7 +92,10 @@ def test_stitched_matches_the_single_process_plan_within_its_bound(stitched, dis
     assert 0 < s.shared_bound <= s.lower_bound + 1 - 1e-6
 
 
-def test_unreachable_scheduler_is_exit_2(tmp_path):
+def test_unreachable_scheduler_is_exit_2(tmp_path, monkeypatch):
+    import planner.pipeline.district as district
+
+    monkeypatch.setattr(district, "SCHEDULER_TIMEOUT_S", 0.5)  # nothing answers on port 9
     code, _, err = cli(
         "plan", "--scheduler", "tcp://127.0.0.1:9", "--out", str(tmp_path / "p"), "-q"
     )

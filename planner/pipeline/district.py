@@ -423,6 +423,11 @@ def meeting_table(p: Plan, region: shapely.Geometry | None = None) -> pd.DataFra
     return pd.concat(parts, ignore_index=True)[columns]
 
 
+#: How long a scheduler named by --scheduler is waited for before the plan says it cannot
+#: be reached [s].
+SCHEDULER_TIMEOUT_S = 5.0
+
+
 def plan_district(
     site: Site,
     scanner: Scanner,
@@ -476,7 +481,7 @@ def plan_district(
     cluster = None
     if scheduler:
         try:
-            client = Client(scheduler, timeout="5s")
+            client = Client(scheduler, timeout=SCHEDULER_TIMEOUT_S)
         except (OSError, TimeoutError) as exc:
             raise InputError(
                 f"cannot reach the Dask scheduler at {scheduler!r} ({exc}); start one "
