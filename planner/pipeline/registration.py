@@ -31,6 +31,7 @@ import math
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
+from functools import cached_property
 
 import numpy as np
 import scipy.sparse as sp
@@ -102,7 +103,7 @@ class TargetCandidates:
     control_id: np.ndarray
     control_rms_mm: np.ndarray
 
-    @property
+    @cached_property
     def is_control(self) -> np.ndarray:
         return self.type == "control"
 
@@ -445,13 +446,11 @@ def _item_size(ctx: Context, tc: TargetCandidates, t: int, need: float) -> float
 def _a_matrix(lever_mm: np.ndarray, levelled: bool) -> np.ndarray:
     """(…, 3, p) design rows of a target at ``lever_mm`` from the child station."""
     x, y, z = lever_mm[..., 0], lever_mm[..., 1], lever_mm[..., 2]
-    zero, one = np.zeros_like(x), np.ones_like(x)
-    rows = [
-        [one, zero, zero, zero, z, -y],
-        [zero, one, zero, -z, zero, x],
-        [zero, zero, one, y, -x, zero],
-    ]
-    a = np.stack([np.stack(r, axis=-1) for r in rows], axis=-2)
+    a = np.zeros((*lever_mm.shape[:-1], 3, 6))
+    a[..., 0, 0] = a[..., 1, 1] = a[..., 2, 2] = 1.0  # the shift
+    a[..., 0, 4], a[..., 0, 5] = z, -y  # the small rotation's lever
+    a[..., 1, 3], a[..., 1, 5] = -z, x
+    a[..., 2, 3], a[..., 2, 4] = y, -x
     return a[..., [0, 1, 2, 5]] if levelled else a
 
 
@@ -1510,8 +1509,9 @@ def _tree(
     come out of the queue in the same order, and the tree is the same, as with every link
     made at once (ties: the lower station, then the lower parent).
 
-    ``beaten`` (extra, worst): None as soon as a station's variance plus its extra passes
-    worst (the caller has a tree that is better)."""
+    ``beaten`` (extra, worst): None as soon as a station's variance plus its extra must pass
+    worst (the caller has a tree that reaches every station and is better): the station just
+    reached, or any not yet reached, whose variance can only be larger."""
     neighbours: dict[int, list[int]] = {i: [] for i in range(k)}
     for a, b in pairs:
         neighbours[a].append(b)
@@ -1526,6 +1526,7 @@ def _tree(
     heap = [(*s, True) for s in heap]  # (variance, station, parent, made: not a bound)
     heapq.heapify(heap)
     tree = []
+    left = np.ones(k, dtype=bool)  # not yet reached
     while heap:
         c, node, parent, made = heapq.heappop(heap)
         if node in cost:
@@ -1536,8 +1537,9 @@ def _tree(
                 heapq.heappush(heap, (cost[parent] + err**2, node, parent, True))
             continue
         cost[node] = c
-        if beaten is not None and c + beaten[0][node] > beaten[1]:
+        if beaten is not None and c + beaten[0][left].max() > beaten[1]:
             return None
+        left[node] = False
         if parent is not None:
             tree.append((parent, node))
         for nb in neighbours[node]:
