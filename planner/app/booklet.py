@@ -21,6 +21,7 @@ import pandas as pd
 from matplotlib.backends.backend_pdf import PdfPages
 from matplotlib.figure import Figure
 from matplotlib.patches import Wedge
+from matplotlib.transforms import Bbox, BboxTransformTo, TransformedBbox, offset_copy
 from shapely.geometry import box
 
 from planner.app.maps import (
@@ -179,14 +180,11 @@ def _station_page(
     sid = r["station_id"]
     st = p.stations.set_index("station_id").loc[sid]
     fig = Figure(figsize=A4_PORTRAIT)  # a fixed layout: no layout engine per page
-    head = fig.add_axes(HEAD_BOX)
-    head.axis("off")
+    head = _Box(fig, HEAD_BOX)  # text only: no axes to lay out
     total = len(_route(p))
-    head.set_title(
+    head.title(
         f"{sid} — station {int(r['order'])} of {total}, session {int(r['session'])}",
-        loc="left",
         fontsize=14,
-        weight="bold",
     )
     end = (r["sector_start_deg"] + r["sector_deg"]) % 360
     sector = (
@@ -246,6 +244,27 @@ def _station_page(
     table_ax.axis("off")
     _targets_table(p, sid, r, table_ax, ties)
     return fig
+
+
+class _Box:
+    """A part of a page that holds only text, placed in its own unit square (as an axes'
+    coordinates, without an axes: nothing to lay out or draw but the words)."""
+
+    def __init__(self, fig: Figure, where: tuple[float, float, float, float]) -> None:
+        self.fig = fig
+        self.transform = BboxTransformTo(TransformedBbox(Bbox.from_bounds(*where), fig.transFigure))
+
+    def text(self, x: float, y: float, s: str, **kw):
+        return self.fig.text(x, y, s, transform=self.transform, **kw)
+
+    def title(self, s: str, fontsize: float) -> None:
+        """Bold, at the left above the box (where an axes' title stands)."""
+        above = offset_copy(self.transform, fig=self.fig, y=TITLE_PAD_PT, units="points")
+        self.fig.text(0.0, 1.0, s, transform=above, fontsize=fontsize, weight="bold")
+
+
+#: How far a part's title stands above it [points] (as matplotlib's axes titles).
+TITLE_PAD_PT = 6.0
 
 
 def _register_to(p: Plan, sid: str, r: pd.Series) -> str:
