@@ -369,7 +369,8 @@ def test_links_made_only_when_the_tree_search_reaches_them_give_the_same_trees(b
     error with every common target). On the ten-building block: every bound is at most its
     link's error; from every root the tree and its variances are those of the search with
     every link made at once; the best tree (other roots given up once beaten) is the best
-    of them all; and fewer links are made."""
+    of them all; fewer links are made; and the weak groups, made from the links they need,
+    are those of every link."""
     from planner.pipeline.registration import _Layout, _tree
 
     seen, p = block_plan.workbench.seen, block_plan
@@ -395,3 +396,17 @@ def test_links_made_only_when_the_tree_search_reaches_them_give_the_same_trees(b
         keys[r] = (-len(cost), max(c + tilt[j] for j, c in cost.items()), r)
     best = min(keys, key=keys.get)
     assert (lazy.datum, lazy.tree, lazy.cost) == (best, *trees[best])
+    # the weak groups, from the links their groups need, are those of every link
+    from planner.pipeline.registration import _components
+
+    errors = sorted(e for _t, e in eager._links.values() if np.isfinite(e))
+    splits = []
+    for weak in np.quantile(errors, [0.1, 0.3, 0.6]):
+        every = [
+            ab for ab in eager.pairs if min(eager.link(*ab)[1], eager.link(*ab[::-1])[1]) <= weak
+        ]
+        fresh = layout()
+        groups = fresh.weak_groups(weak)
+        np.testing.assert_array_equal(groups, _components(eager.k, every))
+        splits.append(int(groups.max()))
+    assert max(splits) > 0 and min(splits) == 0  # split into groups, and joined

@@ -35,6 +35,7 @@ from functools import cached_property
 
 import numpy as np
 import scipy.sparse as sp
+from scipy.cluster.hierarchy import DisjointSet
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 from scipy.spatial.distance import cdist
@@ -1184,16 +1185,24 @@ class _Layout:
         return list(targets), error
 
     def weak_groups(self, weak_mm: float) -> np.ndarray:
-        """Groups of stations joined by links whose own error is at most ``weak_mm`` (a link
-        whose bound is over it is not made)."""
-        ok = [
-            (a, b)
-            for a, b in self.pairs
+        """Groups of stations joined by links whose own error is at most ``weak_mm``. Only
+        what the groups need is made: the links already known first (the tree's), then a
+        pair only while its stations are in different groups, and a link only where its
+        bound is within ``weak_mm``."""
+        joined = DisjointSet(range(self.k))
+        ok = []
+        known = sorted(
+            self.pairs, key=lambda ab: ab not in self._links and ab[::-1] not in self._links
+        )
+        for a, b in known:
+            if joined.connected(a, b):
+                continue
             if any(
                 self.bound(i, j) <= weak_mm and self.link(i, j)[1] <= weak_mm
                 for i, j in ((a, b), (b, a))
-            )
-        ]
+            ):
+                joined.merge(a, b)
+                ok.append((a, b))
         return _components(self.k, ok)
 
 
