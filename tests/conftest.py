@@ -34,10 +34,10 @@ _STAND_IN_PDF = (
 
 @pytest.fixture(autouse=True)
 def _quick_booklet(request, monkeypatch):
-    """The field booklet costs about half a second a page (matplotlib), and ``planner
-    plan`` draws it by default: tests in this process that are not about it get a one-page
-    stand-in. Tests about the booklet (or timing the whole command) are marked
-    ``booklet``."""
+    """The field booklet costs about a third of a second a page (matplotlib): tests in this
+    process that draw one on the way (``planner plan --booklet``, the dashboard's button)
+    but are not about it get a one-page stand-in. Tests about the booklet (or timing the
+    whole command) are marked ``booklet``."""
     if request.node.get_closest_marker("booklet"):
         return
     import planner.app.booklet as booklet
