@@ -78,7 +78,8 @@ def _serve(notebook: str, **env_extra: str):
     cmd, env = voila_command(notebook_path(notebook), port)
     # one page per server here: the kernel the server would warm for a next page (the whole
     # dashboard and its plan, beside the page's own work) is not started (test_serve
-    # checks that one is)
+    # checks that one is). A second page on one of these servers would wait for it: open
+    # it on a server of its own
     cmd.append("--VoilaKernelManager.fill_delay=86400")
     env.update(env_extra)
     # Voilà's log to a file: a pipe nobody reads fills up and stalls the server

@@ -364,49 +364,58 @@ def test_a_search_over_many_candidates_keeps_one_bit_per_pair(default_plan):
     np.testing.assert_array_equal(mine.usable(idx), got)  # asked again: from what was kept
 
 
-def test_links_made_only_when_the_tree_search_reaches_them_give_the_same_trees(block_plan):
+@pytest.mark.parametrize(
+    ("which", "mode"), [("block_plan", "targets"), ("default_plan", "hybrid")], ids=str
+)
+def test_links_made_only_when_the_tree_search_reaches_them_give_the_same_trees(
+    which, mode, request
+):
     """The tree search makes a link only when it comes first in its queue at its bound (the
-    error with every common target). On the ten-building block: every bound is at most its
-    link's error; from every root the tree and its variances are those of the search with
-    every link made at once; the best tree (other roots given up once beaten) is the best
-    of them all; fewer links are made; and the weak groups, made from the links they need,
-    are those of every link."""
-    from planner.pipeline.registration import _Layout, _tree
+    error with every common target; a cloud link's own error). On the ten-building block by
+    targets and the default site in hybrid registration: every bound is at most its link's
+    error; from every root the tree and its variances are those of the search with every
+    link made at once; the best tree (other roots given up once beaten) is the best of them
+    all; and the weak groups, made from the links they need, are those of every link. By
+    targets, fewer links are made and a bound says more than the link's own error."""
+    from dataclasses import replace
 
-    seen, p = block_plan.workbench.seen, block_plan
-    stations = [int(s) for s in p.network.stations]
+    from planner.pipeline.registration import _components, _Layout, _tree
+
+    p = request.getfixturevalue(which)
+    seen, stations = p.workbench.seen, [int(s) for s in p.network.stations]
 
     def layout():  # a cache of its own each: no link known beforehand
         mine = seen.fork(stations)
+        mine.ctx = replace(mine.ctx, settings=replace(mine.ctx.settings, registration=mode))
         return _Layout(mine.ctx, mine, mine.cand_xy, stations, {}, goal_mm=2.0)
 
     lazy, eager = layout(), layout()
+    assert lazy.mode == mode
     made_lazily = len(lazy._links)  # the best tree's search, with bounds
     trees = {r: _tree(r, eager.k, eager.pairs, eager.link) for r in range(eager.k)}
-    assert made_lazily < len(eager._links) == 2 * len(eager.pairs)
     for r, (tree, cost) in trees.items():
         assert _tree(r, lazy.k, lazy.pairs, lazy.link, lazy.bound) == (tree, cost)
-    bounds = np.array([[lazy.bound(i, j), eager.link(i, j)[1]] for i, j in eager._links])
-    finite = np.isfinite(bounds[:, 1])
-    assert (bounds[:, 0] <= bounds[:, 1]).all() and finite.sum() > 20
-    assert (bounds[finite, 0] < 0.95 * bounds[finite, 1]).any()  # a bound says something
     keys = {}
     for r, (_tree_r, cost) in trees.items():
         tilt = eager.datum_tilt_var(r)
         keys[r] = (-len(cost), max(c + tilt[j] for j, c in cost.items()), r)
     best = min(keys, key=keys.get)
     assert (lazy.datum, lazy.tree, lazy.cost) == (best, *trees[best])
-    # the weak groups, from the links their groups need, are those of every link
-    from planner.pipeline.registration import _components
-
-    errors = sorted(e for _t, e in eager._links.values() if np.isfinite(e))
+    ways = [w for ab in eager.pairs for w in (ab, ab[::-1])]
+    fresh = layout()  # every bound before its link
+    bounds = np.array([[fresh.bound(*w), eager.link(*w)[1]] for w in ways])
+    finite = np.isfinite(bounds[:, 1])
+    assert (bounds[:, 0] <= bounds[:, 1]).all() and finite.sum() > 20
+    if mode == "targets":
+        assert made_lazily < len(eager._links) == 2 * len(eager.pairs)
+        assert (bounds[finite, 0] < 0.95 * bounds[finite, 1]).any()  # a bound says something
+    errors = np.sort(bounds[finite, 1])
     splits = []
-    for weak in np.quantile(errors, [0.1, 0.3, 0.6]):
+    for weak in np.quantile(errors, [0.05, 0.3, 0.6]):
         every = [
             ab for ab in eager.pairs if min(eager.link(*ab)[1], eager.link(*ab[::-1])[1]) <= weak
         ]
-        fresh = layout()
-        groups = fresh.weak_groups(weak)
+        groups = fresh.weak_groups(weak)  # (the links it made for the last limit kept)
         np.testing.assert_array_equal(groups, _components(eager.k, every))
         splits.append(int(groups.max()))
     assert max(splits) > 0 and min(splits) == 0  # split into groups, and joined

@@ -259,12 +259,9 @@ class _Box:
 
     def title(self, s: str, fontsize: float) -> None:
         """Bold, at the left above the box (where an axes' title stands)."""
-        above = offset_copy(self.transform, fig=self.fig, y=TITLE_PAD_PT, units="points")
+        pad = plt.rcParams["axes.titlepad"]  # where an axes' title stands [points]
+        above = offset_copy(self.transform, fig=self.fig, y=pad, units="points")
         self.fig.text(0.0, 1.0, s, transform=above, fontsize=fontsize, weight="bold")
-
-
-#: How far a part's title stands above it [points] (as matplotlib's axes titles).
-TITLE_PAD_PT = 6.0
 
 
 def _register_to(p: Plan, sid: str, r: pd.Series) -> str:

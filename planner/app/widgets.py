@@ -1,6 +1,7 @@
-"""Widget helpers the dashboards share (the station planner's and the calibration's): an error
-box, a download link, showing figures and tables in an Output widget, the scanner dropdown
-and the folder uploads go to. No science."""
+"""Widget helpers the dashboards share (the station planner's, the explorers' and the
+calibration's): an error box, a download link, showing figures and tables in an Output
+widget, the scanner dropdown, the target inventory box and the folder uploads go to. No
+science."""
 
 from __future__ import annotations
 
@@ -19,7 +20,15 @@ from planner.app.wording import for_dashboard_html
 from planner.scanner import DEFAULT_SCANNER, catalogue, user_profiles
 from planner.targets import DEFAULT_INVENTORY
 
-__all__ = ["download_link", "error_html", "output", "scanner_dropdown", "show", "upload_folder"]
+__all__ = [
+    "download_link",
+    "error_html",
+    "inventory_box",
+    "output",
+    "scanner_dropdown",
+    "show",
+    "upload_folder",
+]
 
 
 def error_html(message: str, head: str = "Cannot plan") -> str:

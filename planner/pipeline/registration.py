@@ -1197,10 +1197,8 @@ class _Layout:
         for a, b in known:
             if joined.connected(a, b):
                 continue
-            if any(
-                self.bound(i, j) <= weak_mm and self.link(i, j)[1] <= weak_mm
-                for i, j in ((a, b), (b, a))
-            ):
+            ways = ((a, b), (b, a)) if (b, a) not in self._links else ((b, a), (a, b))
+            if any(self.bound(i, j) <= weak_mm and self.link(i, j)[1] <= weak_mm for i, j in ways):
                 joined.merge(a, b)
                 ok.append((a, b))
         return _components(self.k, ok)
