@@ -299,11 +299,30 @@ def _sphere_kernel(centres, radius, step, phase, s_a, s_b, sd_az, sd_el, inciden
                 g[0] += ux * res
                 g[1] += uy * res
                 g[2] += uz * res
-            nm[1, 0], nm[2, 0], nm[2, 1] = nm[0, 1], nm[0, 2], nm[1, 2]
-            step_c = np.linalg.solve(nm, g)
+            step_c = _solve_symmetric_3(nm, g)
             ex, ey, ez = ex + step_c[0], ey + step_c[1], ez + step_c[2]
         out[t, 0], out[t, 1], out[t, 2] = ex, ey, ez
     return out
+
+
+@njit(cache=True)
+def _solve_symmetric_3(a, b):
+    """x with a x = b for a symmetric 3 × 3 ``a`` (its upper triangle read), by Cramer's
+    rule: np.linalg.solve would compile numba's LAPACK bindings (7 of the kernel's 11 s of
+    compiling in a fresh clone)."""
+    a00, a01, a02, a11, a12, a22 = a[0, 0], a[0, 1], a[0, 2], a[1, 1], a[1, 2], a[2, 2]
+    c00 = a11 * a22 - a12 * a12  # the cofactors (symmetric)
+    c01 = a02 * a12 - a01 * a22
+    c02 = a01 * a12 - a02 * a11
+    c11 = a00 * a22 - a02 * a02
+    c12 = a01 * a02 - a00 * a12
+    c22 = a00 * a11 - a01 * a01
+    det = a00 * c00 + a01 * c01 + a02 * c02
+    x = np.empty(3)
+    x[0] = (c00 * b[0] + c01 * b[1] + c02 * b[2]) / det
+    x[1] = (c01 * b[0] + c11 * b[1] + c12 * b[2]) / det
+    x[2] = (c02 * b[0] + c12 * b[1] + c22 * b[2]) / det
+    return x
 
 
 def board_centre(
