@@ -68,6 +68,14 @@ SIGHT_CLEARANCE_M = 0.02
 STAND_RADIUS_M = 0.05
 
 
+def _kernel_array(a, dtype=np.float64) -> np.ndarray:
+    """``a`` as the compiled kernels take it: C-ordered, of ``dtype``, and writable (a
+    read-only array, as a broadcast height is, would make numba compile and load the kernel
+    once more for that flag: three times as much to compile in a fresh clone)."""
+    out = np.ascontiguousarray(a, dtype=dtype)
+    return out if out.flags.writeable else out.copy()
+
+
 def clear_height(
     src_xy: np.ndarray,
     src_z: np.ndarray | float,
@@ -113,14 +121,14 @@ def clear_height(
                 f"{p} lines; got {len(starts)} from {starts[0]} to {starts[-1]}"
             )
     _clear_height_kernel(
-        np.ascontiguousarray(src_xy, dtype=np.float64),
-        np.ascontiguousarray(np.broadcast_to(np.asarray(src_z, dtype=np.float64), (p,))),
-        np.ascontiguousarray(dst_xy, dtype=np.float64),
-        np.ascontiguousarray(edges, dtype=np.float64),
-        np.ascontiguousarray(heights, dtype=np.float64),
+        _kernel_array(src_xy, np.float64),
+        _kernel_array(np.broadcast_to(np.asarray(src_z, dtype=np.float64), (p,))),
+        _kernel_array(dst_xy, np.float64),
+        _kernel_array(edges, np.float64),
+        _kernel_array(heights, np.float64),
         float(clearance_m),
-        np.ascontiguousarray(starts, dtype=np.int64),
-        np.ascontiguousarray(boxes, dtype=np.float64),
+        _kernel_array(starts, np.int64),
+        _kernel_array(boxes, np.float64),
         out,
     )
     return out
@@ -217,12 +225,12 @@ def bridge_interval(
     if p == 0 or len(edges) == 0:
         return lo, up
     _bridge_kernel(
-        np.ascontiguousarray(src_xy, dtype=np.float64),
-        np.ascontiguousarray(np.broadcast_to(np.asarray(src_z, dtype=np.float64), (p,))),
-        np.ascontiguousarray(dst_xy, dtype=np.float64),
-        np.ascontiguousarray(edges, dtype=np.float64),
-        np.ascontiguousarray(bottoms, dtype=np.float64),
-        np.ascontiguousarray(tops, dtype=np.float64),
+        _kernel_array(src_xy, np.float64),
+        _kernel_array(np.broadcast_to(np.asarray(src_z, dtype=np.float64), (p,))),
+        _kernel_array(dst_xy, np.float64),
+        _kernel_array(edges, np.float64),
+        _kernel_array(bottoms, np.float64),
+        _kernel_array(tops, np.float64),
         float(clearance_m),
         lo,
         up,
