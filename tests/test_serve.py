@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import os
 import re
+import secrets
 import signal
 import socket
 import subprocess
@@ -16,8 +17,8 @@ from pathlib import Path
 
 import pytest
 
-from planner.app.serve import _descendants
-from planner.app.voila_server import is_loopback_host
+from planner.app.serve import _descendants, _marked, _stop
+from planner.app.voila_server import INSTANCE_ENV, is_loopback_host
 
 
 def _free_port() -> int:
@@ -68,6 +69,17 @@ def _get(port: int, path: str = "/", host: str | None = None) -> int:
         return exc.code
 
 
+def _running(pid: int) -> bool:
+    """Whether process ``pid`` is running: it exists and has not ended (a process that
+    ended stays a zombie until its parent, for an orphan the machine's init, collects
+    it; this machine's init takes about a second)."""
+    try:
+        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except OSError:
+        return False
+    return state not in ("Z", "X")
+
+
 def _stops_whole(proc: subprocess.Popen, port: int, sig: int) -> None:
     """``sig`` stops the server with exit code 0, its port closed and no process of its
     family left running."""
@@ -76,7 +88,7 @@ def _stops_whole(proc: subprocess.Popen, port: int, sig: int) -> None:
     assert proc.wait(60) == 0
     time.sleep(0.5)
     assert not _listening(port), "the port still answers after the stop"
-    alive = [p for p in family if Path(f"/proc/{p}").exists()]
+    alive = [p for p in family if _running(p)]
     assert alive == [], f"processes left running: {alive}"
 
 
@@ -148,3 +160,31 @@ def test_loopback_host_names():
     assert is_loopback_host("localhost") and is_loopback_host("127.1.2.3")
     assert not is_loopback_host("evil.example") and not is_loopback_host("10.0.0.1")
     assert not is_loopback_host("localhost.evil.example")
+
+
+def test_a_kernel_no_longer_under_the_server_is_stopped_by_its_mark():
+    """Every kernel inherits the server's instance id: a process carrying it is stopped
+    with the server even when it is no longer under it (a kernel started as the server
+    stopped); a process without it is left alone."""
+    token = secrets.token_hex(8)
+    sleeper = [sys.executable, "-c", "import time; time.sleep(60)"]
+    start = f"import subprocess; subprocess.Popen({sleeper!r}, start_new_session=True)"
+    server = subprocess.Popen(  # starts its "kernel" and ends at once: an orphan
+        [sys.executable, "-c", start], env={**os.environ, INSTANCE_ENV: token}
+    )
+    stranger = subprocess.Popen(sleeper)
+    try:
+        assert server.wait(30) == 0
+        deadline = time.time() + 30
+        while not _marked(token) and time.time() < deadline:
+            time.sleep(0.1)
+        orphans = _marked(token)
+        assert len(orphans) == 1 and _running(orphans[0])
+        _stop(server, grace_s=0.0, instance=token)
+        time.sleep(0.2)
+        assert not _running(orphans[0])  # stopped (a zombie until init collects it)
+        assert stranger.poll() is None  # not the server's: left alone
+    finally:
+        stranger.kill()
+        for pid in _marked(token):
+            os.kill(pid, signal.SIGKILL)

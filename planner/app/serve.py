@@ -107,9 +107,25 @@ def _descendants(pid: int) -> list[int]:
     return out
 
 
-def _stop(proc: subprocess.Popen, grace_s: float = 10.0) -> None:
+def _marked(instance: str) -> list[int]:
+    """The processes whose environment holds the server's instance id (:data:`INSTANCE_ENV`),
+    which every kernel inherits: found even where a kernel started as the server stopped
+    and its parent is gone."""
+    mark = f"{INSTANCE_ENV}={instance}".encode()
+    out = []
+    for entry in Path("/proc").iterdir():
+        if not entry.name.isdigit():
+            continue
+        with contextlib.suppress(OSError):
+            if mark in (entry / "environ").read_bytes().split(b"\0"):
+                out.append(int(entry.name))
+    return out
+
+
+def _stop(proc: subprocess.Popen, grace_s: float = 10.0, instance: str = "") -> None:
     """Stop the Voilà server and everything under it: Ctrl+C first (Voilà shuts its kernels
-    down), then SIGKILL for whatever is left after ``grace_s``."""
+    down), then SIGKILL for whatever is left after ``grace_s``: the processes under it when
+    the stop began and, given the server's ``instance`` id, any that carry it."""
     family = _descendants(proc.pid)
     if proc.poll() is None:
         with contextlib.suppress(ProcessLookupError):
@@ -120,6 +136,8 @@ def _stop(proc: subprocess.Popen, grace_s: float = 10.0) -> None:
             with contextlib.suppress(ProcessLookupError):
                 os.killpg(proc.pid, signal.SIGKILL)
             proc.wait()
+    if instance:  # (the server has ended: no kernel starts after this)
+        family = sorted(set(family) | set(_marked(instance)))
     for pid in family:  # kernels run in sessions of their own
         with contextlib.suppress(ProcessLookupError, PermissionError):
             os.kill(pid, signal.SIGKILL)
@@ -198,7 +216,7 @@ def serve(
             time.sleep(0.2)
         return 0 if stop_requested or proc.returncode == 0 else int(proc.returncode or 1)
     finally:
-        _stop(proc)
+        _stop(proc, instance=instance)
         for sig, handler in previous.items():
             signal.signal(sig, handler)
         shutil.rmtree(upload_root, ignore_errors=True)
