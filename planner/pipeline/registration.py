@@ -1523,14 +1523,13 @@ def _tree(
     for a, b in pairs:
         neighbours[a].append(b)
         neighbours[b].append(a)
+    # (variance, station, parent, made: the link's own error, not its bound)
     if root == CONTROL:
-        start = [(link(CONTROL, j)[1] ** 2, j, CONTROL) for j in range(k)]
+        start = [(link(CONTROL, j)[1] ** 2, j, CONTROL, True) for j in range(k)]
         heap = [s for s in start if np.isfinite(s[0])]
-        cost: dict[int, float] = {}
     else:
-        heap = [(0.0, root, None)]
-        cost = {}
-    heap = [(*s, True) for s in heap]  # (variance, station, parent, made: not a bound)
+        heap = [(0.0, root, None, True)]
+    cost: dict[int, float] = {}
     heapq.heapify(heap)
     tree = []
     left = np.ones(k, dtype=bool)  # not yet reached

@@ -140,14 +140,14 @@ def _clear_height_kernel(src, zs, dst, edges, heights, pad, starts, boxes, out):
     each edge lengthened and raised by ``pad``, a group's lines against the edges
     overlapping its box only; ``out`` holds ``-inf`` on entry."""
     m = edges.shape[0]
-    lo_x, hi_x = np.empty(m), np.empty(m)
-    lo_y, hi_y = np.empty(m), np.empty(m)
+    ex_lo, ex_hi = np.empty(m), np.empty(m)  # each edge's box
+    ey_lo, ey_hi = np.empty(m), np.empty(m)
     reach = _reach(edges, pad)
     for e in range(m):
-        lo_x[e] = min(edges[e, 0], edges[e, 2]) - pad
-        hi_x[e] = max(edges[e, 0], edges[e, 2]) + pad
-        lo_y[e] = min(edges[e, 1], edges[e, 3]) - pad
-        hi_y[e] = max(edges[e, 1], edges[e, 3]) + pad
+        ex_lo[e], ex_hi[e] = min(edges[e, 0], edges[e, 2]), max(edges[e, 0], edges[e, 2])
+        ey_lo[e], ey_hi[e] = min(edges[e, 1], edges[e, 3]), max(edges[e, 1], edges[e, 3])
+    lo_x, hi_x = ex_lo - pad, ex_hi + pad  # and padded, for the lines
+    lo_y, hi_y = ey_lo - pad, ey_hi + pad
     near = np.empty(m, dtype=np.int64)
     for g in range(boxes.shape[0]):
         if starts[g] == starts[g + 1]:
@@ -155,10 +155,10 @@ def _clear_height_kernel(src, zs, dst, edges, heights, pad, starts, boxes, out):
         n_near = 0  # the edges in the group's box, as edges_in_box selects them
         for e in range(m):
             if (
-                max(edges[e, 0], edges[e, 2]) >= boxes[g, 0]
-                and min(edges[e, 0], edges[e, 2]) <= boxes[g, 2]
-                and max(edges[e, 1], edges[e, 3]) >= boxes[g, 1]
-                and min(edges[e, 1], edges[e, 3]) <= boxes[g, 3]
+                ex_hi[e] >= boxes[g, 0]
+                and ex_lo[e] <= boxes[g, 2]
+                and ey_hi[e] >= boxes[g, 1]
+                and ey_lo[e] <= boxes[g, 3]
             ):
                 near[n_near] = e
                 n_near += 1
