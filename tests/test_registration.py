@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from virtual_survey import _procrustes, _rot_z, _rotvec
 
 from planner.registration_error import (
     CONTROL,
@@ -103,37 +104,13 @@ def test_target_centre_rms_grows_with_distance_and_shrinks_with_size():
 
 
 # -- Monte Carlo of the whole chain -------------------------------------------------------
-def _rot_z(k):
-    c, s = np.cos(k), np.sin(k)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
-
-
 def _rot_xy(tx, ty):
+    """Tilts by ``tx`` about x, then ``ty`` about y (any shape): (…, 3, 3)."""
     cx, sx, cy, sy = np.cos(tx), np.sin(tx), np.cos(ty), np.sin(ty)
-    rx = np.array([[1.0, 0, 0], [0, cx, -sx], [0, sx, cx]])
-    ry = np.array([[cy, 0, sy], [0, 1.0, 0], [-sy, 0, cy]])
+    rx, ry = np.zeros((*np.shape(tx), 3, 3)), np.zeros((*np.shape(ty), 3, 3))
+    rx[..., 0, 0], rx[..., 1, 1], rx[..., 1, 2], rx[..., 2, 1], rx[..., 2, 2] = 1, cx, -sx, sx, cx
+    ry[..., 0, 0], ry[..., 0, 2], ry[..., 1, 1], ry[..., 2, 0], ry[..., 2, 2] = cy, sy, 1, -sy, cy
     return rx @ ry
-
-
-def _kabsch(q, p, w):
-    """R, t minimising Σ w‖R q + t − p‖² (weighted Procrustes, no scale)."""
-    w = w / w.sum()
-    qc, pc = (w[:, None] * q).sum(0), (w[:, None] * p).sum(0)
-    h = (w[:, None] * (q - qc)).T @ (p - pc)
-    u, _, vt = np.linalg.svd(h)
-    d = np.sign(np.linalg.det(vt.T @ u.T))
-    rot = vt.T @ np.diag([1.0, 1.0, d]) @ u.T
-    return rot, pc - rot @ qc
-
-
-def _planar(q, p, w):
-    """R (about z), t minimising Σ w‖R q + t − p‖²: the 4-parameter registration."""
-    w = w / w.sum()
-    qc, pc = (w[:, None] * q).sum(0), (w[:, None] * p).sum(0)
-    a, b = q[:, :2] - qc[:2], p[:, :2] - pc[:2]
-    k = np.arctan2((w * (a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0])).sum(), (w * (a * b).sum(1)).sum())
-    rot = _rot_z(k)
-    return rot, pc - rot @ qc
 
 
 # four stations in a chain S0 → S1 → S2 and S1 → S3; targets in plan and at two heights,
@@ -175,16 +152,33 @@ def _rms_table(seed: int = 3):
     return rms
 
 
-def _scan(rms, nominal, tilted, tau, stations, targets, rng):
-    """One trial's true station frames (the nominal heading, tilted by a random ``tau``
-    [rad] per axis when ``tilted``) and every observation (station, target) → the target's
-    centre measured once in the station's frame [m], with its RMS of noise."""
-    rot = [(_rot_xy(*rng.normal(0, tau, 2)) if tilted else np.eye(3)) @ n for n in nominal]
-    meas = {
-        (k, t): rot[k].T @ (targets[t] - stations[k]) + rng.normal(0, sigma / 1000, 3)
-        for (k, t), sigma in rms.items()
-    }
+def _scan(rms, nominal, tilted, tau, stations, targets, rng, trials):
+    """``trials`` trials' true station frames (trials, K, 3, 3): the nominal headings
+    ``nominal`` (K, 3, 3), tilted by a random ``tau`` [rad] per axis when ``tilted``; and
+    every observation (station, target) of ``rms``, in its order — the target's centre
+    measured once in the station's frame [m] with its RMS of noise — (trials, len(rms), 3).
+    The draws are taken as one trial after another would take them: a trial's tilts (two
+    per station), then each observation's noise."""
+    keys = list(rms)
+    k_of, t_of = (np.array(c) for c in zip(*keys, strict=True))
+    n_tilt = 2 * len(nominal) if tilted else 0
+    z = rng.standard_normal((trials, n_tilt + 3 * len(keys)))
+    rot = np.broadcast_to(nominal, (trials, *nominal.shape))
+    if tilted:
+        tilt = tau * z[:, :n_tilt].reshape(trials, len(nominal), 2)
+        rot = _rot_xy(tilt[..., 0], tilt[..., 1]) @ nominal
+    sigma_m = np.array([rms[key] for key in keys]) / 1000
+    noise = z[:, n_tilt:].reshape(trials, len(keys), 3) * sigma_m[:, None]
+    meas = np.einsum("tnji,nj->tni", rot[:, k_of], targets[t_of] - stations[k_of]) + noise
     return rot, meas
+
+
+def _carried(rot_hat, t_hat, true_rot, station, pts):
+    """Errors [mm] (trials, points, 3) of points ``pts`` scanned from ``station`` in its
+    true frames ``true_rot`` (trials, 3, 3) and placed with the estimated pose."""
+    local = np.einsum("nji,pj->npi", true_rot, pts - station)
+    placed = np.einsum("nij,npj->npi", rot_hat, local) + t_hat[:, None, :]
+    return (placed - pts) * 1000
 
 
 def _simulate_chain(
@@ -203,27 +197,29 @@ def _simulate_chain(
     """Errors [mm] of every sample point after the chained registrations: each station
     measures each of its targets once in its own (randomly turned) frame with the given
     noise, each link is a weighted least-squares rigid registration to its parent's
-    estimate, and the sample points of each station are carried along (trials × …)."""
+    estimate, and the sample points of each station are carried along (trials × …; all
+    trials at once, the draws as one trial after another would take them)."""
     kappas = rng.uniform(0, 2 * np.pi, len(stations))
-    nominal = [_rot_z(k) for k in kappas]
+    nominal = _rot_z(kappas)
     tau = tilt_arcsec / RHO_ARCSEC
-    out = {j: [] for j in samples}
-    for _ in range(trials):
-        true_rot, meas = _scan(rms, nominal, levelled, tau, stations, targets, rng)
-        # the datum's frame: its own (levelled: its nominal orientation, tilt unknown)
-        est = {datum: (_rot_z(kappas[datum]), stations[datum].copy())}
-        for link in links:
-            i, j = link.parent, link.child
-            ri, ti = est[i]
-            p = np.array([ri @ meas[(i, t)] + ti for t in link.targets])
-            q = np.array([meas[(j, t)] for t in link.targets])
-            w = np.array([1 / (rms[(i, t)] ** 2 + rms[(j, t)] ** 2) for t in link.targets])
-            est[j] = _planar(q, p, w) if levelled else _kabsch(q, p, w)
-        for j, pts in samples.items():
-            rj, tj = est[j]
-            local = (true_rot[j].T @ (pts - stations[j]).T).T
-            out[j].append(((rj @ local.T).T + tj - pts) * 1000)
-    return {j: np.array(v) for j, v in out.items()}
+    true_rot, meas = _scan(rms, nominal, levelled, tau, stations, targets, rng, trials)
+    at = {key: n for n, key in enumerate(rms)}
+    # the datum's frame: its own (levelled: its nominal orientation, tilt unknown)
+    est = {
+        datum: (
+            np.broadcast_to(nominal[datum], (trials, 3, 3)),
+            np.tile(stations[datum], (trials, 1)),
+        )
+    }
+    for link in links:
+        i, j = link.parent, link.child
+        ri, ti = est[i]
+        mine = meas[:, [at[(i, t)] for t in link.targets]]  # (trials, m, 3)
+        p = np.einsum("nij,nmj->nmi", ri, mine) + ti[:, None, :]
+        q = meas[:, [at[(j, t)] for t in link.targets]]
+        w = np.array([1 / (rms[(i, t)] ** 2 + rms[(j, t)] ** 2) for t in link.targets])
+        est[j] = _procrustes(q, p, w, levelled)
+    return {j: _carried(*est[j], true_rot[:, j], stations[j], pts) for j, pts in samples.items()}
 
 
 def _predicted(net, j):
@@ -376,12 +372,6 @@ def _observed_rms(seed: int = 4) -> dict[tuple[int, int], float]:
     return rms
 
 
-def _rotvec(v):
-    from scipy.spatial.transform import Rotation
-
-    return Rotation.from_rotvec(v).as_matrix()
-
-
 def _simulate_adjustment(
     rms,
     levelled,
@@ -401,56 +391,59 @@ def _simulate_adjustment(
     held at its nominal frame (untilted: heights against true vertical); the adjustment is
     a Gauss-Newton step from the nominal poses with a finite-difference Jacobian of the
     rigid model (nothing shared with the covariance formula). Returns {station: (trials,
-    points, 3)}."""
+    points, 3)}; all trials at once, the draws as one trial after another would take them."""
     tilted = levelled if tilted is None else tilted
     keys = list(rms)
     seen = sorted({t for _, t in keys})
     col = {t: n for n, t in enumerate(seen)}
+    k_of = np.array([k for k, _ in keys])
+    t_col = np.array([col[t] for _, t in keys])
     kappas = rng.uniform(0, 2 * np.pi, len(stations))
-    nominal = [_rot_z(k) for k in kappas]
+    nominal = _rot_z(kappas)
     w = np.repeat([1.0 / rms[key] ** 2 for key in keys], 3)
     free = [j for j in range(len(stations)) if j != datum]
     n_rot = 1 if levelled else 3
     size = 3 + n_rot
 
     def unpack(u):
-        poses = {datum: (nominal[datum], stations[datum])}
+        """Poses {station: (R, t)} and target centres of unknowns u (…, n_u)."""
+        lead = u.shape[:-1]
+        poses = {
+            datum: (
+                np.broadcast_to(nominal[datum], (*lead, 3, 3)),
+                np.broadcast_to(stations[datum], (*lead, 3)),
+            )
+        }
         for n, j in enumerate(free):
-            rot = u[n * size : n * size + n_rot]
-            vec = np.array([0.0, 0.0, rot[0]]) if levelled else rot
+            rot = u[..., n * size : n * size + n_rot]
+            vec = np.concatenate([np.zeros((*lead, 2)), rot], -1) if levelled else rot
             poses[j] = (
                 _rotvec(vec) @ nominal[j],
-                stations[j] + u[n * size + n_rot : (n + 1) * size],
+                stations[j] + u[..., n * size + n_rot : (n + 1) * size],
             )
-        return poses, targets[seen] + u[len(free) * size :].reshape(-1, 3)
+        return poses, targets[seen] + u[..., len(free) * size :].reshape(*lead, -1, 3)
 
     def residual(u, meas):
+        """(…, 3 · observations): each observation placed with its station's pose, less
+        its target's centre."""
         poses, xt = unpack(u)
-        return np.concatenate(
-            [poses[k][0] @ meas[(k, t)] + poses[k][1] - xt[col[t]] for k, t in keys]
-        )
+        rot = np.stack([poses[k][0] for k in range(len(stations))], -3)[..., k_of, :, :]
+        shift = np.stack([poses[k][1] for k in range(len(stations))], -2)[..., k_of, :]
+        placed = np.einsum("...nij,...nj->...ni", rot, meas) + shift
+        return (placed - xt[..., t_col, :]).reshape(*u.shape[:-1], -1)
 
     n_u = len(free) * size + 3 * len(seen)
-    exact = {(k, t): nominal[k].T @ (targets[t] - stations[k]) for k, t in keys}
+    exact = np.einsum("nji,nj->ni", nominal[k_of], targets[[t for _, t in keys]] - stations[k_of])
     r0 = residual(np.zeros(n_u), exact)
     h = 1e-7
-    jac = np.column_stack([(residual(h * np.eye(n_u)[c], exact) - r0) / h for c in range(n_u)])
+    jac = ((residual(h * np.eye(n_u), exact) - r0) / h).T
     normal = jac.T @ (w[:, None] * jac)
     tau = tilt_arcsec / RHO_ARCSEC
-    res, true_rot = [], []
-    for _ in range(trials):
-        rot, meas = _scan(rms, nominal, tilted, tau, stations, targets, rng)
-        res.append(residual(np.zeros(n_u), meas))
-        true_rot.append(rot)
-    steps = -np.linalg.solve(normal, jac.T @ (w[:, None] * np.array(res).T)).T
-    out = {j: [] for j in samples}
-    for step, rot in zip(steps, true_rot, strict=True):
-        poses, _ = unpack(step)
-        for j, pts in samples.items():
-            local = (rot[j].T @ (pts - stations[j]).T).T
-            r_hat, t_hat = poses[j]
-            out[j].append(((r_hat @ local.T).T + t_hat - pts) * 1000)
-    return {j: np.array(v) for j, v in out.items()}
+    true_rot, meas = _scan(rms, nominal, tilted, tau, stations, targets, rng, trials)
+    res = residual(np.zeros((trials, n_u)), meas)
+    steps = -np.linalg.solve(normal, jac.T @ (w[:, None] * res.T)).T
+    poses, _ = unpack(steps)
+    return {j: _carried(*poses[j], true_rot[:, j], stations[j], pts) for j, pts in samples.items()}
 
 
 @pytest.mark.parametrize(("levelled", "tilt"), [(False, 0.0), (True, 3.0)])
