@@ -16,16 +16,19 @@ skip_iri_grammar()  # nbformat and nbclient here import jsonschema as the server
 #: The modules that take longest on a test worker (measured, seconds on two busy cores),
 #: handed out first: scripts/test gives each worker a module at a time, in collection order
 #: (``--no-loadscope-reorder``), so the last to start are short and neither worker waits
-#: long for the other at the end. xdist's own order (the most tests first) left modules of
-#: a few long tests (the time budget's, the server's) to the end: up to 22 s with one
-#: worker idle. The order changes no result.
+#: long for the other at the end (xdist's own order, the most tests first, left modules of a
+#: few long tests to the end: up to 22 s with one worker idle). Two modules of plans in
+#: this process come before those starting servers and kernels: on a fresh clone they
+#: write the compiled kernels and byte-code the later processes load (the servers first
+#: made each of their processes compile them at once: 125 CPU-s more). The order changes no
+#: result.
 LONGEST_FIRST = (
+    "test_catalogue.py",  # 30
+    "test_district.py",  # 30
     "test_dashboard_browser.py",  # 87
     "test_serve.py",  # 35
     "test_budget.py",  # 34
     "test_safety.py",  # 30
-    "test_district.py",  # 30
-    "test_catalogue.py",  # 30
     "test_network.py",  # 25
     "test_report.py",  # 25
     "test_fieldwork.py",  # 21
