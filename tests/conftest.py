@@ -46,15 +46,15 @@ LONGEST_FIRST = (
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
     """The modules of :data:`LONGEST_FIRST` first, in its order, then the others by their
     number of tests (xdist's own rule); the tests of a module keep their order."""
-    counts: dict[str, int] = {}
+    counts: dict = {}
     for item in items:
-        counts[item.path.name] = counts.get(item.path.name, 0) + 1
+        counts[item.path] = counts.get(item.path, 0) + 1
 
     def rank(item: pytest.Item) -> tuple:
         name = item.path.name
         if name in LONGEST_FIRST:
             return (0, LONGEST_FIRST.index(name), "")
-        return (1, -counts[name], str(item.path))
+        return (1, -counts[item.path], str(item.path))
 
     items.sort(key=rank)  # stable: a module's tests stay in file order
 
