@@ -13,52 +13,6 @@ from planner.app.voila_server import skip_iri_grammar
 skip_iri_grammar()  # nbformat and nbclient here import jsonschema as the server does
 
 
-#: The modules that take longest on a test worker (measured, seconds on two busy cores),
-#: handed out first: scripts/test gives each worker a module at a time, in collection order
-#: (``--no-loadscope-reorder``), so the last to start are short and neither worker waits
-#: long for the other at the end (xdist's own order, the most tests first, left modules of a
-#: few long tests to the end: up to 22 s with one worker idle). Roughly longest first, with
-#: two rules: modules of plans in this process come before those starting servers and
-#: kernels (on a fresh clone they write the compiled kernels and byte-code the later
-#: processes load, not each at once), and the time budget's, whose clock is its subject,
-#: comes after the browser's and the server's (run beside them it took 26.6 s of its 27).
-#: The order changes no result.
-LONGEST_FIRST = (
-    "test_catalogue.py",  # 35-49
-    "test_district.py",  # 34-45
-    "test_dashboard_browser.py",  # 90-100
-    "test_safety.py",  # 44-47
-    "test_network.py",  # 28-33
-    "test_serve.py",  # 35-45
-    "test_report.py",  # 27-30
-    "test_budget.py",  # 34-39
-    "test_fieldwork.py",  # 21-25
-    "test_properties.py",  # 30-32
-    "test_foundation.py",  # 23-24
-    "test_figures.py",  # 16-20
-    "test_virtual_survey.py",  # 16-19
-    "test_notebooks.py",  # 19-20
-    "test_plan.py",  # 17-19
-    "test_optimise.py",  # 16-20
-)
-
-
-def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
-    """The modules of :data:`LONGEST_FIRST` first, in its order, then the others by their
-    number of tests (xdist's own rule); the tests of a module keep their order."""
-    counts: dict = {}
-    for item in items:
-        counts[item.path] = counts.get(item.path, 0) + 1
-
-    def rank(item: pytest.Item) -> tuple:
-        name = item.path.name
-        if name in LONGEST_FIRST:
-            return (0, LONGEST_FIRST.index(name), "")
-        return (1, -counts[item.path], str(item.path))
-
-    items.sort(key=rank)  # stable: a module's tests stay in file order
-
-
 @pytest.fixture(autouse=True, scope="session")
 def _own_profile_folder(tmp_path_factory):
     """No test reads or writes the real user profile folder (~/.tls-planner/scanners)."""
