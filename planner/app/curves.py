@@ -191,22 +191,15 @@ def plot_target_sizes(
             label=f"{t} ({rule})",
         )
     if paper:
-        ax.plot(
-            SOSSA_TABLE2.columns,
-            SOSSA_TABLE2.loc["flat"],
-            "o",
-            mfc="none",
-            color="k",
-            label="Sossa Table 2 (flat)",
-        )
-        ax.plot(
-            SOSSA_TABLE2.columns,
-            SOSSA_TABLE2.loc["sphere"],
-            "s",
-            mfc="none",
-            color="k",
-            label="Sossa Table 2 (sphere, cylinder)",
-        )
+        for row, marker, types in (("flat", "o", "flat"), ("sphere", "s", "sphere, cylinder")):
+            ax.plot(
+                SOSSA_TABLE2.columns,
+                SOSSA_TABLE2.loc[row],
+                marker,
+                mfc="none",
+                color="k",
+                label=f"Sossa Table 2 ({types})",
+            )
     for i, item in enumerate(inventory):
         c = _COLOURS[i % len(_COLOURS)]
         reach = float(max_target_distance_m(item.size_mm, item.type, step_mm_at_10m=step_mm_at_10m))
