@@ -325,6 +325,34 @@ def test_bridge_search_finds_the_queue_searchs_chain():
     assert found > 10  # chains of several hops, not only direct links
 
 
+def test_the_pool_s_hops_are_made_only_for_the_candidates_the_search_reaches():
+    """The search for linking stations reads the pool's hop matrix a row at a time: the
+    same chains as from the whole matrix, rows made only for the candidates reached (none
+    where a candidate beside the stations links them), and a hop struck off both ways."""
+    from planner.pipeline.registration import _bfs_chain, _PoolHops
+
+    rng = np.random.default_rng(9)
+    made = asked = 0
+    for _ in range(200):
+        p, k = int(rng.integers(2, 40)), int(rng.integers(2, 8))
+        pp = rng.integers(0, 6, (p, p)) * (rng.random((p, p)) < 0.12)
+        full = np.maximum(pp, pp.T) >= 3
+        ps = rng.integers(0, 6, (p, k)) * (rng.random((p, k)) < 0.1) >= 3
+        groups = rng.integers(0, 3, k)
+        groups[0] = 0
+        rows = []
+        lazy = _PoolHops(p, lambda at, full=full, rows=rows: rows.extend(at) or full[at])
+        assert _bfs_chain(lazy, ps, groups) == _bfs_chain(full, ps, groups)
+        assert len(rows) == len(set(rows))  # each row made once
+        made, asked = made + len(rows), asked + p
+    assert made < asked / 2
+    full = np.ones((4, 4), dtype=bool)
+    lazy = _PoolHops(4, lambda at: full[at])
+    lazy.strike(1, 2)
+    assert not lazy[np.array([1])][0, 2] and not lazy[np.array([2])][0, 1]
+    assert lazy[np.array([0, 3])].all() and full.all()  # the rows' source stays as it was
+
+
 def test_a_datum_station_in_the_middle_keeps_the_block_s_heights(block_plan, monkeypatch):
     """Without a compensator the network leans with its datum's tilt (12.4″: 4 mm at 70 m).
     The ten-building block's first network leaves a third of its samples short in m_z,

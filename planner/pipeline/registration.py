@@ -728,14 +728,42 @@ def _bridge_pool(ctx: Context, cand_xy: np.ndarray, stations: list[int]) -> np.n
     return pool[near.min(axis=1) <= BRIDGE_RADIUS_M]
 
 
+class _PoolHops:
+    """Which pool candidates could register to which (P × P), a row made only when the
+    search reaches that candidate (``hops[rows]``, (len(rows), P)): a chain is mostly one
+    candidate beside the stations, so most rows are never asked. ``strike`` rules a hop out
+    both ways."""
+
+    def __init__(self, n: int, make_rows: Callable[[np.ndarray], np.ndarray]) -> None:
+        self.n, self._make = n, make_rows
+        self._rows: dict[int, np.ndarray] = {}
+
+    def __len__(self) -> int:
+        return self.n
+
+    def __getitem__(self, rows: np.ndarray) -> np.ndarray:
+        at = np.asarray(rows, dtype=np.int64).tolist()
+        new = [i for i in dict.fromkeys(at) if i not in self._rows]
+        if not self._rows and len(new) > self.n / 2:  # most of them: all at once
+            new = list(range(self.n))
+        if new:
+            self._rows.update(zip(new, self._make(np.array(new, dtype=np.int64)), strict=True))
+        return np.stack([self._rows[i] for i in at]) if at else np.zeros((0, self.n), bool)
+
+    def strike(self, a: int, b: int) -> None:
+        self[np.array([a, b])]  # made, then edited
+        self._rows[a][b] = self._rows[b][a] = False
+
+
 @dataclass
 class _Hops:
-    """Which pool candidates could register to which (``adj``, P × P) and to which stations
-    (``to_st``, P × K) — a necessary condition, cheap for every pair — and ``ok(i, j,
-    to_station)``, the full check of one hop. ``cut``: the deadline left pool out."""
+    """Which pool candidates could register to which (``adj``, P × P, made as asked) and to
+    which stations (``to_st``, P × K) — a necessary condition, cheap for every pair — and
+    ``ok(i, j, to_station)``, the full check of one hop. ``cut``: the deadline left pool
+    out."""
 
     pool: np.ndarray
-    adj: np.ndarray
+    adj: Callable[[np.ndarray], np.ndarray]  # pool positions (F,) → their rows (F, P)
     to_st: np.ndarray
     ok: Callable[[int, int, bool], bool]
     cut: bool = False
@@ -757,8 +785,12 @@ def _target_hops(seen: SightCache, pool: np.ndarray, sight: Sight, deadline: flo
     u_st = sight.usable & ~tc.is_control[:, None]
     rows = u_pool.any(axis=1)  # the targets no pool candidate sees count for no hop
     pool_seen = u_pool[rows].astype(np.float32)
-    adj = (pool_seen.T @ pool_seen) >= 3  # common targets, exact in float32 below 2**24
     to_st = (pool_seen.T @ u_st[rows].astype(np.float32)) >= 3
+
+    def adj(at: np.ndarray) -> np.ndarray:  # three common targets, exact in float32 < 2**24
+        if len(at) == len(pool):  # every row: the symmetric product, half the work
+            return ((pool_seen.T @ pool_seen) >= 3)[at]
+        return (pool_seen[:, at].T @ pool_seen) >= 3
 
     def ok(i: int, j: int, to_station: bool) -> bool:
         other = u_st[:, j] if to_station else u_pool[:, j]
@@ -787,7 +819,8 @@ def _cloud_hops(
         parent = stations[j] if to_station else int(pool[j])
         return seen.clouds.link(parent, int(pool[i]), seen.cand_xy).fixed
 
-    return _Hops(pool, over[k:, k:], over[k:, :k], ok)
+    among = over[k:, k:]
+    return _Hops(pool, lambda at: among[at], over[k:, :k], ok)
 
 
 def _hops(
@@ -811,9 +844,10 @@ def _hops(
     if by_targets is None:
         return by_clouds
     t_ok, c_ok = by_targets.ok, by_clouds.ok
+    t_adj, c_adj = by_targets.adj, by_clouds.adj
     return _Hops(
         pool,
-        by_targets.adj | by_clouds.adj,
+        lambda at: t_adj(at) | c_adj(at),
         by_targets.to_st | by_clouds.to_st,
         lambda i, j, to_station: t_ok(i, j, to_station) or c_ok(i, j, to_station),
         by_targets.cut,
@@ -826,7 +860,7 @@ def _bridges(hops: _Hops, groups: np.ndarray, deadline: float = math.inf) -> tup
     repeated until one group is left, none can be reached or ``deadline`` passes. A chain
     found is checked hop by hop (:attr:`_Hops.ok`) and a hop that fails is struck off
     before searching again. Also whether the deadline cut the search short."""
-    adj, to_st, cut = hops.adj.copy(), hops.to_st.copy(), hops.cut
+    adj, to_st, cut = _PoolHops(len(hops.pool), hops.adj), hops.to_st.copy(), hops.cut
     added: list[int] = []
     groups = groups.copy()
     for _ in range(MAX_BRIDGE_SEARCHES):
@@ -842,7 +876,7 @@ def _bridges(hops: _Hops, groups: np.ndarray, deadline: float = math.inf) -> tup
         bad = False
         for a, b in zip(chain[1:], chain[:-1], strict=True):
             if not hops.ok(a, b, False):
-                adj[a, b] = adj[b, a] = False
+                adj.strike(a, b)
                 bad = True
         for end, mine in ((chain[-1], groups == 0), (chain[0], groups > 0)):
             for s in np.flatnonzero(to_st[end] & mine):
@@ -868,10 +902,13 @@ BRIDGE_CHUNK = 512
 MAX_BRIDGE_SEARCHES = 200
 
 
-def _bfs_chain(adj: np.ndarray, hop: np.ndarray, groups: np.ndarray) -> list[int] | None:
+def _bfs_chain(
+    adj: np.ndarray | _PoolHops, hop: np.ndarray, groups: np.ndarray
+) -> list[int] | None:
     """Shortest chain of pool candidates from group 0 to any other group (pool indices,
-    the one touching the other group first), or None; ``adj`` (P, P) and ``hop`` (P, K):
-    the hops among the pool and from the pool to the stations.
+    the one touching the other group first), or None; ``adj`` (P, P; rows are read only
+    for the candidates reached) and ``hop`` (P, K): the hops among the pool and from the
+    pool to the stations.
 
     Breadth-first, a level at a time on the boolean hop matrix; within a level the order is
     that of a plain queue (by parent, then index), so the chain found is the queue's."""
