@@ -37,6 +37,7 @@ from planner.errors import InputError
 __all__ = [
     "FAULT_ENV",
     "check_output_file",
+    "check_output_folder",
     "fault_point",
     "replace_folder_files",
     "write_bytes_atomic",
@@ -108,6 +109,23 @@ def check_output_file(path: str | Path) -> Path:
         raise InputError(f"{str(p)!r} is a folder; name a file to write")
     _check_parent(p, create=False)
     return p
+
+
+def check_output_folder(folder: str | Path) -> Path:
+    """Where a plan's folder may go, checked before any work (a plan can take minutes): a
+    non-empty path, not a file, under folders that are folders (the missing ones are made
+    when the plan is written)."""
+    if str(folder) == "":
+        raise InputError("the output folder is empty; name a folder (e.g. --out plan)")
+    target = Path(folder)
+    if target.exists() and not target.is_dir():
+        raise InputError(f"{str(target)!r} exists and is not a folder; choose another --out")
+    above = target.resolve().parent
+    while not above.exists():
+        above = above.parent
+    if not above.is_dir():
+        raise InputError(f"{str(above)!r} is not a folder; choose another --out")
+    return target
 
 
 def _check_parent(p: Path, create: bool) -> None:
@@ -276,11 +294,7 @@ def replace_folder_files(
     file that the new set lacks is not carried over as if it were the user's). The folder
     and its parents are created if missing.
     """
-    target = Path(folder)
-    if str(folder) == "":
-        raise InputError("the output folder is empty; name a folder (e.g. --out plan)")
-    if target.exists() and not target.is_dir():
-        raise InputError(f"{str(target)!r} exists and is not a folder; choose another --out")
+    target = check_output_folder(folder)
     _check_parent(target.resolve(), create=True)
     target = target.resolve()
     owned_names = set(owned) | set(files)

@@ -516,8 +516,6 @@ def test_baseline_outliers_are_flagged(tmp_path):
         (["report", "--out", "{tmp}/missing/r.html"], "does not exist"),
         (["report", "--out", "{tmp}"], "must name an .html file"),
         (["report", "--out", "{tmp}/dir.html"], "is a folder"),
-        (["plan", "--out", ""], "the output folder is empty"),
-        (["plan", "--out", "{tmp}/file.txt"], "exists and is not a folder"),
         (["plan", "--out", "{tmp}/x", "--scanner", "no-such-scanner"], "Unknown scanner"),
         (["plan", "--out", "{tmp}/x", "--max-z-mm", "-1"], "max_z_mm must be > 0"),
         (["plan", "--out", "{tmp}/x", "--max-gamma-deg", "95"], "max_gamma_deg must be > 0 and"),
@@ -534,6 +532,33 @@ def test_bad_outputs_and_options_are_exit_2(tmp_path, args, message):
     code, _, err = run(*argv, "-q")
     assert code == 2 and message in err, err
     assert not (tmp_path / "missing").exists() and not (tmp_path / "x").exists()
+
+
+@pytest.mark.parametrize("command", ["plan", "figures"])
+@pytest.mark.parametrize(
+    ("out", "message"),
+    [
+        ("", "the output folder is empty"),
+        ("{tmp}/file.txt", "exists and is not a folder"),
+        ("{tmp}/file.txt/plan", "file.txt' is not a folder"),
+    ],
+)
+def test_a_bad_output_folder_is_refused_before_the_plan(
+    monkeypatch, tmp_path, command, out, message
+):
+    """A plan can take minutes: an --out that cannot be written is said at once."""
+    import planner.app.figures as figures
+    import planner.pipeline.planning as planning
+
+    def planned(*_a, **_k):
+        raise AssertionError("planned before the output folder was checked")
+
+    monkeypatch.setattr(planning, "plan", planned)
+    monkeypatch.setattr(figures, "plan", planned)
+    (tmp_path / "file.txt").write_text("a file")
+    code, _, err = run(command, "--out", out.format(tmp=tmp_path), *(["-q"] * (command == "plan")))
+    assert code == 2 and message in err, err
+    assert (tmp_path / "file.txt").read_text() == "a file"
 
 
 def test_an_internal_error_is_exit_3_with_a_log(monkeypatch, tmp_path):

@@ -329,12 +329,14 @@ def run_plan(args: argparse.Namespace) -> int:
     command's start (reading the site included): planning ends with
     :data:`DOCUMENT_SHARE` of the budget left, and the booklet leaves out the pages there is
     no time for (said in the summary and on its last page)."""
+    from planner.atomic import check_output_folder
     from planner.pipeline.clock import pace
     from planner.pipeline.export import save
     from planner.pipeline.planning import plan
 
     started = getattr(args, "started", None) or time.monotonic()
     progress = _StderrProgress(args.quiet)
+    check_output_folder(args.out)  # before the plan, which can take minutes
     site, scanner, req, settings = plan_inputs(args)
     import ezdxf  # noqa: F401  (the DXF writer's import, 0.7 s, made now: not after planning)
 

@@ -14,7 +14,7 @@ from matplotlib.figure import Figure
 
 from planner.app.curves import plot_height, plot_models, plot_planimetric, plot_target_sizes
 from planner.app.maps import plot_coverage, plot_plan_map
-from planner.atomic import write_bytes_atomic
+from planner.atomic import check_output_folder, write_bytes_atomic
 from planner.pipeline.planning import plan
 from planner.scanner import DEFAULT_SCANNER, Scanner
 
@@ -30,7 +30,7 @@ def _save(fig: Figure, path: Path) -> Path:
 
 def make_figures(out_dir: str | Path = "figures") -> list[Path]:
     """Regenerate the README figures in ``out_dir``; returns the files written."""
-    out = Path(out_dir)
+    out = check_output_folder(out_dir)  # before the plan
     paper = Scanner.from_name(DEFAULT_SCANNER)
     default_plan = plan()
     written = [
