@@ -47,9 +47,11 @@ def test_accuracy_explorer_plots_are_legible(monkeypatch, gamma, nu):
         ),
     )
     ui = explorers.AccuracyExplorer()
-    ui.gamma.value, ui.nu.value = gamma, nu
-    ui.update()
+    ui.gamma.value, ui.nu.value = gamma, nu  # each value changed draws the plots again
+    if not figures:  # (the values it starts with: nothing changed, nothing drawn)
+        ui.update()
     fig = figures[-2]  # the last update's first figure: the paper's tables
+    assert f"γ = {gamma:g}°" in [ln.get_label() for ax in fig.axes for ln in ax.get_lines()]
     FigureCanvasAgg(fig).draw()
     renderer = fig.canvas.get_renderer()
     box = fig.bbox
