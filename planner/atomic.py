@@ -112,19 +112,26 @@ def check_output_file(path: str | Path) -> Path:
 
 
 def check_output_folder(folder: str | Path) -> Path:
-    """Where a plan's folder may go, checked before any work (a plan can take minutes): a
-    non-empty path, not a file, under folders that are folders (the missing ones are made
-    when the plan is written)."""
+    """Where a folder of files (a plan's, the figures') may go, checked before any work (a
+    plan can take minutes): a non-empty path, not a file, under folders that are folders
+    and can be written in (the missing ones are made when the files are written)."""
     if str(folder) == "":
         raise InputError("the output folder is empty; name a folder (e.g. --out plan)")
     target = Path(folder)
     if target.exists() and not target.is_dir():
         raise InputError(f"{str(target)!r} exists and is not a folder; choose another --out")
-    above = target.resolve().parent
+    try:
+        above = target.resolve().parent
+    except (OSError, RuntimeError) as exc:  # RuntimeError: a loop of symbolic links
+        raise InputError(
+            f"{str(target)!r} cannot be followed ({exc}); choose another --out"
+        ) from None
     while not above.exists():
         above = above.parent
     if not above.is_dir():
         raise InputError(f"{str(above)!r} is not a folder; choose another --out")
+    if not os.access(above, os.W_OK | os.X_OK):
+        raise InputError(f"the folder {str(above)!r} cannot be written in; choose another --out")
     return target
 
 

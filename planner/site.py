@@ -865,6 +865,15 @@ class Site:
                         out.append((b.id, part, p.clear_height_m, b.height_m))
         return out
 
+    def passages_through(self, buildings: Sequence[Building]) -> list[Passage]:
+        """The passages through any of ``buildings``: those a part of the site holding only
+        these buildings keeps (one whose building is left out would pass through nothing:
+        where it reaches beyond its walls it is open ground)."""
+        if not self.passages or not buildings:
+            return []
+        kept = shapely.union_all([b.footprint for b in buildings])
+        return [p for p in self.passages if p.geometry.intersects(kept)]
+
     def select(self, building_ids: Sequence[str] | None) -> Site:
         """The same site planning only ``building_ids`` (the others act as obstacles)."""
         if building_ids is None:

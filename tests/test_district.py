@@ -9,13 +9,22 @@ from dataclasses import replace
 import numpy as np
 import pandas as pd
 import pytest
+from sites import rect
 from sites import run_cli as cli
 
 from planner.errors import InputError
-from planner.pipeline.district import block_site, local_cluster, partition, plan_district, stitch
+from planner.pipeline.district import (
+    block_region,
+    block_site,
+    local_cluster,
+    partition,
+    plan_district,
+    stitch,
+)
 from planner.pipeline.planning import plan
 from planner.pipeline.requirements import PlanSettings, Requirements
 from planner.scanner import load_scanner
+from planner.site import Building, Passage, Site
 from planner.synthetic import town
 
 SETTINGS = PlanSettings(grid_m=4, sample_spacing_m=4, sample_height_step_m=4, time_limit_s=300)
@@ -48,6 +57,22 @@ def test_a_block_site_keeps_its_halo_as_blockers(district):
     others = {b.id for b in sub.buildings if not b.planned}
     assert others and others.isdisjoint(blocks[0].buildings)
     assert block_site(site, blocks[0], halo_m=0.0).buildings != sub.buildings
+
+
+def test_a_block_site_keeps_a_passage_with_its_building():
+    """A gateway drawn a little beyond its building's walls reaches into the halo of a
+    block the building is not in: that block's site leaves it out (it would be a passage
+    through nothing, an error), a block that holds the building keeps it."""
+    near, far = (
+        Building("near", rect(0, 0, 20, 20), 10.0),
+        Building("far", rect(100, 0, 120, 20), 10.0),
+    )
+    gate = Passage("gate", rect(95, 8, 125, 12), 3.0)  # 5 m beyond either wall
+    site = Site([near, far], passages=[gate])
+    block = next(b for b in partition(site, 80.0) if b.buildings == ("near",))
+    assert gate.geometry.intersects(block_region(block, 77.0))  # in the halo, its building not
+    assert block_site(site, block, 77.0).passages == []
+    assert block_site(site, block, 85.0).passages == [gate]  # the building in the halo
 
 
 @pytest.fixture(scope="module")

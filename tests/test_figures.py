@@ -51,7 +51,7 @@ def test_accuracy_explorer_plots_are_legible(monkeypatch, gamma, nu):
     if not figures:  # (the values it starts with: nothing changed, nothing drawn)
         ui.update()
     fig = figures[-2]  # the last update's first figure: the paper's tables
-    assert f"γ = {gamma:g}°" in [ln.get_label() for ax in fig.axes for ln in ax.get_lines()]
+    assert f"γ = {gamma:g}°, ν = {nu:g}°" in figures[-1]._suptitle.get_text()  # its update
     FigureCanvasAgg(fig).draw()
     renderer = fig.canvas.get_renderer()
     box = fig.bbox

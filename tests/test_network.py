@@ -4,6 +4,8 @@ error judged, and what the plan says when registration is what fails."""
 
 from __future__ import annotations
 
+from types import SimpleNamespace
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -329,7 +331,7 @@ def test_the_pool_s_hops_are_made_only_for_the_candidates_the_search_reaches():
     """The search for linking stations reads the pool's hop matrix a row at a time: the
     same chains as from the whole matrix, rows made only for the candidates reached (none
     where a candidate beside the stations links them), and a hop struck off both ways."""
-    from planner.pipeline.registration import _bfs_chain, _PoolHops
+    from planner.pipeline.registration import _bfs_chain, _PoolHops, _target_hops
 
     rng = np.random.default_rng(9)
     made = asked = 0
@@ -346,6 +348,14 @@ def test_the_pool_s_hops_are_made_only_for_the_candidates_the_search_reaches():
         assert len(rows) == len(set(rows))  # each row made once
         made, asked = made + len(rows), asked + p
     assert made < asked / 2
+    # the rows by targets: three targets in common, by rows or all at once
+    seen = rng.random((60, 50)) < 0.2  # (targets, pool)
+    tc = SimpleNamespace(is_control=np.zeros(60, bool), xyz=rng.random((60, 3)))
+    cache = SimpleNamespace(tc=tc, usable=lambda at: seen[:, at - 100])
+    hops = _target_hops(cache, np.arange(100, 150), SimpleNamespace(usable=seen[:, :3]), np.inf)
+    want = seen.T.astype(int) @ seen >= 3
+    at = rng.permutation(50)
+    assert (hops.adj(at) == want[at]).all() and (hops.adj(at[:7]) == want[at[:7]]).all()
     full = np.ones((4, 4), dtype=bool)
     lazy = _PoolHops(4, lambda at: full[at])
     lazy.strike(1, 2)

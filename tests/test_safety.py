@@ -541,6 +541,7 @@ def test_bad_outputs_and_options_are_exit_2(tmp_path, args, message):
         ("", "the output folder is empty"),
         ("{tmp}/file.txt", "exists and is not a folder"),
         ("{tmp}/file.txt/plan", "file.txt' is not a folder"),
+        ("{tmp}/loop/plan", "cannot be followed"),  # a symbolic link to itself
     ],
 )
 def test_a_bad_output_folder_is_refused_before_the_plan(
@@ -556,6 +557,7 @@ def test_a_bad_output_folder_is_refused_before_the_plan(
     monkeypatch.setattr(planning, "plan", planned)
     monkeypatch.setattr(figures, "plan", planned)
     (tmp_path / "file.txt").write_text("a file")
+    (tmp_path / "loop").symlink_to("loop")
     code, _, err = run(command, "--out", out.format(tmp=tmp_path), *(["-q"] * (command == "plan")))
     assert code == 2 and message in err, err
     assert (tmp_path / "file.txt").read_text() == "a file"

@@ -68,8 +68,8 @@ class AccuracyExplorer:
             description="V angle RMS [″]",
             style=style,
         )
-        # the sliders redraw on release, not at every step of a drag: a redraw takes about a
-        # second (two figures), and the steps of a drag would queue up behind it
+        # the sliders redraw on release, not at every step of a drag: a redraw takes about
+        # 1.5 s (two figures), and the steps of a drag would queue up behind it
         self.distance = w.FloatRangeSlider(
             value=(0.0, 120.0),
             min=0.0,

@@ -29,7 +29,9 @@ def _save(fig: Figure, path: Path) -> Path:
 
 
 def make_figures(out_dir: str | Path = "figures") -> list[Path]:
-    """Regenerate the README figures in ``out_dir``; returns the files written."""
+    """Regenerate the README figures in ``out_dir``; returns the files written. An
+    ``out_dir`` that cannot hold them is an :class:`~planner.errors.InputError` before any
+    work."""
     out = check_output_folder(out_dir)  # before the plan
     paper = Scanner.from_name(DEFAULT_SCANNER)
     default_plan = plan()

@@ -165,7 +165,8 @@ def block_region(block: Block, halo_m: float) -> shapely.Geometry:
 
 def block_site(site: Site, block: Block, halo_m: float) -> Site:
     """The site of one block: its buildings planned; everything within ``halo_m`` of them
-    kept (other buildings only block the beam)."""
+    kept (other buildings only block the beam), a passage with the buildings it passes
+    through (the end of one reaching into the halo from a building left out is ground)."""
     region = block_region(block, halo_m)
     mine = set(block.buildings)
     buildings = [
@@ -177,7 +178,7 @@ def block_site(site: Site, block: Block, halo_m: float) -> Site:
         buildings,
         obstacles=[o for o in site.obstacles if o.geometry.intersects(region)],
         no_go=[a for a in site.no_go if a.geometry.intersects(region)],
-        passages=[p for p in site.passages if p.geometry.intersects(region)],
+        passages=site.passages_through(buildings),
         boundary=site.boundary,
         crs=site.crs,
         name=f"{site.name} {block.key}",
@@ -393,7 +394,7 @@ def meeting_table(p: Plan, region: shapely.Geometry | None = None) -> pd.DataFra
     ]
     contexts = [(wb.ctx, True)]
     if any(b.planned for b in halo):
-        around = replace(wb.site, buildings=halo, zones=[])
+        around = replace(wb.site, buildings=halo, passages=wb.site.passages_through(halo), zones=[])
         fac = build_facades(around, st.sample_spacing_m, st.sample_height_step_m)
         contexts.append(
             (Context.build(around, fac, p.scanner, p.requirements, st, wb.reach), False)

@@ -732,7 +732,7 @@ class _PoolHops:
     """Which pool candidates could register to which (P × P), a row made only when the
     search reaches that candidate (``hops[rows]``, (len(rows), P)): a chain is mostly one
     candidate beside the stations, so most rows are never asked. ``strike`` rules a hop out
-    both ways."""
+    both ways (in the rows kept: ``make_rows`` returns new arrays, never views)."""
 
     def __init__(self, n: int, make_rows: Callable[[np.ndarray], np.ndarray]) -> None:
         self.n, self._make = n, make_rows

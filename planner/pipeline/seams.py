@@ -318,7 +318,7 @@ def context_of(site: Site, scanner, req, settings, reach: float):
         sub = Site(
             bs,
             obstacles=[o for o in site.obstacles if o.geometry.intersects(region)],
-            passages=[p for p in site.passages if p.geometry.intersects(region)],
+            passages=site.passages_through(bs),
             crs=site.crs,
             limits=site.limits,
             near_m=site.near_m,
