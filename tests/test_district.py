@@ -555,3 +555,9 @@ def test_one_datums_tilt_leans_the_whole_district(blockwise):
     own = pd.concat([q.scanned for k, q in enumerate(plans) if k != root])
     own = own.set_index("sample_id").loc[cov["sample_id"], "reg_m_z_mm"].to_numpy()
     assert (own < lean).mean() > 0.3
+    # the samples the common frame takes over are counted, and the remedy said
+    lost = p.scanned["reason"].str.startswith("the registration error takes it over once")
+    said = [m for m in p.messages if "exceed a limit in the common frame" in m]
+    assert lost.sum() > 50  # (450: the far block's heights)
+    assert len(said) == 1 and f"{int(lost.sum())} sample(s)" in said[0], said
+    assert f"datum of block {key}" in said[0] and "--control" in said[0]

@@ -61,6 +61,7 @@ from planner.pipeline.result import Plan, SolverReport
 from planner.pipeline.route import field_route
 from planner.pipeline.schema import MEETING_COLUMNS, METRIC_KEYS
 from planner.pipeline.tables import (
+    DATUM_LEVELLING_FIX,
     REASON_DATA,
     budget_message,
     rename_stations,
@@ -850,7 +851,9 @@ def _tie_seams(
         xyz |= dict(zip(f.ids, f.xyz, strict=True))
     limits = coverage[[f"_lim_m_{c}" for c in "xyz"]].to_numpy(dtype=float)
     facade_df = pd.concat(facades, ignore_index=True)
+    met = coverage["meets"].to_numpy(dtype=bool)
     coverage = seams.add_frame_errors(coverage, facade_df, per_station, xyz, limits)
+    n_lost = int((met & ~coverage["meets"].to_numpy(dtype=bool)).sum())
     notes = []
     lost = [b.key for b, e, f in zip(blocks, extra, frames, strict=True) if e is None and f.ids]
     for b, e, f in zip(blocks, extra, frames, strict=True):
@@ -885,6 +888,19 @@ def _tie_seams(
         )
         + "."
     )
+    if n_lost:
+        notes.append(
+            f"District network: {n_lost} sample(s) met within their block exceed a limit in "
+            "the common frame (the seams' error added"
+            + (
+                f", and the frame leaning about the datum of block "
+                f"{blocks[seams.root_block(frames)].key}: a scanner without a compensator, "
+                f"{tau:g}″); {DATUM_LEVELLING_FIX}"
+                if lean is not None
+                else ")"
+            )
+            + "."
+        )
     return coverage, links, notes
 
 
