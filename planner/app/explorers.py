@@ -70,34 +70,16 @@ class AccuracyExplorer:
         )
         # the sliders redraw on release, not at every step of a drag: a redraw takes about
         # 1.5 s (two figures), and the steps of a drag would queue up behind it
+        slider = {"min": 0.0, "step": 5.0, "style": style, "continuous_update": False}
         self.distance = w.FloatRangeSlider(
             value=(0.0, 120.0),
-            min=0.0,
             max=300.0,
-            step=5.0,
             description="distance [m]",
-            style=style,
             layout=w.Layout(width="95%"),
-            continuous_update=False,
+            **slider,
         )
-        self.gamma = w.FloatSlider(
-            value=30.0,
-            min=0.0,
-            max=85.0,
-            step=5.0,
-            description="γ [deg]",
-            style=style,
-            continuous_update=False,
-        )
-        self.nu = w.FloatSlider(
-            value=30.0,
-            min=0.0,
-            max=90.0,
-            step=5.0,
-            description="ν [deg]",
-            style=style,
-            continuous_update=False,
-        )
+        self.gamma = w.FloatSlider(value=30.0, max=85.0, description="γ [deg]", **slider)
+        self.nu = w.FloatSlider(value=30.0, max=90.0, description="ν [deg]", **slider)
         self.limit = w.BoundedFloatText(
             value=4.0, min=0.1, max=100, step=0.5, description="requirement [mm]", style=style
         )
