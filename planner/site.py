@@ -869,10 +869,11 @@ class Site:
         """The passages through any of ``buildings``: those a part of the site holding only
         these buildings keeps (one whose building is left out would pass through nothing:
         where it reaches beyond its walls it is open ground)."""
-        if not self.passages or not buildings:
-            return []
-        kept = shapely.union_all([b.footprint for b in buildings])
-        return [p for p in self.passages if p.geometry.intersects(kept)]
+        return [
+            p
+            for p in self.passages
+            if any(b.footprint.intersects(p.geometry) for b in buildings)  # as the check
+        ]
 
     def select(self, building_ids: Sequence[str] | None) -> Site:
         """The same site planning only ``building_ids`` (the others act as obstacles)."""

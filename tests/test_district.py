@@ -73,6 +73,12 @@ def test_a_block_site_keeps_a_passage_with_its_building():
     assert gate.geometry.intersects(block_region(block, 77.0))  # in the halo, its building not
     assert block_site(site, block, 77.0).passages == []
     assert block_site(site, block, 85.0).passages == [gate]  # the building in the halo
+    # a seam's context over a region holding the gateway's end but not its building
+    from planner.pipeline.seams import context_of
+
+    make = context_of(site, UNLEVELLED, Requirements(), SETTINGS, 60.0)
+    assert make(rect(15, 0, 99, 20)).site.passages == []
+    assert make(rect(15, 0, 101, 20)).site.passages == [gate]
 
 
 @pytest.fixture(scope="module")
@@ -99,6 +105,9 @@ def test_stitched_plan_is_a_valid_cover(stitched, district):
     assert (cov.loc[~cov["meets"], "reason"] != "").all()
     assert set(cov.loc[cov["meets"], "station_id"]) <= ids
     assert len(p.route.table) == len(p.stations)
+    # a levelled scanner's frame does not lean: a note of samples the frame takes over, if
+    # any, names no datum
+    assert not [m for m in p.messages if "common frame" in m and "datum" in m]
 
 
 def test_stitched_matches_the_single_process_plan_within_its_bound(stitched, district):
@@ -559,5 +568,5 @@ def test_one_datums_tilt_leans_the_whole_district(blockwise):
     lost = p.scanned["reason"].str.startswith("the registration error takes it over once")
     said = [m for m in p.messages if "exceed a limit in the common frame" in m]
     assert lost.sum() > 50  # (450: the far block's heights)
-    assert len(said) == 1 and f"{int(lost.sum())} sample(s)" in said[0], said
-    assert f"datum of block {key}" in said[0] and "--control" in said[0]
+    assert len(said) == 1 and f": {int(lost.sum())} sample(s)" in said[0], said
+    assert f"datum station of block {key}" in said[0] and "--control" in said[0]

@@ -837,7 +837,8 @@ def _tie_seams(
     extra, used = seams.tie_blocks(frames, found)
     # one datum's tilt leans the district's frame: the root block's, in place of each
     # block's own (a scanner without a compensator)
-    lean = datums[seams.root_block(frames)]
+    root = seams.root_block(frames)
+    lean = datums[root]
     tau = scanner.initial_tilt_rms_arcsec
     per_station, xyz = {}, {}
     for f, e, own, leans in zip(frames, extra, datums, leaning, strict=True):
@@ -853,7 +854,9 @@ def _tie_seams(
     facade_df = pd.concat(facades, ignore_index=True)
     met = coverage["meets"].to_numpy(dtype=bool)
     coverage = seams.add_frame_errors(coverage, facade_df, per_station, xyz, limits)
-    n_lost = int((met & ~coverage["meets"].to_numpy(dtype=bool)).sum())
+    lost_now = met & ~coverage["meets"].to_numpy(dtype=bool)
+    in_height = lost_now & (coverage["m_z_mm"].to_numpy(dtype=float) > limits[:, 2] * (1 + 1e-9))
+    n_lost, n_height = int(lost_now.sum()), int(in_height.sum())
     notes = []
     lost = [b.key for b, e, f in zip(blocks, extra, frames, strict=True) if e is None and f.ids]
     for b, e, f in zip(blocks, extra, frames, strict=True):
@@ -891,13 +894,13 @@ def _tie_seams(
     if n_lost:
         notes.append(
             f"District network: {n_lost} sample(s) met within their block exceed a limit in "
-            "the common frame (the seams' error added"
+            "the common frame, with the seams' error added"
             + (
-                f", and the frame leaning about the datum of block "
-                f"{blocks[seams.root_block(frames)].key}: a scanner without a compensator, "
-                f"{tau:g}″); {DATUM_LEVELLING_FIX}"
-                if lean is not None
-                else ")"
+                f"; {n_height} of them in height, where the frame leans about the datum "
+                f"station of block {blocks[root].key} (its levelling, {tau:g}″ RMS, carried "
+                f"to every block): {DATUM_LEVELLING_FIX}"
+                if lean is not None and n_height
+                else ""
             )
             + "."
         )
