@@ -852,11 +852,8 @@ def _tie_seams(
         xyz |= dict(zip(f.ids, f.xyz, strict=True))
     limits = coverage[[f"_lim_m_{c}" for c in "xyz"]].to_numpy(dtype=float)
     facade_df = pd.concat(facades, ignore_index=True)
-    met = coverage["meets"].to_numpy(dtype=bool)
-    coverage = seams.add_frame_errors(coverage, facade_df, per_station, xyz, limits)
-    lost_now = met & ~coverage["meets"].to_numpy(dtype=bool)
-    in_height = lost_now & (coverage["m_z_mm"].to_numpy(dtype=float) > limits[:, 2] * (1 + 1e-9))
-    n_lost, n_height = int(lost_now.sum()), int(in_height.sum())
+    coverage, over = seams.add_frame_errors(coverage, facade_df, per_station, xyz, limits)
+    n_lost, n_height = int(over.any(axis=1).sum()), int(over[:, 2].sum())
     notes = []
     lost = [b.key for b, e, f in zip(blocks, extra, frames, strict=True) if e is None and f.ids]
     for b, e, f in zip(blocks, extra, frames, strict=True):

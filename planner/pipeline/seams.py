@@ -249,15 +249,17 @@ def add_frame_errors(
     extra: dict[str, np.ndarray],
     xyz: dict[str, np.ndarray],
     limits: np.ndarray,
-) -> pd.DataFrame:
+) -> tuple[pd.DataFrame, np.ndarray]:
     """``coverage`` with every sample's registration error grown by its station's frame
     error (``extra``: station id → 6 × 6 pose covariance; ``xyz`` its scanner centre):
     the totals again, and a sample that met its m_x, m_y, m_z limits (``limits`` (N, 3))
-    no longer meeting them unmet, with the reason."""
+    no longer meeting them unmet, with the reason. Also which samples were lost so, by
+    the limit each exceeds now ((N, 3): m_x, m_y, m_z)."""
     cov = coverage.copy()
+    over = np.zeros((len(cov), 3), dtype=bool)
     has = cov["station_id"].isin(list(extra)).to_numpy() & cov["station_id"].ne("").to_numpy()
     if not has.any():
-        return cov
+        return cov, over
     rows = np.flatnonzero(has)
     sid = cov["station_id"].to_numpy()[rows]
     pose = np.stack([extra[s] for s in sid])
@@ -271,23 +273,22 @@ def add_frame_errors(
     pts = cov[["x", "y", "z"]].to_numpy(float)[rows]
     more = point_registration_variances(pose, st_xyz, pts, along, normal)
     was = cov["meets"].to_numpy().copy()
-    worse = np.zeros(len(cov), dtype=bool)
-    for c, v in zip("xyz", more, strict=True):
+    for k, (c, v) in enumerate(zip("xyz", more, strict=True)):
         # (v takes a block's own datum lean out again where the district's replaces it:
         # never more than the sample had, so below zero only by rounding)
         reg = np.sqrt(np.maximum(cov[f"reg_m_{c}_mm"].to_numpy()[rows] ** 2 + v, 0.0))
         total = np.hypot(cov[f"scanner_m_{c}_mm"].to_numpy()[rows], reg)
         cov.loc[cov.index[rows], f"reg_m_{c}_mm"] = reg
         cov.loc[cov.index[rows], f"m_{c}_mm"] = total
-        over = total > limits[rows, "xyz".index(c)] * (1 + 1e-9)
-        worse[rows[over]] = True
-    lost = was & worse
+        over[rows, k] = total > limits[rows, k] * (1 + 1e-9)
+    over &= was.astype(bool)[:, None]
+    lost = over.any(axis=1)
     cov.loc[lost, "meets"] = False
     cov.loc[lost, "reason"] = (
         "the registration error takes it over once its block is tied to the district's "
         "network (the seams' error added)"
     )
-    return cov
+    return cov, over
 
 
 def untied_blocks(coverage: pd.DataFrame, stations: set[str], block: str) -> pd.DataFrame:
