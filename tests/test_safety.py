@@ -427,8 +427,16 @@ SITE_ATTACKS = [
     [pytest.param(c, n, e, m, id=i) for i, n, c, e, m in SITE_ATTACKS],
 )
 def test_bad_site_input_is_exit_2_with_a_message_and_nothing_written(
-    tmp_path, content, name, extra, message
+    tmp_path, monkeypatch, content, name, extra, message
 ):
+    """Refused before any work: no Dask cluster is started for it (facades of too many
+    samples send ``--district auto`` to district mode; each block's are counted first)."""
+    import planner.pipeline.district as district
+
+    def no_cluster(*_a, **_k):
+        raise AssertionError("a Dask cluster was started for an input to refuse")
+
+    monkeypatch.setattr(district, "local_cluster", no_cluster)
     path = tmp_path / name
     path.write_text(content) if isinstance(content, str) else path.write_bytes(content)
     out = tmp_path / "out"

@@ -48,7 +48,7 @@ from shapely.geometry import box
 
 from planner.errors import InputError
 from planner.pipeline.evaluate import Progress
-from planner.pipeline.facades import estimate_samples
+from planner.pipeline.facades import check_sample_count, estimate_samples
 from planner.pipeline.requirements import (
     DEFAULT_BLOCK_M,
     DISTRICT_SAMPLES,
@@ -476,6 +476,12 @@ def plan_district(
         raise InputError(f"--workers must be at least 1 (got {workers})")
     _memory_bytes(memory_limit)
     sites = [block_site(site, b, halo) for b in blocks]
+    # each block's samples, refused here as a block's plan would refuse them (before a
+    # cluster is started for nothing); the largest blocks go first (below)
+    work = [estimate_samples(s, st.sample_spacing_m, st.sample_height_step_m) for s in sites]
+    check_sample_count(
+        max(work, default=0), st.sample_spacing_m, st.sample_height_step_m, st.max_samples
+    )
     say(0.0, f"{len(blocks)} block(s) of {block_m:g} m, halo {halo:.0f} m")
     from dask.distributed import Client, as_completed
     from distributed.scheduler import KilledWorker
@@ -497,7 +503,6 @@ def plan_district(
     client.run(_import_planner)
     # the largest blocks first (by their samples), so that the last ones to finish are small
     # and no worker idles long while another plans a large block at the end
-    work = [estimate_samples(s, st.sample_spacing_m, st.sample_height_step_m) for s in sites]
     # the time budget: the blocks share what is left before the stitch's share; a block is
     # given its share when a worker takes it (as many in flight as the cluster has threads),
     # so that a block finishing early leaves its time to the ones after it

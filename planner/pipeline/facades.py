@@ -13,12 +13,14 @@ from dataclasses import dataclass
 import numpy as np
 import shapely
 
+from planner.errors import InputError
 from planner.site import Site
 
 __all__ = [
     "FacadeSet",
     "bridge_edges",
     "build_facades",
+    "check_sample_count",
     "estimate_samples",
     "footprint_edges",
     "in_opening",
@@ -120,6 +122,20 @@ def estimate_samples(site: Site, sample_spacing_m: float, sample_height_step_m: 
                 edges = len(ring.coords) - 1
                 total += (ring.length / sample_spacing_m + edges) * rows
     return int(total)
+
+
+def check_sample_count(
+    n_est: int, sample_spacing_m: float, sample_height_step_m: float, max_samples: float
+) -> None:
+    """Refuse facades that would need more than ``max_samples`` samples (``n_est``, from
+    :func:`estimate_samples`), before any is made, saying what to change."""
+    if n_est > max_samples:
+        raise InputError(
+            f"the facades would need about {n_est:,} samples at {sample_spacing_m:g} m × "
+            f"{sample_height_step_m:g} m, more than {max_samples:,.0f}; use coarser "
+            "samples (--sample-spacing-m, --sample-height-step-m), plan fewer buildings, or "
+            "raise the limit (--max-samples)"
+        )
 
 
 def build_facades(

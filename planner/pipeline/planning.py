@@ -33,6 +33,7 @@ from planner.pipeline.evaluate import (
 )
 from planner.pipeline.facades import (
     build_facades,
+    check_sample_count,
     estimate_samples,
     lower_roof_in_front,
 )
@@ -171,13 +172,7 @@ def _prepare(
     messages = [*site.warnings, *notes_summary(site.notes)]
     say(0.0, "sampling facades")
     n_est = estimate_samples(site, st.sample_spacing_m, st.sample_height_step_m)
-    if n_est > st.max_samples:
-        raise InputError(
-            f"the facades would need about {n_est:,} samples at {st.sample_spacing_m:g} m × "
-            f"{st.sample_height_step_m:g} m, more than {st.max_samples:,.0f}; use coarser "
-            "samples (--sample-spacing-m, --sample-height-step-m), plan fewer buildings, or "
-            "raise the limit (--max-samples)"
-        )
+    check_sample_count(n_est, st.sample_spacing_m, st.sample_height_step_m, st.max_samples)
     fac = build_facades(site, st.sample_spacing_m, st.sample_height_step_m)
     fac, sample_req, zones = apply_zones(site, fac, req)
     if len(fac.z) > st.max_samples:
