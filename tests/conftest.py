@@ -28,7 +28,7 @@ LONGEST_FIRST = (
     "test_properties.py",  # 52
     "test_report.py",  # 51
     "test_network.py",  # 50
-    "test_serve.py",  # 45
+    "test_serve.py",  # 38
     "test_fieldwork.py",  # 38
     "test_budget.py",  # 31
     "test_foundation.py",  # 31

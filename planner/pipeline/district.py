@@ -501,8 +501,6 @@ def plan_district(
     # the workers import the planner now, before the blocks' shares of the time are counted:
     # a share is for planning, not for a worker's start (about 3 s on a loaded machine)
     client.run(_import_planner)
-    # the largest blocks first (by their samples), so that the last ones to finish are small
-    # and no worker idles long while another plans a large block at the end
     # the time budget: the blocks share what is left before the stitch's share; a block is
     # given its share when a worker takes it (as many in flight as the cluster has threads),
     # so that a block finishing early leaves its time to the ones after it
@@ -512,6 +510,8 @@ def plan_district(
     ) + (CLOSE_CLUSTER_S if cluster is not None else 0.0)
     until = time.monotonic() + left - min(left, max(STITCH_SHARE * left, stitching))
     slots = max(1, sum(client.nthreads().values()))
+    # the largest blocks first (by their samples), so that the last ones to finish are small
+    # and no worker idles long while another plans a large block at the end
     queue = sorted(range(len(blocks)), key=lambda k: -work[k])
     in_flight: dict[int, float] = {}  # block → when its share ends
     covers: list = [None] * len(blocks)
