@@ -13,42 +13,6 @@ from planner.app.voila_server import skip_iri_grammar
 skip_iri_grammar()  # nbformat and nbclient here import jsonschema as the server does
 
 
-#: The test files that take longest, longest first (seconds of one worker, three workers on
-#: two cores, 2026-11-26). scripts/test hands whole files to its workers in collection
-#: order: these go first, so that no worker is left alone with a long one at the end (by
-#: default pytest-xdist orders files by their number of tests, and the three-test budget
-#: and virtual-survey files, 50 s between them, came last). The browser's first: much of
-#: its time is spent waiting for the page, which the other workers fill. A file missing
-#: here only runs later.
-LONGEST_FIRST = (
-    "test_dashboard_browser.py",  # 105
-    "test_safety.py",  # 66
-    "test_catalogue.py",  # 63
-    "test_district.py",  # 57
-    "test_properties.py",  # 52
-    "test_report.py",  # 51
-    "test_network.py",  # 50
-    "test_serve.py",  # 38
-    "test_fieldwork.py",  # 38
-    "test_budget.py",  # 31
-    "test_foundation.py",  # 31
-    "test_notebooks.py",  # 30
-    "test_figures.py",  # 29
-    "test_plan.py",  # 26
-    "test_passages.py",  # 24
-    "test_optimise.py",  # 22
-    "test_cloud_plan.py",  # 22
-    "test_virtual_survey.py",  # 18
-)
-
-
-def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
-    """The files of :data:`LONGEST_FIRST` first, in its order; the rest after them in the
-    order collected (a file's own tests keep theirs)."""
-    rank = {name: i for i, name in enumerate(LONGEST_FIRST)}
-    items.sort(key=lambda item: rank.get(item.path.name, len(rank)))
-
-
 @pytest.fixture(autouse=True, scope="session")
 def _own_profile_folder(tmp_path_factory):
     """No test reads or writes the real user profile folder (~/.tls-planner/scanners)."""
