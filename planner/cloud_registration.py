@@ -273,11 +273,9 @@ def overlap_pct(
     >>> float(overlap_pct(300, 1000, 300, 600))
     30.0
     """
-    shares = [
-        np.where(t > 0, np.asarray(c, dtype=float) / np.where(t > 0, t, 1.0), 0.0)
-        for c, t in (
-            (common_parent, np.asarray(total_parent, dtype=float)),
-            (common_child, np.asarray(total_child, dtype=float)),
-        )
-    ]
+    shares = []
+    for c, t in ((common_parent, total_parent), (common_child, total_child)):
+        c, t = np.asarray(c, dtype=float), np.asarray(t, dtype=float)
+        out = np.zeros(np.broadcast_shapes(c.shape, t.shape))
+        shares.append(np.divide(c, t, out=out, where=t > 0))  # 0 where t is not
     return 100.0 * np.minimum(*shares)

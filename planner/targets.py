@@ -35,6 +35,7 @@ __all__ = [
     "TARGET_TYPES",
     "TargetItem",
     "choose_target",
+    "chosen_sizes",
     "max_target_distance_m",
     "min_target_size_mm",
     "parse_inventory",
@@ -299,3 +300,23 @@ def choose_target(
     t = _check_type(target_type)
     fits = [i for i in as_inventory(inventory) if i.type == t and i.size_mm >= min_size_mm]
     return min(fits, key=lambda i: i.size_mm) if fits else None
+
+
+def chosen_sizes(
+    min_size_mm: ArrayLike, target_type: str, inventory: Sequence[TargetItem] | None = None
+) -> np.ndarray:
+    """The size [mm] of the item :func:`choose_target` picks for each of ``min_size_mm``
+    (NaN where none is big enough), for many at once.
+
+    Examples
+    --------
+    >>> chosen_sizes([150.0, 200.0, 300.0, 500.0], "sphere").tolist()
+    [200.0, 200.0, 400.0, nan]
+    """
+    t = _check_type(target_type)
+    sizes = np.sort([i.size_mm for i in as_inventory(inventory) if i.type == t])
+    need = np.asarray(min_size_mm, dtype=float)
+    if not len(sizes):
+        return np.full(need.shape, np.nan)
+    at = np.searchsorted(sizes, need, side="left")  # the first at least as big (NaN: none)
+    return np.where(at < len(sizes), sizes[np.minimum(at, len(sizes) - 1)], np.nan)

@@ -560,3 +560,25 @@ def test_one_scan_alone_keeps_its_own_levelling(levelled):
     np.testing.assert_allclose(
         propagate(station, no_targets, {}, [], **kw).pose_cov, cov, rtol=1e-12, atol=0
     )
+
+
+def test_the_compiled_probe_errors_are_the_inverse_s():
+    """The link chooser's errors at its probe points, compiled (a Cholesky factor and forward
+    substitution), against rᵀ N⁻¹ r with NumPy's inverse; a matrix that is not positive
+    definite gives NaN; the scaled condition of one matrix is that of a stack, bit for bit."""
+    from planner.pipeline.registration import _probe_errors
+    from planner.registration_error import scaled_condition
+
+    rng = np.random.default_rng(3)
+    for p in (4, 6):
+        a = rng.normal(size=(30, 9, p)) * np.array([1.0, 1.0, 1.0, 1e3, 1e3, 1e3])[:p]
+        n_mats = np.einsum("bip,biq->bpq", a, a) + np.eye(p) * 1e-6
+        rows = rng.normal(size=(48, p)) * 1e4
+        want = np.sqrt(((rows @ np.linalg.inv(n_mats)) * rows).sum(axis=-1).max(axis=1))
+        np.testing.assert_allclose(_probe_errors(n_mats, rows), want, rtol=1e-10)
+        stack = scaled_condition(n_mats)
+        one = np.array([scaled_condition(m) for m in n_mats])
+        np.testing.assert_array_equal(one, stack)
+    singular = np.zeros((1, 6, 6))
+    assert np.isnan(_probe_errors(singular, rows))
+    assert scaled_condition(singular[0]) == np.inf == scaled_condition(singular)[0]

@@ -191,3 +191,42 @@ def test_a_sphere_on_its_stand_hides_what_is_behind_it():
     far = np.array([[10.0, 0.08, 1.6]])
     low = np.array([[20.0, 0.0, 0.0]])
     assert stand_blocks(src, low, near, 0.01)[0, 0] and not stand_blocks(src, low, far, 0.01)[0, 0]
+
+
+def _stand_blocks_numpy(src, dst, centre, radius, stand_r=STAND_RADIUS_M, clear=SIGHT_CLEARANCE_M):
+    """The stand test written with NumPy arrays (every pair at once), as a reference."""
+    p, v = src[:, None, :], dst[:, None, :] - src[:, None, :]
+    c = centre[None, :, :]
+    r = np.broadcast_to(np.asarray(radius, dtype=float), c.shape[1:2])[None, :]
+    w = c - p
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t3 = (w * v).sum(axis=-1) / (v * v).sum(axis=-1)
+        d3 = np.linalg.norm(w - t3[..., None] * v, axis=-1)
+        vh, wh = v[..., :2], w[..., :2]
+        t2 = (wh * vh).sum(axis=-1) / (vh * vh).sum(axis=-1)
+        d2 = np.linalg.norm(wh - t2[..., None] * vh, axis=-1)
+        z = p[..., 2] + t2 * v[..., 2]
+    sphere = (t3 > 0) & (t3 < 1) & (d3 < r + clear)
+    stand = (t2 > 0) & (t2 < 1) & (d2 < stand_r + clear) & (z < c[..., 2] - r + clear)
+    return sphere | stand
+
+
+def test_the_compiled_stand_test_is_the_numpy_one_pair_for_pair():
+    """Random lines (some of zero length, some through a sphere's centre) against random
+    spheres and stands: the compiled loop answers as the vectorised NumPy test does."""
+    rng = np.random.default_rng(7)
+    blocked = 0
+    for n in range(200):
+        src, dst = rng.uniform(-20, 20, (2, rng.integers(1, 40), 3))
+        centre = rng.uniform(-20, 20, (rng.integers(0, 10), 3))
+        if n % 10 == 0:
+            dst[0] = src[0]  # a line of no length
+        if n % 7 == 0 and len(centre):
+            centre[0] = (src[0] + dst[0]) / 2  # a sphere on the line
+        radius = rng.uniform(0.05, 0.3, len(centre)) if n % 2 else 0.1
+        stand_r = 2.0 if n % 3 == 0 else STAND_RADIUS_M  # wide stands: more of them hit
+        want = _stand_blocks_numpy(src, dst, centre, radius, stand_r)
+        got = stand_blocks(src, dst, centre, radius, stand_radius_m=stand_r)
+        np.testing.assert_array_equal(got, want)
+        blocked += int(want.sum())
+    assert blocked > 100  # the comparison met blocked pairs, not only clear ones

@@ -102,7 +102,9 @@ class SurfaceCache:
             np.full(len(fac.z), ctx.settings.sample_spacing_m * ctx.settings.sample_height_step_m)
         ]
         self._n = len(fac.z)
-        self._cell: dict[tuple[int, int], int] = {}  # ground cell → patch index
+        # the ground cells met so far (:data:`_CELL_KEY`), sorted, and their patch indices
+        self._cell_keys = np.empty(0, dtype=np.int64)
+        self._cell_ids = np.empty(0, dtype=np.int64)
         self._solid = shapely.union_all([g for _, g, _ in ctx.site.blockers])
         self.columns: dict[int, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
         # each facade sample's wall class (:meth:`wall_axes`), and each candidate's as bits
@@ -122,7 +124,7 @@ class SurfaceCache:
         idx = np.asarray(idx, dtype=np.int64)
         self._compute(idx, cand_xy)
         cols = [self.columns[int(i)] for i in idx]
-        used = np.unique(np.concatenate([c[0] for c in cols])) if cols else np.empty(0, int)
+        used = _sorted_union([c[0] for c in cols])
         xyz, normal, area = (a[used] for a in self._table())
         points = np.zeros((len(used), len(idx)))
         var = np.full((len(used), len(idx)), np.inf)
@@ -245,16 +247,39 @@ class SurfaceCache:
 
     def _ground_ids(self, g_xy: np.ndarray) -> np.ndarray:
         """Patch indices of ground cells (centres ``g_xy``), new cells appended."""
-        keys = [tuple(k) for k in np.floor(g_xy / GROUND_CELL_M).astype(np.int64).tolist()]
-        fresh = [k for k in dict.fromkeys(keys) if k not in self._cell]
-        if fresh:
-            centres = (np.array(fresh, dtype=float) + 0.5) * GROUND_CELL_M
+        cells = np.floor(g_xy / GROUND_CELL_M).astype(np.int64).reshape(-1, 2)
+        keys = cells[:, 0] * _CELL_KEY + cells[:, 1]  # one integer per cell
+        at = np.searchsorted(self._cell_keys, keys)
+        known = at < len(self._cell_keys)
+        known[known] = self._cell_keys[at[known]] == keys[known]
+        if not known.all():  # new cells, numbered in the order they first come
+            _, first = np.unique(keys[~known], return_index=True)
+            fresh = cells[~known][np.sort(first)]
+            centres = (fresh + 0.5) * GROUND_CELL_M
             self._xyz.append(np.column_stack([centres, np.zeros(len(fresh))]))
             self._normal.append(np.tile([0.0, 0.0, 1.0], (len(fresh), 1)))
             self._area.append(np.full(len(fresh), GROUND_CELL_M**2))
-            self._cell.update({k: self._n + n for n, k in enumerate(fresh)})
+            ids = np.concatenate([self._cell_ids, self._n + np.arange(len(fresh))])
+            every = np.concatenate([self._cell_keys, fresh[:, 0] * _CELL_KEY + fresh[:, 1]])
+            order = np.argsort(every, kind="stable")
+            self._cell_keys, self._cell_ids = every[order], ids[order]
             self._n += len(fresh)
-        return np.array([self._cell[k] for k in keys], dtype=np.int64)
+            at = np.searchsorted(self._cell_keys, keys)
+        return self._cell_ids[at]
+
+
+#: A ground cell (i, j) as one integer, i·_CELL_KEY + j: distinct for |j| < _CELL_KEY / 2
+#: (cells of 2 m: coordinates within ±2 000 000 km).
+_CELL_KEY = 1 << 32
+
+
+def _sorted_union(ids: list[np.ndarray]) -> np.ndarray:
+    """The patch indices in any of ``ids`` (each without repeats), sorted: ``np.unique`` of
+    them joined, by a sort (NumPy's hashing ``unique`` is slower on these)."""
+    if not ids:
+        return np.empty(0, dtype=np.int64)
+    joined = np.sort(np.concatenate(ids))
+    return joined[np.concatenate([[True], joined[1:] != joined[:-1]])]
 
 
 def _facade_patches(ctx: Context, station_xy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -35,6 +35,7 @@ from functools import cached_property
 
 import numpy as np
 import scipy.sparse as sp
+from numba import njit
 from scipy.cluster.hierarchy import DisjointSet
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
@@ -71,7 +72,7 @@ from planner.registration_error import (
 )
 from planner.scanner import Scanner
 from planner.spacing import point_spacing_mm
-from planner.targets import choose_target, size_rules
+from planner.targets import chosen_sizes, size_rules
 
 __all__ = [
     "Network",
@@ -413,35 +414,58 @@ class SightCache:
 
 
 def centre_rms(
-    ctx: Context, tc: TargetCandidates, sight: Sight, t: int, j: int, size_mm: float
-) -> float:
+    ctx: Context,
+    tc: TargetCandidates,
+    sight: Sight,
+    t: int | np.ndarray,
+    j: int,
+    size_mm: float | np.ndarray,
+) -> float | np.ndarray:
     """RMS [mm] per axis of target ``t``'s centre measured from station column ``j`` with an
-    item of ``size_mm`` (the user's figure when ``target_rms_mm`` is set)."""
+    item of ``size_mm`` (the user's figure when ``target_rms_mm`` is set); ``t`` and
+    ``size_mm`` arrays of targets and their items: an array, computed type by type."""
     st, sc = ctx.settings, ctx.scanner
+    ts = np.atleast_1d(np.asarray(t, dtype=np.int64))
+    size = np.broadcast_to(np.asarray(size_mm, dtype=float), ts.shape)
     if st.target_rms_mm is not None:
-        return float(st.target_rms_mm)
-    ty = "sphere" if tc.type[t] == "control" else tc.type[t]
-    s = sight.slope_m[t, j]
-    return float(
-        target_centre_rms_mm(
-            ty,
-            size_mm,
-            s,
-            sight.cos_incidence[t, j],
-            float(sc.range_rms_at(s)),
-            sc.angle_rms_arcsec,
-            sight.spacing_mm[t, j],
-            floor_mm=st.target_floor_mm,
-            incidence_noise=st.incidence_ranging,
-        )
-    )
+        out = np.full(ts.shape, float(st.target_rms_mm))
+    else:
+        out = np.empty(ts.shape)
+        types = tc.type[ts]
+        for ty in dict.fromkeys(types.tolist()):
+            one = types == ty
+            at = ts[one]
+            s = sight.slope_m[at, j]
+            out[one] = target_centre_rms_mm(
+                "sphere" if ty == "control" else ty,
+                size[one],
+                s,
+                sight.cos_incidence[at, j],
+                sc.range_rms_at(s),
+                sc.angle_rms_arcsec,
+                sight.spacing_mm[at, j],
+                floor_mm=st.target_floor_mm,
+                incidence_noise=st.incidence_ranging,
+            )
+    return float(out[0]) if np.ndim(t) == 0 else out
 
 
 def _item_size(ctx: Context, tc: TargetCandidates, t: int, need: float) -> float:
-    if tc.type[t] == "control":
-        return 200.0  # a control point is measured as a sphere-sized mark
-    item = choose_target(need, tc.type[t], ctx.settings.inventory)
-    return item.size_mm if item else float("nan")
+    return float(_item_sizes(ctx, tc, np.array([t]), np.array([need]))[0])
+
+
+def _item_sizes(
+    ctx: Context, tc: TargetCandidates, targets: np.ndarray, need_mm: np.ndarray
+) -> np.ndarray:
+    """:func:`~planner.targets.chosen_sizes` of each target's type; 200 [mm] for a control
+    point, measured as a sphere-sized mark."""
+    out = np.full(len(targets), 200.0)
+    types = tc.type[targets]
+    for ty in dict.fromkeys(types.tolist()):
+        if ty != "control":
+            one = types == ty
+            out[one] = chosen_sizes(need_mm[one], ty, ctx.settings.inventory)
+    return out
 
 
 def _a_matrix(lever_mm: np.ndarray, levelled: bool) -> np.ndarray:
@@ -460,8 +484,49 @@ def _probe_errors(n_mats: np.ndarray, rows: np.ndarray) -> np.ndarray:
     invertible normal matrices (B, p, p) of its registration (the link alone); ``rows``
     (3P, p) the probes' design rows. Whether a matrix fixes the registration is for the
     caller to judge (:func:`_well_posed`)."""
-    var = ((rows @ np.linalg.inv(n_mats)) * rows).sum(axis=-1)  # (B, 3P)
-    return np.sqrt(var.max(axis=1))
+    out = np.empty(len(n_mats))
+    _probe_errors_kernel(np.ascontiguousarray(n_mats), np.ascontiguousarray(rows), out)
+    return out
+
+
+@njit(cache=True, nogil=True)
+def _probe_errors_kernel(n_mats, rows, out):  # pragma: no cover - compiled
+    """:func:`_probe_errors` compiled, matrix by matrix: N = L·Lᵀ (Cholesky), each probe
+    row's variance rᵀN⁻¹r = |L⁻¹r|² by forward substitution, the largest, its root. NaN
+    for a matrix that is not positive definite."""
+    p = n_mats.shape[1]
+    low = np.empty((p, p))
+    z = np.empty(p)
+    for b in range(n_mats.shape[0]):
+        ok = True
+        for i in range(p):
+            for k in range(i + 1):
+                acc = n_mats[b, i, k]
+                for m in range(k):
+                    acc -= low[i, m] * low[k, m]
+                if i == k:
+                    if not acc > 0.0:
+                        ok = False
+                        break
+                    low[i, i] = np.sqrt(acc)
+                else:
+                    low[i, k] = acc / low[k, k]
+            if not ok:
+                break
+        if not ok:
+            out[b] = np.nan
+            continue
+        worst = 0.0
+        for r in range(rows.shape[0]):
+            var = 0.0
+            for i in range(p):
+                acc = rows[r, i]
+                for m in range(i):
+                    acc -= low[i, m] * z[m]
+                z[i] = acc / low[i, i]
+                var += z[i] * z[i]
+            worst = max(worst, var)
+        out[b] = np.sqrt(worst)
 
 
 def _well_posed(n_mats: np.ndarray, order: np.ndarray) -> int | None:
@@ -1055,8 +1120,16 @@ class _Layout:
         """:meth:`sigma` squared for each of ``targets`` from station j (kept by station: a
         station's targets are asked again by each of its links)."""
         row = self._sigma2[j]
-        for t in targets[np.isnan(row[targets])]:
-            row[t] = self.sigma(j, int(t)) ** 2
+        todo = targets[np.isnan(row[targets])].tolist()
+        keys = [("rms", self.stations[j], t) for t in todo]
+        new = [n for n, key in enumerate(keys) if key not in self._memo]
+        if new:  # the targets not yet in the memo, together
+            at = np.array([todo[n] for n in new], dtype=np.int64)
+            size = _item_sizes(self.ctx, self.tc, at, self.sight.need_mm[at, j])
+            rms = centre_rms(self.ctx, self.tc, self.sight, at, j, size)
+            self._memo.update(zip([keys[n] for n in new], rms.tolist(), strict=True))
+        for t, key in zip(todo, keys, strict=True):
+            row[t] = self._memo[key] ** 2
         return row[targets]
 
     def probe(self, j: int) -> np.ndarray:
@@ -1111,20 +1184,23 @@ class _Layout:
             cached = key in self._links or (i != CONTROL and self._shared_key(i, j) in self._memo)
             if cached or i == CONTROL or self.mode == "cloud" or self.cloud(i, j) is not None:
                 self._bounds[key] = self.link(i, j)[1]
-            else:
+            else:  # kept for the plan's layouts, as the links are (:meth:`_shared_key`)
                 common = _linkable(self.sight, self.tc, i, j)
-                self._bounds[key] = (
-                    _all_targets_error(
-                        common,
-                        self.tc.xyz,
-                        self.sigma2(i, common) + self.sigma2(j, common),
-                        self.station_xyz[j],
-                        self.probes_of(j),
-                        self.ctx.scanner.is_levelled,
+                shared = ("bound", *self._shared_key(i, j), common.tobytes())
+                if shared not in self._memo:
+                    self._memo[shared] = (
+                        _all_targets_error(
+                            common,
+                            self.tc.xyz,
+                            self.sigma2(i, common) + self.sigma2(j, common),
+                            self.station_xyz[j],
+                            self.probes_of(j),
+                            self.ctx.scanner.is_levelled,
+                        )
+                        if len(common) >= 3
+                        else np.inf
                     )
-                    if len(common) >= 3
-                    else np.inf
-                )
+                self._bounds[key] = self._memo[shared]
         return self._bounds[key]
 
     def _shared_key(self, i: int, j: int) -> tuple:

@@ -303,25 +303,37 @@ def stand_blocks(
     ``radius_m``, one or (M,)) or its stand (module text). Only an obstacle between the
     ends blocks: one beside or behind the target or the station does not; the caller leaves
     a target out of its own line's obstacles."""
-    p = np.asarray(src_xyz, dtype=float)[:, None, :]
-    v = np.asarray(dst_xyz, dtype=float)[:, None, :] - p
-    c = np.asarray(centre_xyz, dtype=float)[None, :, :]
-    r = np.broadcast_to(np.asarray(radius_m, dtype=float), c.shape[1:2])[None, :]
-    w = c - p
-    with np.errstate(divide="ignore", invalid="ignore"):
-        # the sphere: the line's closest approach in 3-D
-        t3 = (w * v).sum(axis=-1) / (v * v).sum(axis=-1)
-        d3 = np.linalg.norm(w - t3[..., None] * v, axis=-1)
-        sphere = (t3 > 0) & (t3 < 1) & (d3 < r + clearance_m)
-        # the stand: the closest approach seen from above, and the line's height there
-        vh, wh = v[..., :2], w[..., :2]
-        t2 = (wh * vh).sum(axis=-1) / (vh * vh).sum(axis=-1)
-        d2 = np.linalg.norm(wh - t2[..., None] * vh, axis=-1)
-        z = p[..., 2] + t2 * v[..., 2]
-        stand = (
-            (t2 > 0)
-            & (t2 < 1)
-            & (d2 < stand_radius_m + clearance_m)
-            & (z < c[..., 2] - r + clearance_m)
-        )
-    return sphere | stand
+    src, dst = _kernel_array(src_xyz).reshape(-1, 3), _kernel_array(dst_xyz).reshape(-1, 3)
+    centre = _kernel_array(centre_xyz).reshape(-1, 3)
+    radius = _kernel_array(np.broadcast_to(np.asarray(radius_m, dtype=float), len(centre)))
+    out = np.empty((len(src), len(centre)), dtype=np.bool_)
+    _stand_blocks_kernel(src, dst, centre, radius, float(stand_radius_m), float(clearance_m), out)
+    return out
+
+
+@njit(cache=True, nogil=True, error_model="numpy")
+def _stand_blocks_kernel(src, dst, centre, radius, stand_r, clearance, out):  # pragma: no cover
+    """:func:`stand_blocks`, compiled: each (line, sphere) pair in a loop, without the
+    (N, M, 3) temporaries; the same products and sums in the same order as NumPy's."""
+    for n in range(src.shape[0]):
+        px, py, pz = src[n, 0], src[n, 1], src[n, 2]
+        vx, vy, vz = dst[n, 0] - px, dst[n, 1] - py, dst[n, 2] - pz
+        vv = vx * vx + vy * vy + vz * vz
+        vh = vx * vx + vy * vy
+        for m in range(centre.shape[0]):
+            wx, wy, wz = centre[m, 0] - px, centre[m, 1] - py, centre[m, 2] - pz
+            r = radius[m]
+            # the sphere: the line's closest approach in 3-D
+            t3 = (wx * vx + wy * vy + wz * vz) / vv
+            ex, ey, ez = wx - t3 * vx, wy - t3 * vy, wz - t3 * vz
+            d3 = np.sqrt(ex * ex + ey * ey + ez * ez)
+            sphere = t3 > 0 and t3 < 1 and d3 < r + clearance
+            # the stand: the closest approach seen from above, and the line's height there
+            t2 = (wx * vx + wy * vy) / vh
+            fx, fy = wx - t2 * vx, wy - t2 * vy
+            d2 = np.sqrt(fx * fx + fy * fy)
+            z = pz + t2 * vz
+            stand = (
+                t2 > 0 and t2 < 1 and d2 < stand_r + clearance and z < centre[m, 2] - r + clearance
+            )
+            out[n, m] = sphere or stand
