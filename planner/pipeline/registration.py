@@ -1104,9 +1104,17 @@ class _Layout:
         sc = self.ctx.scanner
         if root == CONTROL or sc.is_levelled:
             return np.zeros(self.k)
-        s0 = self.station_xyz[root, :2]
-        far = [np.hypot(*(self.probe(j)[:, :2] - s0).T).max() for j in range(self.k)]
-        return np.square(datum_lean_mm(np.array(far), sc.initial_tilt_rms_arcsec))
+        xy, starts = self._probe_xy
+        far = np.maximum.reduceat(np.hypot(*(xy - self.station_xyz[root, :2]).T), starts)
+        return np.square(datum_lean_mm(far, sc.initial_tilt_rms_arcsec))
+
+    @cached_property
+    def _probe_xy(self) -> tuple[np.ndarray, np.ndarray]:
+        """Every station's facade points (:meth:`probe`) in plan, one after another, and
+        where each station's begin (for :meth:`datum_tilt_var`, asked for every root)."""
+        pts = [self.probe(j)[:, :2] for j in range(self.k)]
+        starts = np.cumsum([0, *(len(p) for p in pts[:-1])])
+        return np.concatenate(pts), starts
 
     def sigma(self, j: int, t: int) -> float:
         """Centre RMS of target t from station j with the largest item it could need."""
