@@ -51,15 +51,23 @@ def test_the_overlap_counts_surface_not_points():
     ov = clouds.overlap_matrix(surf)
     assert ov[0, 1] == pytest.approx(ov[1, 0], abs=1e-9)  # % symmetric
     assert 50.0 < ov[0, 1] < 100.0  # %
-    # the sparse overlap of the search for linking stations is the same number
+    # the sparse overlap of the search for linking stations says the same, whether the
+    # candidates come at once or a few at a time, whatever the threshold
     ctx, _ = _surfaces(site, [[40, -8]])
     xy = np.array([[40, -8], [50, -8], [70, -20], [130, -5]], dtype=float) + np.array([E0, N0])
     cache = clouds.SurfaceCache(ctx)
-    np.testing.assert_allclose(
-        cache.overlap(np.arange(4), xy),
-        clouds.overlap_matrix(cache.take(np.arange(4), xy)),
-        atol=1e-9,
-    )  # %
+    dense = clouds.overlap_matrix(cache.take(np.arange(4), xy))
+    assert 0.0 < dense[0, 2] < dense[0, 1]  # %
+    for pct in (dense[0, 1] - 0.5, dense[0, 2] + 0.5, dense[0, 2] - 0.5, 10.0):
+        np.testing.assert_array_equal(cache.overlapping(np.arange(4), xy, pct), dense >= pct)
+        np.testing.assert_array_equal(
+            cache.overlapping([3, 1], xy, pct), (dense >= pct)[[3, 1]][:, [3, 1]]
+        )
+    fresh = clouds.SurfaceCache(ctx)
+    fresh.overlapping([0, 1], xy, 10.0)  # two first, then the others joining them
+    np.testing.assert_array_equal(
+        fresh.overlapping([2, 0, 3, 1], xy, 10.0), (dense >= 10.0)[[2, 0, 3, 1]][:, [2, 0, 3, 1]]
+    )
 
 
 @pytest.fixture(scope="module")

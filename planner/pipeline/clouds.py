@@ -16,6 +16,7 @@ overlap in practice, and move.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -117,6 +118,9 @@ class SurfaceCache:
         self._row: dict[int, int] = {}
         self._common = np.zeros((0, 0), dtype=np.float32)
         self._total = np.zeros(0)
+        # which pairs of those overlap by ``_over_pct`` or more (:meth:`overlapping`)
+        self._over = np.zeros((0, 0), dtype=bool)
+        self._over_pct = math.nan
 
     def take(self, idx: np.ndarray, cand_xy: np.ndarray) -> Surfaces:
         """The patches candidates ``idx`` (positions ``cand_xy[idx]``) see, as :class:`Surfaces`
@@ -148,10 +152,12 @@ class SurfaceCache:
             self.links[(parent, child)] = cloud_link(self.ctx, pair, 0, 1)
         return self.links[(parent, child)]
 
-    def overlap(self, idx: np.ndarray, cand_xy: np.ndarray) -> np.ndarray:
-        """(K, K) :func:`overlap_matrix` of candidates ``idx``: the surface every pair holds
-        in common is kept for the plan (sparse products for the candidates not seen yet), for
-        the searches for linking stations over many candidates."""
+    def overlapping(self, idx: np.ndarray, cand_xy: np.ndarray, min_pct: float) -> np.ndarray:
+        """(K, K) whether the scans of candidates ``idx`` overlap by ``min_pct`` [%] or more
+        (the overlap of :func:`overlap_matrix`), for the searches for linking stations over
+        many candidates. The surface every pair holds in common is kept for the plan (sparse
+        products for the candidates not seen yet), and so is the answer: each pair's overlap
+        is computed once, with the same operands as over the whole matrix."""
         idx = np.asarray(idx, dtype=np.int64)
         self._compute(idx, cand_xy)
         new = [int(i) for i in dict.fromkeys(idx.tolist()) if i not in self._row]
@@ -168,10 +174,19 @@ class SurfaceCache:
             self._common = common
             self._total = np.concatenate([self._total, seen[n:] @ area])
             self._row.update({c: n + k for k, c in enumerate(new)})
+        if new or min_pct != self._over_pct:
+            old = len(self._over) if min_pct == self._over_pct else 0
+            over = np.zeros(self._common.shape, dtype=bool)
+            over[:old, :old] = self._over[:old, :old]
+            c, t = self._common, self._total
+            # the new rows against every column, then the old rows against the new columns
+            over[old:] = _overlaps(c[old:], t[old:, None], c[:, old:].T, t[None, :], min_pct)
+            over[:old, old:] = _overlaps(
+                c[:old, old:], t[:old, None], c[old:, :old].T, t[None, old:], min_pct
+            )
+            self._over, self._over_pct = over, min_pct
         rows = np.array([self._row[int(i)] for i in idx], dtype=np.int64)
-        common = self._common[np.ix_(rows, rows)].astype(float)
-        total = self._total[rows]
-        return overlap_pct(common, total[:, None], common.T, total[None, :])
+        return self._over[np.ix_(rows, rows)]
 
     def wall_axes(self, idx: np.ndarray, cand_xy: np.ndarray) -> np.ndarray:
         """(K,) which of four 45° classes of wall direction (normals modulo 180°) each
@@ -266,6 +281,13 @@ class SurfaceCache:
             self._n += len(fresh)
             at = np.searchsorted(self._cell_keys, keys)
         return self._cell_ids[at]
+
+
+def _overlaps(common_parent, total_parent, common_child, total_child, min_pct) -> np.ndarray:
+    """Whether :func:`~planner.cloud_registration.overlap_pct` of the surfaces in common (kept
+    as float32, taken exactly as float64) reaches ``min_pct``."""
+    parent, child = common_parent.astype(float), common_child.astype(float)
+    return overlap_pct(parent, total_parent, child, total_child) >= min_pct
 
 
 #: A ground cell (i, j) as one integer, i·_CELL_KEY + j: distinct for |j| < _CELL_KEY / 2

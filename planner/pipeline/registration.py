@@ -875,7 +875,7 @@ def _cloud_hops(
     every direction (:attr:`~planner.pipeline.clouds.CloudLink.fixed`)."""
     k = len(stations)
     every = np.concatenate([stations, pool]).astype(np.int64)
-    over = seen.clouds.overlap(every, seen.cand_xy) >= ctx.settings.min_overlap_pct
+    over = seen.clouds.overlapping(every, seen.cand_xy, ctx.settings.min_overlap_pct)
     axes = seen.clouds.wall_axes(every, seen.cand_xy)
     over &= _BITS[axes[:, None] & axes[None, :]] >= 2  # two walls in common, not parallel
     np.fill_diagonal(over, False)
