@@ -296,17 +296,19 @@ def recommend_targets(
 def choose_target(
     min_size_mm: float, target_type: str, inventory: Sequence[TargetItem] | None = None
 ) -> TargetItem | None:
-    """The smallest item of ``target_type`` at least ``min_size_mm`` big, or None."""
+    """The smallest item of ``target_type`` at least ``min_size_mm`` big (the first listed of
+    that size), or None."""
     t = _check_type(target_type)
-    fits = [i for i in as_inventory(inventory) if i.type == t and i.size_mm >= min_size_mm]
-    return min(fits, key=lambda i: i.size_mm) if fits else None
+    size = float(chosen_sizes(min_size_mm, t, inventory))
+    return next((i for i in as_inventory(inventory) if i.type == t and i.size_mm == size), None)
 
 
 def chosen_sizes(
     min_size_mm: ArrayLike, target_type: str, inventory: Sequence[TargetItem] | None = None
 ) -> np.ndarray:
-    """The size [mm] of the item :func:`choose_target` picks for each of ``min_size_mm``
-    (NaN where none is big enough), for many at once.
+    """The size [mm] of the smallest item of ``target_type`` at least as big as each of
+    ``min_size_mm`` (NaN where none is big enough): the rule :func:`choose_target` picks its
+    item by, for many sizes at once.
 
     Examples
     --------

@@ -481,7 +481,7 @@ def _a_matrix(lever_mm: np.ndarray, levelled: bool) -> np.ndarray:
 
 def _probe_errors(n_mats: np.ndarray, rows: np.ndarray) -> np.ndarray:
     """Largest per-axis RMS [mm] of the child's error at the probe points, for a stack of
-    invertible normal matrices (B, p, p) of its registration (the link alone); ``rows``
+    positive-definite normal matrices (B, p, p) of its registration (the link alone); ``rows``
     (3P, p) the probes' design rows. Whether a matrix fixes the registration is for the
     caller to judge (:func:`_well_posed`)."""
     out = np.empty(len(n_mats))
