@@ -542,9 +542,10 @@ def _eliminate_planes(n_mat, tilt_rhs, planes, station_xyz, tied, s_col, par, le
 MAX_CONDITION = 1e8
 
 
-def scaled_condition(n_mats: np.ndarray) -> np.ndarray:
+def scaled_condition(n_mats: np.ndarray) -> np.ndarray | float:
     """Condition number of symmetric normal matrices (…, p, p) with their diagonal scaled to
-    one; inf where a diagonal element is not positive (a parameter nothing determines).
+    one; inf where a diagonal element is not positive (a parameter nothing determines). One
+    matrix (p, p) gives a scalar, a stack (…, p, p) an array.
 
     Examples
     --------

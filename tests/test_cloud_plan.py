@@ -202,3 +202,13 @@ def test_the_registered_order_moves_only_what_it_must():
     order = _registered_order(np.array([0, 2, 4, 1, 3]), nb, None)
     assert order.tolist() == [0, 4, 1, 2, 3]
     assert _registered_order(np.array([0, 1, 2, 3, 4]), nb, None).tolist() == [0, 1, 2, 3, 4]
+
+
+def test_candidates_that_see_no_patch_have_an_empty_union():
+    """Scans that hold no patch (a candidate hemmed in) make surfaces of no patch, not an
+    error."""
+    from planner.pipeline.clouds import _sorted_union
+
+    empty = np.empty(0, dtype=np.int64)
+    assert _sorted_union([]).tolist() == _sorted_union([empty, empty]).tolist() == []
+    assert _sorted_union([np.array([5, 2]), empty, np.array([2, 9])]).tolist() == [2, 5, 9]

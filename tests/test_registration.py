@@ -562,7 +562,7 @@ def test_one_scan_alone_keeps_its_own_levelling(levelled):
     )
 
 
-def test_the_compiled_probe_errors_are_the_inverse_s():
+def test_the_compiled_probe_errors_are_those_of_the_inverse():
     """The link chooser's errors at its probe points, compiled (a Cholesky factor and forward
     substitution), against rᵀ N⁻¹ r with NumPy's inverse; a matrix that is not positive
     definite gives NaN; the scaled condition of one matrix is that of a stack, bit for bit."""

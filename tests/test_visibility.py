@@ -230,3 +230,14 @@ def test_the_compiled_stand_test_is_the_numpy_one_pair_for_pair():
         np.testing.assert_array_equal(got, want)
         blocked += int(want.sum())
     assert blocked > 100  # the comparison met blocked pairs, not only clear ones
+
+
+def test_one_end_is_shared_by_every_sight_line_as_before():
+    """One station against many targets (the ends broadcast, as NumPy's test did)."""
+    src = np.array([[0.0, 0.0, 1.5]])
+    dst = np.array([[20.0, 0.0, 1.5], [20.0, 5.0, 1.5], [20.0, -5.0, 1.5]])
+    centre = np.array([[10.0, 0.0, 1.5], [10.0, 2.5, 1.5]])
+    want = _stand_blocks_numpy(np.repeat(src, 3, axis=0), dst, centre, 0.1)
+    np.testing.assert_array_equal(stand_blocks(src, dst, centre, 0.1), want)
+    np.testing.assert_array_equal(stand_blocks(dst, src, centre, 0.1), want)
+    assert want.sum() == 2  # the first line by the first sphere, the second by the second

@@ -290,8 +290,8 @@ def _overlaps(common_parent, total_parent, common_child, total_child, min_pct) -
     return overlap_pct(parent, total_parent, child, total_child) >= min_pct
 
 
-#: A ground cell (i, j) as one integer, i·_CELL_KEY + j: distinct for |j| < _CELL_KEY / 2
-#: (cells of 2 m: coordinates within ±2 000 000 km).
+#: A ground cell (i, j) as one integer, i·_CELL_KEY + j: distinct for |j| < _CELL_KEY / 2,
+#: and within int64 for |i| < 2³¹ (cells of 2 m: coordinates within ±4 000 000 km).
 _CELL_KEY = 1 << 32
 
 
@@ -301,7 +301,9 @@ def _sorted_union(ids: list[np.ndarray]) -> np.ndarray:
     if not ids:
         return np.empty(0, dtype=np.int64)
     joined = np.sort(np.concatenate(ids))
-    return joined[np.concatenate([[True], joined[1:] != joined[:-1]])]
+    first = np.ones(len(joined), dtype=bool)
+    first[1:] = joined[1:] != joined[:-1]
+    return joined[first]
 
 
 def _facade_patches(ctx: Context, station_xy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

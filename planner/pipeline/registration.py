@@ -451,6 +451,7 @@ def centre_rms(
 
 
 def _item_size(ctx: Context, tc: TargetCandidates, t: int, need: float) -> float:
+    """:func:`_item_sizes` of one target [mm]."""
     return float(_item_sizes(ctx, tc, np.array([t]), np.array([need]))[0])
 
 
@@ -481,9 +482,11 @@ def _a_matrix(lever_mm: np.ndarray, levelled: bool) -> np.ndarray:
 
 def _probe_errors(n_mats: np.ndarray, rows: np.ndarray) -> np.ndarray:
     """Largest per-axis RMS [mm] of the child's error at the probe points, for a stack of
-    positive-definite normal matrices (B, p, p) of its registration (the link alone); ``rows``
-    (3P, p) the probes' design rows. Whether a matrix fixes the registration is for the
-    caller to judge (:func:`_well_posed`)."""
+    positive-definite normal matrices (B, p, p) of its registration (the link alone; their
+    lower triangles are read); ``rows`` (3P, p) the probes' design rows. NaN for a matrix
+    that is not positive definite. Whether a matrix fixes the registration is for the caller
+    to judge (:func:`_well_posed`). The same numbers as rᵀ·inv(N)·r to rounding (a test:
+    1e-10 relative; they differ in the last bits, about 1e-14), not bit for bit."""
     out = np.empty(len(n_mats))
     _probe_errors_kernel(np.ascontiguousarray(n_mats), np.ascontiguousarray(rows), out)
     return out

@@ -303,7 +303,10 @@ def stand_blocks(
     ``radius_m``, one or (M,)) or its stand (module text). Only an obstacle between the
     ends blocks: one beside or behind the target or the station does not; the caller leaves
     a target out of its own line's obstacles."""
-    src, dst = _kernel_array(src_xyz).reshape(-1, 3), _kernel_array(dst_xyz).reshape(-1, 3)
+    ends = np.broadcast_arrays(
+        np.asarray(src_xyz, float).reshape(-1, 3), np.asarray(dst_xyz, float).reshape(-1, 3)
+    )
+    src, dst = (_kernel_array(e) for e in ends)
     centre = _kernel_array(centre_xyz).reshape(-1, 3)
     radius = _kernel_array(np.broadcast_to(np.asarray(radius_m, dtype=float), len(centre)))
     out = np.empty((len(src), len(centre)), dtype=np.bool_)
