@@ -450,11 +450,6 @@ def centre_rms(
     return float(out[0]) if np.ndim(t) == 0 else out
 
 
-def _item_size(ctx: Context, tc: TargetCandidates, t: int, need: float) -> float:
-    """:func:`_item_sizes` of one target [mm]."""
-    return float(_item_sizes(ctx, tc, np.array([t]), np.array([need]))[0])
-
-
 def _item_sizes(
     ctx: Context, tc: TargetCandidates, targets: np.ndarray, need_mm: np.ndarray
 ) -> np.ndarray:
@@ -1121,26 +1116,27 @@ class _Layout:
 
     def sigma(self, j: int, t: int) -> float:
         """Centre RMS of target t from station j with the largest item it could need."""
-        key = ("rms", self.stations[j], t)
-        if key not in self._memo:
-            size = _item_size(self.ctx, self.tc, t, float(self.sight.need_mm[t, j]))
-            self._memo[key] = centre_rms(self.ctx, self.tc, self.sight, t, j, size)
-        return self._memo[key]
+        return self._sigmas(j, [t])[0]
+
+    def _sigmas(self, j: int, targets: list[int]) -> list[float]:
+        """:meth:`sigma` of each of ``targets``, kept in the plan's memo; those not yet in
+        it computed together (:func:`centre_rms` of many)."""
+        keys = [("rms", self.stations[j], t) for t in targets]
+        new = [n for n, key in enumerate(keys) if key not in self._memo]
+        if new:
+            at = np.array([targets[n] for n in new], dtype=np.int64)
+            size = _item_sizes(self.ctx, self.tc, at, self.sight.need_mm[at, j])
+            rms = centre_rms(self.ctx, self.tc, self.sight, at, j, size)
+            self._memo.update(zip([keys[n] for n in new], rms.tolist(), strict=True))
+        return [self._memo[key] for key in keys]
 
     def sigma2(self, j: int, targets: np.ndarray) -> np.ndarray:
         """:meth:`sigma` squared for each of ``targets`` from station j (kept by station: a
         station's targets are asked again by each of its links)."""
         row = self._sigma2[j]
         todo = targets[np.isnan(row[targets])].tolist()
-        keys = [("rms", self.stations[j], t) for t in todo]
-        new = [n for n, key in enumerate(keys) if key not in self._memo]
-        if new:  # the targets not yet in the memo, together
-            at = np.array([todo[n] for n in new], dtype=np.int64)
-            size = _item_sizes(self.ctx, self.tc, at, self.sight.need_mm[at, j])
-            rms = centre_rms(self.ctx, self.tc, self.sight, at, j, size)
-            self._memo.update(zip([keys[n] for n in new], rms.tolist(), strict=True))
-        for t, key in zip(todo, keys, strict=True):
-            row[t] = self._memo[key] ** 2
+        for t, sigma in zip(todo, self._sigmas(j, todo), strict=True):
+            row[t] = sigma**2
         return row[targets]
 
     def probe(self, j: int) -> np.ndarray:
@@ -1509,7 +1505,8 @@ def build_network(
     final_rms: dict[tuple[int, int], float] = {}  # the links' observations
     observed: dict[tuple[int, int], float] = {}  # and every other station's that sees one
     for t, who in users.items():
-        size = _item_size(ctx, tc, t, max(float(sight.need_mm[t, j]) for j in who))
+        need = max(float(sight.need_mm[t, j]) for j in who)
+        size = float(_item_sizes(ctx, tc, np.array([t]), np.array([need]))[0])
         for j in who:
             final_rms[(j, t)] = observed[(j, t)] = centre_rms(ctx, tc, sight, t, j, size)
         if tc.type[t] == "control":
