@@ -13,7 +13,15 @@ import numpy as np
 
 from planner.errors import InputError
 
-__all__ = ["check_projected", "is_geographic", "name_of", "to_wgs84", "utm_for", "wgs84_to"]
+__all__ = [
+    "check_projected",
+    "is_geographic",
+    "name_of",
+    "split_model_crs",
+    "to_wgs84",
+    "utm_for",
+    "wgs84_to",
+]
 
 #: GeoJSON without a ``crs`` member is longitude/latitude on WGS 84 (RFC 7946, sect. 4).
 GEOJSON_DEFAULT = "OGC:CRS84"
@@ -101,3 +109,56 @@ def check_projected(label: str, xy: np.ndarray) -> None:
             f"the coordinates (e.g. {centre[0]:.1f}, {centre[1]:.1f}) are not in the area of "
             f"{name_of(label)} ({area.name}); fix the CRS label (--crs) or the coordinates"
         )
+
+
+#: The German surveying authorities' (AdV) CRS names, as German CityGML gives them in
+#: ``srsName`` (``urn:adv:crs:ETRS89_UTM32*DE_DHHN2016_NH``) → EPSG codes.
+ADV_CRS = {
+    "ETRS89_UTM32": "EPSG:25832",
+    "ETRS89_UTM33": "EPSG:25833",
+    "DE_DHDN_3GK2": "EPSG:31466",
+    "DE_DHDN_3GK3": "EPSG:31467",
+    "DE_DHDN_3GK4": "EPSG:31468",
+    "DE_DHDN_3GK5": "EPSG:31469",
+    "DE_DHHN2016_NH": "EPSG:7837",
+    "DE_DHHN92_NH": "EPSG:5783",
+    "DE_DHHN12_NOH": "EPSG:5784",
+}
+
+
+def split_model_crs(label: str) -> tuple[str | None, str]:
+    """A city model's CRS label as ``(horizontal CRS label, its heights in words)``:
+    compound CRSs (``EPSG:7415``, OGC compound URNs, the AdV's ``A*B``) split into their
+    horizontal and vertical parts.
+
+    >>> split_model_crs("urn:adv:crs:ETRS89_UTM32*DE_DHHN2016_NH")
+    ('EPSG:25832', 'DHHN2016 height (EPSG:7837)')
+    >>> split_model_crs("https://www.opengis.net/def/crs/EPSG/0/7415")
+    ('EPSG:28992', 'NAP height (EPSG:5709)')
+    """
+    import re
+
+    text = label.strip()
+    parts: list[str] = []
+    if text.lower().startswith("urn:adv:crs:"):
+        for name in text[len("urn:adv:crs:") :].split("*"):
+            if name not in ADV_CRS:
+                raise InputError(
+                    f"unknown AdV CRS {name!r} in {label!r}; give the model's CRS (--crs EPSG:…)"
+                )
+            parts.append(ADV_CRS[name])
+    else:
+        codes = re.findall(r"EPSG(?:/\d+/|::?|:)(\d+)", text, re.IGNORECASE)
+        parts = [f"EPSG:{c}" for c in codes] or [text]
+    crs = [_crs(p) for p in parts]
+    if len(crs) == 1 and crs[0].is_compound:
+        crs = list(crs[0].sub_crs_list)
+        parts = [f"EPSG:{c.to_epsg()}" if c.to_epsg() else c.to_wkt() for c in crs]
+    horizontal = next((p for p, c in zip(parts, crs, strict=True) if not c.is_vertical), None)
+    vertical = next((c for c in crs if c.is_vertical), None)
+    if vertical is None:
+        datum = "the model's heights (its file names no vertical datum)"
+    else:
+        code = vertical.to_epsg()
+        datum = f"{vertical.name} (EPSG:{code})" if code else vertical.name
+    return horizontal, datum

@@ -1,7 +1,12 @@
 """The site: buildings to plan, obstacles, no-go areas, boundary — validated before any work.
 
 Geometry is shapely 2, in the user's projected metric CRS (metres), kept as given: results
-are written back in the same coordinates. Heights are metres above the (flat) ground.
+are written back in the same coordinates. Heights are metres in the site's height system
+(:attr:`Site.height_datum`): above the flat ground at height 0 for a site drawn as
+footprints, the model's (or the terrain model's) vertical datum for a 3-D city model or a
+site given a terrain (:attr:`Site.terrain`). A building drawn as a footprint stands on its
+``base_z`` (None: the lowest ground under it) and is ``height_m`` high; a building from a
+3-D model also carries its surfaces (:class:`~planner.citymodel.Surface`).
 """
 
 from __future__ import annotations
@@ -16,8 +21,10 @@ import shapely
 from shapely.geometry import MultiPolygon, Polygon
 from shapely.geometry.base import BaseGeometry
 
+from planner.citymodel import Surface
 from planner.errors import InputError
 from planner.sitecheck import CLIP_SHARE, SiteNote, SiteProblem, SiteProblems, near_mask
+from planner.terrain import Terrain
 from planner.zones import Zone
 
 __all__ = [
@@ -29,6 +36,7 @@ __all__ = [
     "Site",
     "SiteLimits",
     "repair_geometry",
+    "with_terrain",
 ]
 
 Polygonal = Polygon | MultiPolygon
@@ -85,9 +93,13 @@ MAX_COORDINATE_M = 1e8
 
 @dataclass(frozen=True)
 class Building:
-    """A building: footprint (holes are courtyards) and height [m] above the ground.
+    """A building: footprint (holes are courtyards) and height [m] above its base.
 
     ``planned`` buildings get their facades scanned; the others only block the beam.
+    ``base_z`` is the height of its ground [m] in the site's height system (None: the
+    lowest ground under it — 0 on flat ground); ``surfaces`` its 3-D surfaces where a city
+    model gives them (then the facades are its walls as they are, and the footprint its
+    ground outline), else it is the footprint extruded to ``height_m``.
     """
 
     id: str
@@ -95,16 +107,35 @@ class Building:
     height_m: float
     planned: bool = True
     name: str = ""
+    base_z: float | None = None
+    surfaces: tuple[Surface, ...] = field(default=(), compare=False, repr=False)
+
+    @property
+    def is_3d(self) -> bool:
+        """Whether the building has 3-D surfaces (from a city model)."""
+        return bool(self.surfaces)
+
+    @property
+    def top_z(self) -> float:
+        """The building's highest point [m] in the site's height system."""
+        return (self.base_z or 0.0) + self.height_m
 
 
 @dataclass(frozen=True)
 class Obstacle:
-    """Something that blocks the beam and where no station stands: a wall, a tree, a shed."""
+    """Something that blocks the beam and where no station stands: a wall, a tree, a shed.
+
+    Drawn as an outline with a height, it blocks as a prism from the ground up; a tree with
+    a ``crown_base_m`` (> 0) as a trunk up to it and a crown above it; one from a city model
+    as its own ``mesh`` (T, 3, 3) [m], the outline being where no station stands.
+    """
 
     id: str
     geometry: Polygonal
     height_m: float
     kind: str = "obstacle"
+    crown_base_m: float = 0.0
+    mesh: np.ndarray | None = field(default=None, compare=False, repr=False)
 
 
 @dataclass(frozen=True)
@@ -365,6 +396,11 @@ class Site:
     A problem only in features farther than ``near_m`` from every planned building cannot
     change the plan: the feature is repaired (make_valid), given a height, renamed or left
     out, and that is noted in ``notes`` (:class:`~planner.sitecheck.SiteNote`) instead.
+
+    ``terrain`` (:class:`~planner.terrain.Terrain`) gives the ground's heights (None: flat
+    ground at 0); ``height_datum`` says in words what the heights are measured from (the
+    model's or the terrain's vertical datum). A building without a ``base_z`` stands on
+    the lowest ground under its footprint.
     """
 
     buildings: list[Building]
@@ -380,6 +416,8 @@ class Site:
     notes: list[SiteNote] = field(default_factory=list)
     near_m: float = DEFAULT_NEAR_M
     passages: list[Passage] = field(default_factory=list)
+    terrain: Terrain | None = None
+    height_datum: str = ""
 
     def __post_init__(self) -> None:
         for name, kind in (
@@ -431,6 +469,35 @@ class Site:
         problems += self._check_passages()
         if problems:
             raise SiteProblems(problems)
+        self._settle_bases()
+
+    def _settle_bases(self) -> None:
+        """Every building's ``base_z``: given, else the lowest ground under its outline
+        (0 on flat ground)."""
+        for b in self.buildings:
+            if b.base_z is not None:
+                object.__setattr__(b, "base_z", float(b.base_z))
+                continue
+            object.__setattr__(b, "base_z", self.ground_under(b.footprint))
+
+    @property
+    def height_system(self) -> str:
+        """What the heights of the plan are measured from, in words."""
+        if self.height_datum:
+            return self.height_datum
+        if self.terrain is not None:
+            return f"the heights of the {self.terrain.source}"
+        return "metres above the ground (flat ground at height 0)"
+
+    @property
+    def is_3d(self) -> bool:
+        """Whether the site is more than footprints on flat ground: 3-D buildings, a
+        terrain, trees with crowns or obstacles given as meshes."""
+        return (
+            self.terrain is not None
+            or any(b.surfaces for b in self.buildings)
+            or any(o.mesh is not None or o.crown_base_m > 0 for o in self.obstacles)
+        )
 
     # -- validation ---------------------------------------------------------------------------
     def _note(self, note: SiteNote) -> None:
@@ -797,7 +864,8 @@ class Site:
                                 c.y,
                             )
                         )
-        obstacles = [o for o in self.obstacles if o.geometry.is_valid]
+        # (an obstacle from a model's mesh is where stations keep off; it may reach over a roof)
+        obstacles = [o for o in self.obstacles if o.geometry.is_valid and o.mesh is None]
         if obstacles:
             obs = [o.geometry for o in obstacles]
             o_near = self._near(obs)
@@ -839,17 +907,27 @@ class Site:
 
     @property
     def blockers(self) -> list[tuple[str, Polygonal, float]]:
-        """Everything that blocks the beam from the ground up: ``(id, polygon, height_m)``
-        of every building (planned or not; without its passages) and every obstacle."""
+        """Everything that blocks the beam from the ground up: ``(id, polygon, top)`` of
+        every building (planned or not; without its passages) and every obstacle, ``top``
+        its highest point [m] in the site's height system (its height on flat ground)."""
         cut = shapely.union_all([p.geometry for p in self.passages]) if self.passages else None
         out = []
         for b in self.buildings:
             g = b.footprint
             if cut is not None and g.intersects(cut):
                 g = _polygonal_part(g.difference(cut))
-            out.append((b.id, g, b.height_m))
-        out += [(o.id, o.geometry, o.height_m) for o in self.obstacles]
+            out.append((b.id, g, b.top_z))
+        out += [
+            (o.id, o.geometry, self.ground_under(o.geometry) + o.height_m) for o in self.obstacles
+        ]
         return out
+
+    def ground_under(self, geom: BaseGeometry) -> float:
+        """The lowest ground [m] under an outline (0 on flat ground)."""
+        if self.terrain is None:
+            return 0.0
+        ring = shapely.segmentize(geom.boundary if geom.area else geom, 2.0)
+        return float(self.terrain.ground_z(shapely.get_coordinates(ring)).min())
 
     @property
     def bridges(self) -> list[tuple[str, Polygonal, float, float]]:
@@ -862,7 +940,7 @@ class Site:
                 if b.footprint.intersects(p.geometry):
                     part = _polygonal_part(b.footprint.intersection(p.geometry))
                     if not part.is_empty:
-                        out.append((b.id, part, p.clear_height_m, b.height_m))
+                        out.append((b.id, part, b.base_z + p.clear_height_m, b.top_z))
         return out
 
     def passages_through(self, buildings: Sequence[Building]) -> list[Passage]:
@@ -884,6 +962,33 @@ class Site:
             buildings=with_planned(self.buildings, building_ids),
             warnings=list(self.warnings),
         )
+
+
+def with_terrain(site: Site, path: str) -> Site:
+    """``site`` standing on the terrain model (GeoTIFF) at ``path``, cut to the site and
+    300 m around (:func:`planner.terrain.read_terrain`): its footprint buildings' bases
+    settled on it again, its heights in the terrain's vertical datum."""
+    from planner import crs as crs_
+    from planner.terrain import read_terrain
+
+    geoms = [b.footprint for b in site.buildings] + [o.geometry for o in site.obstacles]
+    x0, y0, x1, y1 = shapely.union_all(geoms).bounds
+    m = 300.0
+    terrain, t_crs = read_terrain(path, (x0 - m, y0 - m, x1 + m, y1 + m))
+    if site.crs and t_crs:
+        same = crs_.split_model_crs(site.crs)[0] == crs_.split_model_crs(t_crs)[0]
+        if not same:
+            raise InputError(
+                f"the terrain model is in {crs_.name_of(t_crs)}, the site in "
+                f"{crs_.name_of(site.crs)}; reproject the terrain model (gdalwarp -t_srs …)"
+            )
+    lo, hi = terrain.z_range
+    if hi - lo > 3000:
+        raise InputError(
+            f"the terrain model's heights span {lo:g}–{hi:g} m over the site; check its units"
+        )
+    buildings = [b if b.surfaces else replace(b, base_z=None) for b in site.buildings]
+    return replace(site, buildings=buildings, terrain=terrain, warnings=list(site.warnings))
 
 
 def with_planned(buildings: Sequence[Building], ids: Sequence[str] | None) -> list[Building]:

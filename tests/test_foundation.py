@@ -311,17 +311,18 @@ def test_report_describes_the_plan_that_plan_makes(tmp_path, monkeypatch):
     stations = pd.read_csv("plan/stations.csv")
     parser = _Cells()
     parser.feed(Path("report.html").read_text())
-    reported = {  # the station table's rows: id, x, y, height, purpose, samples met
+    reported = {  # the station table's rows: id, x, y, ground, height, purpose, samples met
         r[0]: r
         for r in parser.rows
-        if len(r) == 6 and r[0].startswith("S") and r[0][1:].isdigit() and r[4] in ("cover", "link")
+        if len(r) == 7 and r[0].startswith("S") and r[0][1:].isdigit() and r[5] in ("cover", "link")
     }
     assert sorted(reported) == sorted(stations["station_id"])
     for s in stations.itertuples():
         row = reported[s.station_id]
         assert float(row[1]) == pytest.approx(s.x, abs=1e-3)  # m
         assert float(row[2]) == pytest.approx(s.y, abs=1e-3)  # m
-        assert float(row[3]) == pytest.approx(1.8)  # the instrument height given
+        assert float(row[3]) == pytest.approx(0.0)  # flat ground
+        assert float(row[4]) == pytest.approx(1.8)  # the instrument height given
     summary = next(
         line for line in Path("plan/summary.txt").read_text().splitlines() if "Stations:" in line
     )

@@ -133,7 +133,8 @@ def test_the_reports_numbers_are_the_files_numbers(strict_plan):
     assert (stations["purpose"] == "hand").sum() == 1
     assert sorted(set(stations["purpose"])) != ["hand"]  # the others keep theirs
     for sid, purpose in zip(stations["station_id"], stations["purpose"], strict=True):
-        assert re.search(rf"\b{sid}\s+[\d.]+\s+[\d.]+\s+[\d.]+\s+{purpose}\b", text)
+        # x, y, the ground's height and the instrument's
+        assert re.search(rf"\b{sid}\s+[\d.]+\s+[\d.]+\s+[\d.]+\s+[\d.]+\s+{purpose}\b", text)
     for found in re.finditer(r"lower bound ([\d.]+), gap ([\d.]+) %", text):
         objective = int(re.search(r"objective (\d+)", text[: found.start()][-80:]).group(1))
         bound, gap = float(found.group(1)), float(found.group(2))

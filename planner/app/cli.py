@@ -175,6 +175,27 @@ def cmd_figures(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def cmd_audit(args: argparse.Namespace) -> int:
+    from pathlib import Path
+
+    from planner.atomic import check_output_file, write_bytes_atomic
+    from planner.cityio import read_city_model
+    from planner.pipeline.audit import audit, audit_summary, read_plan_tables
+    from planner.site import with_terrain
+
+    cov, fac, st = read_plan_tables(args.plan)
+    model = read_city_model(args.model, lod=args.lod, crs=args.crs)
+    if args.terrain:
+        model = with_terrain(model, args.terrain)
+    table = audit(model, cov, fac, st)
+    out = check_output_file(Path(args.out) if args.out else Path(args.plan) / "audit.csv")
+    write_bytes_atomic(out, table.to_csv(index=False).encode("utf-8"))
+    summary = audit_summary(table)
+    print(summary.to_string(index=False))
+    print(f"audit of {len(table)} samples marked met: {out}")
+    return EXIT_OK
+
+
 class _StderrProgress:
     """Progress on stderr: a bar on a terminal, a line per stage otherwise."""
 
@@ -221,7 +242,7 @@ def plan_inputs(args: argparse.Namespace):
     from planner.pipeline.planning import reach_m
     from planner.pipeline.requirements import requirements_and_settings
     from planner.site import SiteLimits
-    from planner.siteio import default_site, read_site
+    from planner.siteio import default_site
     from planner.targets import parse_inventory
 
     options = dict(vars(args))
@@ -232,20 +253,15 @@ def plan_inputs(args: argparse.Namespace):
     limits = SiteLimits(
         **{f.name: getattr(args, f.name) for f in fields(SiteLimits) if getattr(args, f.name)}
     )
-    if args.site:
-        site = read_site(
-            args.site,
-            default_height_m=args.height,
-            buildings=args.buildings,
-            repair=args.make_valid,
-            limits=limits,
-            crs=args.crs,
-            # a problem farther than any station reaches cannot change the plan
-            near_m=reach_m(scanner, req, settings),
-            **({"storey_height_m": args.storey_height_m} if args.storey_height_m else {}),
-        )
-    else:
+    near = reach_m(scanner, req, settings)  # a problem farther than any station reaches
+    site = read_site_args(args, limits, near) if args.site else None
+    if site is None:
         site = default_site(buildings=args.buildings, limits=limits)
+        if args.terrain or args.lod:
+            raise InputError(
+                "--terrain and --lod need a site file (the default site is footprints on flat "
+                "ground)"
+            )
     if args.control:
         from dataclasses import replace
 
@@ -264,6 +280,39 @@ def plan_inputs(args: argparse.Namespace):
             zones.append(parse_zone(text, f"zone{n}"))
         site = replace(site, zones=zones)
     return site, scanner, req, settings
+
+
+def read_site_args(args: argparse.Namespace, limits, near_m: float):
+    """The site named on the command line: a city model (CityJSON, CityGML) or a site file
+    of footprints, with the terrain model given (``--terrain``)."""
+    from pathlib import Path
+
+    from planner.cityio import is_city_model, read_city_model
+    from planner.site import with_terrain
+    from planner.siteio import read_site
+
+    path = Path(args.site)
+    model = path.is_file() and is_city_model(path)
+    if args.lod and not model:
+        raise InputError("--lod chooses a city model's level of detail; the site is not one")
+    if model:
+        site = read_city_model(
+            path, lod=args.lod, buildings=args.buildings, crs=args.crs, limits=limits, near_m=near_m
+        )
+    else:
+        site = read_site(
+            args.site,
+            default_height_m=args.height,
+            buildings=args.buildings,
+            repair=args.make_valid,
+            limits=limits,
+            crs=args.crs,
+            near_m=near_m,
+            **({"storey_height_m": args.storey_height_m} if args.storey_height_m else {}),
+        )
+    if args.terrain:
+        site = with_terrain(site, args.terrain)
+    return site
 
 
 def _read_text(path: str, what: str) -> str:
@@ -561,6 +610,7 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         REGISTRATION_MODES,
         REGISTRATION_PROCESSING,
         SETTING_GROUPS,
+        SIGHT_ENGINES,
         PlanSettings,
         Requirements,
         field_specs,
@@ -570,8 +620,24 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         "site",
         nargs="?",
         metavar="SITE_FILE",
-        help=".geojson, .wkt, .csv, .gpkg, .shp, .kml or .kmz (longitude/latitude is "
-        "projected to its UTM zone); default: the built-in site",
+        help="footprints (.geojson, .wkt, .csv, .gpkg, .shp, .kml or .kmz; longitude/latitude "
+        "is projected to its UTM zone) or a 3-D city model (CityJSON .json/.city.json, "
+        "CityJSON Sequence .city.jsonl, CityGML .gml/.xml); default: the built-in site",
+    )
+    pl.add_argument(
+        "--lod",
+        default=None,
+        metavar="LOD",
+        help="the city model's level of detail to plan on, e.g. 2 or 2.2 (default: the finest "
+        "each building has)",
+    )
+    pl.add_argument(
+        "--terrain",
+        default=None,
+        metavar="DTM.tif",
+        help="a terrain model (GeoTIFF) in the site's CRS: stations and targets stand on it, "
+        "it blocks sight lines, heights are in its vertical datum (default: the model's "
+        "relief, else flat ground)",
     )
     pl.add_argument(
         "--crs",
@@ -662,6 +728,21 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         help="what the promised registration error assumes of the registration software: "
         + "; or ".join(f"{k}, {v}" for k, v in REGISTRATION_PROCESSING.items())
         + " (default adjustment)",
+    )
+    group["sampling"].add_argument(
+        "--demand-roofs",
+        action="store_true",
+        default=None,
+        help="demand a city model's roofs too (they need an elevated station); walls and "
+        "doors are always demanded, windows (glass) never",
+    )
+    group["sampling"].add_argument(
+        "--sight-engine",
+        choices=SIGHT_ENGINES,
+        default=None,
+        help="how sight lines are answered: rays cast on the scene's triangles, or the exact "
+        "prism test of footprints on flat ground; auto (default) takes prisms where the "
+        "site allows",
     )
     group["sampling"].add_argument(
         "--preset",
@@ -957,6 +1038,22 @@ def build_parser() -> argparse.ArgumentParser:
     )
     profile_options(ax)
     ax.set_defaults(func=cmd_calibrate_axes)
+
+    au = sub.add_parser(
+        "audit",
+        help="audit a plan against a 3-D city model: which samples it marks met are seen, "
+        "hidden by the real building, or have no wall there",
+        description="Casts every sample a plan marks met against the model. Writes "
+        "audit.csv into the plan's folder (or --out) and prints the count per building. "
+        "Exit codes: 0 done; 2 bad input.",
+    )
+    au.add_argument("model", metavar="MODEL", help="the city model (CityJSON or CityGML)")
+    au.add_argument("--plan", required=True, metavar="DIR", help="the plan's folder")
+    au.add_argument("--lod", default=None, metavar="LOD", help="the model's level of detail")
+    au.add_argument("--crs", default=None, metavar="CRS", help="the model's CRS if it names none")
+    au.add_argument("--terrain", default=None, metavar="DTM.tif", help="a terrain model")
+    au.add_argument("--out", default=None, metavar="FILE.csv", help="default DIR/audit.csv")
+    au.set_defaults(func=cmd_audit)
 
     f = sub.add_parser("figures", help="regenerate the figures in figures/")
     f.add_argument("--out", default="figures", help="output folder (default figures/)")

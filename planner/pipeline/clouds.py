@@ -35,7 +35,6 @@ from planner.cloud_registration import (
     weakest_direction,
 )
 from planner.pipeline.evaluate import Context, evaluate_stations
-from planner.pipeline.visibility import clear_height, edges_in_box
 from planner.spacing import point_spacing_mm
 from planner.units import RHO_ARCSEC
 
@@ -98,7 +97,7 @@ class SurfaceCache:
         self.ctx = ctx
         fac = ctx.facades
         self._xyz = [np.column_stack([fac.xy, fac.z])]
-        self._normal = [np.column_stack([fac.normal[fac.facade], np.zeros(len(fac.z))])]
+        self._normal = [fac.normal3[fac.facade]]
         self._area = [
             np.full(len(fac.z), ctx.settings.sample_spacing_m * ctx.settings.sample_height_step_m)
         ]
@@ -135,14 +134,13 @@ class SurfaceCache:
         for j, (ids, pts, v) in enumerate(cols):
             rows = np.searchsorted(used, ids)
             points[rows, j], var[rows, j] = pts, v
-        hi = self.ctx.settings.instrument_height_m
         return Surfaces(
             xyz=xyz,
             normal=normal,
             points=points,
             var_mm2=var,
             area_m2=area,
-            station_xyz=np.column_stack([cand_xy[idx], np.full(len(idx), hi)]),
+            station_xyz=np.column_stack([cand_xy[idx], self.ctx.station_z(cand_xy[idx])]),
         )
 
     def link(self, parent: int, child: int, cand_xy: np.ndarray) -> CloudLink:
@@ -217,22 +215,28 @@ class SurfaceCache:
         if not new:
             return
         ctx, sc, st = self.ctx, self.ctx.scanner, self.ctx.settings
-        hi = st.instrument_height_m
         station_xy = cand_xy[new]
+        station_z = ctx.station_z(station_xy)
         f_points, f_var = _facade_patches(ctx, station_xy)
-        e = ctx.edges
         for j, (c, sxy) in enumerate(zip(new, station_xy, strict=True)):
             f_ids = np.flatnonzero(f_points[:, j] > 0)
             g_xy = self._cells_near(sxy)
+            g_z = ctx.scene.ground_z(g_xy)
+            height = station_z[j] - g_z  # the scanner's height over each cell
             d = np.hypot(*(g_xy - sxy).T)
-            s = np.hypot(d, hi)
-            g_xy, s = g_xy[s >= sc.min_range_m], s[s >= sc.min_range_m]
-            box = edges_in_box(e, (*(sxy - GROUND_REACH_M), *(sxy + GROUND_REACH_M)))
-            zc = clear_height(
-                np.broadcast_to(sxy, (len(g_xy), 2)), hi, g_xy, e[box], ctx.edge_heights[box]
+            s = np.hypot(d, height)
+            near = s >= sc.min_range_m
+            g_xy, g_z, s, height = g_xy[near], g_z[near], s[near], height[near]
+            src = np.column_stack(
+                [np.broadcast_to(sxy, g_xy.shape), np.full(len(g_xy), station_z[j])]
             )
-            g_xy, s = g_xy[zc <= 0.0], s[zc <= 0.0]
-            sin_e = hi / s
+            box = (
+                np.array([0, len(g_xy)]),
+                np.array([[*(sxy - GROUND_REACH_M), *(sxy + GROUND_REACH_M)]]),
+            )
+            open_ = ctx.scene.seen(src, np.column_stack([g_xy, g_z]), groups=box)
+            g_xy, s, height = g_xy[open_], s[open_], height[open_]
+            sin_e = height / s
             sigma2 = (sc.range_rms_at(s) * sin_e) ** 2 + (
                 s * 1000.0 * sc.tilt_rms_arcsec / RHO_ARCSEC * np.sqrt(1.0 - sin_e**2)
             ) ** 2

@@ -43,7 +43,8 @@ from planner.pipeline.registration import (
     build_network,
     control_messages,
 )
-from planner.pipeline.visibility import bridge_interval, clear_height, edges_in_box, visible
+from planner.pipeline.schema import STATION_COLUMNS
+from planner.pipeline.visibility import clear_height
 from planner.registration_error import CONTROL, Link, transport_pose_cov
 
 __all__ = [
@@ -92,18 +93,15 @@ class ControlTie:
 
 def _sees(ctx: Context, a: np.ndarray, b: np.ndarray, height_m: float) -> np.ndarray:
     """Whether each of the points ``b`` (P, 2) is seen from ``a`` (2,) with both ends at
-    ``height_m`` (a total station sighting a prism on a pole)."""
+    ``height_m`` above the ground (a total station sighting a prism on a pole)."""
     if not len(b):
         return np.zeros(0, dtype=bool)
-    src = np.broadcast_to(a, b.shape)
+    src = np.column_stack(
+        [np.broadcast_to(a, b.shape), ctx.scene.above_ground(a[None, :], height_m).repeat(len(b))]
+    )
+    dst = np.column_stack([b, ctx.scene.above_ground(b, height_m)])
     lo_xy, hi_xy = np.minimum(b.min(axis=0), a), np.maximum(b.max(axis=0), a)
-    near = edges_in_box(ctx.edges, (*lo_xy, *hi_xy))
-    zc = clear_height(src, height_m, b, ctx.edges[near], ctx.edge_heights[near])
-    lo = up = None
-    be, bottoms, tops = ctx.bridges
-    if len(be):
-        lo, up = bridge_interval(src, height_m, b, be, bottoms, tops)
-    return visible(np.full(len(b), height_m), zc, lo, up)
+    return ctx.scene.seen(src, dst, groups=(np.array([0, len(b)]), np.array([[*lo_xy, *hi_xy]])))
 
 
 def traverse_path(
@@ -145,8 +143,16 @@ def sky_open(ctx: Context, xy: np.ndarray, directions: int = 36, reach_m: float 
     round it, nothing rises above :data:`GNSS_MASK_DEG` (buildings and obstacles, their
     heights over the instrument's)."""
     hi = ctx.settings.instrument_height_m
-    e, h = ctx.edges, ctx.edge_heights
     az = np.radians(np.arange(directions) * 360.0 / directions)
+    if not ctx.scene.prisms:  # a ray up at the mask's elevation in each direction
+        z = ctx.scene.above_ground(np.asarray(xy, float)[None, :], hi)[0]
+        el = np.radians(GNSS_MASK_DEG)
+        vec = reach_m * np.column_stack(
+            [np.cos(el) * np.sin(az), np.cos(el) * np.cos(az), np.full(directions, np.sin(el))]
+        )
+        org = np.broadcast_to([xy[0], xy[1], z], vec.shape)
+        return bool((~ctx.scene.occluded(org, vec)).mean() >= GNSS_OPEN_SHARE)
+    e, h = ctx.edges, ctx.edge_heights
     ends = np.column_stack([xy[0] + reach_m * np.sin(az), xy[1] + reach_m * np.cos(az)])
     # the lowest height seen at the ray's end is where the highest obstruction's angle points
     zc = clear_height(np.broadcast_to(xy, ends.shape), hi, ends, e, h)
@@ -323,9 +329,10 @@ def setup_id(tie_no: int, k: int) -> str:
     return f"TR{tie_no}-{k + 1:02d}"
 
 
-def traverse_setups(ties: list[ControlTie], settings) -> pd.DataFrame:
+def traverse_setups(ties: list[ControlTie], settings, ground_z) -> pd.DataFrame:
     """The traverses' set-ups as rows of the stations table (purpose ``traverse``): where
-    the crew sets up the total station, in order from the tied side."""
+    the crew sets up the total station, in order from the tied side (``ground_z``: the
+    ground's height under points (P, 2))."""
     rows = []
     n = 0
     for tie in ties:
@@ -338,14 +345,13 @@ def traverse_setups(ties: list[ControlTie], settings) -> pd.DataFrame:
                     "station_id": setup_id(n, k),
                     "x": float(x),
                     "y": float(y),
+                    "ground_z": float(ground_z(np.array([[x, y]]))[0]),
                     "instrument_height_m": settings.instrument_height_m,
                     "purpose": "traverse",
                     "samples_met": 0,
                 }
             )
-    return pd.DataFrame(
-        rows, columns=["station_id", "x", "y", "instrument_height_m", "purpose", "samples_met"]
-    )
+    return pd.DataFrame(rows, columns=[*STATION_COLUMNS, "samples_met"])
 
 
 def tie_messages(

@@ -25,8 +25,9 @@ import scipy.sparse as sp
 from planner.accuracy import eq2_variances, eq4_variance
 from planner.accuracy3d import footprint_mm, incidence_ranging_rms_mm, variances_3d
 from planner.pipeline.candidates import GroundRegions
-from planner.pipeline.facades import SIGHT_OFFSET_M, FacadeSet, bridge_edges, footprint_edges
+from planner.pipeline.facades import SIGHT_OFFSET_M, FacadeSet
 from planner.pipeline.requirements import CHECKS, Check, PlanSettings, Requirements
+from planner.pipeline.scene import Scene
 from planner.pipeline.schema import METRIC_KEYS
 from planner.pipeline.visibility import (
     bridge_interval,
@@ -64,14 +65,14 @@ MAX_KEPT_CLEAR = 10_000_000
 
 
 class ClearanceStore:
-    """Clear heights kept between the evaluations of a plan, at most
-    :data:`MAX_KEPT_CLEAR` values in all."""
+    """Lines of sight kept between the evaluations of a plan (clear heights, or the rays'
+    answers), at most :data:`MAX_KEPT_CLEAR` values in all."""
 
     def __init__(self) -> None:
-        self.kept: dict[tuple[int, bytes], Clearance] = {}
+        self.kept: dict[tuple[int, bytes], Clearance | np.ndarray] = {}
         self.values = 0
 
-    def keep(self, key: tuple[int, bytes], clearance: Clearance, size: int) -> None:
+    def keep(self, key: tuple[int, bytes], clearance: Clearance | np.ndarray, size: int) -> None:
         """Keep ``clearance`` (``size`` values) under ``key`` while the cap allows."""
         if self.values + size <= MAX_KEPT_CLEAR:
             self.kept[key] = clearance
@@ -88,6 +89,7 @@ class Context:
     req: Requirements
     settings: PlanSettings
     reach_m: float
+    scene: Scene  # every sight line is answered here
     edges: np.ndarray  # (M, 4) every blocking footprint edge
     edge_heights: np.ndarray  # (M,)
     bridges: tuple[
@@ -114,11 +116,15 @@ class Context:
         settings: PlanSettings,
         reach: float,
         sample_req: SampleRequirements | None = None,
+        scene: Scene | None = None,
     ) -> Context:
         """Everything the evaluation needs; ``sample_req`` the requirement of every sample
-        (:func:`planner.pipeline.zoning.apply_zones`; default: ``req`` everywhere)."""
-        edges, heights = footprint_edges(site)
-        bridges = bridge_edges(site)
+        (:func:`planner.pipeline.zoning.apply_zones`; default: ``req`` everywhere);
+        ``scene`` the sight lines' (made for ``site`` with the settings' engine when not
+        given)."""
+        scene = scene or Scene(site, settings.sight_engine)
+        edges, heights = scene.edges, scene.edge_heights
+        bridges = scene.bridges
         masks, cols_of, samples_of = [], [], []
         col_order = np.argsort(facades.col_facade, kind="stable")
         smp_order = np.argsort(facades.facade, kind="stable")
@@ -145,6 +151,7 @@ class Context:
             req=req,
             settings=settings,
             reach_m=reach,
+            scene=scene,
             edges=edges,
             edge_heights=heights,
             bridges=bridges,
@@ -161,11 +168,27 @@ class Context:
         """The site's open ground in connected regions (closed courtyards apart)."""
         return GroundRegions(self.site)
 
+    def station_z(self, xy: np.ndarray) -> np.ndarray:
+        """Heights of scanner centres standing at ``xy`` (P, 2) [m]: the instrument height
+        above the ground."""
+        return self.scene.above_ground(xy, self.settings.instrument_height_m)
+
+    def ahead(self, f: int, xy: np.ndarray, z: np.ndarray | None = None) -> np.ndarray:
+        """Which scanner centres at ``xy`` (P, 2) (heights ``z``, default the stations')
+        are in front of facade ``f``'s plane."""
+        fac = self.facades
+        rel = xy - fac.start[f]
+        if not fac.tilted[f]:
+            return rel @ fac.normal[f] > 0
+        z = self.station_z(xy) if z is None else z
+        n3 = fac.normal3[f]
+        return rel @ n3[:2] + (z - fac.z0[f]) * n3[2] > 0
+
     def front_candidates(self, f: int, cand_xy: np.ndarray) -> np.ndarray:
         """Indices of candidates in front of facade ``f`` and within reach of it."""
-        a, e, n = self.facades.start[f], self.facades.end[f], self.facades.normal[f]
+        a, e = self.facades.start[f], self.facades.end[f]
         rel = cand_xy - a
-        ahead = rel @ n > 0
+        ahead = self.ahead(f, cand_xy)
         v = e - a
         t = np.clip(rel @ v / (v @ v), 0.0, 1.0)
         dist = np.hypot(*(rel - t[:, None] * v).T)
@@ -203,6 +226,27 @@ class Context:
         if keep:
             self._clear.keep(key, out, zc.size)
         return out
+
+    def sees(self, f: int, cand_xy: np.ndarray, smp: np.ndarray, keep: bool = False) -> np.ndarray:
+        """(c, n) whether scanners standing at ``cand_xy`` see the samples ``smp`` of facade
+        ``f`` (the scene's engine: per column on prisms, :meth:`clear_heights`; per sample
+        by rays, ending :data:`SIGHT_OFFSET_M` in front of the wall). ``keep`` keeps the
+        answer for the same facade and candidates again."""
+        fac = self.facades
+        if self.scene.prisms:
+            col_local = np.searchsorted(self.cols_of[f], fac.column[smp])
+            return self.clear_heights(f, cand_xy, keep).sees(fac.z[smp], col_local)
+        mine = self.samples_of[f]
+        key = (f, cand_xy.tobytes())
+        seen = self._clear.kept.get(key)
+        if seen is None:
+            src = np.column_stack([cand_xy, self.station_z(cand_xy)])
+            dst = np.column_stack([fac.xy[mine], fac.z[mine]]) + SIGHT_OFFSET_M * fac.normal3[f]
+            c, n = len(src), len(dst)
+            seen = self.scene.seen(np.repeat(src, n, axis=0), np.tile(dst, (c, 1))).reshape(c, n)
+            if keep:
+                self._clear.keep(key, seen, seen.size // 8 + 1)
+        return seen[:, np.searchsorted(mine, smp)]
 
     def pair_count(self, cand_xy: np.ndarray) -> int:
         """How many candidate × sample pairs the evaluation will compute (the work)."""
@@ -260,6 +304,7 @@ class PairMetrics:
         view: np.ndarray,
         step_mm_at_10m: float,
         beam: Scanner | None = None,
+        cos_incidence: np.ndarray | None = None,
     ) -> None:
         self.distance_m = distance_m
         self.slope_distance_m = slope_distance_m
@@ -272,6 +317,8 @@ class PairMetrics:
         self.scanner_var = (var_x, var_y, var_z)
         self.reg_var = (0.0, 0.0, 0.0)
         self.untied = np.zeros((1, 1), dtype=bool)  # stations not tied to the datum
+        if cos_incidence is not None:  # a sloping wall's: not cos γ · cos ν
+            self.__dict__["cos_incidence"] = cos_incidence
 
     def add_registration(
         self,
@@ -324,7 +371,8 @@ class PairMetrics:
 
     @cached_property
     def cos_incidence(self) -> np.ndarray:
-        """cos θ = cos γ · cos ν, θ the 3-D incidence on the (vertical) facade."""
+        """cos θ = cos γ · cos ν, θ the 3-D incidence on the (vertical) facade (a sloping
+        wall's is given by :func:`facade_pairs`)."""
         with np.errstate(divide="ignore", invalid="ignore"):
             cos_nu = np.where(
                 self.slope_distance_m > 0, self.distance_m / self.slope_distance_m, 1.0
@@ -387,17 +435,12 @@ def facade_pairs(
     settings decide (:meth:`~planner.pipeline.requirements.PlanSettings
     .scan_tilt_rms_arcsec`)."""
     fac, sc = ctx.facades, ctx.scanner
-    hi = ctx.settings.instrument_height_m
-    cols = ctx.cols_of[f]
     smp = ctx.samples_of[f] if smp is None else smp
     n = fac.normal[f]
-    # line of sight, once per (candidate, column), against the edges that can lie between
-    clear = ctx.clear_heights(f, cand_xy, keep)
-    col_local = np.searchsorted(cols, fac.column[smp])
     # sight geometry (station minus point horizontally; point minus scanner vertically)
     dx = cand_xy[:, 0:1] - fac.xy[smp, 0]
     dy = cand_xy[:, 1:2] - fac.xy[smp, 1]
-    dz = fac.z[smp] - hi
+    dz = fac.z[smp] - ctx.station_z(cand_xy)[:, None]
     d2 = dx * dx + dy * dy
     d = np.sqrt(d2)
     s = np.sqrt(d2 + dz * dz)
@@ -405,10 +448,18 @@ def facade_pairs(
     with np.errstate(divide="ignore", invalid="ignore"):
         cos_g = np.where(d > 0, cdot / d, 0.0)
         sin_nu = dz / s
+    cos_inc = None
+    front = cdot > 0
+    if fac.tilted[f]:  # a sloping wall: in front of its plane, the incidence on it
+        n3 = fac.normal3[f]
+        towards = dx * n3[0] + dy * n3[1] - dz * n3[2]
+        front = towards > 0
+        with np.errstate(divide="ignore", invalid="ignore"):
+            cos_inc = np.where(s > 0, towards / s, 1.0)
     lo, up = np.sin(np.radians(sc.vertical_fov_deg))
     view = (
-        (cdot > 0)
-        & clear.sees(fac.z[smp], col_local)
+        front
+        & ctx.sees(f, cand_xy, smp, keep)
         & (s >= sc.min_range_m)
         & (s <= sc.max_range_m)
         & (sin_nu >= lo - 1e-12)
@@ -425,8 +476,10 @@ def facade_pairs(
         var_z = eq4_variance(s, sin_nu * sin_nu, m_s, sc.tilt_rms_arcsec, s, tilt)
     else:  # the full 3-D propagation, with its optional terms
         if st.incidence_ranging:
-            with np.errstate(divide="ignore", invalid="ignore"):
-                cos_theta = cos_g * np.where(s > 0, d / s, 1.0)
+            cos_theta = cos_inc
+            if cos_theta is None:
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    cos_theta = cos_g * np.where(s > 0, d / s, 1.0)
             m_s = incidence_ranging_rms_mm(m_s, cos_theta)
         var_x, var_y, var_z = variances_3d(
             s,
@@ -451,6 +504,7 @@ def facade_pairs(
         view=view,
         step_mm_at_10m=ctx.step_mm_at_10m,
         beam=beam,
+        cos_incidence=cos_inc,
     )
     m_xc, m_yc = st.station_rms_pair
     if m_xc or m_yc:  # the paper's m_xc, m_yc given as a figure: the registration's part
@@ -627,7 +681,7 @@ def _judged_facades(
     fac = ctx.facades
     for f in range(fac.n_facades):
         smp = ctx.samples_of[f]
-        ahead = np.flatnonzero((station_xy - fac.start[f]) @ fac.normal[f] > 0)
+        ahead = np.flatnonzero(ctx.ahead(f, station_xy))
         if not len(ahead) or not len(smp):
             continue
         m = facade_pairs(ctx, f, station_xy[ahead])
@@ -708,8 +762,7 @@ def evaluate_stations(ctx: Context, station_xy: np.ndarray) -> dict[str, np.ndar
     out["ok"] = np.zeros((n, k), dtype=bool)
     for f in range(fac.n_facades):
         smp = ctx.samples_of[f]
-        a, nrm = fac.start[f], fac.normal[f]
-        ahead = np.flatnonzero((station_xy - a) @ nrm > 0)
+        ahead = np.flatnonzero(ctx.ahead(f, station_xy))
         if not len(ahead) or not len(smp):
             continue
         m = facade_pairs(ctx, f, station_xy[ahead])

@@ -280,13 +280,14 @@ def assemble(
             "station_id": ids,
             "x": station_xy[:, 0],
             "y": station_xy[:, 1],
+            "ground_z": ctx.scene.ground_z(station_xy),
             "instrument_height_m": st.instrument_height_m,
             "purpose": purpose,
             "samples_met": assignment.met_by_station,
         }
     )
     ties = net.ties if net is not None else []
-    setups = traverse_setups(ties, st)
+    setups = traverse_setups(ties, st, ctx.scene.ground_z)
     if len(setups):
         stations = pd.concat([stations, setups], ignore_index=True)
     tc = net.candidates if net is not None else wb.tc  # with any planned control points
@@ -591,7 +592,7 @@ def estimate_registration(ctx: Context, net: Network, cand: np.ndarray) -> Regis
     (:meth:`Network.estimate`), none for a candidate that could not be tied: one standing
     in open ground no tied station stands in (a closed courtyard) — no station is chosen
     for the registration error where it cannot be tied."""
-    est = net.estimate(cand, ctx.settings.instrument_height_m)
+    est = net.estimate(cand, ctx.station_z(cand))
     if est is None:
         return None
     region = ctx.regions.label(cand)

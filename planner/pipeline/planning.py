@@ -61,6 +61,7 @@ from planner.pipeline.requirements import (
     Requirements,
 )
 from planner.pipeline.result import Plan, SolverReport
+from planner.pipeline.scene import Scene
 from planner.pipeline.tables import budget_message
 from planner.pipeline.zoning import apply_zones
 from planner.scanner import DEFAULT_SCANNER, Scanner, load_scanner
@@ -173,8 +174,11 @@ def _prepare(
     say(0.0, "sampling facades")
     n_est = estimate_samples(site, st.sample_spacing_m, st.sample_height_step_m)
     check_sample_count(n_est, st.sample_spacing_m, st.sample_height_step_m, st.max_samples)
-    fac = build_facades(site, st.sample_spacing_m, st.sample_height_step_m)
-    fac, sample_req, zones = apply_zones(site, fac, req)
+    scene = Scene(site, st.sight_engine)
+    fac = build_facades(
+        site, st.sample_spacing_m, st.sample_height_step_m, scene=scene, roofs=st.demand_roofs
+    )
+    fac, sample_req, zones = apply_zones(site, fac, req, scene)
     if len(fac.z) > st.max_samples:
         raise InputError(
             f"with the zones' finer samples the facades need {len(fac.z):,} samples, more than "
@@ -186,7 +190,7 @@ def _prepare(
     spacing = [r.max_spacing_mm for r in [req, *zones.requirements] if r.max_spacing_mm]
     st = st.for_scanner(sc, min(spacing, default=None), reach)  # step and preset, once
     cand = candidate_grid(site, fac, reach, st.grid_m, st.clearance_m)
-    ctx = Context.build(site, fac, sc, req, st, reach, sample_req)
+    ctx = Context.build(site, fac, sc, req, st, reach, sample_req, scene)
     pairs = ctx.pair_count(cand)
     if pairs > st.max_pairs:
         raise InputError(

@@ -35,6 +35,7 @@ from functools import cached_property
 
 import numpy as np
 import scipy.sparse as sp
+import shapely
 from numba import njit
 from scipy.cluster.hierarchy import DisjointSet
 from scipy.sparse.csgraph import connected_components
@@ -49,15 +50,12 @@ from planner.pipeline.facades import (
     OPENING_PROBE_M,
     PARTY_WALL_GAP_M,
     SIGHT_OFFSET_M,
+    FacadeSet,
+    _flags_3d,
     in_opening,
     party_wall_mask,
 )
-from planner.pipeline.visibility import (
-    bridge_interval,
-    clear_height,
-    stand_blocks,
-    visible,
-)
+from planner.pipeline.visibility import stand_blocks
 from planner.registration_error import (
     CONTROL,
     MAX_CONDITION,
@@ -122,14 +120,25 @@ def target_candidates(ctx: Context, stand_xy: np.ndarray) -> TargetCandidates:
             [st.high_target_height_m] if st.high_target_height_m else []
         )
         for f in range(fac.n_facades):
+            if fac.leaning[f]:  # no checkerboard on a sloping wall
+                continue
             n = max(1, round(fac.length_m[f] / st.target_spacing_m))
+            top = fac.z0[f] + fac.height_m[f]
+            frac = (np.arange(n) + 0.5) / n
+            ground = ctx.scene.ground_z(
+                fac.start[f] + frac[:, None] * (fac.end[f] - fac.start[f]) + fac.normal[f]
+            )
+            inner = _inner_outline(fac, f)
             for row, h in enumerate(heights):
                 if h > fac.height_m[f] - 0.2 and row > 0:
                     continue
-                z = min(h, fac.height_m[f] - 0.2)
                 for k in range(n):
-                    frac = (k + 0.5 + 0.5 * row) / (n + 0.5 * row)  # the rows staggered
-                    xyz.append([*(fac.start[f] + frac * (fac.end[f] - fac.start[f])), z])
+                    frac_k = (k + 0.5 + 0.5 * row) / (n + 0.5 * row)  # the rows staggered
+                    z = min(ground[k] + h, top - 0.2)
+                    u, v = frac_k * fac.length_m[f], z - fac.base_z[f]
+                    if inner is not None and not inner.contains(shapely.Point(u, v)):
+                        continue  # not on the wall: above a gable's slope, below a set-back
+                    xyz.append([*(fac.start[f] + frac_k * (fac.end[f] - fac.start[f])), z])
                     kind.append("flat")
                     nrm.append(fac.normal[f])
                     owner.append(fac.building_id[f])
@@ -140,13 +149,17 @@ def target_candidates(ctx: Context, stand_xy: np.ndarray) -> TargetCandidates:
             keep = ~party_wall_mask(ctx.site, np.array(owner, dtype=object), probe, walls[:, 2])
             inward = walls[:, :2] - OPENING_PROBE_M * np.array(nrm)
             keep &= ~in_opening(ctx.site, inward, walls[:, 2])  # no wall in a gateway
+            if ctx.site.is_3d:
+                above, party = _flags_3d(fac, ctx.scene, np.array(wall), walls[:, :2], walls[:, 2])
+                keep &= above & ~party
             xyz = [p for p, k in zip(xyz, keep, strict=True) if k]
             nrm = [p for p, k in zip(nrm, keep, strict=True) if k]
             kind = [p for p, k in zip(kind, keep, strict=True) if k]
             wall = [p for p, k in zip(wall, keep, strict=True) if k]
     if "sphere" in types:
-        for xy in stand_xy:
-            xyz.append([xy[0], xy[1], st.target_height_m])
+        stand_z = ctx.scene.above_ground(stand_xy, st.target_height_m)
+        for xy, z in zip(stand_xy, stand_z, strict=True):
+            xyz.append([xy[0], xy[1], z])
             kind.append("sphere")
             nrm.append([0.0, 0.0])
             wall.append(-1)
@@ -166,6 +179,16 @@ def target_candidates(ctx: Context, stand_xy: np.ndarray) -> TargetCandidates:
         control_id=np.array(ids, dtype=object),
         control_rms_mm=np.array(rms, dtype=float),
     )
+
+
+def _inner_outline(fac: FacadeSet, f: int):
+    """Where on facade ``f``'s elevation a flat target may go: a hand's breadth inside its
+    outline (on a gable or a set-back storey's wall only where the wall is); None for a
+    rectangle (a footprint's facade: anywhere on it)."""
+    outline = fac.outline[f]
+    if outline.equals(shapely.box(*outline.bounds)):
+        return None
+    return outline.buffer(-0.1)
 
 
 @dataclass
@@ -238,20 +261,19 @@ def sights(ctx: Context, tc: TargetCandidates, station_xy: np.ndarray) -> Sight:
         for ty in ("flat", "sphere", "cylinder")
     }
     largest["control"] = np.inf  # a control point is a mark that is there: no size to choose
-    hi = st.instrument_height_m
     cos_max = np.cos(np.radians(st.max_target_incidence_deg))
     of_type = {ty: tc.type == ty for ty in ("flat", "sphere", "control")}
     is_flat = of_type["flat"]
     xy, z = tc.xyz[:, :2], tc.xyz[:, 2]
     ends = xy + SIGHT_OFFSET_M * tc.normal  # where the sight lines end
-    e = ctx.edges
-    b_edges, bottoms, tops = ctx.bridges
     none = np.zeros(0, dtype=np.int64)
     seen_t, seen_j, seen_s, seen_cdot = [none], [none], [none.astype(float)], [none.astype(float)]
+    station_z = ctx.station_z(station_xy)
     for c0 in range(0, k, SIGHT_CHUNK):
         chunk = station_xy[c0 : c0 + SIGHT_CHUNK]
+        chunk_z = station_z[c0 : c0 + SIGHT_CHUNK]
         rel = chunk[:, None, :] - xy[None, :, :]  # (C, T, 2)
-        s_all = np.hypot(np.hypot(rel[..., 0], rel[..., 1]), z - hi)
+        s_all = np.hypot(np.hypot(rel[..., 0], rel[..., 1]), z - chunk_z[:, None])
         cdot_all = (rel * tc.normal).sum(axis=-1)
         cand_all = (s_all >= sc.min_range_m) & (s_all <= sc.max_range_m)
         cand_all &= ~is_flat | (cdot_all > cos_max * s_all)
@@ -263,12 +285,9 @@ def sights(ctx: Context, tc: TargetCandidates, station_xy: np.ndarray) -> Sight:
         reach = np.where(cand_all, s_all, -np.inf).max(axis=1)
         boxes = np.column_stack([chunk - reach[:, None], chunk + reach[:, None]])
         starts = np.searchsorted(at, np.arange(len(chunk) + 1))
-        src = chunk[at]
-        zc = clear_height(src, hi, ends[idx], e, ctx.edge_heights, groups=(starts, boxes))
-        lo = up = None
-        if len(b_edges):
-            lo, up = bridge_interval(src, hi, ends[idx], b_edges, bottoms, tops)
-        keep = visible(z[idx], zc, lo, up)
+        src = np.column_stack([chunk[at], chunk_z[at]])
+        dst = np.column_stack([ends[idx], z[idx]])
+        keep = ctx.scene.seen(src, dst, groups=(starts, boxes))
         seen_t.append(idx[keep])
         seen_j.append(c0 + at[keep])
         seen_s.append(s[keep])
@@ -719,7 +738,7 @@ class Network:
         parents = {lk.parent for lk in self.links if lk.parent != CONTROL}
         return self.stations[sorted(parents)] if parents else self.stations[:0]
 
-    def estimate(self, cand_xy: np.ndarray, height_m: float) -> Registration | None:
+    def estimate(self, cand_xy: np.ndarray, cand_z: np.ndarray) -> Registration | None:
         """The registration error every candidate would have if it joined this network, for
         choosing stations with their registration in view: a station of the network keeps
         its own; another candidate gets the pose error of the nearest tied station, carried
@@ -732,7 +751,7 @@ class Network:
             return None
         tied = np.flatnonzero(self.error.tied)
         net_xyz = self.station_xyz
-        xyz = np.column_stack([cand_xy, np.full(len(cand_xy), height_m)])
+        xyz = np.column_stack([cand_xy, cand_z])
         _, nearest = cKDTree(net_xyz[tied, :2]).query(cand_xy)
         j = tied[nearest]
         pose = transport_pose_cov(self.error.pose_cov[j], net_xyz[j], xyz)
@@ -1019,7 +1038,7 @@ class _Layout:
         self.probes = probes
         self.sight = seen(stations)
         k = self.k = len(stations)
-        self.station_xyz = np.column_stack([cand_xy[stations], np.full(k, st.instrument_height_m)])
+        self.station_xyz = np.column_stack([cand_xy[stations], ctx.station_z(cand_xy[stations])])
         self.mode = st.registration_for(ctx.scanner)
         self._cloud_errors: dict[tuple[int, int], float] = {}
         self.surf = self.overlap = None

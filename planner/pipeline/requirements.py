@@ -380,6 +380,10 @@ CHECKS: tuple[Check, ...] = (
 
 # -- settings -----------------------------------------------------------------------------
 METHODS = ("auto", "milp", "greedy")
+#: How sight lines are answered (:class:`planner.pipeline.scene.Scene`): ``auto`` — the
+#: compiled prism test where the site is footprints on flat ground, else rays cast on the
+#: scene's triangles; or either by name.
+SIGHT_ENGINES = ("auto", "rays", "prisms")
 #: The accuracy models: eq. 2 and 4 of Voroshilov & Karachentsev, or the full 3-D propagation.
 MODELS = ("3d", "paper")
 #: How the scans are registered: ``auto`` takes the scanner profile's usual workflow
@@ -465,6 +469,12 @@ class PlanSettings:
         presets). None: the coarsest whose point spacing meets ``max_spacing_mm`` straight
         on at the search radius, else the scanner's default setting
         (:meth:`PlanSettings.for_scanner` decides it once). A ``step_mm_at_10m`` given wins.
+    demand_roofs : bool, default False
+        Demand the roofs of buildings from a 3-D model too (they need an elevated
+        station); walls and doors are always demanded, windows never
+        (:func:`planner.citymodel.demanded_kinds`).
+    sight_engine : "auto", "rays" or "prisms", default "auto"
+        How sight lines are answered (:data:`SIGHT_ENGINES`).
 
     Accuracy model
     --------------
@@ -602,6 +612,8 @@ class PlanSettings:
         group="sampling",
     )
     preset: str | None = field(default=None, metadata={"group": "sampling"})
+    demand_roofs: bool = field(default=False, metadata={"group": "sampling"})
+    sight_engine: str = field(default="auto", metadata={"group": "sampling"})
     # -- accuracy model (SETTING_GROUPS['model'])
     model: str = field(default="3d", metadata={"group": "model"})
     incidence_noise: bool = field(default=True, metadata={"group": "model"})
@@ -846,7 +858,17 @@ class PlanSettings:
             )
         if self.preset is not None and (not isinstance(self.preset, str) or not self.preset):
             raise InputError(f"preset must be a setting's name; got {self.preset!r}")
-        for name in ("incidence_noise", "beam_footprint", "registration_error", "imaging"):
+        if self.sight_engine not in SIGHT_ENGINES:
+            raise InputError(
+                f"sight engine must be one of {', '.join(SIGHT_ENGINES)}; got {self.sight_engine!r}"
+            )
+        for name in (
+            "incidence_noise",
+            "beam_footprint",
+            "registration_error",
+            "imaging",
+            "demand_roofs",
+        ):
             if not isinstance(getattr(self, name), bool):
                 raise InputError(f"{name} must be True or False; got {getattr(self, name)!r}")
 

@@ -143,6 +143,22 @@ class Plan:
             .round(1)[cols]
         )
 
+    def scene_description(self) -> str:
+        """What the sight lines were cast against, in words."""
+        site = self.site
+        n3 = sum(1 for b in site.buildings if b.surfaces)
+        parts = []
+        if n3:
+            parts.append(f"{n3} building(s) as their 3-D model")
+        if len(site.buildings) > n3:
+            parts.append(f"{len(site.buildings) - n3} as footprints with heights")
+        trees = sum(1 for o in site.obstacles if o.kind == "tree")
+        if trees:
+            parts.append(f"{trees} tree(s)")
+        if site.terrain is not None:
+            parts.append(f"the terrain ({site.terrain.source})")
+        return "sight lines cast against " + ", ".join(parts)
+
     def summary(self) -> str:
         """A few lines a surveyor reads first."""
         req, sc, s = self.requirements, self.scanner, self.solver
@@ -198,6 +214,8 @@ class Plan:
             + (" (scanner ⊕ registration)" if self.settings.computes_registration else "")
             + f": {int(cov['meets'].sum())} of {len(cov)}",
         ]
+        if self.site.is_3d:  # heights and the scene, said where they are more than footprints
+            lines.insert(3, f"Heights: {self.site.height_system}; {self.scene_description()}")
         if self.route is not None:
             lines.append(self.route.summary())
         for z in self.zones.itertuples():

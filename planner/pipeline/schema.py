@@ -55,7 +55,10 @@ STATION_PURPOSES = {
     "traverse": "a total-station set-up of a traverse (planned control)",
 }
 
-STATION_COLUMNS = ["station_id", "x", "y", "instrument_height_m", "purpose"]
+#: The stations: where (site CRS), the ground's height there and the instrument's above it
+#: (the scanner's centre is at ``ground_z + instrument_height_m``, in the site's height
+#: system; ``ground_z`` is 0 on flat ground), and why the station is in the plan.
+STATION_COLUMNS = ["station_id", "x", "y", "ground_z", "instrument_height_m", "purpose"]
 
 #: A scanner station's id: S01, S02 … in visiting order (beyond 99, more digits).
 STATION_ID = "S{:02d}"

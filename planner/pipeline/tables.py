@@ -441,6 +441,9 @@ def facade_summary(fac: FacadeSet, cov: pd.DataFrame) -> pd.DataFrame:
             "length_m": fac.length_m,
             "height_m": fac.height_m,
             "courtyard": fac.courtyard.astype(bool),
+            "z0": fac.z0,
+            "base_z": fac.base_z,
+            "normal_z": fac.normal_z,
         }
     )
     out["samples"] = out["facade_id"].map(allby.size()).fillna(0).astype(int)

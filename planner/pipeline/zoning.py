@@ -13,21 +13,19 @@ site-wide one elsewhere.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 import shapely
 
 from planner.errors import InputError
-from planner.pipeline.facades import (
-    OPENING_PROBE_M,
-    PARTY_WALL_GAP_M,
-    FacadeSet,
-    in_opening,
-    party_wall_mask,
-)
+from planner.pipeline.facades import FacadeSet, sample_flags
 from planner.pipeline.requirements import CHECKS, Requirements
 from planner.site import Site
 from planner.zones import Zone
+
+if TYPE_CHECKING:
+    from planner.pipeline.scene import Scene
 
 __all__ = ["SampleRequirements", "ZoneTable", "along_m", "apply_zones"]
 
@@ -66,17 +64,15 @@ class ZoneTable:
 
 def along_m(fac: FacadeSet, samples: np.ndarray | None = None) -> np.ndarray:
     """Distance of samples from their facade's start, along it [m]."""
-    idx = np.arange(len(fac.z)) if samples is None else samples
-    f = fac.facade[idx]
-    v = fac.end[f] - fac.start[f]
-    return ((fac.xy[idx] - fac.start[f]) * v).sum(axis=1) / np.hypot(v[:, 0], v[:, 1])
+    return fac.along_m(samples)
 
 
 def apply_zones(
-    site: Site, fac: FacadeSet, req: Requirements
+    site: Site, fac: FacadeSet, req: Requirements, scene: Scene | None = None
 ) -> tuple[FacadeSet, SampleRequirements, ZoneTable]:
     """The facades with finer samples where zones ask for them, every sample's requirement,
-    and the zones as applied (module docstring)."""
+    and the zones as applied (module docstring). Heights in zones are above the building's
+    base; ``scene`` tells the new samples of a 3-D building's walls that are party walls."""
     messages: list[str] = []
     zones, facades = [], []
     for z in site.zones:
@@ -101,7 +97,7 @@ def apply_zones(
         key=lambda i: -zones[i].sample_spacing_m,
     )
     for i in order:
-        fac = _refine(site, fac, zones[i], facades[i], i)
+        fac = _refine(site, fac, zones[i], facades[i], i, scene)
     n = len(fac.z)
     u = along_m(fac)
     masks = [_inside(z, fac, f, u) for z, f in zip(zones, facades, strict=True)]
@@ -151,7 +147,8 @@ def _facades_of(z: Zone, fac: FacadeSet, site: Site) -> np.ndarray:
                 f"are {', '.join(own)} (as facades.csv of a plan names them)"
             )
         f = int(hit[0])
-        length, height = float(fac.length_m[f]), float(fac.height_m[f])
+        length = float(fac.length_m[f])
+        height = float(fac.z0[f] - fac.base_z[f] + fac.height_m[f])  # its top, above the base
         if z.along_m is not None and z.along_m[1] > length + ZONE_TOLERANCE_M:
             raise InputError(
                 f"zone {z.id!r} runs to {z.along_m[1]:g} m along facade {z.facade_id}, which "
@@ -194,63 +191,70 @@ def _inside(z: Zone, fac: FacadeSet, facades: np.ndarray, u: np.ndarray) -> np.n
     mask = np.isin(fac.facade, facades)
     if z.along_m is not None:
         mask &= (u >= z.along_m[0] - tol) & (u <= z.along_m[1] + tol)
+    h = fac.z - fac.base_z[fac.facade]  # above the building's base
     if z.height_m is not None:
-        mask &= (fac.z >= z.height_m[0] - tol) & (fac.z <= z.height_m[1] + tol)
+        mask &= (h >= z.height_m[0] - tol) & (h <= z.height_m[1] + tol)
     if z.elevation is not None:
         idx = np.flatnonzero(mask)
-        inside = shapely.contains_xy(z.elevation.buffer(tol), u[idx], fac.z[idx])
+        inside = shapely.contains_xy(z.elevation.buffer(tol), u[idx], h[idx])
         mask[idx[~inside]] = False
     return mask
 
 
-def _refine(site: Site, fac: FacadeSet, z: Zone, facades: np.ndarray, number: int) -> FacadeSet:
+def _refine(
+    site: Site, fac: FacadeSet, z: Zone, facades: np.ndarray, number: int, scene: Scene | None
+) -> FacadeSet:
     """``fac`` with the samples inside zone ``z`` replaced by a grid at the zone's spacing
-    (new columns on its facades, rows over its height range)."""
+    (new columns on its facades, rows over its height range, on the facade's outline)."""
     u = along_m(fac)
     drop = _inside(z, fac, facades, u)
-    new_cols_f, new_cols_xy, new_s = [], [], []  # samples: (facade, column, z, id)
+    new_cols_f, new_cols_u, new_s = [], [], []  # samples: (facade, column, u, h, id)
     n_cols = len(fac.col_facade)
     for f in facades:
-        length, height = float(fac.length_m[f]), float(fac.height_m[f])
+        length = float(fac.length_m[f])
+        foot = float(fac.z0[f] - fac.base_z[f])
+        top = foot + float(fac.height_m[f])
         if z.elevation is not None:
             a0, h0, a1, h1 = z.elevation.bounds
         else:
             a0, a1 = z.along_m or (0.0, length)
-            h0, h1 = z.height_m or (0.0, height)
-        a1, h1 = min(a1, length), min(h1, height)
+            h0, h1 = z.height_m or (foot, top)
+        a1, h1 = min(a1, length), min(h1, top)
         nu = max(1, round((a1 - a0) / z.sample_spacing_m))
         nz = max(1, round((h1 - h0) / z.sample_height_step_m))
         us = a0 + (np.arange(nu) + 0.5) * (a1 - a0) / nu
         zs = h0 + (np.arange(nz) + 0.5) * (h1 - h0) / nz
-        direction = (fac.end[f] - fac.start[f]) / fac.length_m[f]
+        shape = fac.outline[f]
         for ci, uu in enumerate(us):
-            pts = zs
+            pts = zs[shapely.contains_xy(shape, np.full(len(zs), uu), zs)]
             if z.elevation is not None:
-                pts = zs[shapely.contains_xy(z.elevation, np.full(len(zs), uu), zs)]
+                pts = pts[shapely.contains_xy(z.elevation, np.full(len(pts), uu), pts)]
             if not len(pts):
                 continue
             col = n_cols + len(new_cols_f)
             new_cols_f.append(f)
-            new_cols_xy.append(fac.start[f] + uu * direction)
-            for ri, zz in enumerate(pts):
-                new_s.append((f, col, zz, f"{fac.facade_id[f]}-z{number}-{ci:03d}-{ri:02d}"))
+            new_cols_u.append(uu)
+            for ri, hh in enumerate(pts):
+                new_s.append((f, col, uu, hh, f"{fac.facade_id[f]}-z{number}-{ci:03d}-{ri:02d}"))
     if not new_s:
         return fac
     keep = ~drop
     s_f = np.array([s[0] for s in new_s], dtype=np.int64)
     s_c = np.array([s[1] for s in new_s], dtype=np.int64)
-    s_z = np.array([s[2] for s in new_s], dtype=float)
-    col_xy = np.vstack([fac.col_xy, np.array(new_cols_xy)])
-    s_xy = col_xy[s_c]
-    wall = ~in_opening(site, s_xy - OPENING_PROBE_M * fac.normal[s_f], s_z)  # no samples there
-    s_f, s_c, s_z, s_xy = s_f[wall], s_c[wall], s_z[wall], s_xy[wall]
-    new_ids = np.array([s[3] for s in new_s], dtype=object)[wall]
-    party = party_wall_mask(
-        site, fac.building_id[s_f], s_xy + PARTY_WALL_GAP_M * fac.normal[s_f], s_z
+    s_xy, s_z = fac.place(s_f, np.array([s[2] for s in new_s]), np.array([s[3] for s in new_s]))
+    cols_f = np.array(new_cols_f, dtype=np.int64)
+    col_xy = np.vstack(
+        [
+            fac.col_xy,
+            fac.place(cols_f, np.array(new_cols_u), fac.z0[cols_f] - fac.base_z[cols_f])[0],
+        ]
     )
+    wall, party = sample_flags(site, fac, s_f, s_xy, s_z, scene)
+    s_f, s_c, s_z, s_xy, party = s_f[wall], s_c[wall], s_z[wall], s_xy[wall], party[wall]
+    new_ids = np.array([s[4] for s in new_s], dtype=object)[wall]
     return replace(
         fac,
-        col_facade=np.concatenate([fac.col_facade, np.array(new_cols_f, dtype=np.int64)]),
+        col_facade=np.concatenate([fac.col_facade, cols_f]),
         col_xy=col_xy,
         facade=np.concatenate([fac.facade[keep], s_f]),
         column=np.concatenate([fac.column[keep], s_c]),
