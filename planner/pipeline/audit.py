@@ -77,7 +77,7 @@ def audit(
         above_ground = bool(
             np.allclose(ground, 0.0) and (model.terrain is not None or np.abs(bases).max() > 0.5)
         )
-    p = met[["x", "y", "z"]].to_numpy(float)
+    p = met[["x", "y", "z"]].to_numpy(float).copy()
     if above_ground:  # heights above the ground, onto the model
         p[:, 2] += _model_base(model, met["building_id"].to_numpy(object), p[:, :2])
         s_z = scene.ground_z(s_xy) + st["instrument_height_m"].to_numpy(float)

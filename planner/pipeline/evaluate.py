@@ -69,10 +69,10 @@ class ClearanceStore:
     answers), at most :data:`MAX_KEPT_CLEAR` values in all."""
 
     def __init__(self) -> None:
-        self.kept: dict[tuple[int, bytes], Clearance | np.ndarray] = {}
+        self.kept: dict[tuple[int, bytes], Clearance | tuple[np.ndarray, np.ndarray]] = {}
         self.values = 0
 
-    def keep(self, key: tuple[int, bytes], clearance: Clearance | np.ndarray, size: int) -> None:
+    def keep(self, key: tuple[int, bytes], clearance, size: int) -> None:
         """Keep ``clearance`` (``size`` values) under ``key`` while the cap allows."""
         if self.values + size <= MAX_KEPT_CLEAR:
             self.kept[key] = clearance
@@ -227,26 +227,42 @@ class Context:
             self._clear.keep(key, out, zc.size)
         return out
 
-    def sees(self, f: int, cand_xy: np.ndarray, smp: np.ndarray, keep: bool = False) -> np.ndarray:
+    def sees(
+        self,
+        f: int,
+        cand_xy: np.ndarray,
+        smp: np.ndarray,
+        keep: bool = False,
+        where: np.ndarray | None = None,
+    ) -> np.ndarray:
         """(c, n) whether scanners standing at ``cand_xy`` see the samples ``smp`` of facade
         ``f`` (the scene's engine: per column on prisms, :meth:`clear_heights`; per sample
-        by rays, ending :data:`SIGHT_OFFSET_M` in front of the wall). ``keep`` keeps the
-        answer for the same facade and candidates again."""
+        by rays, ending :data:`SIGHT_OFFSET_M` in front of the wall, cast only for the pairs
+        ``where`` (c, n) is True — in front, in range: the others read False). ``keep``
+        keeps the answer for the same facade and candidates again."""
         fac = self.facades
         if self.scene.prisms:
             col_local = np.searchsorted(self.cols_of[f], fac.column[smp])
             return self.clear_heights(f, cand_xy, keep).sees(fac.z[smp], col_local)
         mine = self.samples_of[f]
+        c, n = len(cand_xy), len(smp)
+        pairs = np.ones((c, n), dtype=bool) if where is None else where
         key = (f, cand_xy.tobytes())
-        seen = self._clear.kept.get(key)
-        if seen is None:
-            src = np.column_stack([cand_xy, self.station_z(cand_xy)])
-            dst = np.column_stack([fac.xy[mine], fac.z[mine]]) + SIGHT_OFFSET_M * fac.normal3[f]
-            c, n = len(src), len(dst)
-            seen = self.scene.seen(np.repeat(src, n, axis=0), np.tile(dst, (c, 1))).reshape(c, n)
+        kept = self._clear.kept.get(key)
+        if kept is None:  # which pairs of the facade's samples are cast, and their answers
+            kept = (np.zeros((c, len(mine)), dtype=bool), np.zeros((c, len(mine)), dtype=bool))
             if keep:
-                self._clear.keep(key, seen, seen.size // 8 + 1)
-        return seen[:, np.searchsorted(mine, smp)]
+                self._clear.keep(key, kept, kept[0].size // 4 + 1)
+        known, seen = kept
+        cols = np.searchsorted(mine, smp)
+        todo = pairs & ~known[:, cols]
+        if todo.any():
+            ci, si = np.nonzero(todo)
+            src = np.column_stack([cand_xy[ci], self.station_z(cand_xy[ci])])
+            dst = np.column_stack([fac.xy[smp[si]], fac.z[smp[si]]])
+            seen[ci, cols[si]] = self.scene.seen(src, dst + SIGHT_OFFSET_M * fac.normal3[f])
+            known[ci, cols[si]] = True
+        return pairs & seen[:, cols]
 
     def pair_count(self, cand_xy: np.ndarray) -> int:
         """How many candidate × sample pairs the evaluation will compute (the work)."""
@@ -305,13 +321,17 @@ class PairMetrics:
         step_mm_at_10m: float,
         beam: Scanner | None = None,
         cos_incidence: np.ndarray | None = None,
+        sight: Callable[[np.ndarray], np.ndarray] | None = None,
     ) -> None:
         self.distance_m = distance_m
         self.slope_distance_m = slope_distance_m
         self.cos_gamma = cos_gamma
         self.sin_nu = sin_nu
         self.var_x, self.var_y, self.var_z = var_x, var_y, var_z
-        self.view = view  # sees the sample: in front, line of sight, range, field of view
+        # sees the sample: in front, range, field of view and the line of sight — or, with
+        # ``sight``, the line of sight asked of it when first needed (:meth:`seen_where`)
+        self._view = view
+        self._sight = sight
         self.step_mm_at_10m = step_mm_at_10m
         self.beam = beam  # the scanner whose beam footprint the model counts, if it does
         self.scanner_var = (var_x, var_y, var_z)
@@ -343,6 +363,22 @@ class PairMetrics:
             self.__dict__.pop(name, None)
 
     @property
+    def view(self) -> np.ndarray:
+        """(c, n) whether each station sees each sample."""
+        if self._sight is not None:
+            self._view = self._view & self._sight(self._view)
+            self._sight = None
+        return self._view
+
+    def seen_where(self, where: np.ndarray) -> np.ndarray:
+        """``where`` & :attr:`view`, asking the line of sight of those pairs only (the
+        pairs a check already rules out are not cast)."""
+        if self._sight is None:
+            return where & self._view
+        where = where & self._view
+        return where & self._sight(where)
+
+    @property
     def scanner_m_x_mm(self) -> np.ndarray:
         return np.sqrt(self.scanner_var[0])
 
@@ -356,17 +392,17 @@ class PairMetrics:
 
     @property
     def reg_m_x_mm(self) -> np.ndarray:
-        reg = np.sqrt(np.broadcast_to(self.reg_var[0], self.view.shape))
+        reg = np.sqrt(np.broadcast_to(self.reg_var[0], self._view.shape))
         return np.where(self.untied, np.nan, reg)
 
     @property
     def reg_m_y_mm(self) -> np.ndarray:
-        reg = np.sqrt(np.broadcast_to(self.reg_var[1], self.view.shape))
+        reg = np.sqrt(np.broadcast_to(self.reg_var[1], self._view.shape))
         return np.where(self.untied, np.nan, reg)
 
     @property
     def reg_m_z_mm(self) -> np.ndarray:
-        reg = np.sqrt(np.broadcast_to(self.reg_var[2], self.view.shape))
+        reg = np.sqrt(np.broadcast_to(self.reg_var[2], self._view.shape))
         return np.where(self.untied, np.nan, reg)
 
     @cached_property
@@ -459,12 +495,19 @@ def facade_pairs(
     lo, up = np.sin(np.radians(sc.vertical_fov_deg))
     view = (
         front
-        & ctx.sees(f, cand_xy, smp, keep)
         & (s >= sc.min_range_m)
         & (s <= sc.max_range_m)
         & (sin_nu >= lo - 1e-12)
         & (sin_nu <= up + 1e-12)
     )
+    sight = None
+    if ctx.scene.prisms:  # a clear height per column: every pair at once
+        view &= ctx.sees(f, cand_xy, smp, keep, view)
+    else:  # rays: cast when asked, for the pairs asked (:meth:`PairMetrics.seen_where`)
+
+        def sight(where: np.ndarray) -> np.ndarray:
+            return ctx.sees(f, cand_xy, smp, keep, where)
+
     st = ctx.settings
     m_s = sc.range_rms_at(s)
     no_station = (0.0, 0.0)  # the station's own error is the registration's part, below
@@ -505,6 +548,7 @@ def facade_pairs(
         step_mm_at_10m=ctx.step_mm_at_10m,
         beam=beam,
         cos_incidence=cos_inc,
+        sight=sight,
     )
     m_xc, m_yc = st.station_rms_pair
     if m_xc or m_yc:  # the paper's m_xc, m_yc given as a figure: the registration's part
@@ -514,11 +558,12 @@ def facade_pairs(
 
 
 def meets(ctx: Context, m: PairMetrics, smp: np.ndarray) -> np.ndarray:
-    """Where a pair sees its sample and passes every check there (the table's rows)."""
-    ok = m.view.copy()
+    """Where a pair sees its sample and passes every check there (the table's rows); the
+    line of sight is asked only of the pairs that pass the checks."""
+    ok = np.ones(m._view.shape, dtype=bool)
     for check, limit in ctx.active_checks(smp):
         ok &= check.passes(m.value(check.metric), limit)
-    return ok
+    return m.seen_where(ok)
 
 
 def score(ctx: Context, m: PairMetrics, smp: np.ndarray) -> np.ndarray:
@@ -534,7 +579,7 @@ class CandidateEvaluation:
     """Which candidates meet every requirement at which sample, and how many see it."""
 
     ok: sp.csr_matrix  # (N samples, C candidates) bool
-    n_view: np.ndarray  # (N,) candidates that see the sample
+    n_view: np.ndarray  # (N,) candidates that see the sample (prisms; by rays: not counted)
     evaluated: np.ndarray  # (N,) bool: False where the time ran out before the sample's facade
 
 
@@ -581,7 +626,8 @@ def evaluate_candidates(
             r, c = np.nonzero(meets(ctx, m, smp) & ~m.untied)
             rows.append(smp[c])
             cols.append(ci[r])
-            n_view[smp] += m.view.sum(axis=0)
+            if ctx.scene.prisms:  # (by rays, the diagnosis counts them where it matters)
+                n_view[smp] += m.view.sum(axis=0)
         else:
             evaluated[smp] = True
     if progress:
@@ -600,12 +646,13 @@ def best_achievable(
     that sees them (each on its own, keyed by the check's key), and the best ``score``
     (largest value / limit, <= 1 meets). Arrays aligned with ``samples``; the worst value
     (±inf) where no candidate sees the sample. ``done`` says which samples were diagnosed
-    before ``deadline``."""
+    before ``deadline``, ``n_view`` how many candidates see each."""
     fac = ctx.facades
     samples = np.asarray(samples)
     out = {c.key: np.full(len(samples), c.worst_value()) for c in CHECKS}
     out["score"] = np.full(len(samples), np.inf)
     out["done"] = np.zeros(len(samples), dtype=bool)
+    out["n_view"] = np.zeros(len(samples), dtype=np.int64)
     for f in np.unique(fac.facade[samples]):
         if time.monotonic() > deadline:
             break
@@ -624,6 +671,7 @@ def best_achievable(
                     np.minimum(prev, best) if c.sense == "max" else np.maximum(prev, best)
                 )
             out["score"][idx] = np.minimum(out["score"][idx], score(ctx, m, smp).min(axis=0))
+            out["n_view"][idx] += m.view.sum(axis=0)
         out["done"][idx] = True
     return out
 

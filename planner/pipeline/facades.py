@@ -348,6 +348,9 @@ def _footprint_facades(
     )
 
 
+#: A model facade's samples keep this far inside its outline [m]: a cell centre on the
+#: outline's edge is on the wall's edge (the eaves, a corner), where a beam may miss it.
+EDGE_MARGIN_M = 0.05
 #: Polygons of a building whose normals differ by less than this and whose planes are
 #: this close are one facade [deg, m].
 COPLANAR_DEG = 3.0
@@ -355,18 +358,21 @@ COPLANAR_M = 0.05
 
 
 def _planes(surfaces: list) -> list[list]:
-    """The surfaces grouped by plane (:data:`COPLANAR_DEG`, :data:`COPLANAR_M`)."""
-    groups: list[tuple[np.ndarray, float, list]] = []
+    """The surfaces grouped by plane: normals within :data:`COPLANAR_DEG` and each one's
+    centre within :data:`COPLANAR_M` of the group's plane (through its first surface's
+    centre; measured there, not from the CRS's origin, where a thousandth of a degree is
+    metres)."""
+    groups: list[tuple[np.ndarray, np.ndarray, list]] = []
     cos_max = np.cos(np.radians(COPLANAR_DEG))
     for s in surfaces:
         n = s.normal
-        d = float(n @ s.rings[0].mean(axis=0))
-        for gn, gd, members in groups:
-            if gn @ n >= cos_max and abs(gd - d) <= COPLANAR_M:
+        c = s.rings[0].mean(axis=0)
+        for gn, gc, members in groups:
+            if gn @ n >= cos_max and abs(gn @ (c - gc)) <= COPLANAR_M:
                 members.append(s)
                 break
         else:
-            groups.append((n, d, [s]))
+            groups.append((n, c, [s]))
     return [m for _, _, m in groups]
 
 
@@ -390,17 +396,19 @@ def _model_facades(
             along = np.array([-nh[1], nh[0]])
             pts = np.vstack([m.rings[0] for m in members])
             p0 = pts[np.argmin(pts[:, 2])]
-            outline = []
+            outline, planes = [], []  # each member on the elevation, and its own plane
             for m in members:
                 rings = [
                     np.column_stack([(r[:, :2] - p0[:2]) @ along, r[:, 2] - base]) for r in m.rings
                 ]
                 poly = shapely.Polygon(rings[0], [r for r in rings[1:] if len(r) >= 3])
-                outline += [
+                parts = [
                     g
                     for g in shapely.get_parts(shapely.make_valid(poly))
                     if g.geom_type == "Polygon"
                 ]
+                outline += parts
+                planes += [(g, m.normal, m.rings[0].mean(axis=0)) for g in parts]
             merged = shapely.union_all(outline, grid_size=0.001)
             for piece in shapely.get_parts(merged):
                 if piece.geom_type != "Polygon" or piece.area < 0.01:
@@ -423,6 +431,9 @@ def _model_facades(
                         base=base,
                         height=h1 - h0,
                         outline=shifted,
+                        planes=[
+                            (shapely.affinity.translate(g, -u0, 0.0), n, c) for g, n, c in planes
+                        ],
                     )
                 )
                 k += 1
@@ -464,11 +475,13 @@ def _sampled(rows: list[dict], spacing: float, step: float) -> FacadeSet:
         hh = h0 + (np.arange(nr) + 0.5) * (h1 - h0) / nr
         gu, gh = np.meshgrid(uu, hh, indexing="ij")
         ci, ri = np.meshgrid(np.arange(nc), np.arange(nr), indexing="ij")
-        on = shapely.contains_xy(shape, gu.ravel(), gh.ravel())
+        inner = shape.buffer(-EDGE_MARGIN_M)  # not on an edge, where the wall may not be
+        on = shapely.contains_xy(inner, gu.ravel(), gh.ravel())
         pu, ph, pc, pr = gu.ravel()[on], gh.ravel()[on], ci.ravel()[on], ri.ravel()[on]
         for piece in shapely.get_parts(shape):  # a piece no cell centre falls on
             if not shapely.contains_xy(piece, pu, ph).any():
-                p = piece.representative_point()
+                core = piece.buffer(-EDGE_MARGIN_M)
+                p = (core if not core.is_empty else piece).representative_point()
                 pu, ph = np.append(pu, p.x), np.append(ph, p.y)
                 pc = np.append(pc, min(int(p.x / (u1 / nc)), nc - 1))
                 pr = np.append(pr, nr)
@@ -489,10 +502,31 @@ def _sampled(rows: list[dict], spacing: float, step: float) -> FacadeSet:
     )[0]
     fac.facade = np.concatenate(s_f).astype(np.int64)
     fac.column = np.concatenate(s_col).astype(np.int64)
-    fac.xy, fac.z = fac.place(fac.facade, np.concatenate(s_u), np.concatenate(s_h))
+    u, h = np.concatenate(s_u), np.concatenate(s_h)
+    fac.xy, fac.z = fac.place(fac.facade, u, h)
+    _onto_members(fac, rows, u, h)
     fac.sample_id = np.array(ids, dtype=object)
     fac.party_wall = np.zeros(len(fac.z), dtype=bool)
     return fac
+
+
+def _onto_members(fac: FacadeSet, rows: list[dict], u: np.ndarray, h: np.ndarray) -> None:
+    """Each sample moved along its facade's normal onto the plane of the model's polygon it
+    lies on (the polygons merged into a facade are coplanar only within
+    :data:`COPLANAR_M`): every sample is on a surface of the model."""
+    n3 = fac.normal3
+    for f, r in enumerate(rows):
+        mine = np.flatnonzero(fac.facade == f)
+        if len(r["planes"]) < 2 or not len(mine):
+            continue
+        for shape, normal, centre in r["planes"]:
+            on = mine[shapely.contains_xy(shape, u[mine], h[mine])]
+            if not len(on):
+                continue
+            p = np.column_stack([fac.xy[on], fac.z[on]])
+            t = ((centre - p) @ normal) / (n3[f] @ normal)
+            moved = p + t[:, None] * n3[f]
+            fac.xy[on], fac.z[on] = moved[:, :2], moved[:, 2]
 
 
 def _joined(a: FacadeSet, b: FacadeSet) -> FacadeSet:

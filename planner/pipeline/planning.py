@@ -393,7 +393,10 @@ def _diagnose(ctx: Context, cand: np.ndarray, ev: CandidateEvaluation, clock: Cl
             best_achievable(ctx, cand, hopeless, clock.deadline) if len(hopeless) else {"done": []}
         )
         roof = lower_roof_in_front(ctx.site, ctx.facades, hopeless)
-    return Diagnosis(hopeless, best, ev.n_view[hopeless], roof)
+    n_view = ev.n_view[hopeless]
+    if len(hopeless) and not ctx.scene.prisms:  # the evaluation did not count them by rays
+        n_view = np.where(best["done"], best["n_view"], n_view)
+    return Diagnosis(hopeless, best, n_view, roof)
 
 
 def _best_effort(

@@ -254,17 +254,6 @@ class Scene:
         o64 = org[ok] - self.origin
         u = vec[ok] / length[ok, None]
         t = length[ok]
-        if clearance_m > 0:
-            side = np.cross(u, [0.0, 0.0, 1.0])
-            flat = np.linalg.norm(side, axis=1) < 1e-9  # a vertical line
-            side[flat] = [1.0, 0.0, 0.0]
-            side /= np.linalg.norm(side, axis=1)[:, None]
-            up = np.cross(side, u)
-            short = np.maximum(t - CLEARANCE_SHORT_M, 0.0)
-            offsets = [clearance_m * a for a in (side, -side, up, -up)]
-            o64 = np.concatenate([o64, *(o64 + off for off in offsets)])
-            u = np.concatenate([u] * 5)
-            t = np.concatenate([t, short, short, short, short])
         hit = (
             self._cast(
                 self._embree,
@@ -275,7 +264,24 @@ class Scene:
             )
             == 0
         )
-        out[ok] = hit.reshape(-1, int(ok.sum())).any(axis=0)
+        if clearance_m > 0 and not hit.all():  # the lines beside the ones still clear
+            free = np.flatnonzero(~hit)
+            side = np.cross(u[free], [0.0, 0.0, 1.0])
+            flat = np.linalg.norm(side, axis=1) < 1e-9  # a vertical line
+            side[flat] = [1.0, 0.0, 0.0]
+            side /= np.linalg.norm(side, axis=1)[:, None]
+            up = np.cross(side, u[free])
+            short = np.maximum(t[free] - CLEARANCE_SHORT_M, 0.0)
+            o4 = np.concatenate([o64[free] + clearance_m * a for a in (side, -side, up, -up)])
+            beside = self._cast(
+                self._embree,
+                o4.astype(np.float32),
+                np.concatenate([u[free]] * 4).astype(np.float32),
+                np.concatenate([short] * 4).astype(np.float32),
+                "OCCLUDED",
+            )
+            hit[free] = (beside == 0).reshape(4, -1).any(axis=0)
+        out[ok] = hit
         return out
 
     def first_hit(
