@@ -838,7 +838,9 @@ class Site:
                 if area > OVERLAP_TOLERANCE_M2:
                     a, b = valid[i].id, valid[j].id
                     c = inter.representative_point()
-                    if near[i] or near[j]:
+                    # two buildings of a 3-D model: their outlines only keep stations off
+                    models = bool(valid[i].surfaces) and bool(valid[j].surfaces)
+                    if (near[i] or near[j]) and not models:
                         share = 100 * area / min(foot[i].area, foot[j].area)
                         problems.append(
                             SiteProblem(

@@ -807,9 +807,12 @@ def read_site(
     crs: str | None = None,
     storey_height_m: float = DEFAULT_STOREY_HEIGHT_M,
     near_m: float = DEFAULT_NEAR_M,
+    lod: str | None = None,
 ) -> Site:
     """Read a site file (``.geojson``/``.json``, ``.wkt``/``.txt``, ``.csv``, ``.gpkg``,
-    ``.shp``, ``.kml`` or ``.kmz``).
+    ``.shp``, ``.kml`` or ``.kmz``) or a 3-D city model (CityJSON ``.json``/``.city.json``,
+    a CityJSON Sequence ``.jsonl``, CityGML ``.gml``/``.xml``:
+    :func:`planner.cityio.read_city_model`).
 
     Parameters
     ----------
@@ -830,10 +833,30 @@ def read_site(
         Problems in features farther than this from every building to plan do not stop
         the reading: such features are repaired, given a height or left out, and noted
         (the ``plan`` command passes its search radius).
+    lod : str, optional
+        A city model's level of detail ("2", "2.2"; default the finest); only for models.
 
     Every problem of the file is reported at once (:class:`planner.sitecheck.SiteProblems`).
     """
-    features, file_crs = _file_features(path, crs)  # (a path: checked there)
+    from planner.cityio import is_city_model, read_city_model
+
+    if isinstance(path, str | os.PathLike) and Path(path).is_file() and is_city_model(Path(path)):
+        return read_city_model(
+            path, lod=lod, buildings=buildings, crs=crs, limits=limits, near_m=near_m
+        )
+    if lod:
+        raise InputError(
+            f"{Path(path).name}: --lod chooses a city model's level of detail; this is a site "
+            "of footprints"
+        )
+    try:
+        features, file_crs = _file_features(path, crs)  # (a path: checked there)
+    except _CityJSON as model:
+        from planner.cityio import site_from_cityjson
+
+        return site_from_cityjson(
+            model.obj, Path(path).name, buildings=buildings, crs=crs, limits=limits, near_m=near_m
+        )
     p = Path(path)
     return site_from_features(
         features,
@@ -849,12 +872,30 @@ def read_site(
     )
 
 
+class _CityJSON(Exception):
+    """A ``.json`` site file that is a CityJSON document (its parsed object)."""
+
+    def __init__(self, obj: dict) -> None:
+        super().__init__("a CityJSON document")
+        self.obj = obj
+
+
 def read_outlines(path: str | Path, crs: str | None = None) -> list[tuple[str, str, BaseGeometry]]:
     """The outlines of a site file as drawn, not validated: ``(id, role, geometry)`` of
     every feature with a geometry, in metres (longitude/latitude projected as
     :func:`read_site` does). For a drawing of a site that cannot be planned: its problems
-    shown where they are. A file that cannot be read at all raises as :func:`read_site`."""
-    features, file_crs = _file_features(path, crs)
+    shown where they are. A file that cannot be read at all raises as :func:`read_site`; a
+    city model gives its buildings' ground outlines."""
+    from planner.cityio import is_city_model
+
+    p = Path(path)
+    try:
+        if p.is_file() and is_city_model(p):
+            raise _CityJSON({})
+        features, file_crs = _file_features(path, crs)
+    except _CityJSON:
+        site = read_site(path, crs=crs)
+        return [(b.id, "building", b.footprint) for b in site.buildings]
     _to_metres(features, file_crs, [])
     return [
         (f.ident, _role_of(f.props) or "building", f.geometry)
@@ -910,6 +951,8 @@ def _file_features(path: Any, crs: str | None) -> tuple[list[Feature], str | Non
                 raise InputError(
                     f"{p.name} is not valid JSON (line {exc.lineno}: {exc.msg})"
                 ) from None
+            if isinstance(obj, dict) and obj.get("type") == "CityJSON":
+                raise _CityJSON(obj)  # a city model named .json (read_site reads it so)
             features, file_crs = _geojson_features(obj, p.name)
             return features, _geojson_crs(features, crs or file_crs)
         parse: Callable[[str, str], list[Feature]] = (

@@ -283,33 +283,22 @@ def plan_inputs(args: argparse.Namespace):
 
 
 def read_site_args(args: argparse.Namespace, limits, near_m: float):
-    """The site named on the command line: a city model (CityJSON, CityGML) or a site file
-    of footprints, with the terrain model given (``--terrain``)."""
-    from pathlib import Path
-
-    from planner.cityio import is_city_model, read_city_model
+    """The site named on the command line — footprints or a city model
+    (:func:`planner.siteio.read_site`) — on the terrain model given (``--terrain``)."""
     from planner.site import with_terrain
     from planner.siteio import read_site
 
-    path = Path(args.site)
-    model = path.is_file() and is_city_model(path)
-    if args.lod and not model:
-        raise InputError("--lod chooses a city model's level of detail; the site is not one")
-    if model:
-        site = read_city_model(
-            path, lod=args.lod, buildings=args.buildings, crs=args.crs, limits=limits, near_m=near_m
-        )
-    else:
-        site = read_site(
-            args.site,
-            default_height_m=args.height,
-            buildings=args.buildings,
-            repair=args.make_valid,
-            limits=limits,
-            crs=args.crs,
-            near_m=near_m,
-            **({"storey_height_m": args.storey_height_m} if args.storey_height_m else {}),
-        )
+    site = read_site(
+        args.site,
+        default_height_m=args.height,
+        buildings=args.buildings,
+        repair=args.make_valid,
+        limits=limits,
+        crs=args.crs,
+        near_m=near_m,
+        lod=args.lod,
+        **({"storey_height_m": args.storey_height_m} if args.storey_height_m else {}),
+    )
     if args.terrain:
         site = with_terrain(site, args.terrain)
     return site

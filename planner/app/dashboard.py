@@ -23,9 +23,11 @@ import shapely
 from IPython.display import display
 
 from planner.app.booklet import booklet_pdf
+from planner.app.elevations import elevation_buildings, plot_elevations
 from planner.app.maps import QUANTITIES, plot_coverage, quantity_label
 from planner.app.plan_map import PlanMap
 from planner.app.report import make_report
+from planner.app.view3d import view_3d
 from planner.app.widgets import (
     download_link,
     error_html,
@@ -273,6 +275,8 @@ DRAWING_HEIGHT_M = 10.0
 TABS = [
     "Map",
     "Coverage",
+    "Elevations",
+    "3-D view",
     "Facades",
     "Registration",
     "Unmet",
@@ -434,6 +438,11 @@ class StationPlanner:
         )
         self.cov_out, self.fac_out, self.unmet_out, self.reg_out = (w.Output() for _ in range(4))
         self.field_out = w.Output()
+        # the facade elevations of one building at a time, and the plan in 3-D
+        self.elev_building = w.Dropdown(description="building", options=[])
+        self.elev_out = w.Output()
+        self.elev_building.observe(lambda _c: self._redraw("Elevations"), "value")
+        self.view3d_box = w.VBox([])
         self.map = PlanMap(self.evaluate_by_hand, self.reoptimise, self.edit_targets_by_hand)
         self.map.on_pick = self._toggle_building
         self.map.on_facade = self._pick_facade
@@ -456,6 +465,8 @@ class StationPlanner:
             children=[
                 self.map.widget,
                 w.VBox([self.quantity, self.cov_out]),
+                w.VBox([self.elev_building, self.elev_out]),
+                self.view3d_box,
                 self.fac_out,
                 self.reg_out,
                 self.unmet_out,
@@ -568,7 +579,7 @@ class StationPlanner:
         self.plan_button.on_click(lambda _b: self.start())
         self.cancel_button.on_click(lambda _b: self.cancel())
         self.upload.observe(lambda _c: self._uploaded(), "value")
-        self.quantity.observe(lambda _c: self._recolour_coverage(), "value")
+        self.quantity.observe(lambda _c: self._redraw("Coverage"), "value")
         self.tabs.observe(lambda _c: self._draw_tab(), "selected_index")
         self.report_button.on_click(lambda _b: self.make_report())
         self.booklet_button.on_click(lambda _b: self.make_booklet())
@@ -619,6 +630,8 @@ class StationPlanner:
         self.summary.value = ""
         for out in (self.cov_out, self.fac_out, self.unmet_out, self.reg_out, self.field_out):
             show(out)
+        show(self.elev_out)
+        self.view3d_box.children = []
         self._offer_facades()  # the site alone on the map (or why it cannot be drawn)
         self.downloads.value = "<p>No plan: nothing to download.</p>"
         self.report_status.value = self.booklet_status.value = ""
@@ -1096,6 +1109,8 @@ class StationPlanner:
         self._files = {}
         for out in (self.cov_out, self.fac_out, self.unmet_out, self.reg_out, self.field_out):
             show(out)  # (nothing of the previous plan shows meanwhile)
+        show(self.elev_out)
+        self.view3d_box.children = []
         self.downloads.value = ""
         self._draw_tab()
         self.report_status.value = ""
@@ -1110,6 +1125,8 @@ class StationPlanner:
         self._unshown.discard(name)
         draw = {
             "Coverage": self._draw_coverage,
+            "Elevations": self._draw_elevations,
+            "3-D view": self._draw_3d,
             "Facades": self._draw_facades,
             "Registration": self._draw_registration,
             "Unmet": self._draw_unmet,
@@ -1120,6 +1137,31 @@ class StationPlanner:
 
     def _draw_facades(self) -> None:
         show(self.fac_out, self.plan.facade_table())
+
+    def _draw_elevations(self) -> None:
+        """The chosen building's facades at their real outlines, samples by station."""
+        buildings = elevation_buildings(self.plan)
+        if list(self.elev_building.options) != buildings:
+            with self.elev_building.hold_trait_notifications():
+                self.elev_building.options = buildings
+                self.elev_building.value = buildings[0] if buildings else None
+        if self.elev_building.value is not None:
+            show(self.elev_out, plot_elevations(self.plan, self.elev_building.value))
+
+    def _draw_3d(self) -> None:
+        """The plan in 3-D: the scene, the samples met and unmet, stations and targets."""
+        self.view3d_box.children = [
+            w.HTML(
+                "<small>Drag to turn, right-drag to pan, scroll to zoom. Samples: green met, "
+                "red unmet, grey party wall; stations blue, targets orange.</small>"
+            ),
+            view_3d(self.plan),
+        ]
+
+    def _redraw(self, name: str) -> None:
+        """Tab ``name`` drawn again (at once where it is shown)."""
+        self._unshown.add(name)
+        self._draw_tab()
 
     def _draw_registration(self) -> None:
         p = self.plan
@@ -1180,11 +1222,6 @@ class StationPlanner:
     def _draw_coverage(self) -> None:
         if self.plan is not None:
             show(self.cov_out, plot_coverage(self.plan, self.quantity.value))
-
-    def _recolour_coverage(self) -> None:
-        """Another quantity chosen: the coverage drawn again (at once where it is shown)."""
-        self._unshown.add("Coverage")
-        self._draw_tab()
 
     def make_report(self) -> None:
         """Render the static HTML report of the current inputs and offer it for download."""

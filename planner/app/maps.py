@@ -12,6 +12,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 import shapely
+import shapely.affinity
 from matplotlib.axes import Axes
 from matplotlib.collections import PatchCollection
 from matplotlib.figure import Figure
@@ -595,6 +596,48 @@ PASS_FAIL = mcolors.ListedColormap(
 )
 
 
+#: The gap between two facades drawn side by side (unrolled) [m].
+UNROLL_GAP_M = 2.0
+
+
+def facade_offsets(f: pd.DataFrame) -> dict[str, float]:
+    """Where each facade (the facade table indexed by id) starts when the facades are drawn
+    side by side, :data:`UNROLL_GAP_M` apart [m]."""
+    offset = np.concatenate([[0.0], np.cumsum(f["length_m"].to_numpy() + UNROLL_GAP_M)[:-1]])
+    return dict(zip(f.index, offset, strict=True))
+
+
+def unrolled(cov: pd.DataFrame, f: pd.DataFrame, off: dict[str, float]) -> tuple:
+    """Samples (coverage rows) on their facades drawn side by side: the distance along
+    (plus the facade's offset) and the height above the building's base [m]."""
+    row = f.loc[cov["facade_id"]]
+    dx, dy = (row["x1"] - row["x0"]).to_numpy(), (row["y1"] - row["y0"]).to_numpy()
+    length = np.maximum(np.hypot(dx, dy), 1e-9)
+    along = (
+        (cov["x"].to_numpy() - row["x0"].to_numpy()) * dx
+        + (cov["y"].to_numpy() - row["y0"].to_numpy()) * dy
+    ) / length
+    base = row["base_z"].to_numpy() if "base_z" in row else 0.0
+    return along + cov["facade_id"].map(off).to_numpy(), cov["z"].to_numpy() - base
+
+
+def facade_outline(row) -> BaseGeometry:
+    """A facade's shape on its elevation (``u`` along it, ``h`` above its building's base),
+    from the facade table's ``outline_wkt`` (else its rectangle)."""
+    text = getattr(row, "outline_wkt", "") or ""
+    if text:
+        return shapely.from_wkt(text)
+    h0 = getattr(row, "z0", 0.0) - getattr(row, "base_z", 0.0)
+    return shapely.box(0.0, h0, row.length_m, h0 + row.height_m)
+
+
+def draw_outlines(ax: Axes, f: pd.DataFrame, off: dict[str, float]) -> None:
+    """The facades' outlines, side by side at their offsets."""
+    for row in f.itertuples():
+        shape = shapely.affinity.translate(facade_outline(row), off[row.Index], 0.0)
+        ax.add_patch(_patch(shape, facecolor="0.95", edgecolor="0.6", lw=0.6, zorder=0))
+
+
 def pass_fail_norm(limit_mm: float) -> mcolors.TwoSlopeNorm:
     """0 → the limit on the green half, the limit → twice it on the red half (one range per
     quantity: twice its limit)."""
@@ -612,13 +655,10 @@ def plot_coverage(p: Plan, quantity: str = "m_x_mm", ax: Axes | None = None) -> 
     fig = ax.figure
     cov = p.coverage.copy()
     f = p.facades.set_index("facade_id")
-    offset = np.concatenate([[0.0], np.cumsum(f["length_m"].to_numpy() + 2.0)[:-1]])
-    off = dict(zip(f.index, offset, strict=True))
-    along = np.hypot(
-        cov["x"] - f.loc[cov["facade_id"], "x0"].to_numpy(),
-        cov["y"] - f.loc[cov["facade_id"], "y0"].to_numpy(),
-    )
-    cov["u"] = along + cov["facade_id"].map(off)
+    off = facade_offsets(f)
+    offset = np.array(list(off.values()))
+    cov["u"], cov["z"] = unrolled(cov, f, off)  # heights above each building's base
+    draw_outlines(ax, f, off)
     limit = quantity_limit(p, quantity)
     ok = cov[~cov["party_wall"]]
     sc = ax.scatter(
@@ -655,7 +695,10 @@ def plot_coverage(p: Plan, quantity: str = "m_x_mm", ax: Axes | None = None) -> 
         narrow = f.loc[fid, "length_m"] < len(fid) * span / 150
         ax.annotate(
             fid,
-            (x0 + f.loc[fid, "length_m"] / 2, f.loc[fid, "height_m"]),
+            (
+                x0 + f.loc[fid, "length_m"] / 2,
+                f.loc[fid, "z0"] - f.loc[fid, "base_z"] + f.loc[fid, "height_m"],
+            ),
             xytext=(0, 3),
             textcoords="offset points",
             ha="left" if narrow else "center",
@@ -666,7 +709,7 @@ def plot_coverage(p: Plan, quantity: str = "m_x_mm", ax: Axes | None = None) -> 
             color="0.25",
             annotation_clip=False,
         )
-    ax.set_ylim(0, float(f["height_m"].max()) * 1.15 + 1.0)
+    ax.set_ylim(0, float((f["z0"] - f["base_z"] + f["height_m"]).max()) * 1.15 + 1.0)
     _draw_zones(p, ax, off, f)
     ax.set_xlabel("distance along the facades [m] (facades side by side)")
     ax.set_ylabel("height [m]")

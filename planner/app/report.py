@@ -21,6 +21,7 @@ import matplotlib.pyplot as plt
 import pandas as pd
 from IPython.display import HTML, display
 
+from planner.app.elevations import elevation_buildings, plot_elevations
 from planner.app.maps import plot_coverage, plot_plan_map
 from planner.atomic import write_text_atomic
 from planner.classes import parse_class
@@ -78,6 +79,13 @@ SECTIONS: list[tuple[str, str, tuple[tuple, ...]]] = [
         "registration's, added in quadrature — is what is judged against the requirement.",
         (("coverage", "m_x_mm"), ("coverage", "m_y_mm"), ("coverage", "m_z_mm")),
     ),
+    (
+        "Facade elevations",
+        "Each wall drawn flat at its real outline (from the model: gables, set-back storeys, "
+        "sloping walls), the facades of a building side by side; every sample coloured by the "
+        "station it is scanned from, a red cross where it is unmet, grey on a party wall.",
+        (("elevations",),),
+    ),
     ("Per-facade summary", "", (("facades",),)),
     (
         "Zones",
@@ -89,6 +97,9 @@ SECTIONS: list[tuple[str, str, tuple[tuple, ...]]] = [
     ("Assumptions and references", "", (("assumptions",),)),
 ]
 
+
+#: The report draws the elevations of this many buildings at most.
+ELEVATION_BUILDINGS = 6
 
 #: The visiting order's columns the report shows (those that vary from station to station;
 #: ``route.csv`` has them all).
@@ -288,6 +299,23 @@ class ReportContent:
 
     def facades(self) -> pd.DataFrame:
         return self.plan.facade_table()
+
+    def elevations(self):
+        """The elevations of the first :data:`ELEVATION_BUILDINGS` planned buildings, one
+        under the other."""
+        ids = elevation_buildings(self.plan)
+        shown = ids[:ELEVATION_BUILDINGS]
+        fig, axes = plt.subplots(
+            len(shown), 1, figsize=(11, 3.2 * len(shown)), layout="constrained", squeeze=False
+        )
+        for ax, b in zip(axes[:, 0], shown, strict=True):
+            plot_elevations(self.plan, b, ax=ax)
+        if len(ids) > len(shown):
+            fig.suptitle(
+                f"The first {len(shown)} of {len(ids)} buildings (the dashboard shows each)",
+                fontsize=9,
+            )
+        return _closed(fig)
 
     def zones(self) -> pd.DataFrame | HTML:
         z = self.plan.zones

@@ -88,6 +88,14 @@ class Scene:
         self.edges, self.edge_heights = footprint_edges(site)
         self.bridges = bridge_edges(site)
 
+    def __getstate__(self) -> dict:
+        """A scene pickles without its ray engines (a plan goes to a Dask worker, the
+        report, the dashboard's thread): they are made again when first cast."""
+        state = self.__dict__.copy()
+        state.pop("_embree", None)
+        state.pop("_embree_buildings", None)
+        return state
+
     @property
     def engine(self) -> str:
         """The engine answering the sight lines: ``prisms`` or ``rays``."""

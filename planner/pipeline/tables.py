@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
+import shapely
 
 from planner.classes import achieved_class, parse_class
 from planner.pipeline.evaluate import Assignment, CandidateEvaluation, Context
@@ -444,6 +445,8 @@ def facade_summary(fac: FacadeSet, cov: pd.DataFrame) -> pd.DataFrame:
             "z0": fac.z0,
             "base_z": fac.base_z,
             "normal_z": fac.normal_z,
+            # its shape on its elevation: u along it from (x0, y0), h above base_z [m]
+            "outline_wkt": shapely.to_wkt(fac.outline, rounding_precision=3),
         }
     )
     out["samples"] = out["facade_id"].map(allby.size()).fillna(0).astype(int)
