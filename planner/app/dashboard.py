@@ -310,9 +310,9 @@ class StationPlanner:
             options=["Default site", "Upload a file"], value="Default site"
         )
         self.upload = w.FileUpload(
-            accept=".geojson,.json,.wkt,.txt,.csv,.gpkg,.kml,.kmz",
+            accept=".geojson,.json,.jsonl,.gml,.xml,.wkt,.txt,.csv,.gpkg,.kml,.kmz",
             multiple=False,
-            description="Footprint file",
+            description="Site file",
         )
         self.upload_name = w.HTML("<small>no file chosen</small>")
         self.upload_name.add_class("planner-upload-name")
@@ -960,7 +960,8 @@ class StationPlanner:
             return ""
         self.plan = p
         self._show_results(fresh=fresh)
-        return f"<i>{html.escape(label)}: done in {time.perf_counter() - t0:.1f} s</i>"
+        took = time.perf_counter() - t0
+        return f"<i>{html.escape(label)}: done in {took:.1f} s, at {time.strftime('%H:%M:%S')}</i>"
 
     def _planner(self):
         """The work of Plan for the inputs on screen (read now, so that edits made while it
@@ -1142,9 +1143,10 @@ class StationPlanner:
         """The chosen building's facades at their real outlines, samples by station."""
         buildings = elevation_buildings(self.plan)
         if list(self.elev_building.options) != buildings:
-            with self.elev_building.hold_trait_notifications():
-                self.elev_building.options = buildings
-                self.elev_building.value = buildings[0] if buildings else None
+            self.elev_building.options = buildings  # (its value: None)
+            if buildings:  # the first chosen: its observer draws this tab
+                self.elev_building.value = buildings[0]
+            return
         if self.elev_building.value is not None:
             show(self.elev_out, plot_elevations(self.plan, self.elev_building.value))
 

@@ -23,7 +23,7 @@ KIND_COLOURS = {
     "window": 0x6FA8DC,
     "door": 0x8D6E63,
     "installation": 0x9E9E9E,
-    "terrain": 0x9DB07A,
+    "terrain": 0xC5D6A8,
     "tree": 0x2E7D32,
     "obstacle": 0x757575,
 }
@@ -43,6 +43,20 @@ def view_extent(p: Plan) -> tuple[float, float, float, float]:
     return float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1])
 
 
+def _camera(p: Plan, origin: np.ndarray) -> list[float]:
+    """Looking at the planned buildings from the south-south-west, 35° down, from far
+    enough to see them whole (K3D's camera: eye, target, up)."""
+    x0, y0, x1, y1 = np.array([b.footprint.bounds for b in p.site.planned]).T[[0, 1, 2, 3]].tolist()
+    lo = np.array([min(x0), min(y0)])
+    hi = np.array([max(x1), max(y1)])
+    top = max(b.top_z for b in p.site.planned)
+    base = min(float(b.base_z or 0.0) for b in p.site.planned)
+    target = np.array([*(lo + hi) / 2, (base + top) / 2]) - origin
+    r = max(float(np.hypot(*(hi - lo))) / 2, top - base) * 2.2 + 10.0
+    eye = target + r * np.array([-0.35, -0.75, 0.57])
+    return [*eye.tolist(), *target.tolist(), 0.0, 0.0, 1.0]
+
+
 def view_3d(p: Plan, height_px: int = 560):
     """The plan in 3-D as a K3D plot (a widget): the scene within :func:`view_extent`, the
     samples, stations (labelled) and targets."""
@@ -60,8 +74,9 @@ def view_3d(p: Plan, height_px: int = 560):
         axes_helper=0,
         height=height_px,
         background_color=0xFFFFFF,
-        camera_auto_fit=True,
+        camera_auto_fit=False,
     )
+    plot.camera = _camera(p, origin)
     codes = np.array([KIND_COLOURS[k] for k in TRIANGLE_KINDS], dtype=np.uint32)
     for k in np.unique(kind[near]):
         sel = near & (kind == k)
