@@ -219,6 +219,13 @@ def site_from_features(
             control.append(_control_point(f))
             continue
         geom = shapely.force_2d(geom)
+        if role == "obstacle" and _is_tree(f.props) and geom.geom_type == "Point":
+            tree = _tree(f, geom, height)
+            if isinstance(tree, SiteProblem):
+                problems.append(tree)
+            else:
+                obstacles.append(tree)
+            continue
         if role == "passage":
             passages.append(_passage(f, geom))
             continue
@@ -421,6 +428,8 @@ def _role_of(props: dict[str, Any]) -> str | None:
         role = str(props["role"]).strip().lower()
         return _ROLE_ALIASES.get(role, role)
     tags = {str(k).lower(): str(v).strip().lower() for k, v in props.items()}
+    if tags.get("natural") == "tree":  # OpenStreetMap's tree: an obstacle with a crown
+        return "obstacle"
     if tags.get("tunnel") == "building_passage" or (
         tags.get("covered") == "yes" and "highway" in tags
     ):
@@ -440,6 +449,51 @@ def _osm_kind(props: dict[str, Any]) -> str:
         if k in props:
             return f"{k}={props[k]}: not a building"
     return "not a building"
+
+
+#: A tree given as a point without its crown's diameter has a crown this wide [m]; its crown
+#: starts at this share of its height where the file does not say.
+DEFAULT_CROWN_M = 5.0
+CROWN_BASE_SHARE = 0.35
+
+
+def _is_tree(props: dict[str, Any]) -> bool:
+    return (
+        str(props.get("natural", "")).lower() == "tree"
+        or str(props.get("kind", "")).lower() == "tree"
+    )
+
+
+def _tree(f: Feature, point: BaseGeometry, height: float | None) -> Obstacle | SiteProblem:
+    """A tree given as a point (OpenStreetMap's ``natural=tree`` with ``height`` and
+    ``diameter_crown``, or ``crown_diameter_m`` and ``crown_base_m``): an obstacle with a
+    trunk and a crown, its outline the crown's circle."""
+    if height is None:
+        return _no_height("obstacle", f)
+    crown = DEFAULT_CROWN_M
+    for key in ("crown_diameter_m", "diameter_crown", "crown_diameter"):
+        v = _number_in(f.props.get(key)) if key in f.props else None
+        if v is not None:
+            crown = v
+            break
+    if not (0.5 <= crown <= 60.0):
+        return SiteProblem(
+            "tree",
+            (f.ident,),
+            f"{f.who()} has a crown {crown:g} m across",
+            "give the crown's diameter in metres (0.5 to 60)",
+        )
+    base = _number_in(f.props.get("crown_base_m")) if "crown_base_m" in f.props else None
+    base = CROWN_BASE_SHARE * height if base is None else base
+    if not (0.0 < base < height):
+        return SiteProblem(
+            "tree",
+            (f.ident,),
+            f"{f.who()}: its crown starts at {base:g} m, not below its top ({height:g} m)",
+            "give crown_base_m between 0 and the tree's height",
+        )
+    circle = point.buffer(crown / 2.0, quad_segs=4)
+    return Obstacle(f.ident, circle, float(height), "tree", crown_base_m=float(base))
 
 
 def _passage(f: Feature, geom: BaseGeometry) -> Passage:

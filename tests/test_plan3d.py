@@ -220,3 +220,46 @@ def test_a_real_model_planned_end_to_end_promises_only_walls_it_sees(name, build
     table = audit_plan(p, site)
     assert len(table) > 0.8 * len(p.scanned) > 30
     assert (table["status"] == "seen").all()
+
+
+def test_the_files_carry_the_walls_and_points_in_3d(town, model_plan):
+    """plan.geojson: each wall of the model as a 3-D polygon on the model's wall, stations
+    at their scanner centres; plan.dxf: the walls as 3-D polylines, the stations at their
+    heights; plan.kml: heights above the ground."""
+    import io
+    import xml.etree.ElementTree as ET
+
+    import ezdxf
+
+    from planner.pipeline.export import render
+
+    p = model_plan
+    files = render(p)
+    feats = json.loads(files["plan.geojson"])["features"]
+    walls = [f for f in feats if f["properties"]["layer"] == "wall"]
+    assert len(walls) == len(p.facades)
+    surfaces = [s for b in town[1].buildings for s in b.surfaces if s.kind == "wall"]
+    planes = np.array([[*s.normal, -s.normal @ s.rings[0][0]] for s in surfaces])
+    for w in walls[:10]:
+        ring = np.asarray(w["geometry"]["coordinates"][0])
+        assert ring.shape[1] == 3
+        dist = np.abs(ring @ planes[:, :3].T + planes[:, 3]).min(axis=1)
+        assert dist.max() < 0.06  # m: on a wall of the model (planes merged within 5 cm)
+    st = [f for f in feats if f["properties"]["layer"] == "station"]
+    for f in st:
+        x, y, z = f["geometry"]["coordinates"]
+        assert z == pytest.approx(f["properties"]["ground_z"] + 1.5, abs=1e-3)  # m
+    doc = ezdxf.read(io.StringIO(files["plan.dxf"]))
+    msp = doc.modelspace()
+    assert len(msp.query('POLYLINE[layer=="WALLS-3D"]')) == len(p.facades)
+    inserts = msp.query('INSERT[name=="STATION"]')
+    assert sorted(round(i.dxf.insert.z, 3) for i in inserts) == sorted(
+        round(f["geometry"]["coordinates"][2], 3) for f in st
+    )
+    kml = ET.fromstring(files["plan.kml"])
+    ns = {"k": "http://www.opengis.net/kml/2.2"}
+    stations = [
+        f for f in kml.iterfind(".//k:Folder", ns) if f.find("k:name", ns).text == "station"
+    ][0]
+    heights = [float(c.text.split(",")[2]) for c in stations.iterfind(".//k:coordinates", ns)]
+    assert heights == pytest.approx([1.5] * len(st), abs=1e-3)  # m above the ground

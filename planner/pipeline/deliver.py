@@ -41,6 +41,7 @@ DXF_LAYERS = {
     "passage": ("PASSAGES", 2),
     "boundary": ("BOUNDARY", 8),
     "facade": ("FACADES", 9),
+    "wall": ("WALLS-3D", 9),
     "station": ("STATIONS", 5),
     "target": ("TARGETS", 6),
     "link": ("LINKS", 4),
@@ -149,9 +150,10 @@ def dxf_text(p: Plan) -> str:
         props, geom = f["properties"], f["geometry"]
         layer = DXF_LAYERS[props["layer"]][0]
         drawn.append(shapely.get_coordinates(shapely.geometry.shape(geom)))
-        if props["layer"] == "station":
-            x, y = geom["coordinates"][:2]
-            ref = msp.add_blockref("STATION", (x, y, 0.0), dxfattribs={"layer": layer, **scaled})
+        if props["layer"] == "station":  # at the scanner's centre where heights are known
+            x, y, *z = geom["coordinates"]
+            at = (x, y, z[0] if z else 0.0)
+            ref = msp.add_blockref("STATION", at, dxfattribs={"layer": layer, **scaled})
             ref.add_auto_attribs(
                 {
                     "ID": props["station_id"],
@@ -176,6 +178,11 @@ def dxf_text(p: Plan) -> str:
             )
         elif geom["type"] == "Point":
             msp.add_point(tuple(geom["coordinates"]), dxfattribs={"layer": layer})
+        elif props["layer"] == "wall":  # a wall of a 3-D building, at its outline in 3-D
+            for ring in _rings(geom):
+                msp.add_polyline3d(
+                    [tuple(c) for c in ring], close=True, dxfattribs={"layer": layer}
+                )
         else:
             closed = geom["type"] in ("Polygon", "MultiPolygon")
             for ring in _rings(geom):
@@ -300,17 +307,19 @@ def kml_text(p: Plan) -> str | None:
                 continue
             item = ET.SubElement(data, "Data", name=k)
             ET.SubElement(item, "value").text = str(v)
-        _kml_geometry(p, mark, geom)
+        _kml_geometry(p, mark, geom, props.get("ground_z"))
     ET.indent(kml)
     return '<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(kml, encoding="unicode") + "\n"
 
 
-def _kml_geometry(p: Plan, parent: ET.Element, geom: dict) -> None:
+def _kml_geometry(p: Plan, parent: ET.Element, geom: dict, ground_z: float | None = None) -> None:
+    """A GeoJSON geometry as KML, points at their height above the ground (``ground_z``:
+    the ground's height under a point in the site's height system, where it is not 0)."""
     kind, c = geom["type"], geom["coordinates"]
     if kind == "Point":
         xyz = np.asarray([c], dtype=float)
         pt = ET.SubElement(parent, "Point")
-        z = xyz[:, 2] if xyz.shape[1] > 2 else None
+        z = xyz[:, 2] - (ground_z or 0.0) if xyz.shape[1] > 2 else None
         if z is not None:
             ET.SubElement(pt, "altitudeMode").text = "relativeToGround"
         ET.SubElement(pt, "coordinates").text = _kml_coords(_wgs84(p, xyz), z)

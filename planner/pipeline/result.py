@@ -151,7 +151,7 @@ class Plan:
         if n3:
             parts.append(f"{n3} building(s) as their 3-D model")
         if len(site.buildings) > n3:
-            parts.append(f"{len(site.buildings) - n3} as footprints with heights")
+            parts.append(f"{len(site.buildings) - n3} building(s) as footprints with heights")
         trees = sum(1 for o in site.obstacles if o.kind == "tree")
         if trees:
             parts.append(f"{trees} tree(s)")

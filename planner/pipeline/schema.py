@@ -277,6 +277,37 @@ def _clean(props: dict[str, Any]) -> dict[str, Any]:
     return out
 
 
+def _ground_of(p: Plan):
+    """The plan's ground heights, a function of points (P, 2)."""
+    if p.workbench is not None:
+        return p.workbench.ctx.scene.ground_z
+    from planner.pipeline.scene import Scene
+
+    return Scene(p.site).ground_z
+
+
+def wall_rings(p: Plan) -> list[list[np.ndarray]]:
+    """Every facade of the plan in 3-D, from its outline on its elevation
+    (``outline_wkt``): per facade its rings (exterior first), each (n, 3) [m] in the site's
+    CRS and height system."""
+    out = []
+    for r in p.facades.itertuples():
+        shape = shapely.from_wkt(r.outline_wkt)
+        along = np.array([r.x1 - r.x0, r.y1 - r.y0]) / max(r.length_m, 1e-12)
+        normal = np.array([along[1], -along[0]])
+        c = math.sqrt(max(1.0 - r.normal_z**2, 1e-12))
+        rings = []
+        for poly in shapely.get_parts(shape):
+            for ring in [poly.exterior, *poly.interiors]:
+                uh = np.asarray(ring.coords)
+                z = r.base_z + uh[:, 1]
+                w = -r.normal_z * (z - r.z0) / c
+                xy = np.array([r.x0, r.y0]) + uh[:, :1] * along + w[:, None] * normal
+                rings.append(np.column_stack([xy, z]))
+        out.append(rings)
+    return out
+
+
 def geojson(p: Plan) -> dict:
     """Buildings, obstacles, no-go areas, facades, stations, links, targets and unmet samples
     as one GeoJSON FeatureCollection (a ``layer`` property on every feature)."""
@@ -324,15 +355,34 @@ def geojson(p: Plan) -> dict:
             unmet=r.unmet,
             stations=r.stations,
         )
+    three_d = p.site.is_3d  # heights in the site's system: 3-D coordinates, ground said
+    if three_d:
+        for f, shape in enumerate(wall_rings(p)):
+            r = p.facades.iloc[f]
+            add(
+                {"type": "Polygon", "coordinates": [np.round(ring, 3).tolist() for ring in shape]},
+                layer="wall",
+                building_id=r.building_id,
+                facade_id=r.facade_id,
+                met=r.met,
+                unmet=r.unmet,
+            )
+    ground = _ground_of(p) if three_d else None
     st = p.stations.set_index("station_id")
     for r in p.stations.itertuples():
+        extra = {}
+        coords = [r.x, r.y]
+        if three_d:  # the scanner's centre
+            coords.append(round(r.ground_z + r.instrument_height_m, 3))
+            extra["ground_z"] = r.ground_z
         add(
-            {"type": "Point", "coordinates": [r.x, r.y]},
+            {"type": "Point", "coordinates": coords},
             layer="station",
             station_id=r.station_id,
             instrument_height_m=r.instrument_height_m,
             purpose=r.purpose,
             samples_met=r.samples_met,
+            **extra,
         )
     tg = p.targets.set_index("target_id")
     for r in p.links.itertuples():
@@ -358,10 +408,13 @@ def geojson(p: Plan) -> dict:
             dilution=r.dilution,
             station_b_rms_mm=r.station_b_rms_mm,
         )
-    for r in p.targets.itertuples():
+    t_ground = ground(p.targets[["x", "y"]].to_numpy(float)) if three_d else None
+    for k, r in enumerate(p.targets.itertuples()):
+        extra = {"ground_z": float(t_ground[k])} if three_d else {}
         add(
             {"type": "Point", "coordinates": [r.x, r.y, r.z]},
             layer="target",
+            **extra,
             target_id=r.target_id,
             type=r.type,
             min_size_mm=r.min_size_mm,
@@ -385,10 +438,13 @@ def geojson(p: Plan) -> dict:
                 session=int(t["session"].iloc[n]),
                 walk_note=t["walk_note"].iloc[n],
             )
-    for r in p.unmet.itertuples():
+    u_ground = ground(p.unmet[["x", "y"]].to_numpy(float)) if three_d else None
+    for k, r in enumerate(p.unmet.itertuples()):
+        extra = {"ground_z": float(u_ground[k])} if three_d else {}
         add(
             {"type": "Point", "coordinates": [r.x, r.y, r.z]},
             layer="unmet",
+            **extra,
             building_id=r.building_id,
             facade_id=r.facade_id,
             sample_id=r.sample_id,
