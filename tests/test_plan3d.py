@@ -247,7 +247,7 @@ def test_the_files_carry_the_walls_and_points_in_3d(town, model_plan):
         assert dist.max() < 0.06  # m: on a wall of the model (planes merged within 5 cm)
     st = [f for f in feats if f["properties"]["layer"] == "station"]
     for f in st:
-        x, y, z = f["geometry"]["coordinates"]
+        z = f["geometry"]["coordinates"][2]
         assert z == pytest.approx(f["properties"]["ground_z"] + 1.5, abs=1e-3)  # m
     doc = ezdxf.read(io.StringIO(files["plan.dxf"]))
     msp = doc.modelspace()
