@@ -258,8 +258,7 @@ def test_the_files_carry_the_walls_and_points_in_3d(town, model_plan):
     )
     kml = ET.fromstring(files["plan.kml"])
     ns = {"k": "http://www.opengis.net/kml/2.2"}
-    stations = [
-        f for f in kml.iterfind(".//k:Folder", ns) if f.find("k:name", ns).text == "station"
-    ][0]
+    folders = kml.iterfind(".//k:Folder", ns)
+    stations = next(f for f in folders if f.find("k:name", ns).text == "station")
     heights = [float(c.text.split(",")[2]) for c in stations.iterfind(".//k:coordinates", ns)]
     assert heights == pytest.approx([1.5] * len(st), abs=1e-3)  # m above the ground
