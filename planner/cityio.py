@@ -32,7 +32,7 @@ import math
 import re
 import xml.etree.ElementTree as ET
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -47,11 +47,14 @@ from planner.site import DEFAULT_NEAR_M, Building, Obstacle, Site, SiteLimits, w
 from planner.terrain import Terrain, TinTerrain
 
 __all__ = [
+    "MESH_SUFFIXES",
     "MODEL_SUFFIXES",
+    "footprints_of",
     "is_city_model",
     "read_city_model",
     "site_from_citygml",
     "site_from_cityjson",
+    "with_mesh",
 ]
 
 #: File name endings read as a city model (a ``.json`` is one when its type says so).
@@ -863,3 +866,135 @@ def _model_terrain(model: _Model, blds: list[Building], project) -> Terrain | No
     if np.ptp(allp[:, 2]) < 0.05 and math.isclose(float(allp[0, 2]), 0.0, abs_tol=0.05):
         return None
     return TinTerrain(allp, "ground of the model's buildings (no relief in the model)")
+
+
+def footprints_of(site: Site) -> dict:
+    """A model's buildings as a surveyor without the model draws them — each building's
+    ground outline with the height of its highest point above its base — as a GeoJSON site
+    in the model's CRS (the comparison :mod:`planner.pipeline.audit` makes)."""
+    feats = [
+        {
+            "type": "Feature",
+            "properties": {"id": b.id, "height": round(b.height_m, 2), "plan": b.planned},
+            "geometry": json.loads(shapely.to_geojson(b.footprint)),
+        }
+        for b in site.buildings
+    ]
+    out: dict[str, Any] = {"type": "FeatureCollection", "features": feats}
+    if site.crs:
+        code = site.crs.split(":")[-1]
+        out["crs"] = {"type": "name", "properties": {"name": f"urn:ogc:def:crs:EPSG::{code}"}}
+    return out
+
+
+#: Plain meshes read with ``trimesh`` (an IFC model exported as a mesh, a photogrammetric
+#: model): Wavefront OBJ, PLY, glTF / GLB, STL, OFF.
+MESH_SUFFIXES = (".obj", ".ply", ".gltf", ".glb", ".stl", ".off")
+#: A mesh triangle whose centre lies this close to a building's footprint is that
+#: building's (its eaves reach beyond the walls) [m].
+MESH_REACH_M = 1.5
+#: A mesh of more triangles than this is refused: decimate it first.
+MAX_MESH_TRIANGLES = 2_000_000
+
+
+def with_mesh(
+    site: Site,
+    path: str | Path,
+    *,
+    offset: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    up: str | None = None,
+) -> Site:
+    """``site`` (buildings drawn as footprints, with their ids) given the 3-D shape of a
+    plain mesh: each triangle whose centre lies within :data:`MESH_REACH_M` of a building's
+    footprint becomes a surface of that building (a wall, roof, ground or eave's underside
+    by its normal: :func:`planner.citymodel.kind_by_normal`), the others a structure that
+    blocks the beam. The mesh is in the site's CRS once ``offset`` (x, y, z [m]) is added;
+    ``up`` is its up axis, ``z`` (default) or ``y`` (glTF's, its default). Without a terrain
+    the site stands on the ground the mesh's buildings stand on."""
+    import trimesh
+
+    p = Path(path)
+    if not p.is_file():
+        raise InputError(f"mesh file {str(p)!r} does not exist")
+    off = np.asarray(offset, dtype=float).ravel()
+    if off.shape != (3,) or not np.isfinite(off).all():
+        raise InputError(f"the mesh's offset is three numbers E,N,H [m]; got {offset!r}")
+    if p.suffix.lower() not in MESH_SUFFIXES:
+        raise InputError(f"{p.name}: a mesh is read from {', '.join(MESH_SUFFIXES)}")
+    up = up or ("y" if p.suffix.lower() in (".gltf", ".glb") else "z")
+    if up not in ("y", "z"):
+        raise InputError(f"the mesh's up axis is y or z; got {up!r}")
+    try:
+        mesh = trimesh.load(p, force="mesh", process=False)
+    except Exception as exc:  # trimesh raises what its loaders raise
+        raise InputError(
+            f"{p.name}: cannot read it as a mesh ({type(exc).__name__}: {exc})"[:300]
+        ) from None
+    faces = np.asarray(getattr(mesh, "faces", np.empty((0, 3))))
+    verts = np.asarray(getattr(mesh, "vertices", np.empty((0, 3))), dtype=float)
+    if not len(faces):
+        raise InputError(f"{p.name} holds no triangles")
+    if len(faces) > MAX_MESH_TRIANGLES:
+        raise InputError(
+            f"{p.name} has {len(faces):,} triangles, more than {MAX_MESH_TRIANGLES:,}; "
+            "decimate it first"
+        )
+    if up == "y":
+        verts = np.column_stack([verts[:, 0], -verts[:, 2], verts[:, 1]])
+    tri = verts[faces] + off
+    if not np.isfinite(tri).all():
+        raise InputError(f"{p.name} has coordinates that are not finite numbers")
+    centre = tri.mean(axis=1)
+    foot = [b.footprint for b in site.buildings]
+    tree = shapely.STRtree([g.buffer(MESH_REACH_M) for g in foot])
+    hit = tree.query(shapely.points(centre[:, :2]), predicate="intersects")
+    owner = np.full(len(tri), -1)
+    dist = np.full(len(tri), np.inf)
+    for k, j in hit.T:  # the nearest footprint where several reach
+        d = foot[j].distance(shapely.Point(centre[k, :2]))
+        if d < dist[k]:
+            owner[k], dist[k] = j, d
+    if not (owner >= 0).any():
+        raise InputError(
+            f"{p.name}: none of its triangles is near a building of the site; is it in the "
+            "site's CRS (give --mesh-offset E,N,H for a mesh in local coordinates)?"
+        )
+    buildings = []
+    for j, b in enumerate(site.buildings):
+        mine = tri[owner == j]
+        if not len(mine):
+            buildings.append(b)
+            continue
+        base = float(mine[:, :, 2].min())
+        surfaces = []
+        for t in mine:
+            n = np.cross(t[1] - t[0], t[2] - t[0])
+            length = np.linalg.norm(n)
+            if length < 1e-9:
+                continue
+            kind = kind_by_normal(float(n[2] / length), float(t[:, 2].min()), base)
+            surfaces.append(Surface(kind, (t,)))
+        top = float(mine[:, :, 2].max())
+        buildings.append(replace(b, base_z=base, height_m=top - base, surfaces=tuple(surfaces)))
+    rest = tri[owner < 0]
+    obstacles = list(site.obstacles)
+    if len(rest):
+        low = rest.reshape(-1, 3)
+        where = shapely.MultiPoint(low[:, :2]).convex_hull.buffer(0.2, quad_segs=2)
+        obstacles.append(
+            Obstacle(
+                "mesh-structures", where, float(np.ptp(low[:, 2])) + 0.1, "structure", mesh=rest
+            )
+        )
+    terrain = site.terrain
+    if terrain is None:  # the ground the mesh's buildings stand on (their ground faces)
+        terrain = _model_terrain(
+            _Model([], [], [], None, p.name), [b for b in buildings if b.surfaces], None
+        )
+    return replace(
+        site,
+        buildings=buildings,
+        obstacles=obstacles,
+        terrain=terrain,
+        warnings=list(site.warnings),
+    )

@@ -421,37 +421,8 @@ def write_model(model: dict, path: str | Path) -> Path:
 
 
 def footprints_geojson(model: dict) -> dict:
-    """The model's buildings as a surveyor without the model draws them: each building's
-    ground outline (its parts' ground surfaces joined) with the height of its highest point
-    above its base, its trees as obstacles of their height — a GeoJSON site in the model's
-    CRS."""
-    import shapely
+    """The model's buildings as footprints with their highest point, as a GeoJSON site
+    (:func:`planner.cityio.footprints_of`)."""
+    from planner.cityio import footprints_of, site_from_cityjson
 
-    from planner.cityio import site_from_cityjson
-
-    site = site_from_cityjson(model)
-    feats = []
-    for b in site.buildings:
-        feats.append(
-            {
-                "type": "Feature",
-                "properties": {"id": b.id, "height": round(b.height_m, 2)},
-                "geometry": json.loads(shapely.to_geojson(b.footprint)),
-            }
-        )
-    for o in site.obstacles:
-        if o.kind == "tree":
-            feats.append(
-                {
-                    "type": "Feature",
-                    "properties": {
-                        "id": o.id,
-                        "role": "obstacle",
-                        "kind": "tree",
-                        "height": round(o.height_m, 2),
-                    },
-                    "geometry": json.loads(shapely.to_geojson(o.geometry)),
-                }
-            )
-    crs = {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::25832"}}
-    return {"type": "FeatureCollection", "crs": crs, "features": feats}
+    return footprints_of(site_from_cityjson(model))

@@ -262,3 +262,33 @@ def test_the_files_carry_the_walls_and_points_in_3d(town, model_plan):
     stations = next(f for f in folders if f.find("k:name", ns).text == "station")
     heights = [float(c.text.split(",")[2]) for c in stations.iterfind(".//k:coordinates", ns)]
     assert heights == pytest.approx([1.5] * len(st), abs=1e-3)  # m above the ground
+
+
+@pytest.mark.parametrize("suffix", [".obj", ".glb"])
+def test_a_plain_mesh_gives_the_footprints_their_3d_shape(tmp_path, suffix):
+    """The buildings of a model written as a plain mesh in local coordinates (OBJ z-up,
+    glTF y-up, as an IFC export comes), given to the same town's footprints with the
+    offset: the buildings take their shape, and the plan promises only walls the model
+    shows."""
+    import trimesh
+
+    from planner.cityio import footprints_of, with_mesh
+
+    model = site_from_cityjson(lod2_town(3, seed=1, slope=0.0, trees=0))
+    tri = np.concatenate([s.triangles for b in model.buildings for s in b.surfaces])
+    offset = np.array([690_000.0, 5_336_000.0, 500.0])
+    v = (tri - offset).reshape(-1, 3)
+    if suffix == ".glb":
+        v = np.column_stack([v[:, 0], v[:, 2], -v[:, 1]])  # glTF: y up
+    path = tmp_path / f"town{suffix}"
+    trimesh.Trimesh(v, np.arange(len(v)).reshape(-1, 3), process=False).export(path)
+    site = with_mesh(site_from_geojson(footprints_of(model)), path, offset=tuple(offset))
+    for b, m in zip(site.buildings, model.buildings, strict=True):
+        assert b.base_z == pytest.approx(m.base_z, abs=1e-3)  # m
+        assert b.height_m == pytest.approx(m.height_m, abs=1e-3)  # m
+    p = plan(site, settings=QUICK)
+    table = audit_plan(p, model)
+    assert len(table) > 0.9 * len(p.scanned)
+    assert (table["status"] == "seen").all()
+    with pytest.raises(InputError, match="none of its triangles is near a building"):
+        with_mesh(site_from_geojson(footprints_of(model)), path)  # the offset forgotten

@@ -19,7 +19,12 @@ planner's error model:
   plan's links (weighted Procrustes) — 6 parameters, or 4 for a levelled scanner;
 * every facade sample is measured from its assigned station with the same polar noise
   and carried into the registered frame; its error is taken along the facade, across it
-  and in height, against true vertical.
+  and in height, against true vertical;
+* where the world is a 3-D model (``world_of(plan, model)``), each sample's beam is cast
+  from its station against the model's own triangles (the survey's ray caster, not the
+  planner's sight test): a beam that meets something before the sample, or nothing where
+  the plan puts a wall, does not measure it — the sample is *unreached*, a false meet where
+  the plan marks it met.
 
 The frame error (tilt, targets, registration) is simulated ``trials`` times; the scanner's
 point noise, which is independent of it, ``noise_trials`` times; their mean squares add.
@@ -90,11 +95,15 @@ class World:
     limits: np.ndarray  # (N, 3)
     meets: np.ndarray  # (N,)
     sample_id: np.ndarray = field(default_factory=lambda: np.array([]))
+    #: the true world, where it is a 3-D model: its triangles (T, 3, 3) [m]
+    triangles: np.ndarray | None = None
 
 
-def world_of(p) -> World:
+def world_of(p, model=None) -> World:
     """The plan ``p`` (a :class:`planner.pipeline.result.Plan` by targets) as a world to
-    survey."""
+    survey; ``model`` (a :class:`planner.site.Site` read from a city model): the world is
+    that model, its surfaces and terrain the beams meet (a plan made on flat ground carried
+    onto it: its heights above each building's base, its stations on the model's ground)."""
     net, sc, st = p.network, p.scanner, p.settings
     assert net is not None and net.error is not None, "the plan has no registration network"
     sxy = net.station_xyz[:, :2]
@@ -120,10 +129,22 @@ def world_of(p) -> World:
     along /= np.linalg.norm(along, axis=1)[:, None]
     normal = np.column_stack([along[:, 1], -along[:, 0]])
     links = [(lk.parent, lk.child, tuple(lk.targets)) for lk in net.links if lk.info is None]
+    station_xyz = net.station_xyz.copy()
+    target_xyz = tc.xyz.copy()
+    xyz = cov[["x", "y", "z"]].to_numpy()
+    triangles = None
+    if model is not None:
+        triangles = _model_triangles(model)
+        if not p.site.is_3d:  # heights above flat ground: onto the model's ground
+            base = {b.id: float(b.base_z or 0.0) for b in model.buildings}
+            xyz = xyz.copy()
+            xyz[:, 2] += cov["building_id"].map(base).fillna(0.0).to_numpy()
+            station_xyz[:, 2] += _ground(model, station_xyz[:, :2])
+            target_xyz[:, 2] += _ground(model, target_xyz[:, :2])
     return World(
-        station_xyz=net.station_xyz.copy(),
+        station_xyz=station_xyz,
         station_ids=ids,
-        target_xyz=tc.xyz.copy(),
+        target_xyz=target_xyz,
         target_type=np.asarray(tc.type, dtype=object),
         target_size_mm=size,
         target_normal=tc.normal.copy(),
@@ -141,7 +162,7 @@ def world_of(p) -> World:
             sc, p.workbench.ctx.step_mm_at_10m, st.model == "3d" and st.incidence_noise
         ),
         floor_mm=st.target_floor_mm,
-        xyz=cov[["x", "y", "z"]].to_numpy(),
+        xyz=xyz,
         along=along,
         normal=normal,
         station=cov["station_id"].map(index).to_numpy(),
@@ -150,7 +171,60 @@ def world_of(p) -> World:
         limits=limits,
         meets=cov["meets"].to_numpy(),
         sample_id=cov["sample_id"].to_numpy(),
+        triangles=triangles,
     )
+
+
+def _ground(model, xy: np.ndarray) -> np.ndarray:
+    return model.terrain.ground_z(xy) if model.terrain is not None else np.zeros(len(xy))
+
+
+def _model_triangles(model) -> np.ndarray:
+    """The model's surfaces (not its virtual ones), trees and other structures and its
+    terrain round the buildings, as triangles (T, 3, 3): the world the beams meet."""
+    from planner.mesh import triangulate
+
+    tri = [
+        triangulate(s.rings)
+        for b in model.buildings
+        for s in b.surfaces
+        if s.kind not in ("closure", "interior")
+    ]
+    tri += [o.mesh for o in model.obstacles if o.mesh is not None]
+    if model.terrain is not None:
+        pts = np.vstack([np.asarray(b.footprint.bounds).reshape(2, 2) for b in model.buildings])
+        lo, hi = pts.min(axis=0) - 300.0, pts.max(axis=0) + 300.0
+        tri.append(model.terrain.triangles((lo[0], lo[1], hi[0], hi[1])))
+    return np.concatenate([t for t in tri if len(t)])
+
+
+#: A beam meeting a surface this close to the sample measures it [m].
+REACH_TOLERANCE_M = 0.05
+
+
+def unreached(w: World) -> np.ndarray:
+    """(N,) samples whose beam from their station, cast against the world's triangles,
+    meets something more than :data:`REACH_TOLERANCE_M` before the sample, or nothing within
+    that distance of it (no surface where the plan puts the wall). All False in a world
+    without a model (the plan's own)."""
+    out = np.zeros(len(w.xyz), dtype=bool)
+    if w.triangles is None or not len(w.xyz):
+        return out
+    from embreex import mesh_construction, rtcore_scene
+
+    origin = w.xyz.mean(axis=0)
+    scene = rtcore_scene.EmbreeScene()
+    mesh_construction.TriangleMesh(scene, (w.triangles - origin).astype(np.float32))
+    src = w.station_xyz[w.station]
+    ray = w.xyz - src
+    dist = np.linalg.norm(ray, axis=1)
+    res = scene.run(
+        (src - origin).astype(np.float32),
+        (ray / dist[:, None]).astype(np.float32),
+        dists=(dist + 1.0).astype(np.float32),
+        query="DISTANCE",
+    )
+    return np.abs(res - dist) > REACH_TOLERANCE_M
 
 
 # -- rotations --------------------------------------------------------------------------------
@@ -418,6 +492,7 @@ class Result:
     noise_se: np.ndarray  # (N, 3) its standard error
     hidden: set
     untied: np.ndarray  # (K,) bool: stations the survey could not register
+    unreached: np.ndarray | None = None  # (N,) bool: beams that do not reach the sample
 
     @property
     def rms(self) -> np.ndarray:
@@ -433,7 +508,10 @@ class Result:
         ``sigmas`` standard errors of the simulation (0: any excess)."""
         w = self.world
         over = self.rms - w.limits > sigmas * self.rms_se + 1e-9
-        return w.meets & (over.any(axis=1) | self.untied[w.station])
+        lost = self.untied[w.station]
+        if self.unreached is not None:
+            lost = lost | self.unreached
+        return w.meets & (over.any(axis=1) | lost)
 
     def ratios(self) -> np.ndarray:
         """(N, 3) simulated over promised RMS (total), at the samples marked met."""
@@ -505,7 +583,7 @@ def survey(
     frame_se = np.std(comp**2, axis=0) / np.sqrt(trials)
     noise_ms, noise_se = _point_noise(w, rng, noise_trials)
     frame_ms[~tied[j]] = np.inf
-    return Result(w, frame_ms, frame_se, noise_ms, noise_se, hid, ~tied)
+    return Result(w, frame_ms, frame_se, noise_ms, noise_se, hid, ~tied, unreached(w))
 
 
 def _facade(err: np.ndarray, w: World) -> np.ndarray:
@@ -697,6 +775,8 @@ def report(res: Result) -> dict:
         "false_meets_3se": int(res.false_meets(3.0).sum()),
         "hidden": len(res.hidden),
         "untied": int(res.untied.sum()),
+        "unreached": int(res.unreached.sum()) if res.unreached is not None else 0,
+        "unreached_met": int((res.unreached & w.meets).sum()) if res.unreached is not None else 0,
         "median": np.median(r[fin], axis=0).round(3).tolist(),
         "p95": np.percentile(r[fin], 95, axis=0).round(3).tolist(),
         "reg_median": np.median(f[np.isfinite(f).all(1)], axis=0).round(3).tolist(),

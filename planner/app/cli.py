@@ -257,10 +257,10 @@ def plan_inputs(args: argparse.Namespace):
     site = read_site_args(args, limits, near) if args.site else None
     if site is None:
         site = default_site(buildings=args.buildings, limits=limits)
-        if args.terrain or args.lod:
+        if args.terrain or args.lod or args.mesh:
             raise InputError(
-                "--terrain and --lod need a site file (the default site is footprints on flat "
-                "ground)"
+                "--terrain, --lod and --mesh need a site file (the default site is footprints "
+                "on flat ground)"
             )
     if args.control:
         from dataclasses import replace
@@ -299,6 +299,10 @@ def read_site_args(args: argparse.Namespace, limits, near_m: float):
         lod=args.lod,
         **({"storey_height_m": args.storey_height_m} if args.storey_height_m else {}),
     )
+    if args.mesh:
+        from planner.cityio import with_mesh
+
+        site = with_mesh(site, args.mesh, offset=args.mesh_offset or (0.0, 0.0, 0.0))
     if args.terrain:
         site = with_terrain(site, args.terrain)
     return site
@@ -619,6 +623,21 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         metavar="LOD",
         help="the city model's level of detail to plan on, e.g. 2 or 2.2 (default: the finest "
         "each building has)",
+    )
+    pl.add_argument(
+        "--mesh",
+        default=None,
+        metavar="MESH",
+        help="the buildings' 3-D shape as a plain mesh (OBJ, PLY, glTF/GLB, STL, OFF; an IFC "
+        "model exported as a mesh) in the site's CRS: each triangle joins the footprint it "
+        "lies on (the site file gives the buildings and their ids)",
+    )
+    pl.add_argument(
+        "--mesh-offset",
+        type=_floats,
+        default=None,
+        metavar="E,N,H",
+        help="added to the mesh's coordinates (a mesh in local coordinates) [m]",
     )
     pl.add_argument(
         "--terrain",

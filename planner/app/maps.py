@@ -135,9 +135,16 @@ def plot_site(site: Site, ax: Axes | None = None, window: BaseGeometry | None = 
             )
         )
         labelled.add(kind)
+        if b.surfaces:  # a 3-D building: its roof's edges and ridges, its parts' outlines
+            roof = [s.rings[0][:, :2] for s in b.surfaces if s.kind == "roof"]
+            for ring in roof:
+                ax.add_patch(MplPolygon(ring, closed=True, fill=False, ec="0.55", lw=0.4, zorder=2))
+            if roof and "roof" not in labelled:
+                ax.plot([], [], color="0.55", lw=0.4, label="roof edges and ridges (3-D model)")
+                labelled.add("roof")
         c = b.footprint.representative_point()
         ax.annotate(
-            f"{b.id}\n{b.height_m:g} m",
+            f"{b.id}\n{round(b.height_m, 1):g} m",
             (c.x, c.y),
             ha="center",
             va="center",

@@ -343,14 +343,14 @@ def _kml_geometry(p: Plan, parent: ET.Element, geom: dict, ground_z: float | Non
 
 def stakeout_csv(p: Plan) -> str:
     """Stations and targets to set out: point id, easting, northing, height and code
-    (:data:`STAKEOUT_COLUMNS`), in the site's CRS; height above the site's ground (a
-    station: its ground mark, 0; a target: its centre)."""
+    (:data:`STAKEOUT_COLUMNS`), in the site's CRS and height system (a station: its ground
+    mark, the terrain's height there — 0 on flat ground; a target: its centre)."""
     rows: list[dict[str, Any]] = [
         {
             "point_id": r.station_id,
             "easting": r.x,
             "northing": r.y,
-            "height": 0.0,
+            "height": getattr(r, "ground_z", 0.0),
             "code": "TRV" if r.purpose == "traverse" else "STN",
         }
         for r in in_id_order(p.stations, "station_id").itertuples()
