@@ -586,6 +586,13 @@ def read_city_model(
             "(cjio FILE subset --bbox …)"
         )
     kw = dict(lod=lod, buildings=buildings, crs=crs, limits=limits, near_m=near_m, terrain=terrain)
+    from planner.siteio import reading
+
+    with reading(p.name, "CityJSON/CityGML"):
+        return _read_model(p, kw)
+
+
+def _read_model(p: Path, kw: dict) -> Site:
     raw = p.read_bytes()
     head = raw.lstrip(b"\xef\xbb\xbf \t\r\n")[:1]
     if head in (b"{", b"["):

@@ -558,7 +558,7 @@ def read_control(path: str | Path) -> list[ControlPoint]:
     p = Path(path)
     if not p.is_file():
         raise InputError(f"control point file {str(p)!r} does not exist")
-    with _reading(p.name, "csv"):
+    with reading(p.name, "csv"):
         rows = list(csv.DictReader(io.StringIO(p.read_text(encoding="utf-8-sig"))))
         if not rows:
             raise InputError(f"{p.name} has no control points (header id,x,y,z[,rms_mm])")
@@ -685,7 +685,7 @@ def _geojson_features(obj: Any, origin: str) -> tuple[list[Feature], str | None]
 def site_from_geojson(obj: dict | str, **kwargs: Any) -> Site:
     """A site from a GeoJSON object (or its text)."""
     origin = kwargs.pop("origin", "the GeoJSON")
-    with _reading(origin, "geojson"):
+    with reading(origin, "geojson"):
         if isinstance(obj, str):
             try:
                 obj = json.loads(obj)
@@ -981,7 +981,7 @@ def _file_features(path: Any, crs: str | None) -> tuple[list[Feature], str | Non
             f"{MAX_FILE_BYTES / 1e6:.0f} MB is not a site — split it, or plan parts of it"
         )
     if kind in GIS_KINDS:
-        with _reading(p.name, kind):
+        with reading(p.name, kind):
             features, file_crs = _gis_features(p, kind)
         return features, crs or file_crs
     raw = p.read_bytes()
@@ -997,7 +997,7 @@ def _file_features(path: Any, crs: str | None) -> tuple[list[Feature], str | Non
             f"{p.name} has the extension {p.suffix} but its content looks like {found.upper()}; "
             f"rename it to a {found} file or export it again as {kind.upper()}"
         )
-    with _reading(p.name, kind):
+    with reading(p.name, kind):
         if kind == "geojson":
             try:
                 obj = json.loads(text)
@@ -1140,7 +1140,7 @@ _PARSE_ERRORS = (
 
 
 @contextlib.contextmanager
-def _reading(origin: str, kind: str) -> Iterator[None]:
+def reading(origin: str, kind: str) -> Iterator[None]:
     """The reader's boundary: whatever the parsers raise on malformed content becomes an
     InputError naming the file (our own InputErrors pass unchanged)."""
     try:

@@ -24,8 +24,6 @@ import os
 from pathlib import Path
 
 import numpy as np
-from scipy import ndimage
-from scipy.interpolate import LinearNDInterpolator, NearestNDInterpolator
 
 from planner.errors import InputError
 
@@ -66,6 +64,8 @@ class GridTerrain(Terrain):
         self, z: np.ndarray, x0: float, y0: float, dx: float, dy: float, source: str
     ) -> None:
         z = np.asarray(z, dtype=float)
+        from scipy import ndimage  # (scipy's modules load when a terrain is made)
+
         valid = np.isfinite(z)
         if not valid.any():
             raise InputError(f"{source} holds no height (every pixel is no-data)")
@@ -80,6 +80,8 @@ class GridTerrain(Terrain):
 
     def ground_z(self, xy: np.ndarray) -> np.ndarray:
         xy = np.asarray(xy, dtype=float).reshape(-1, 2)
+        from scipy import ndimage
+
         j = (xy[:, 0] - self.x0) / self.dx
         i = (xy[:, 1] - self.y0) / self.dy
         return ndimage.map_coordinates(self.z, [i, j], order=1, mode="nearest")
@@ -118,6 +120,8 @@ class TinTerrain(Terrain):
     faces where it has them (else the Delaunay triangles)."""
 
     def __init__(self, points: np.ndarray, source: str, faces: np.ndarray | None = None) -> None:
+        from scipy.interpolate import LinearNDInterpolator, NearestNDInterpolator
+
         pts = np.asarray(points, dtype=float).reshape(-1, 3)
         if len(pts) == 0:
             raise InputError(f"{source}: no terrain points")
