@@ -5,6 +5,7 @@ real samples), on a terrain model, and a plan from footprints audited against th
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -171,7 +172,7 @@ def test_a_terrain_model_in_another_crs_or_not_a_geotiff_is_refused(tmp_path):
 
 
 def test_the_plan_and_audit_commands_on_a_city_model(tmp_path, capsys):
-    model = lod2_town(3, seed=2)
+    model = lod2_town(2, seed=2)
     path = write_model(model, tmp_path / "town.city.json")
     foot = tmp_path / "town.geojson"
     foot.write_text(json.dumps(footprints_geojson(model)))
@@ -205,20 +206,22 @@ def test_the_plan_and_audit_commands_on_a_city_model(tmp_path, capsys):
 
 
 @pytest.mark.parametrize(
-    "name, buildings",
+    "name, buildings, spacing_m",
     [
-        ("delft_3dbag.city.jsonl", ["NL.IMBAG.Pand.0503100000005156"]),  # the house, not the sheds
-        ("munich_tum_entrance_lod2.citygml3.gml", None),
+        ("delft_3dbag.city.jsonl", ["NL.IMBAG.Pand.0503100000005156"], 3.0),  # not the sheds
+        ("munich_tum_entrance_lod2.citygml3.gml", None, 4.0),
     ],
 )
-def test_a_real_model_planned_end_to_end_promises_only_walls_it_sees(name, buildings):
+def test_a_real_model_planned_end_to_end_promises_only_walls_it_sees(name, buildings, spacing_m):
     """A real model planned with a scanner that levels itself (the P50): most of its
     samples met, and every one marked met is on a wall of the model that its station
     sees."""
     site = read_city_model(DATA / name, buildings=buildings)
-    p = plan(site, "leica-p50", settings=QUICK)
+    p = plan(
+        site, "leica-p50", settings=replace(QUICK, sample_spacing_m=4.0, sample_height_step_m=4.0)
+    )
     table = audit_plan(p, site)
-    assert len(table) > 0.8 * len(p.scanned) > 30
+    assert len(table) > 0.8 * len(p.scanned) > 20
     assert (table["status"] == "seen").all()
 
 
