@@ -196,3 +196,19 @@ def test_the_buildings_to_plan_are_picked_by_id():
     assert [b.id for b in site.planned] == ["B02"]
     with pytest.raises(InputError, match="no building with id 'B99'"):
         site_from_cityjson(lod2_town(4, seed=0), buildings=["B99"])
+
+
+def test_roofs_are_facades_only_on_request():
+    """Walls only by default; with ``roofs`` the pitched roofs join as sloping facades
+    (their normals up), sampled on their outlines; windows never (the rule written once)."""
+    from planner.citymodel import demanded_kinds
+
+    site = site_from_cityjson(_gable_model())
+    walls = build_facades(site, 2.0, 2.0)
+    both = build_facades(site, 2.0, 2.0, roofs=True)
+    assert both.n_facades > walls.n_facades
+    roofs = np.flatnonzero(both.normal_z > 0.5)
+    assert len(roofs) >= 2 and not (walls.normal_z > 0.5).any()
+    # the main roof's two slopes, each sampled over its outline
+    assert all((both.facade == f).sum() >= 3 for f in roofs[:2])
+    assert "window" not in demanded_kinds(True) and "roof" not in demanded_kinds()

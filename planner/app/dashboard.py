@@ -360,11 +360,32 @@ class StationPlanner:
         self.imaging = w.Checkbox(
             value=PlanSettings().imaging, description=SITE_LABELS["--imaging"], indent=False
         )
+        self.demand_roofs = w.Checkbox(
+            value=PlanSettings().demand_roofs,
+            description=SITE_LABELS["--demand-roofs"],
+            indent=False,
+        )
+        self.sight_engine = w.Dropdown(
+            options=[
+                ("auto (prisms on footprints, else rays)", "auto"),
+                ("rays on the 3-D scene", "rays"),
+                ("prisms (footprints on flat ground)", "prisms"),
+            ],
+            value=PlanSettings().sight_engine,
+            description=SITE_LABELS["--sight-engine"],
+            style=_STYLE,
+            layout=_FULL,
+        )
         self.inventory = inventory_box(
             SITE_LABELS["--inventory"], _STYLE, w.Layout(width="98%", height="8em")
         )
         # the settings in their groups (one order for the page and the command line's help)
-        extra = {"registration_error": self.registration_error, "imaging": self.imaging}
+        extra = {
+            "registration_error": self.registration_error,
+            "imaging": self.imaging,
+            "demand_roofs": self.demand_roofs,
+            "sight_engine": self.sight_engine,
+        }
         extra["inventory"] = self.inventory
         sections: list[w.Widget] = [w.HTML("<b>Requirements</b>")]
         sections += [self.more[n] for n in rq if n in self.more]
@@ -506,6 +527,8 @@ class StationPlanner:
             self.grid,
             self.registration_error,
             self.imaging,
+            self.demand_roofs,
+            self.sight_engine,
             self.inventory,
             *self.more.values(),
         ]
@@ -859,6 +882,8 @@ class StationPlanner:
                 "grid_m": self.grid.value,
                 "registration_error": self.registration_error.value,
                 "imaging": self.imaging.value,
+                "demand_roofs": self.demand_roofs.value,
+                "sight_engine": self.sight_engine.value,
                 "inventory": parse_inventory(self.inventory.value),
             }
         )

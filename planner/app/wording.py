@@ -36,6 +36,8 @@ SITE_LABELS = {
     "--inventory": "targets you own (name, type, size mm, count)",
     "--preset": "scanner setting",
     "--imaging": "count the images (HDR) in the field time",
+    "--demand-roofs": "demand the roofs too (3-D models; an elevated station)",
+    "--sight-engine": "sight lines",
     "--zone": "Zones",
     "--zones": "Zones",
 }

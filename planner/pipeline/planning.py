@@ -179,6 +179,16 @@ def _prepare(
         site, st.sample_spacing_m, st.sample_height_step_m, scene=scene, roofs=st.demand_roofs
     )
     fac, sample_req, zones = apply_zones(site, fac, req, scene)
+    if st.demand_roofs:
+        flat = [
+            s for b in site.planned for s in b.surfaces if s.kind == "roof" and s.normal[2] > 0.9
+        ]
+        if flat:
+            messages.append(
+                f"Roofs demanded: {len(flat)} flat roof surface(s) (within 8° of level) "
+                "are not sampled — no station on the ground sees them; plan them from an "
+                "elevated station or the air"
+            )
     if len(fac.z) > st.max_samples:
         raise InputError(
             f"with the zones' finer samples the facades need {len(fac.z):,} samples, more than "
