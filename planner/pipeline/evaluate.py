@@ -234,12 +234,14 @@ class Context:
         smp: np.ndarray,
         keep: bool = False,
         where: np.ndarray | None = None,
+        cand_z: np.ndarray | None = None,
     ) -> np.ndarray:
         """(c, n) whether scanners standing at ``cand_xy`` see the samples ``smp`` of facade
         ``f`` (the scene's engine: per column on prisms, :meth:`clear_heights`; per sample
         by rays, ending :data:`SIGHT_OFFSET_M` in front of the wall, cast only for the pairs
-        ``where`` (c, n) is True — in front, in range: the others read False). ``keep``
-        keeps the answer for the same facade and candidates again."""
+        ``where`` (c, n) is True — in front, in range: the others read False; ``cand_z``
+        the scanners' heights where known). ``keep`` keeps the answer for the same facade
+        and candidates again."""
         fac = self.facades
         if self.scene.prisms:
             col_local = np.searchsorted(self.cols_of[f], fac.column[smp])
@@ -258,7 +260,8 @@ class Context:
         todo = pairs & ~known[:, cols]
         if todo.any():
             ci, si = np.nonzero(todo)
-            src = np.column_stack([cand_xy[ci], self.station_z(cand_xy[ci])])
+            zs = self.station_z(cand_xy) if cand_z is None else cand_z  # (per candidate)
+            src = np.column_stack([cand_xy[ci], zs[ci]])
             dst = np.column_stack([fac.xy[smp[si]], fac.z[smp[si]]])
             seen[ci, cols[si]] = self.scene.seen(src, dst + SIGHT_OFFSET_M * fac.normal3[f])
             known[ci, cols[si]] = True
@@ -462,6 +465,7 @@ def facade_pairs(
     smp: np.ndarray | None = None,
     keep: bool = False,
     own_level: bool = False,
+    cand_z: np.ndarray | None = None,
 ) -> PairMetrics:
     """Evaluate candidates ``cand_xy`` against the samples ``smp`` (default: all) of facade
     ``f``: geometry, visibility and the predicted variances (``keep``: keep the line of
@@ -476,7 +480,8 @@ def facade_pairs(
     # sight geometry (station minus point horizontally; point minus scanner vertically)
     dx = cand_xy[:, 0:1] - fac.xy[smp, 0]
     dy = cand_xy[:, 1:2] - fac.xy[smp, 1]
-    dz = fac.z[smp] - ctx.station_z(cand_xy)[:, None]
+    zs = ctx.station_z(cand_xy) if cand_z is None else cand_z  # the scanners' centres
+    dz = fac.z[smp] - zs[:, None]
     d2 = dx * dx + dy * dy
     d = np.sqrt(d2)
     s = np.sqrt(d2 + dz * dz)
@@ -506,7 +511,7 @@ def facade_pairs(
     else:  # rays: cast when asked, for the pairs asked (:meth:`PairMetrics.seen_where`)
 
         def sight(where: np.ndarray) -> np.ndarray:
-            return ctx.sees(f, cand_xy, smp, keep, where)
+            return ctx.sees(f, cand_xy, smp, keep, where, zs)
 
     st = ctx.settings
     m_s = sc.range_rms_at(s)
@@ -603,6 +608,7 @@ def evaluate_candidates(
     n_view = np.zeros(n_samples, dtype=np.int64)
     evaluated = fac.party_wall.copy()
     wanted = ~fac.party_wall if only is None else only & ~fac.party_wall
+    cand_z = ctx.station_z(cand_xy)  # every candidate's scanner, once
     for f in range(fac.n_facades):
         if time.monotonic() > deadline:
             break
@@ -620,7 +626,9 @@ def evaluate_candidates(
             if time.monotonic() > deadline:
                 break  # the facade's samples stay "not evaluated"; the pairs found count
             ci = cand[lo : lo + step]
-            m = facade_pairs(ctx, f, cand_xy[ci], smp, only is None, registration is None)
+            m = facade_pairs(
+                ctx, f, cand_xy[ci], smp, only is None, registration is None, cand_z[ci]
+            )
             if registration is not None:
                 add_registration(ctx, m, f, smp, registration, ci)
             r, c = np.nonzero(meets(ctx, m, smp) & ~m.untied)
