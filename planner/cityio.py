@@ -43,7 +43,16 @@ from shapely.geometry import MultiPolygon, Polygon
 from planner.citymodel import SEMANTIC_KINDS, Surface, kind_by_normal
 from planner.errors import InputError
 from planner.mesh import crown_triangles
-from planner.site import DEFAULT_NEAR_M, Building, Obstacle, Site, SiteLimits, with_planned
+from planner.site import (
+    CROWN_BASE_SHARE,
+    DEFAULT_CROWN_M,
+    DEFAULT_NEAR_M,
+    Building,
+    Obstacle,
+    Site,
+    SiteLimits,
+    with_planned,
+)
 from planner.terrain import Terrain, TinTerrain
 
 __all__ = [
@@ -99,9 +108,6 @@ SKIPPED_TYPES = (
 )
 #: Height below which a model's building is not one to scan: it only blocks the beam [m].
 MIN_PLANNED_HEIGHT_M = 2.0
-#: A tree given only by its height has a crown this wide [m], starting at this share of it.
-DEFAULT_CROWN_M = 5.0
-CROWN_BASE_SHARE = 0.3
 
 
 def is_city_model(path: Path) -> bool:
@@ -198,11 +204,20 @@ class _CityJSONReader:
                 raise InputError(
                     f"{origin}: its 'transform' needs 'scale' and 'translate' of three numbers"
                 ) from None
+            if not (np.isfinite(self.scale).all() and np.isfinite(self.translate).all()):
+                raise InputError(f"{origin}: its 'transform' has numbers that are not finite")
         templates = header.get("geometry-templates") or {}
         self.templates = templates.get("templates") or []
-        self.template_vertices = np.asarray(
-            templates.get("vertices-templates") or np.empty((0, 3)), dtype=float
-        ).reshape(-1, 3)
+        try:
+            self.template_vertices = np.asarray(
+                templates.get("vertices-templates") or np.empty((0, 3)), dtype=float
+            ).reshape(-1, 3)
+        except (TypeError, ValueError):
+            raise InputError(
+                f"{origin}: its template vertices must be triples of numbers"
+            ) from None
+        if not np.isfinite(self.template_vertices).all():
+            raise InputError(f"{origin}: its template vertices are not all finite numbers")
         self.crs = _crs_of_cityjson(header.get("metadata"))
         self.objects: list[_Object] = []
         self.relief: list[np.ndarray] = []
@@ -216,7 +231,7 @@ class _CityJSONReader:
             ) from None
         if not np.isfinite(v).all():
             raise InputError(f"{self.origin}: {where} has vertices that are not finite numbers")
-        return v * self.scale + self.translate
+        return _checked(v * self.scale + self.translate, f"{self.origin}: {where}")
 
     def read_objects(self, objs: Any, verts: np.ndarray) -> None:
         if not isinstance(objs, dict):
@@ -256,7 +271,7 @@ class _CityJSONReader:
             if typ in ("MultiPoint", "MultiLineString"):
                 return
             surfaces = _surfaces_of(typ, g.get("boundaries"), g.get("semantics"), where)
-        except (TypeError, KeyError, IndexError, ValueError) as exc:
+        except (TypeError, KeyError, IndexError, ValueError, AttributeError) as exc:
             raise InputError(
                 f"{self.origin}: {where} ({typ}) is malformed: {type(exc).__name__} {exc}"[:300]
             ) from None
@@ -267,13 +282,7 @@ class _CityJSONReader:
                 "GeometryInstance are read"
             )
         for kind, rings in surfaces:
-            try:
-                pts = [verts[np.asarray(r, dtype=np.int64)] for r in rings]
-            except (IndexError, TypeError, ValueError):
-                raise InputError(
-                    f"{self.origin}: {where} refers to a vertex that does not exist"
-                ) from None
-            obj.add(lod, kind, pts)
+            obj.add(lod, kind, [_ring(verts, r, f"{self.origin}: {where}") for r in rings])
 
     def _instance(self, obj: _Object, g: dict, verts: np.ndarray, where: str) -> None:
         t = int(g["template"])
@@ -284,12 +293,45 @@ class _CityJSONReader:
         ref = verts[int(g["boundaries"][0])]
         local = self.template_vertices
         moved = local @ m[:3, :3].T + m[:3, 3] + ref
+        if not np.isfinite(m).all():
+            raise InputError(f"{self.origin}: {where} has a transformation matrix of non-numbers")
         lod = str(tpl.get("lod", ""))
         surfaces = _surfaces_of(tpl["type"], tpl.get("boundaries"), tpl.get("semantics"), where)
+        if surfaces is None and tpl["type"] not in ("MultiPoint", "MultiLineString"):
+            raise InputError(
+                f"{self.origin}: {where} uses a template of unknown type {tpl['type']!r}"
+            )
         for kind, rings in surfaces or []:
-            obj.add(lod, kind, [moved[np.asarray(r, dtype=np.int64)] for r in rings])
+            obj.add(lod, kind, [_ring(moved, r, f"{self.origin}: {where}") for r in rings])
         if not surfaces:
             obj.point = ref
+
+
+#: Coordinates beyond these are not on Earth in any metric CRS, nor at any building's
+#: height [m] (a unit slip, a corrupt file).
+MAX_XY_M = 1e8
+MAX_Z_M = 1e5
+
+
+def _checked(v: np.ndarray, where: str) -> np.ndarray:
+    """Vertices (n, 3) [m] within :data:`MAX_XY_M` and :data:`MAX_Z_M`, else an error."""
+    if len(v) and (np.abs(v[:, :2]).max() > MAX_XY_M or np.abs(v[:, 2]).max() > MAX_Z_M):
+        raise InputError(
+            f"{where} has coordinates beyond any site ({np.abs(v).max():.3g}); check the "
+            "file's transform and units"
+        )
+    return v
+
+
+def _ring(verts: np.ndarray, ring: Any, where: str) -> np.ndarray:
+    """A ring's points from its vertex indices (each a whole number in the file's range)."""
+    try:
+        idx = np.asarray(ring, dtype=float).ravel()
+    except (TypeError, ValueError):
+        raise InputError(f"{where} has a ring that is not a list of vertex indices") from None
+    if not len(idx) or not np.all(idx == np.floor(idx)) or idx.min() < 0 or idx.max() >= len(verts):
+        raise InputError(f"{where} refers to a vertex that does not exist")
+    return verts[idx.astype(np.int64)]
 
 
 def _semantic(sem: Any, value: Any) -> str | None:
@@ -297,7 +339,7 @@ def _semantic(sem: Any, value: Any) -> str | None:
         return None
     surfaces = sem.get("surfaces") or []
     v = int(value)
-    if not 0 <= v < len(surfaces):
+    if not 0 <= v < len(surfaces) or not isinstance(surfaces[v], dict):
         raise IndexError(f"semantic surface {v} does not exist")
     return SEMANTIC_KINDS.get(str(surfaces[v].get("type", "")), "unknown")
 
@@ -343,7 +385,7 @@ def site_from_cityjson(text_or_obj: str | dict, origin: str = "CityJSON", **kwar
     reader = _CityJSONReader(head, origin)
     if head.get("CityObjects"):
         reader.read_objects(
-            head["CityObjects"], reader.vertices(head.get("vertices", []), "the file's")
+            head["CityObjects"], reader.vertices(head.get("vertices", []), "its vertex list")
         )
     for n, doc in enumerate(docs[1:], start=2):
         if not isinstance(doc, dict) or doc.get("type") != "CityJSONFeature":
@@ -402,8 +444,10 @@ def _pos_list(el: ET.Element, dim: int, where: str) -> np.ndarray:
     else:
         pos = [c for c in el if _local(c.tag) == "pos"]
         if pos:
-            rows = [np.array(p.text.split(), dtype=float) for p in pos]
+            rows = [np.array((p.text or "").split(), dtype=float) for p in pos]
             d = len(rows[0])
+            if any(len(r) != d for r in rows):
+                raise InputError(f"{where}: a ring's points have different dimensions")
             vals = np.concatenate(rows)
         else:
             co = next((c for c in el if _local(c.tag) == "coordinates"), None)
@@ -417,7 +461,7 @@ def _pos_list(el: ET.Element, dim: int, where: str) -> np.ndarray:
     pts = vals.reshape(-1, 3)
     if not np.isfinite(pts).all():
         raise InputError(f"{where}: a ring has coordinates that are not finite numbers")
-    return pts
+    return _checked(pts, where)
 
 
 class _GMLReader:
@@ -588,7 +632,7 @@ def read_city_model(
     kw = dict(lod=lod, buildings=buildings, crs=crs, limits=limits, near_m=near_m, terrain=terrain)
     from planner.siteio import reading
 
-    with reading(p.name, "CityJSON/CityGML"):
+    with reading(p.name, "CityJSON or CityGML"):
         return _read_model(p, kw)
 
 
@@ -686,11 +730,15 @@ def _assemble(
         b = _building(bid, names.get(bid, ""), surfaces, origin)
         if b is None:
             continue
-        if b.height_m < MIN_PLANNED_HEIGHT_M:
-            obstacles.append(Obstacle(b.id, b.footprint, b.height_m, "structure", mesh=_mesh(b)))
-            continue
+        if b.height_m < MIN_PLANNED_HEIGHT_M:  # a shed, a garage: not scanned, but a building
+            if b.height_m < (limits or SiteLimits()).min_building_height_m:
+                obstacles.append(
+                    Obstacle(b.id, b.footprint, b.height_m, "structure", mesh=_mesh(b))
+                )
+                continue
+            b = replace(b, planned=False)
         blds.append(b)
-    if not blds:
+    if not any(b.planned for b in blds):
         raise InputError(
             f"{origin} holds no building to plan (no Building with surfaces of at least "
             f"{MIN_PLANNED_HEIGHT_M:g} m); is it a terrain or vegetation model?"
@@ -796,7 +844,7 @@ def _footprint_of(surfaces: list[Surface], base: float) -> Polygon | MultiPolygo
 def _building(bid: str, name: str, surfaces: list[Surface], origin: str) -> Building | None:
     """A building of a model from its surfaces (classed by their normal where the file
     gives no kind), its base the lowest ground surface (else its lowest point)."""
-    good = [s for s in surfaces if len(s.rings[0]) >= 3 and s.normal.any()]
+    good = _outward([s for s in surfaces if len(s.rings[0]) >= 3 and s.normal.any()])
     if not good:
         return None
     zmin = min(s.z_range[0] for s in good)
@@ -815,7 +863,63 @@ def _building(bid: str, name: str, surfaces: list[Surface], origin: str) -> Buil
             f"{origin}: building {bid!r} has no ground outline (no ground surface, no "
             "downward face, no roof to take it from)"
         )
+    classed = _walls_outward(classed, foot)
     return Building(bid, foot, float(top - base), True, name, float(base), tuple(classed))
+
+
+def _flipped(s: Surface) -> Surface:
+    return Surface(s.kind, tuple(r[::-1] for r in s.rings), s.part, s.id, s.lod)
+
+
+def _outward(surfaces: list[Surface]) -> list[Surface]:
+    """The surfaces facing out of the building: all turned where the whole shell faces in
+    (its signed volume negative: rings written clockwise seen from outside), and a roof
+    facing down or a ground facing up turned on its own (the usual slips of real data)."""
+    if not surfaces:
+        return surfaces
+    tri = np.concatenate([s.triangles for s in surfaces])
+    if len(tri):
+        c = tri.reshape(-1, 3).mean(axis=0)
+        t = tri - c
+        volume = float(np.einsum("ij,ij->i", t[:, 0], np.cross(t[:, 1], t[:, 2])).sum()) / 6.0
+        if volume < 0:
+            surfaces = [_flipped(s) for s in surfaces]
+    out = []
+    for s in surfaces:
+        nz = float(s.normal[2])
+        if (s.kind == "roof" and nz < -0.1) or (s.kind == "ground" and nz > 0.1):
+            s = _flipped(s)
+        out.append(s)
+    return out
+
+
+#: How far beside a wall its two sides are probed for the building's inside [m].
+SIDE_PROBE_M = 0.3
+
+
+def _walls_outward(surfaces: list[Surface], foot) -> list[Surface]:
+    """Each wall standing on the building's outline turned to face out where its normal
+    points into the footprint (a wall whose rings a file wrote the wrong way round)."""
+    walls = [k for k, s in enumerate(surfaces) if s.kind in ("wall", "door", "window")]
+    if not walls:
+        return surfaces
+    n = np.array([surfaces[k].normal[:2] for k in walls])
+    length = np.linalg.norm(n, axis=1)
+    c = np.array([surfaces[k].rings[0].mean(axis=0)[:2] for k in walls])
+    ok = length > 0.5
+    u = n / np.where(ok, length, 1.0)[:, None]
+    ahead = c + SIDE_PROBE_M * u
+    behind = c - SIDE_PROBE_M * u
+    inward = (
+        ok
+        & shapely.contains_xy(foot, ahead[:, 0], ahead[:, 1])
+        & ~shapely.contains_xy(foot, behind[:, 0], behind[:, 1])
+    )
+    out = list(surfaces)
+    for k, flip in zip(walls, inward, strict=True):
+        if flip:
+            out[k] = _flipped(out[k])
+    return out
 
 
 def _mesh(b: Building) -> np.ndarray:
@@ -918,7 +1022,6 @@ def with_mesh(
     blocks the beam. The mesh is in the site's CRS once ``offset`` (x, y, z [m]) is added;
     ``up`` is its up axis, ``z`` (default) or ``y`` (glTF's, its default). Without a terrain
     the site stands on the ground the mesh's buildings stand on."""
-    import trimesh
 
     p = Path(path)
     if not p.is_file():
@@ -928,6 +1031,15 @@ def with_mesh(
         raise InputError(f"the mesh's offset is three numbers E,N,H [m]; got {offset!r}")
     if p.suffix.lower() not in MESH_SUFFIXES:
         raise InputError(f"{p.name}: a mesh is read from {', '.join(MESH_SUFFIXES)}")
+    from planner.siteio import reading
+
+    with reading(p.name, "mesh"):
+        return _with_mesh(site, p, off, up)
+
+
+def _with_mesh(site: Site, p: Path, off: np.ndarray, up: str | None) -> Site:
+    import trimesh
+
     up = up or ("y" if p.suffix.lower() in (".gltf", ".glb") else "z")
     if up not in ("y", "z"):
         raise InputError(f"the mesh's up axis is y or z; got {up!r}")
@@ -948,9 +1060,12 @@ def with_mesh(
         )
     if up == "y":
         verts = np.column_stack([verts[:, 0], -verts[:, 2], verts[:, 1]])
-    tri = verts[faces] + off
-    if not np.isfinite(tri).all():
+    if not np.isfinite(verts).all():
         raise InputError(f"{p.name} has coordinates that are not finite numbers")
+    if len(faces) and (faces.min() < 0 or faces.max() >= len(verts)):
+        raise InputError(f"{p.name}: a face refers to a vertex that does not exist")
+    tri = verts[faces] + off
+    _checked(tri.reshape(-1, 3), p.name)
     centre = tri.mean(axis=1)
     foot = [b.footprint for b in site.buildings]
     tree = shapely.STRtree([g.buffer(MESH_REACH_M) for g in foot])

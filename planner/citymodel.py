@@ -30,6 +30,7 @@ __all__ = [
     "Surface",
     "demanded_kinds",
     "kind_by_normal",
+    "level_roof",
 ]
 
 #: The planner's surface kinds: what a beam meets and what a plan may demand.
@@ -81,6 +82,15 @@ def demanded_kinds(roofs: bool = False) -> tuple[str, ...]:
     ('wall', 'door', 'roof')
     """
     return ("wall", "door", "roof") if roofs else ("wall", "door")
+
+
+#: A roof within this of level is not sampled: no station on the ground sees it [deg].
+LEVEL_ROOF_DEG = 1.0
+
+
+def level_roof(surface: Surface) -> bool:
+    """Whether ``surface`` is a level roof (within :data:`LEVEL_ROOF_DEG`)."""
+    return surface.kind == "roof" and surface.normal[2] > np.cos(np.radians(LEVEL_ROOF_DEG))
 
 
 #: A surface whose normal is within this of horizontal is a wall when its file does not say

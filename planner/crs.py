@@ -135,6 +135,10 @@ def split_model_crs(label: str) -> tuple[str | None, str]:
     ('EPSG:25832', 'DHHN2016 height (EPSG:7837)')
     >>> split_model_crs("https://www.opengis.net/def/crs/EPSG/0/7415")
     ('EPSG:28992', 'NAP height (EPSG:5709)')
+    >>> split_model_crs("urn:ogc:def:crs,crs:EPSG:6.12:31467,crs:EPSG:6.12:5783")
+    ('EPSG:31467', 'DHHN92 height (EPSG:5783)')
+    >>> split_model_crs("EPSG:25832+7837")
+    ('EPSG:25832', 'DHHN2016 height (EPSG:7837)')
     """
     import re
 
@@ -147,9 +151,10 @@ def split_model_crs(label: str) -> tuple[str | None, str]:
                     f"unknown AdV CRS {name!r} in {label!r}; give the model's CRS (--crs EPSG:…)"
                 )
             parts.append(ADV_CRS[name])
-    else:
-        codes = re.findall(r"EPSG(?:/\d+/|::?|:)(\d+)", text, re.IGNORECASE)
-        parts = [f"EPSG:{c}" for c in codes] or [text]
+    else:  # EPSG:7415, EPSG::7415, EPSG:6.12:25832, .../EPSG/0/7415, EPSG:25832+7837
+        codes = re.findall(r"EPSG(?:/[\d.]+/|:[\d.]*:|:)(\d+)((?:\+\d+)*)", text, re.IGNORECASE)
+        parts = [f"EPSG:{c}" for first, more in codes for c in [first, *more.split("+")[1:]]]
+        parts = parts or [text]
     crs = [_crs(p) for p in parts]
     if len(crs) == 1 and crs[0].is_compound:
         crs = list(crs[0].sub_crs_list)

@@ -182,6 +182,11 @@ class Passage:
         return cls(id, geom, clear_height_m)
 
 
+#: A tree given without its crown's diameter has a crown this wide [m], starting at this
+#: share of its height (the site file's trees and a city model's).
+DEFAULT_CROWN_M = 5.0
+CROWN_BASE_SHARE = 0.35
+
 #: A control point farther than this from every building is not on the site [m].
 MAX_CONTROL_DISTANCE_M = 1000.0
 #: The RMS of a control point's coordinates when the file does not give one [mm].
@@ -990,7 +995,15 @@ def with_terrain(site: Site, path: str) -> Site:
             f"the terrain model's heights span {lo:g}–{hi:g} m over the site; check its units"
         )
     buildings = [b if b.surfaces else replace(b, base_z=None) for b in site.buildings]
-    return replace(site, buildings=buildings, terrain=terrain, warnings=list(site.warnings))
+    warnings = list(site.warnings)
+    gx = terrain.x0 + np.array([0, terrain.z.shape[1] - 1]) * terrain.dx
+    gy = terrain.y0 + np.array([0, terrain.z.shape[0] - 1]) * terrain.dy
+    if gx.min() > x0 or gx.max() < x1 or gy.min() > y0 or gy.max() < y1:
+        warnings.append(
+            f"the {terrain.source} does not cover every building: beyond its edge the edge's "
+            "heights are taken"
+        )
+    return replace(site, buildings=buildings, terrain=terrain, warnings=warnings)
 
 
 def with_planned(buildings: Sequence[Building], ids: Sequence[str] | None) -> list[Building]:

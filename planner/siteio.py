@@ -51,7 +51,9 @@ from shapely.geometry.base import BaseGeometry
 from planner.crs import GEOJSON_DEFAULT
 from planner.errors import InputError
 from planner.site import (
+    CROWN_BASE_SHARE,
     DEFAULT_CONTROL_RMS_MM,
+    DEFAULT_CROWN_M,
     DEFAULT_NEAR_M,
     DEFAULT_PASSAGE_HEIGHT_M,
     DEFAULT_PASSAGE_WIDTH_M,
@@ -449,12 +451,6 @@ def _osm_kind(props: dict[str, Any]) -> str:
         if k in props:
             return f"{k}={props[k]}: not a building"
     return "not a building"
-
-
-#: A tree given as a point without its crown's diameter has a crown this wide [m]; its crown
-#: starts at this share of its height where the file does not say.
-DEFAULT_CROWN_M = 5.0
-CROWN_BASE_SHARE = 0.35
 
 
 def _is_tree(props: dict[str, Any]) -> bool:
@@ -898,18 +894,20 @@ def read_site(
         return read_city_model(
             path, lod=lod, buildings=buildings, crs=crs, limits=limits, near_m=near_m
         )
+    try:
+        features, file_crs = _file_features(path, crs)  # (a path: checked there)
+    except _CityJSON as model:  # its type found only once parsed
+        from planner.cityio import site_from_cityjson
+
+        name = Path(path).name
+        with reading(name, "CityJSON"):
+            return site_from_cityjson(
+                model.obj, name, lod=lod, buildings=buildings, crs=crs, limits=limits, near_m=near_m
+            )
     if lod:
         raise InputError(
             f"{Path(path).name}: --lod chooses a city model's level of detail; this is a site "
             "of footprints"
-        )
-    try:
-        features, file_crs = _file_features(path, crs)  # (a path: checked there)
-    except _CityJSON as model:
-        from planner.cityio import site_from_cityjson
-
-        return site_from_cityjson(
-            model.obj, Path(path).name, buildings=buildings, crs=crs, limits=limits, near_m=near_m
         )
     p = Path(path)
     return site_from_features(
@@ -1139,6 +1137,15 @@ _PARSE_ERRORS = (
 )
 
 
+def kind_words(kind: str) -> str:
+    """A file's kind as the messages name it: "a GEOJSON site", "a CityJSON model"."""
+    if kind == "mesh":
+        return "a mesh"
+    if kind.startswith("City"):
+        return f"a {kind} model"
+    return f"a {kind.upper()} site"
+
+
 @contextlib.contextmanager
 def reading(origin: str, kind: str) -> Iterator[None]:
     """The reader's boundary: whatever the parsers raise on malformed content becomes an
@@ -1154,7 +1161,7 @@ def reading(origin: str, kind: str) -> Iterator[None]:
             else f"{type(exc).__name__}: {str(exc).splitlines()[0][:200] if str(exc) else ''}"
         )
         raise InputError(
-            f"{origin}: cannot read it as a {kind.upper()} site ({what}); check the file "
+            f"{origin}: cannot read it as {kind_words(kind)} ({what}); check the file "
             "against the formats in the README"
         ) from None
 

@@ -129,10 +129,15 @@ class TinTerrain(Terrain):
         z = np.bincount(inverse.ravel(), pts[:, 2]) / np.bincount(inverse.ravel())
         self.points = np.column_stack([xy, z])
         self.source = source
+        from scipy.spatial import QhullError
+
         self._nearest = NearestNDInterpolator(xy, z)
         self._linear = None
         if len(xy) >= 3 and np.linalg.matrix_rank(xy - xy.mean(axis=0)) == 2:
-            self._linear = LinearNDInterpolator(xy, z)
+            try:
+                self._linear = LinearNDInterpolator(xy, z)
+            except QhullError:
+                raise InputError(f"{source}: its points cannot be triangulated") from None
         self.faces = None if faces is None else np.asarray(faces, dtype=float).reshape(-1, 3, 3)
 
     def ground_z(self, xy: np.ndarray) -> np.ndarray:
@@ -175,7 +180,7 @@ def read_terrain(
     if p.suffix.lower() not in (".tif", ".tiff"):
         raise InputError(f"{p.name}: a terrain model is read from a GeoTIFF (.tif, .tiff)")
     import rasterio  # heavy (GDAL): only when a terrain is given
-    from rasterio.errors import RasterioError
+    from rasterio.errors import RasterioError, WindowError
     from rasterio.windows import from_bounds
 
     try:
@@ -191,7 +196,15 @@ def read_terrain(
                 window = (
                     from_bounds(*bounds, transform=src.transform).round_offsets().round_lengths()
                 )
-                window = window.intersection(rasterio.windows.Window(0, 0, src.width, src.height))
+                whole = rasterio.windows.Window(0, 0, src.width, src.height)
+                try:
+                    window = window.intersection(whole)
+                except WindowError:
+                    raise InputError(
+                        f"{p.name} does not cover the site (its extent "
+                        f"{tuple(round(v) for v in src.bounds)}); give the terrain model of "
+                        "the site, in the site's CRS"
+                    ) from None
             shape = (window.height, window.width) if window is not None else (src.height, src.width)
             if shape[0] * shape[1] > MAX_TERRAIN_PIXELS:
                 raise InputError(
@@ -205,8 +218,11 @@ def read_terrain(
         raise
     except (RasterioError, ValueError) as exc:
         raise InputError(f"{p.name}: cannot read it as a GeoTIFF terrain model ({exc})") from None
-    if z.size == 0:
-        raise InputError(f"{p.name} does not cover the site; give the terrain model of the site")
+    if z.shape[0] < 2 or z.shape[1] < 2:
+        raise InputError(
+            f"{p.name} has {z.shape[0]} × {z.shape[1]} pixels over the site; a terrain model "
+            "needs at least 2 × 2 (give the site's)"
+        )
     z[(z < -1000) | (z > 9000)] = np.nan  # no-data values the file does not declare
     grid = GridTerrain(z, t.c + t.a / 2, t.f + t.e / 2, t.a, t.e, f"terrain model {p.name}")
     return grid, crs

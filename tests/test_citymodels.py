@@ -212,3 +212,25 @@ def test_roofs_are_facades_only_on_request():
     # the main roof's two slopes, each sampled over its outline
     assert all((both.facade == f).sum() >= 3 for f in roofs[:2])
     assert "window" not in demanded_kinds(True) and "roof" not in demanded_kinds()
+
+
+@pytest.mark.parametrize("which", ["every ring", "one wall"])
+def test_rings_written_the_wrong_way_round_are_turned_out(which):
+    """Real files carry rings written clockwise seen from outside, for a whole building or
+    a polygon here and there: the facades face out all the same."""
+    model = _gable_model()
+    good = build_facades(site_from_cityjson(copy.deepcopy(model)), 2.0, 2.0)
+    geometry = model["CityObjects"]["B01"]["geometry"][0]
+    if which == "every ring":
+        geometry["boundaries"] = [[r[::-1] for r in surf] for surf in geometry["boundaries"]]
+    else:
+        kinds = geometry["semantics"]["surfaces"]
+        wall = next(
+            k
+            for k, v in enumerate(geometry["semantics"]["values"])
+            if v is not None and kinds[v]["type"] == "WallSurface"
+        )
+        geometry["boundaries"][wall] = [r[::-1] for r in geometry["boundaries"][wall]]
+    turned = build_facades(site_from_cityjson(model), 2.0, 2.0)
+    assert turned.n_facades == good.n_facades and len(turned.z) == len(good.z)
+    assert turned.normal == pytest.approx(good.normal, abs=1e-9)

@@ -169,6 +169,12 @@ def test_a_terrain_model_in_another_crs_or_not_a_geotiff_is_refused(tmp_path):
     fake.write_text("<VRTDataset/>")
     with pytest.raises(InputError, match="cannot read it as a GeoTIFF"):
         with_terrain(_box_site(), str(fake))
+    elsewhere = Site(
+        [Building("far", shapely.box(700_000.0, 5_336_000.0, 700_010.0, 5_336_010.0), 9.0)]
+    )
+    _write_dtm(dtm, slope=0.1)
+    with pytest.raises(InputError, match="does not cover the site"):
+        with_terrain(elsewhere, str(dtm))
 
 
 def test_the_plan_and_audit_commands_on_a_city_model(tmp_path, capsys):
@@ -295,3 +301,29 @@ def test_a_plain_mesh_gives_the_footprints_their_3d_shape(tmp_path, suffix):
     assert (table["status"] == "seen").all()
     with pytest.raises(InputError, match="none of its triangles is near a building"):
         with_mesh(site_from_geojson(footprints_of(model)), path)  # the offset forgotten
+
+
+def test_ground_patches_are_seen_on_a_terrain(town):
+    """Cloud-to-cloud registration counts the ground a scan holds: on a terrain the ground
+    cells round a station are seen (the lines end just above the terrain's triangles)."""
+    from planner.pipeline.clouds import SurfaceCache
+    from planner.pipeline.facades import build_facades
+
+    site = town[1]
+    st = PlanSettings()
+    sc = load_scanner("leica-4mm-60urad")
+    ctx = Context.build(site, build_facades(site), sc, Requirements(), st, 60.0)
+    cache = SurfaceCache(ctx)
+    station = np.array([[690_030.0, 5_336_000.0]])  # in the street
+    cache._compute(np.array([0]), station)
+    ids = cache.columns[0][0]
+    ground = ids[ids >= len(ctx.facades.z)]
+    assert len(ground) > 100  # of the about 490 cells within 25 m, outside the buildings
+
+
+def test_a_plan_of_another_site_is_not_audited_as_all_wallless(town, default_plan):
+    from planner.pipeline.audit import audit
+
+    p = default_plan
+    with pytest.raises(InputError, match="not on the model's buildings"):
+        audit(town[1], p.coverage, p.facades, p.stations)

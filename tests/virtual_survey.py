@@ -136,9 +136,10 @@ def world_of(p, model=None) -> World:
     if model is not None:
         triangles = _model_triangles(model)
         if not p.site.is_3d:  # heights above flat ground: onto the model's ground
-            base = {b.id: float(b.base_z or 0.0) for b in model.buildings}
+            from planner.pipeline.audit import model_base
+
             xyz = xyz.copy()
-            xyz[:, 2] += cov["building_id"].map(base).fillna(0.0).to_numpy()
+            xyz[:, 2] += model_base(model, cov["building_id"].to_numpy(object), xyz[:, :2])
             station_xyz[:, 2] += _ground(model, station_xyz[:, :2])
             target_xyz[:, 2] += _ground(model, target_xyz[:, :2])
     return World(

@@ -299,6 +299,8 @@ def read_site_args(args: argparse.Namespace, limits, near_m: float):
         lod=args.lod,
         **({"storey_height_m": args.storey_height_m} if args.storey_height_m else {}),
     )
+    if args.mesh_offset and not args.mesh:
+        raise InputError("--mesh-offset moves the mesh of --mesh; give the mesh")
     if args.mesh:
         from planner.cityio import with_mesh
 

@@ -716,10 +716,11 @@ def plot_coverage(p: Plan, quantity: str = "m_x_mm", ax: Axes | None = None) -> 
             color="0.25",
             annotation_clip=False,
         )
-    ax.set_ylim(0, float((f["z0"] - f["base_z"] + f["height_m"]).max()) * 1.15 + 1.0)
+    low = min(0.0, float((f["z0"] - f["base_z"]).min()))
+    ax.set_ylim(low, float((f["z0"] - f["base_z"] + f["height_m"]).max()) * 1.15 + 1.0)
     _draw_zones(p, ax, off, f)
     ax.set_xlabel("distance along the facades [m] (facades side by side)")
-    ax.set_ylabel("height [m]")
+    ax.set_ylabel("height above the building's base [m]" if p.site.is_3d else "height [m]")
     if len(pw) or len(un):
         ax.legend(loc="upper right", fontsize=7)
     ax.set_title(

@@ -27,13 +27,21 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
+import shapely
 
 from planner.errors import InputError
 from planner.pipeline.facades import SIGHT_OFFSET_M
 from planner.pipeline.scene import TRIANGLE_KINDS, Scene
 from planner.site import Site
 
-__all__ = ["AUDIT_STATUSES", "audit", "audit_plan", "audit_summary", "read_plan_tables"]
+__all__ = [
+    "AUDIT_STATUSES",
+    "audit",
+    "audit_plan",
+    "audit_summary",
+    "model_base",
+    "read_plan_tables",
+]
 
 #: What the audit says of a sample (the ``status`` column), in the order the summary lists.
 AUDIT_STATUSES = ("seen", "hidden", "no wall")
@@ -62,6 +70,7 @@ def audit(
     heights are above flat ground (default: when its stations stand at ground height 0 and
     the model's ground is not at 0)."""
     met = coverage[coverage["meets"].astype(bool) & (coverage["station_id"] != "")]
+    _check_overlap(model, coverage)
     scene = scene or Scene(model, "rays")
     fac = facades.set_index("facade_id").loc[met["facade_id"]]
     along = np.column_stack([fac["x1"] - fac["x0"], fac["y1"] - fac["y0"]])
@@ -79,7 +88,7 @@ def audit(
         )
     p = met[["x", "y", "z"]].to_numpy(float).copy()
     if above_ground:  # heights above the ground, onto the model
-        p[:, 2] += _model_base(model, met["building_id"].to_numpy(object), p[:, :2])
+        p[:, 2] += model_base(model, met["building_id"].to_numpy(object), p[:, :2])
         s_z = scene.ground_z(s_xy) + st["instrument_height_m"].to_numpy(float)
     else:
         s_z = ground + st["instrument_height_m"].to_numpy(float)
@@ -111,8 +120,26 @@ def audit(
     return out
 
 
-def _model_base(model: Site, building_ids: np.ndarray, xy: np.ndarray) -> np.ndarray:
-    """The model's base of each sample's building (by id; else the ground there)."""
+def _check_overlap(model: Site, coverage: pd.DataFrame) -> None:
+    """A plan whose samples lie nowhere near the model's buildings is another site, or in
+    another CRS: said, not audited as all "no wall"."""
+    if not len(coverage):
+        return
+    x0, y0, x1, y1 = shapely.union_all([b.footprint for b in model.buildings]).bounds
+    x, y = coverage["x"].to_numpy(float), coverage["y"].to_numpy(float)
+    near = (x >= x0 - 50) & (x <= x1 + 50) & (y >= y0 - 50) & (y <= y1 + 50)
+    if near.mean() < 0.5:
+        raise InputError(
+            f"the plan's samples (about {np.median(x):.0f}, {np.median(y):.0f}) are not on the "
+            f"model's buildings ({x0:.0f}–{x1:.0f}, {y0:.0f}–{y1:.0f}); is it the plan of "
+            "this site, in the model's CRS (--crs)?"
+        )
+
+
+def model_base(model: Site, building_ids: np.ndarray, xy: np.ndarray) -> np.ndarray:
+    """The model's base [m] under each point of a plan made on flat ground (its heights
+    above the ground), to carry it onto the model: the base of the point's building by id,
+    else the model's ground there."""
     base = {b.id: float(b.base_z or 0.0) for b in model.buildings}
     out = np.array([base.get(str(b), np.nan) for b in building_ids], dtype=float)
     gap = ~np.isfinite(out)

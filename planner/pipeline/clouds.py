@@ -43,6 +43,9 @@ __all__ = ["CloudLink", "SurfaceCache", "Surfaces", "cloud_link", "overlap_matri
 #: Ground cells [m] and how far from a station its ground counts [m].
 GROUND_CELL_M = 2.0
 GROUND_REACH_M = 25.0
+#: A ground cell's sight line, cast as a ray, ends this far above the ground [m]: above the
+#: terrain's triangles and the clearance the lines beside it keep.
+GROUND_LIFT_M = 0.05
 
 
 @dataclass(frozen=True)
@@ -234,7 +237,10 @@ class SurfaceCache:
                 np.array([0, len(g_xy)]),
                 np.array([[*(sxy - GROUND_REACH_M), *(sxy + GROUND_REACH_M)]]),
             )
-            open_ = ctx.scene.seen(src, np.column_stack([g_xy, g_z]), groups=box)
+            # a cell's sight line ends on the ground: just above it where rays answer (the
+            # terrain's own triangles would block a line ending on them)
+            lift = 0.0 if ctx.scene.prisms else GROUND_LIFT_M
+            open_ = ctx.scene.seen(src, np.column_stack([g_xy, g_z + lift]), groups=box)
             g_xy, s, height = g_xy[open_], s[open_], height[open_]
             sin_e = height / s
             sigma2 = (sc.range_rms_at(s) * sin_e) ** 2 + (

@@ -30,6 +30,7 @@ __all__ = [
     "footprint_edges",
     "in_opening",
     "lower_roof_in_front",
+    "on_facade",
     "party_wall_mask",
     "sample_flags",
 ]
@@ -135,16 +136,11 @@ class FacadeSet:
 
     def place(self, f: np.ndarray, u: np.ndarray, h: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Points of facades ``f`` at ``u`` along them [m] and ``h`` above their building's
-        base [m]: their plan positions (P, 2) and heights (P,) [m], on the facade's plane
-        (a sloping wall leans in or out with the height)."""
+        base [m] (:func:`on_facade`)."""
         f = np.asarray(f, dtype=np.int64)
-        along = (self.end[f] - self.start[f]) / np.maximum(self.length_m[f], 1e-12)[:, None]
-        z = self.base_z[f] + h
-        nz = self.normal_z[f]
-        c = np.sqrt(np.clip(1.0 - nz**2, 1e-12, 1.0))
-        w = -nz * (z - self.z0[f]) / c  # how far out of the foot's vertical the plane is
-        xy = self.start[f] + u[:, None] * along + w[:, None] * self.normal[f]
-        return xy, z
+        return on_facade(
+            self.start[f], self.end[f], self.normal_z[f], self.z0[f], self.base_z[f], u, h
+        )
 
     def along_m(self, idx: np.ndarray | None = None) -> np.ndarray:
         """Each sample's distance along its facade from its start [m]."""
@@ -152,6 +148,36 @@ class FacadeSet:
         f = self.facade[idx]
         v = self.end[f] - self.start[f]
         return ((self.xy[idx] - self.start[f]) * v).sum(axis=1) / np.hypot(v[:, 0], v[:, 1])
+
+
+def on_facade(
+    start: np.ndarray,
+    end: np.ndarray,
+    normal_z: np.ndarray,
+    z0: np.ndarray,
+    base_z: np.ndarray,
+    u: np.ndarray,
+    h: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray]:
+    """Points on facades (each given by its foot ``start`` → ``end`` (P, 2), the vertical
+    part of its outward unit normal, its foot's height and its building's base (P,)) at
+    ``u`` along them and ``h`` above the base [m]: their plan positions (P, 2) and heights
+    (P,) [m] on the facade's plane — a sloping wall leans in or out with the height. The
+    one mapping of a facade's elevation to the site (samples, targets, the 3-D walls of the
+    files).
+
+    >>> xy, z = on_facade(np.array([[0.0, 0.0]]), np.array([[10.0, 0.0]]), np.array([0.5]),
+    ...                   np.array([3.0]), np.array([0.0]), np.array([4.0]), np.array([4.0]))
+    >>> xy.round(3).tolist(), z.tolist()  # 1 m up a wall leaning 30° back: 0.577 m in
+    ([[4.0, 0.577]], [4.0])
+    """
+    length = np.hypot(*(end - start).T).reshape(-1)
+    along = (end - start) / np.maximum(length, 1e-12)[:, None]
+    normal = np.column_stack([along[:, 1], -along[:, 0]])
+    z = base_z + h
+    c = np.sqrt(np.clip(1.0 - normal_z**2, 1e-12, 1.0))
+    w = -normal_z * (z - z0) / c  # how far out of the foot's vertical the plane is
+    return start + u[:, None] * along + w[:, None] * normal, z
 
 
 def _merge_ring(xy: np.ndarray, max_turn_deg: float, max_offset_m: float) -> list[tuple[int, int]]:
@@ -254,7 +280,7 @@ def build_facades(
         site, flat, sample_spacing_m, sample_height_step_m, merge_angle_deg, merge_offset_m
     )
     model = [b for b in site.planned if b.surfaces]
-    if model or site.terrain is not None:
+    if model or site.is_3d:
         if scene is None:
             from planner.pipeline.scene import Scene
 
@@ -263,8 +289,9 @@ def build_facades(
             fac = _joined(
                 fac, _model_facades(model, scene, sample_spacing_m, sample_height_step_m, roofs)
             )
-        fac = _above_ground(fac, scene)
-    return fac
+    wall, party = sample_flags(site, fac, fac.facade, fac.xy, fac.z, scene)
+    fac.party_wall = party
+    return fac if wall.all() else _subset(fac, wall)
 
 
 def _footprint_facades(
@@ -317,15 +344,10 @@ def _footprint_facades(
     s_f = col_f[s_col]
     s_z = base[s_f] + (r_in_c + 0.5) / n_rows[s_f] * height[s_f]
     s_xy = col_xy[s_col].reshape(-1, 2)
-    wall = ~in_opening(site, s_xy - OPENING_PROBE_M * normal[s_f], s_z)
-    s_col, r_in_c, s_f, s_z, s_xy = s_col[wall], r_in_c[wall], s_f[wall], s_z[wall], s_xy[wall]
     fid = np.array(f_id, dtype=object)
     sample_id = np.array(
         [f"{fid[f]}-{c:03d}-{r:02d}" for f, c, r in zip(s_f, k_in_f[s_col], r_in_c, strict=True)],
         dtype=object,
-    )
-    party = party_wall_mask(
-        site, np.array(f_b, dtype=object)[s_f], s_xy + PARTY_WALL_GAP_M * normal[s_f], s_z
     )
     return FacadeSet(
         building_id=np.array(f_b, dtype=object),
@@ -342,7 +364,7 @@ def _footprint_facades(
         xy=s_xy,
         z=s_z,
         sample_id=sample_id,
-        party_wall=party,
+        party_wall=np.zeros(len(s_z), dtype=bool),
         z0=base.copy(),
         base_z=base,
     )
@@ -380,14 +402,15 @@ def _model_facades(
     buildings: list, scene: Scene, spacing: float, step: float, roofs: bool
 ) -> FacadeSet:
     """The facades of buildings from a city model (:func:`build_facades`)."""
-    from planner.citymodel import demanded_kinds
+    from planner.citymodel import demanded_kinds, level_roof
 
     wanted = demanded_kinds(roofs)
     rows: list[dict] = []
     for b in buildings:
         k = 0
         base = float(b.base_z or 0.0)
-        for members in _planes([s for s in b.surfaces if s.kind in wanted]):
+        demanded = [s for s in b.surfaces if s.kind in wanted and not level_roof(s)]
+        for members in _planes(demanded):
             area = np.array([m.area_m2 for m in members])
             n3 = (np.array([m.normal for m in members]) * area[:, None]).sum(axis=0)
             n3 /= np.linalg.norm(n3)
@@ -470,7 +493,9 @@ def _sampled(rows: list[dict], spacing: float, step: float) -> FacadeSet:
         shape = r["outline"]
         u1, h0, h1 = float(fac.length_m[f]), r["z0"] - r["base"], r["z0"] - r["base"] + r["height"]
         nc = max(1, round(u1 / spacing))
-        nr = max(1, round((h1 - h0) / step))
+        # rows a step apart along the plane (a roof's slope rises less per step than a wall)
+        rise = step * max(float(np.sqrt(1.0 - r["normal_z"] ** 2)), 0.02)
+        nr = max(1, round((h1 - h0) / rise))
         uu = (np.arange(nc) + 0.5) * u1 / nc
         hh = h0 + (np.arange(nr) + 0.5) * (h1 - h0) / nr
         gu, gh = np.meshgrid(uu, hh, indexing="ij")
@@ -555,29 +580,6 @@ def _joined(a: FacadeSet, b: FacadeSet) -> FacadeSet:
     return FacadeSet(**out)
 
 
-def _above_ground(fac: FacadeSet, scene: Scene) -> FacadeSet:
-    """``fac`` without the samples below the ground in front of them (a wall on a slope is
-    partly buried: no wall to scan there), with the samples of a 3-D building's walls just
-    outside which another building or part stands flagged as party wall."""
-    keep, party = _flags_3d(fac, scene, fac.facade, fac.xy, fac.z)
-    fac.party_wall = fac.party_wall | party
-    return fac if keep.all() else _subset(fac, keep)
-
-
-def _flags_3d(
-    fac: FacadeSet, scene: Scene, s_f: np.ndarray, xy: np.ndarray, z: np.ndarray
-) -> tuple[np.ndarray, np.ndarray]:
-    """For points on facades ``s_f``: above the ground in front of them, and (3-D
-    buildings only) on a party wall — just outside, another building or part."""
-    probe = np.column_stack([xy, z]) + PARTY_WALL_GAP_M * fac.normal3[s_f]
-    keep = z >= scene.ground_z(probe[:, :2]) - 1e-6
-    party = np.zeros(len(z), dtype=bool)
-    model = np.isin(fac.building_id[s_f], [b.id for b in scene.site.planned if b.surfaces])
-    if model.any():
-        party[model] = scene.inside(probe[model]) != ""
-    return keep, party
-
-
 def sample_flags(
     site: Site,
     fac: FacadeSet,
@@ -586,19 +588,37 @@ def sample_flags(
     z: np.ndarray,
     scene: Scene | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
-    """For new points ``xy``, ``z`` on facades ``s_f`` (a zone's finer samples): whether
-    each is wall to scan (not in a passage's opening, not below the ground) and whether it
-    is on a party wall — the rules :func:`build_facades` applies."""
-    wall = ~in_opening(site, xy - OPENING_PROBE_M * fac.normal[s_f], z)
-    party = party_wall_mask(site, fac.building_id[s_f], xy + PARTY_WALL_GAP_M * fac.normal[s_f], z)
+    """For points ``xy``, ``z`` on facades ``s_f`` (samples, a zone's finer samples, flat
+    targets): whether each is wall to scan and whether it is on a party wall — the one
+    place these rules are written:
+
+    * not wall: in a passage's opening (below its clear height above the building's base),
+      or below the ground in front of it (a wall on a slope is partly buried);
+    * party wall: for a building drawn as a footprint, its point moved
+      :data:`PARTY_WALL_GAP_M` out lies in another building or obstacle at least as high
+      (:func:`party_wall_mask`); for a 3-D building, that point is inside another building
+      or part (:meth:`~planner.pipeline.scene.Scene.inside`: the first building surface
+      straight below it is that one's ground face)."""
+    wall = ~in_opening(site, xy - OPENING_PROBE_M * fac.normal[s_f], z - fac.base_z[s_f])
+    model = np.isin(fac.building_id[s_f], [b.id for b in site.planned if b.surfaces])
+    party = np.zeros(len(z), dtype=bool)
+    drawn = ~model
+    if drawn.any():
+        party[drawn] = party_wall_mask(
+            site,
+            fac.building_id[s_f[drawn]],
+            xy[drawn] + PARTY_WALL_GAP_M * fac.normal[s_f[drawn]],
+            z[drawn],
+        )
     if site.is_3d:
         if scene is None:
             from planner.pipeline.scene import Scene
 
             scene = Scene(site)
-        above, party_3d = _flags_3d(fac, scene, s_f, xy, z)
-        wall &= above
-        party |= party_3d
+        probe = np.column_stack([xy, z]) + PARTY_WALL_GAP_M * fac.normal3[s_f]
+        wall &= z >= scene.ground_z(probe[:, :2]) - 1e-6
+        if model.any():
+            party[model] = scene.inside(probe[model]) != ""
     return wall, party
 
 
@@ -649,21 +669,22 @@ def lower_roof_in_front(site: Site, fac: FacadeSet, samples: np.ndarray) -> np.n
     best = np.full(len(samples), -np.inf)
     for k, j in tree.query(shapely.points(probe), predicate="intersects").T:
         b = blds[j]
-        if b.id != owner[k] and b.height_m < z[k] and b.height_m > best[k]:
-            out[k], best[k] = b.id, b.height_m
+        if b.id != owner[k] and b.top_z < z[k] and b.top_z > best[k]:
+            out[k], best[k] = b.id, b.top_z
     return out
 
 
-def in_opening(site: Site, probe_xy: np.ndarray, z: np.ndarray) -> np.ndarray:
-    """Points (a wall's point moved :data:`OPENING_PROBE_M` into the building) in a
-    passage below its clear height: the opening of a gateway, where there is no wall."""
-    out = np.zeros(len(z), dtype=bool)
-    if not site.passages or not len(z):
+def in_opening(site: Site, probe_xy: np.ndarray, h: np.ndarray) -> np.ndarray:
+    """Points (a wall's point moved :data:`OPENING_PROBE_M` into the building, ``h`` [m]
+    above its building's base) in a passage below its clear height: the opening of a
+    gateway, where there is no wall."""
+    out = np.zeros(len(h), dtype=bool)
+    if not site.passages or not len(h):
         return out
     geoms = [p.geometry for p in site.passages]
     tree = shapely.STRtree(geoms)
     for k, j in tree.query(shapely.points(probe_xy), predicate="intersects").T:
-        if z[k] < site.passages[j].clear_height_m:
+        if h[k] < site.passages[j].clear_height_m:
             out[k] = True
     return out
 

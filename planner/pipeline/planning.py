@@ -20,6 +20,7 @@ import shapely
 
 from planner.accuracy import reach_bound_m
 from planner.accuracy3d import reach_bound_3d_m
+from planner.citymodel import LEVEL_ROOF_DEG, level_roof
 from planner.errors import InputError
 from planner.pipeline.candidates import candidate_grid
 from planner.pipeline.clock import Clock
@@ -180,14 +181,12 @@ def _prepare(
     )
     fac, sample_req, zones = apply_zones(site, fac, req, scene)
     if st.demand_roofs:
-        flat = [
-            s for b in site.planned for s in b.surfaces if s.kind == "roof" and s.normal[2] > 0.9
-        ]
-        if flat:
+        level = [s for b in site.planned for s in b.surfaces if level_roof(s)]
+        if level:
             messages.append(
-                f"Roofs demanded: {len(flat)} flat roof surface(s) (within 8° of level) "
-                "are not sampled — no station on the ground sees them; plan them from an "
-                "elevated station or the air"
+                f"Roofs demanded: {len(level)} level roof surface(s) (within "
+                f"{LEVEL_ROOF_DEG:g}° of level) are not sampled — no station on the ground sees "
+                "them; plan them from an elevated station or the air"
             )
     if len(fac.z) > st.max_samples:
         raise InputError(

@@ -46,15 +46,7 @@ from planner.cloud_registration import weakest_direction
 from planner.pipeline import clouds
 from planner.pipeline.clouds import CloudLink
 from planner.pipeline.evaluate import Context, Registration
-from planner.pipeline.facades import (
-    OPENING_PROBE_M,
-    PARTY_WALL_GAP_M,
-    SIGHT_OFFSET_M,
-    FacadeSet,
-    _flags_3d,
-    in_opening,
-    party_wall_mask,
-)
+from planner.pipeline.facades import SIGHT_OFFSET_M, FacadeSet, sample_flags
 from planner.pipeline.visibility import stand_blocks
 from planner.registration_error import (
     CONTROL,
@@ -114,7 +106,7 @@ def target_candidates(ctx: Context, stand_xy: np.ndarray) -> TargetCandidates:
     the inventory holds; and the site's control points."""
     fac, st = ctx.facades, ctx.settings
     types = {i.type for i in st.inventory}
-    xyz, kind, nrm, owner, wall = [], [], [], [], []
+    xyz, kind, nrm, wall = [], [], [], []
     if "flat" in types:
         heights = [st.target_height_m] + (
             [st.high_target_height_m] if st.high_target_height_m else []
@@ -124,34 +116,31 @@ def target_candidates(ctx: Context, stand_xy: np.ndarray) -> TargetCandidates:
                 continue
             n = max(1, round(fac.length_m[f] / st.target_spacing_m))
             top = fac.z0[f] + fac.height_m[f]
-            frac = (np.arange(n) + 0.5) / n
-            ground = ctx.scene.ground_z(
-                fac.start[f] + frac[:, None] * (fac.end[f] - fac.start[f]) + fac.normal[f]
-            )
             inner = _inner_outline(fac, f)
             for row, h in enumerate(heights):
                 if h > fac.height_m[f] - 0.2 and row > 0:
                     continue
+                frac = (np.arange(n) + 0.5 + 0.5 * row) / (n + 0.5 * row)  # the rows staggered
+                foot = fac.start[f] + frac[:, None] * (fac.end[f] - fac.start[f])
+                ground = ctx.scene.ground_z(foot + fac.normal[f])  # where the crew stands
                 for k in range(n):
-                    frac_k = (k + 0.5 + 0.5 * row) / (n + 0.5 * row)  # the rows staggered
                     z = min(ground[k] + h, top - 0.2)
-                    u, v = frac_k * fac.length_m[f], z - fac.base_z[f]
+                    u, v = frac[k] * fac.length_m[f], z - fac.base_z[f]
                     if inner is not None and not inner.contains(shapely.Point(u, v)):
                         continue  # not on the wall: above a gable's slope, below a set-back
-                    xyz.append([*(fac.start[f] + frac_k * (fac.end[f] - fac.start[f])), z])
+                    at = foot[k]
+                    if fac.tilted[f]:  # a wall leaning a little: on its plane at that height
+                        at = fac.place(np.array([f]), np.array([u]), np.array([v]))[0][0]
+                    xyz.append([*at, z])
                     kind.append("flat")
                     nrm.append(fac.normal[f])
-                    owner.append(fac.building_id[f])
                     wall.append(f)
         if xyz:
             walls = np.array(xyz)
-            probe = walls[:, :2] + PARTY_WALL_GAP_M * np.array(nrm)
-            keep = ~party_wall_mask(ctx.site, np.array(owner, dtype=object), probe, walls[:, 2])
-            inward = walls[:, :2] - OPENING_PROBE_M * np.array(nrm)
-            keep &= ~in_opening(ctx.site, inward, walls[:, 2])  # no wall in a gateway
-            if ctx.site.is_3d:
-                above, party = _flags_3d(fac, ctx.scene, np.array(wall), walls[:, :2], walls[:, 2])
-                keep &= above & ~party
+            wall_ok, party = sample_flags(
+                ctx.site, fac, np.array(wall), walls[:, :2], walls[:, 2], ctx.scene
+            )
+            keep = wall_ok & ~party  # on a wall to scan, not in a gateway, not a party wall
             xyz = [p for p, k in zip(xyz, keep, strict=True) if k]
             nrm = [p for p, k in zip(nrm, keep, strict=True) if k]
             kind = [p for p, k in zip(kind, keep, strict=True) if k]

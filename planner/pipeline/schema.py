@@ -290,19 +290,24 @@ def wall_rings(p: Plan) -> list[list[np.ndarray]]:
     """Every facade of the plan in 3-D, from its outline on its elevation
     (``outline_wkt``): per facade its rings (exterior first), each (n, 3) [m] in the site's
     CRS and height system."""
+    from planner.pipeline.facades import on_facade
+
     out = []
     for r in p.facades.itertuples():
-        shape = shapely.from_wkt(r.outline_wkt)
-        along = np.array([r.x1 - r.x0, r.y1 - r.y0]) / max(r.length_m, 1e-12)
-        normal = np.array([along[1], -along[0]])
-        c = math.sqrt(max(1.0 - r.normal_z**2, 1e-12))
         rings = []
-        for poly in shapely.get_parts(shape):
+        for poly in shapely.get_parts(shapely.from_wkt(r.outline_wkt)):
             for ring in [poly.exterior, *poly.interiors]:
                 uh = np.asarray(ring.coords)
-                z = r.base_z + uh[:, 1]
-                w = -r.normal_z * (z - r.z0) / c
-                xy = np.array([r.x0, r.y0]) + uh[:, :1] * along + w[:, None] * normal
+                n = len(uh)
+                xy, z = on_facade(
+                    np.tile([r.x0, r.y0], (n, 1)),
+                    np.tile([r.x1, r.y1], (n, 1)),
+                    np.full(n, r.normal_z),
+                    np.full(n, r.z0),
+                    np.full(n, r.base_z),
+                    uh[:, 0],
+                    uh[:, 1],
+                )
                 rings.append(np.column_stack([xy, z]))
         out.append(rings)
     return out

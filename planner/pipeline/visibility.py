@@ -298,8 +298,8 @@ def stand_blocks(
     stand_radius_m: float = STAND_RADIUS_M,
     clearance_m: float = SIGHT_CLEARANCE_M,
 ) -> np.ndarray:
-    """(N, M) mask: whether sight line n (``src_xyz`` → ``dst_xyz``, (N, 3) [m], heights above
-    the ground) is blocked by sphere target m (centre ``centre_xyz`` (M, 3), radius
+    """(N, M) mask: whether sight line n (``src_xyz`` → ``dst_xyz``, (N, 3) [m], heights in
+    the site's height system) is blocked by sphere target m (centre ``centre_xyz`` (M, 3), radius
     ``radius_m``, one or (M,)) or its stand (module text). Only an obstacle between the
     ends blocks: one beside or behind the target or the station does not; the caller leaves
     a target out of its own line's obstacles."""
