@@ -233,6 +233,8 @@ class PlanMap:
 
         self.others = lines(fill="inside", colors=["#bbb"], stroke_width=1)
         self.buildings = lines(fill="inside", colors=["#555"], stroke_width=1)
+        # a 3-D building's roof: its edges and ridges over the footprint
+        self.roofs = lines(colors=["#a9a9a9"], stroke_width=0.6)
         self.passages = lines(colors=[COLOURS["passage"]], line_style="dashed", stroke_width=2)
         self.problems = lines(colors=["#c0392b"], stroke_width=3)  # features that stop the plan
         self.route = lines(colors=[COLOURS["route"]], line_style="dashed", stroke_width=1.5)
@@ -365,6 +367,7 @@ class PlanMap:
             marks=[
                 self.others,
                 self.buildings,
+                self.roofs,
                 self.passages,
                 self.problems,
                 self.candidates,
@@ -527,13 +530,15 @@ class PlanMap:
         self.others.x, self.others.y = xs, ys
         xs, ys = _rings(a.geometry for a in site.passages)
         self.passages.x, self.passages.y = xs, ys
+        roof = [s.rings[0][:, :2] for b in site.buildings for s in b.surfaces if s.kind == "roof"]
+        self.roofs.x, self.roofs.y = _rows([np.vstack([r, r[:1]]) for r in roof])
         centres = [b.footprint.representative_point() for b in site.buildings]
         self._pick_ids = [b.id for b in site.buildings]
         with self.picks.hold_sync():
             self.picks.x = [c.x for c in centres]
             self.picks.y = [c.y for c in centres]
             self.picks.names = [
-                f"{b.id} ({f'{b.height_m:g} m' if heights_known else 'as drawn'}"
+                f"{b.id} ({f'{round(b.height_m, 1):g} m' if heights_known else 'as drawn'}"
                 f"{'' if b.planned else ', not planned'})"
                 for b in site.buildings
             ]
