@@ -178,7 +178,7 @@ def test_a_terrain_model_in_another_crs_or_not_a_geotiff_is_refused(tmp_path):
 
 
 def test_the_plan_and_audit_commands_on_a_city_model(tmp_path, capsys):
-    model = lod2_town(2, seed=2)
+    model = lod2_town(1, seed=2)
     path = write_model(model, tmp_path / "town.city.json")
     foot = tmp_path / "town.geojson"
     foot.write_text(json.dumps(footprints_geojson(model)))
@@ -197,6 +197,7 @@ def test_the_plan_and_audit_commands_on_a_city_model(tmp_path, capsys):
     assert "Heights: DHHN2016 height" in (tmp_path / "model" / "summary.txt").read_text()
     stations = pd.read_csv(tmp_path / "model" / "stations.csv")
     assert stations["ground_z"].between(480, 520).all()
+    assert "WALLS-3D" in (tmp_path / "model" / "plan.dxf").read_text()
     assert main(["plan", str(foot), *quick, "--out", str(tmp_path / "foot")]) in (0, 1)
     capsys.readouterr()
     assert main(["audit", str(path), "--plan", str(tmp_path / "foot")]) == 0
@@ -215,7 +216,7 @@ def test_the_plan_and_audit_commands_on_a_city_model(tmp_path, capsys):
     "name, buildings, spacing_m",
     [
         ("delft_3dbag.city.jsonl", ["NL.IMBAG.Pand.0503100000005156"], 3.0),  # not the sheds
-        ("munich_tum_entrance_lod2.citygml3.gml", None, 4.0),
+        ("munich_tum_entrance_lod2.citygml3.gml", None, 5.0),
     ],
 )
 def test_a_real_model_planned_end_to_end_promises_only_walls_it_sees(name, buildings, spacing_m):
@@ -327,3 +328,21 @@ def test_a_plan_of_another_site_is_not_audited_as_all_wallless(town, default_pla
     p = default_plan
     with pytest.raises(InputError, match="not on the model's buildings"):
         audit(town[1], p.coverage, p.facades, p.stations)
+
+
+def test_a_district_block_of_a_model_keeps_its_terrain_and_heights(town):
+    """District mode plans a model block by block: each block's site (and a seam's context)
+    stands on the model's terrain, in its heights (before, a block stood on flat ground at
+    0 m under buildings 500 m up, and saw nothing)."""
+    from planner.pipeline.district import Block, block_site
+    from planner.pipeline.seams import context_of
+
+    site = town[1]
+    b = site.buildings[0]
+    block = block_site(site, Block("K01", (b.id,), b.footprint), 30.0)
+    assert block.terrain is site.terrain and block.height_datum == site.height_datum
+    assert [x.id for x in block.planned] == [b.id]
+    sc = load_scanner("leica-4mm-60urad")
+    ctx = context_of(site, sc, Requirements(), PlanSettings(), 60.0)(b.footprint.buffer(5))
+    xy = np.array([[690_030.0, 5_336_000.0]])
+    assert ctx.station_z(xy)[0] == pytest.approx(site.terrain.ground_z(xy)[0] + 1.5)

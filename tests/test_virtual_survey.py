@@ -80,18 +80,18 @@ def test_in_a_3d_world_the_survey_catches_a_footprint_plans_false_promises():
     from planner.siteio import site_from_geojson
     from planner.synthetic3d import footprints_geojson, lod2_town
 
-    town = lod2_town(4, seed=1)
+    town = lod2_town(3, seed=1)
     model = site_from_cityjson(town)
     st = PlanSettings(
         grid_m=3.0, sample_spacing_m=3.0, sample_height_step_m=3.0, time_limit_s=30, method="greedy"
     )
     world = world_of(plan(model, settings=st), model)
-    from_model = report(survey(world, trials=40, noise_trials=4000))
+    from_model = report(survey(world, trials=20, noise_trials=2000))
     assert from_model["unreached"] == 0
     assert from_model["false_meets_3se"] == 0, from_model
     drawn = site_from_geojson(footprints_geojson(town))
     from_footprints = report(
-        survey(world_of(plan(drawn, settings=st), model), trials=40, noise_trials=4000)
+        survey(world_of(plan(drawn, settings=st), model), trials=20, noise_trials=2000)
     )
     assert from_footprints["unreached_met"] > 0.25 * from_footprints["met"]
     assert from_footprints["false_meets_3se"] >= from_footprints["unreached_met"]

@@ -185,6 +185,8 @@ def block_site(site: Site, block: Block, halo_m: float) -> Site:
         name=f"{site.name} {block.key}",
         limits=site.limits,
         near_m=site.near_m,
+        terrain=site.terrain,
+        height_datum=site.height_datum,
         control=[c for c in site.control if region.contains(shapely.Point(c.x, c.y))],
         zones=[
             z

@@ -323,6 +323,8 @@ def context_of(site: Site, scanner, req, settings, reach: float):
             crs=site.crs,
             limits=site.limits,
             near_m=site.near_m,
+            terrain=site.terrain,
+            height_datum=site.height_datum,
         )
         fac = build_facades(sub, 10.0, 10.0)
         return Context.build(sub, fac, scanner, req, settings, reach)
