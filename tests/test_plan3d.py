@@ -284,7 +284,7 @@ def test_a_plain_mesh_gives_the_footprints_their_3d_shape(tmp_path, suffix):
 
     from planner.cityio import footprints_of, with_mesh
 
-    model = site_from_cityjson(lod2_town(3, seed=1, slope=0.0, trees=0))
+    model = site_from_cityjson(lod2_town(2, seed=1, slope=0.0, trees=0))
     tri = np.concatenate([s.triangles for b in model.buildings for s in b.surfaces])
     offset = np.array([690_000.0, 5_336_000.0, 500.0])
     v = (tri - offset).reshape(-1, 3)

@@ -90,7 +90,7 @@ def test_rays_and_prisms_agree_on_footprints(site):
     assert Scene(site).engine == "prisms"
     rng = np.random.default_rng(3)
     x0, y0, x1, y1 = rays._extent()
-    n = 20_000
+    n = 10_000
     ends = [
         np.column_stack(
             [
@@ -109,7 +109,7 @@ def test_rays_and_prisms_agree_on_footprints(site):
     src, dst = ends[0][out], ends[1][out]
     by_rays = ~rays.occluded(src, dst - src)
     by_prisms = _prism_seen(rays, src, dst)
-    assert len(src) > 10_000 and 0.2 < by_rays.mean() < 0.9
+    assert len(src) > 5_000 and 0.2 < by_rays.mean() < 0.9
     assert (by_rays != by_prisms).sum() <= 1  # a line grazing an edge within rounding
 
 

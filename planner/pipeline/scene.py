@@ -35,7 +35,13 @@ from planner.errors import InputError
 from planner.mesh import cap, crown_triangles, extrude
 from planner.pipeline.facades import bridge_edges, footprint_edges
 from planner.pipeline.requirements import SIGHT_ENGINES as ENGINES
-from planner.pipeline.visibility import SIGHT_CLEARANCE_M, bridge_interval, clear_height, visible
+from planner.pipeline.visibility import (
+    SIGHT_CLEARANCE_M,
+    bridge_interval,
+    clear_height,
+    edges_in_box,
+    visible,
+)
 from planner.site import Site
 
 __all__ = ["ENGINES", "TRIANGLE_KINDS", "Scene"]
@@ -237,13 +243,33 @@ class Scene:
         if not len(src):
             return np.zeros(0, dtype=bool)
         if self.prisms:
+            # the edges within the lines' reach: one box round the groups' (or the lines)
+            if groups is not None:
+                lo_xy, hi_xy = groups[1][:, :2].min(axis=0), groups[1][:, 2:].max(axis=0)
+            else:
+                lo_xy = np.minimum(src[:, :2].min(axis=0), dst[:, :2].min(axis=0))
+                hi_xy = np.maximum(src[:, :2].max(axis=0), dst[:, :2].max(axis=0))
+            near = edges_in_box(self.edges, (*lo_xy, *hi_xy))
             zc = clear_height(
-                src[:, :2], src[:, 2], dst[:, :2], self.edges, self.edge_heights, groups=groups
+                src[:, :2],
+                src[:, 2],
+                dst[:, :2],
+                self.edges[near],
+                self.edge_heights[near],
+                groups=groups,
             )
             lo = up = None
             b_edges, bottoms, tops = self.bridges
-            if len(b_edges):
-                lo, up = bridge_interval(src[:, :2], src[:, 2], dst[:, :2], b_edges, bottoms, tops)
+            crossed = edges_in_box(b_edges, (*lo_xy, *hi_xy)) if len(b_edges) else []
+            if np.any(crossed):
+                lo, up = bridge_interval(
+                    src[:, :2],
+                    src[:, 2],
+                    dst[:, :2],
+                    b_edges[crossed],
+                    bottoms[crossed],
+                    tops[crossed],
+                )
             return visible(dst[:, 2], zc, lo, up)
         return ~self.occluded(src, dst - src, clearance_m=SIGHT_CLEARANCE_M)
 
