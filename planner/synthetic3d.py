@@ -64,6 +64,18 @@ def _box(x0, x1, y0, y1, z0, z1, wall="WallSurface", top="RoofSurface", bottom="
     return out
 
 
+def _long_wall(hw: float, hd: float, z0: float, z1: float, sy: int) -> Ring:
+    """The rectangular wall at ``y = sy·hd`` from ``z0`` to ``z1``, facing outward."""
+    r = np.array([[-hw, sy * hd, z0], [hw, sy * hd, z0], [hw, sy * hd, z1], [-hw, sy * hd, z1]])
+    return r if sy < 0 else r[::-1]
+
+
+def _end_wall(hw: float, hd: float, z0: float, z1: float, sx: int) -> Ring:
+    """The rectangular wall at ``x = sx·hw`` from ``z0`` to ``z1``, facing outward."""
+    r = np.array([[sx * hw, -hd, z0], [sx * hw, hd, z0], [sx * hw, hd, z1], [sx * hw, -hd, z1]])
+    return r if sx > 0 else r[::-1]
+
+
 def _pitched(
     w: float, d: float, z0: float, eave: float, roof: str, pitch_deg: float, over: float, rng
 ):
@@ -86,10 +98,7 @@ def _pitched(
             r = np.array(pts, float)
             out.append(("WallSurface", [r if sx > 0 else r[::-1]]))
         for sy in (-1, 1):
-            r = np.array(
-                [[-hw, sy * hd, z0], [hw, sy * hd, z0], [hw, sy * hd, eave], [-hw, sy * hd, eave]]
-            )
-            out.append(("WallSurface", [r if sy < 0 else r[::-1]]))
+            out.append(("WallSurface", [_long_wall(hw, hd, z0, eave, sy)]))
             ro = np.array(
                 [
                     [-hw - over, sy * (hd + over), zo],
@@ -104,10 +113,7 @@ def _pitched(
         ridge = eave + hd * t
         inset = hd  # the hips rise at the same pitch: the ridge stops hd short of each end
         for sy in (-1, 1):
-            r = np.array(
-                [[-hw, sy * hd, z0], [hw, sy * hd, z0], [hw, sy * hd, eave], [-hw, sy * hd, eave]]
-            )
-            out.append(("WallSurface", [r if sy < 0 else r[::-1]]))
+            out.append(("WallSurface", [_long_wall(hw, hd, z0, eave, sy)]))
             ro = np.array(
                 [
                     [-hw - over, sy * (hd + over), zo],
@@ -118,10 +124,7 @@ def _pitched(
             )
             out.append(("RoofSurface", [ro if sy < 0 else ro[::-1]]))
         for sx in (-1, 1):
-            r = np.array(
-                [[sx * hw, -hd, z0], [sx * hw, hd, z0], [sx * hw, hd, eave], [sx * hw, -hd, eave]]
-            )
-            out.append(("WallSurface", [r if sx > 0 else r[::-1]]))
+            out.append(("WallSurface", [_end_wall(hw, hd, z0, eave, sx)]))
             ro = np.array(
                 [
                     [sx * (hw + over), -hd - over, zo],
@@ -137,10 +140,7 @@ def _pitched(
         top = eave + steep
         ridge = top + (hd - inset) * math.tan(math.radians(20.0))
         for sy in (-1, 1):
-            r = np.array(
-                [[-hw, sy * hd, z0], [hw, sy * hd, z0], [hw, sy * hd, eave], [-hw, sy * hd, eave]]
-            )
-            out.append(("WallSurface", [r if sy < 0 else r[::-1]]))
+            out.append(("WallSurface", [_long_wall(hw, hd, z0, eave, sy)]))
             s = np.array(
                 [
                     [-hw, sy * hd, eave],
@@ -160,10 +160,7 @@ def _pitched(
             )
             out.append(("RoofSurface", [ro if sy < 0 else ro[::-1]]))
         for sx in (-1, 1):
-            r = np.array(
-                [[sx * hw, -hd, z0], [sx * hw, hd, z0], [sx * hw, hd, eave], [sx * hw, -hd, eave]]
-            )
-            out.append(("WallSurface", [r if sx > 0 else r[::-1]]))
+            out.append(("WallSurface", [_end_wall(hw, hd, z0, eave, sx)]))
             s = np.array(
                 [
                     [sx * hw, -hd, eave],

@@ -109,8 +109,13 @@ def _grid_triangles(pts: np.ndarray) -> np.ndarray:
     a, b = pts[:-1, :-1].reshape(-1, 3), pts[:-1, 1:].reshape(-1, 3)
     c, d = pts[1:, 1:].reshape(-1, 3), pts[1:, :-1].reshape(-1, 3)
     tri = np.concatenate([np.stack([a, b, c], axis=1), np.stack([a, c, d], axis=1)])
-    up = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])[:, 2] < 0
-    tri[up] = tri[up][:, ::-1]
+    return _facing_up(tri)
+
+
+def _facing_up(tri: np.ndarray) -> np.ndarray:
+    """``tri`` (T, 3, 3) with every downward-facing triangle reversed in place."""
+    down = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])[:, 2] < 0
+    tri[down] = tri[down][:, ::-1]
     return tri
 
 
@@ -158,10 +163,7 @@ class TinTerrain(Terrain):
         lo, hi = tri[:, :, :2].min(axis=1), tri[:, :, :2].max(axis=1)
         keep = (hi[:, 0] >= bounds[0]) & (lo[:, 0] <= bounds[2])
         keep &= (hi[:, 1] >= bounds[1]) & (lo[:, 1] <= bounds[3])
-        tri = tri[keep].copy()
-        down = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])[:, 2] < 0
-        tri[down] = tri[down][:, ::-1]
-        return tri
+        return _facing_up(tri[keep].copy())
 
     @property
     def z_range(self) -> tuple[float, float]:

@@ -385,8 +385,8 @@ class StationPlanner:
             "imaging": self.imaging,
             "demand_roofs": self.demand_roofs,
             "sight_engine": self.sight_engine,
+            "inventory": self.inventory,
         }
-        extra["inventory"] = self.inventory
         sections: list[w.Widget] = [w.HTML("<b>Requirements</b>")]
         sections += [self.more[n] for n in rq if n in self.more]
         for key, title in SETTING_GROUPS.items():
