@@ -480,10 +480,8 @@ class Site:
         """Every building's ``base_z``: given, else the lowest ground under its outline
         (0 on flat ground)."""
         for b in self.buildings:
-            if b.base_z is not None:
-                object.__setattr__(b, "base_z", float(b.base_z))
-                continue
-            object.__setattr__(b, "base_z", self.ground_under(b.footprint))
+            z = self.ground_under(b.footprint) if b.base_z is None else b.base_z
+            object.__setattr__(b, "base_z", float(z))
 
     @property
     def height_system(self) -> str:

@@ -90,11 +90,6 @@ class Context:
     settings: PlanSettings
     reach_m: float
     scene: Scene  # every sight line is answered here
-    edges: np.ndarray  # (M, 4) every blocking footprint edge
-    edge_heights: np.ndarray  # (M,)
-    bridges: tuple[
-        np.ndarray, np.ndarray, np.ndarray
-    ]  # the floors over passages: edges, bottoms, tops
     edge_mask: list[np.ndarray]  # per facade: edges that can block its sight lines
     cols_of: list[np.ndarray]  # per facade: its columns
     samples_of: list[np.ndarray]  # per facade: its samples
@@ -123,8 +118,6 @@ class Context:
         ``scene`` the sight lines' (made for ``site`` with the settings' engine when not
         given)."""
         scene = scene or Scene(site, settings.sight_engine)
-        edges, heights = scene.edges, scene.edge_heights
-        bridges = scene.bridges
         masks, cols_of, samples_of = [], [], []
         col_order = np.argsort(facades.col_facade, kind="stable")
         smp_order = np.argsort(facades.facade, kind="stable")
@@ -140,7 +133,7 @@ class Context:
                 max(a[0], e[0]) + reach,
                 max(a[1], e[1]) + reach,
             )
-            masks.append(np.flatnonzero(edges_in_front(edges, a, facades.normal[f], bbox)))
+            masks.append(np.flatnonzero(edges_in_front(scene.edges, a, facades.normal[f], bbox)))
             cols_of.append(col_order[col_bounds[f] : col_bounds[f + 1]])
             samples_of.append(smp_order[smp_bounds[f] : smp_bounds[f + 1]])
         sample_req = sample_req or SampleRequirements.uniform(req, len(facades.z))
@@ -152,9 +145,6 @@ class Context:
             settings=settings,
             reach_m=reach,
             scene=scene,
-            edges=edges,
-            edge_heights=heights,
-            bridges=bridges,
             edge_mask=masks,
             cols_of=cols_of,
             samples_of=samples_of,
@@ -162,6 +152,21 @@ class Context:
             limits=sample_req.limits,
             stations_needed=sample_req.stations,
         )
+
+    @property
+    def edges(self) -> np.ndarray:
+        """(M, 4) every blocking footprint edge (the scene's)."""
+        return self.scene.edges
+
+    @property
+    def edge_heights(self) -> np.ndarray:
+        """(M,) the top of each edge [m] (the scene's)."""
+        return self.scene.edge_heights
+
+    @property
+    def bridges(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The floors over passages: edges, bottoms, tops (the scene's)."""
+        return self.scene.bridges
 
     @cached_property
     def regions(self) -> GroundRegions:

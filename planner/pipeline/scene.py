@@ -118,9 +118,6 @@ class Scene:
     def above_ground(self, xy: np.ndarray, height_m: float) -> np.ndarray:
         """Heights [m] ``height_m`` above the ground at ``xy`` (P, 2): where an instrument or
         a target on a stand is (exactly ``height_m`` on flat ground)."""
-        xy = np.asarray(xy, dtype=float).reshape(-1, 2)
-        if self.site.terrain is None:
-            return np.full(len(xy), float(height_m))
         return self.ground_z(xy) + height_m
 
     # -- the mesh -----------------------------------------------------------------------------
