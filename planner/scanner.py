@@ -25,6 +25,7 @@ from numpy.typing import ArrayLike
 from planner._array import as_float_array
 from planner.atomic import write_text_atomic
 from planner.errors import InputError
+from planner.numbers import RANGES, check_number
 
 __all__ = [
     "DEFAULT_SCANNER",
@@ -71,15 +72,13 @@ class Preset:
         who = f"preset {self.name!r}"
         if not isinstance(self.name, str) or not self.name.strip():
             raise InputError("a scanner preset needs a name (the maker's name of the setting)")
-        object.__setattr__(
-            self,
-            "step_mm_at_10m",
-            _number(self.step_mm_at_10m, f"{who}: step_mm_at_10m", "mm", lo=0.0, open_lo=True),
-        )
-        for key, unit in (("rate_hz", "points/s"), ("scan_s", "s")):
-            if getattr(self, key) is not None:
-                value = _number(getattr(self, key), f"{who}: {key}", unit, lo=0.0, open_lo=True)
-                object.__setattr__(self, key, value)
+        for key, rng in (
+            ("step_mm_at_10m", "step_mm_at_10m"),
+            ("rate_hz", "measurement_rate_hz"),
+            ("scan_s", "scan_s"),
+        ):
+            if key == "step_mm_at_10m" or getattr(self, key) is not None:
+                object.__setattr__(self, key, _number(getattr(self, key), f"{who}: {key}", rng))
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -163,29 +162,26 @@ class Scanner:
         if not isinstance(self.name, str) or not self.name.strip():
             raise InputError("Scanner name must be a non-empty text, e.g. name='my-p20'")
         who = f"Scanner {self.name!r}"
-        positive = {
-            "range_rms_mm": "mm",
-            "angle_rms_arcsec": "arc-seconds",
-            "step_mm_at_10m": "mm",
-            "max_range_m": "m",
+        # each figure's range (planner.numbers.RANGES); the optional ones may be None
+        figures = {
+            "range_rms_mm": "range_rms_mm",
+            "range_ppm": "range_ppm",
+            "angle_rms_arcsec": "angle_rms_arcsec",
+            "step_mm_at_10m": "step_mm_at_10m",
+            "max_range_m": "max_range_m",
+            "min_range_m": "min_range_m",
+            "imaging_s": "imaging_s",
         }
-        optional_positive = {
-            "vertical_angle_rms_arcsec": "arc-seconds",
-            "measurement_rate_hz": "points/s",
-            "levelling_rms_arcsec": "arc-seconds",
-            "beam_divergence_mrad": "mrad",
-            "beam_exit_mm": "mm",
+        optional = {
+            "vertical_angle_rms_arcsec": "angle_rms_arcsec",
+            "measurement_rate_hz": "measurement_rate_hz",
+            "levelling_rms_arcsec": "angle_rms_arcsec",
+            "beam_divergence_mrad": "beam_divergence_mrad",
+            "beam_exit_mm": "beam_exit_mm",
         }
-        for name, unit in positive.items():
-            self._set(
-                name, _number(getattr(self, name), f"{who}: {name}", unit, lo=0.0, open_lo=True)
-            )
-        for name, unit in optional_positive.items():
-            if getattr(self, name) is not None:
-                value = _number(getattr(self, name), f"{who}: {name}", unit, lo=0.0, open_lo=True)
-                self._set(name, value)
-        self._set("range_ppm", _number(self.range_ppm, f"{who}: range_ppm", "ppm", lo=0.0))
-        self._set("min_range_m", _number(self.min_range_m, f"{who}: min_range_m", "m", lo=0.0))
+        for name, rng in [*figures.items(), *optional.items()]:
+            if name in figures or getattr(self, name) is not None:
+                self._set(name, _number(getattr(self, name), f"{who}: {name}", rng))
         if self.min_range_m >= self.max_range_m:
             raise InputError(
                 f"{who}: min_range_m ({self.min_range_m:g} m) must be smaller than max_range_m "
@@ -220,7 +216,6 @@ class Scanner:
                 f"{who}: default_preset {self.default_preset!r} is not one of its presets "
                 f"({', '.join(names) or 'none'})"
             )
-        self._set("imaging_s", _number(self.imaging_s, f"{who}: imaging_s", "s", lo=0.0))
         if not isinstance(self.sector_scan, bool):
             raise InputError(f"{who}: sector_scan must be true or false")
         if not self.label:
@@ -444,14 +439,9 @@ def check_profile_name(name: str) -> str:
     return key
 
 
-def _number(value: Any, what: str, unit: str, *, lo: float, open_lo: bool = False) -> float:
-    if isinstance(value, bool) or not isinstance(value, int | float | np.integer | np.floating):
-        raise InputError(f"{what} must be a number [{unit}]; got {value!r}")
-    v = float(value)
-    rule = f"> {lo:g}" if open_lo else f">= {lo:g}"
-    if not math.isfinite(v) or (v <= lo if open_lo else v < lo):
-        raise InputError(f"{what} must be a finite number {rule} [{unit}]; got {v!r}")
-    return v
+def _number(value: Any, what: str, rng: str) -> float:
+    """A profile's figure checked against its physical range (:data:`planner.numbers.RANGES`)."""
+    return check_number(value, what, RANGES[rng])
 
 
 def _toml_value(value: Any) -> str:
@@ -474,6 +464,11 @@ def _parse_toml(text: str, origin: str) -> list[Scanner]:
     except tomllib.TOMLDecodeError as exc:
         raise InputError(
             f"{origin} is not valid TOML ({exc}); see planner/data/scanners.toml"
+        ) from None
+    except RecursionError:
+        raise InputError(
+            f"{origin} nests its arrays or tables too deeply to be a scanner profile (a "
+            "profile is [[scanner]] tables of key = value pairs)"
         ) from None
     tables = data.get("scanner")
     if tables is None and "name" in data:

@@ -414,12 +414,9 @@ def _height_of(props: dict[str, Any], geom: BaseGeometry | None, storey_height_m
 
 
 def _check_storey_height(storey_height_m: float) -> None:
-    if not (
-        isinstance(storey_height_m, int | float)
-        and not isinstance(storey_height_m, bool)
-        and 0 < storey_height_m <= 20
-    ):
-        raise InputError(f"the storey height must be > 0 and <= 20 m; got {storey_height_m!r}")
+    from planner.numbers import RANGES
+
+    RANGES["storey_height_m"].check(storey_height_m, "the storey height")
 
 
 def _role_of(props: dict[str, Any]) -> str | None:
@@ -1016,29 +1013,14 @@ def _file_features(path: Any, crs: str | None) -> tuple[list[Feature], str | Non
 # -- GeoPackage, Shapefile, KML/KMZ (GDAL through pyogrio) -----------------------------------
 def _gis_features(p: Path, kind: str) -> tuple[list[Feature], str | None]:
     """Every layer's features, with roles, heights and ids mapped (see the module's text),
-    and the file's CRS."""
-    import pyogrio  # heavy (GDAL): only when such a file is read
-    from pyogrio.errors import DataLayerError, DataSourceError
+    and the file's CRS. Read by the extension's own GDAL driver only (:mod:`planner.gdalio`)."""
+    from planner import gdalio
 
-    try:
-        layers = pyogrio.list_layers(p)
-    except (DataSourceError, DataLayerError) as exc:
-        hint = (
-            "; a shapefile is several files side by side (.shp, .shx, .dbf and .prj for its "
-            "CRS): copy them all"
-            if kind == "Shapefile"
-            else f"; export it again as {kind}"
-        )
-        raise InputError(f"{p.name}: cannot open it as {kind} ({_first_line(exc)}){hint}") from None
+    names = gdalio.layers(p, kind)
     features: list[Feature] = []
     crs_seen: dict[str, str] = {}
-    for layer, _ in layers:
-        try:
-            meta, _, wkb, values = pyogrio.raw.read(p, layer=layer)
-        except (DataSourceError, DataLayerError) as exc:
-            raise InputError(
-                f"{p.name}: cannot read layer {layer!r} ({_first_line(exc)})"
-            ) from None
+    for layer in names:
+        meta, _, wkb, values = gdalio.read_layer(p, kind, layer)
         if len(wkb) == 0:
             continue
         if meta.get("crs"):
@@ -1060,10 +1042,6 @@ def _gis_features(p: Path, kind: str) -> tuple[list[Feature], str | None]:
             "them in one"
         )
     return features, next(iter(crs_seen.values()), None)
-
-
-def _first_line(exc: BaseException) -> str:
-    return (str(exc).splitlines() or [type(exc).__name__])[0][:200]
 
 
 def _layer_role(name: str) -> str | None:

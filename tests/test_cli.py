@@ -71,9 +71,9 @@ def test_scanners_lists_the_catalogue():
     [
         (["accuracy", "--scanner", "nope"], "Unknown scanner 'nope'"),
         (["accuracy", "--distances", "10,x"], "comma-separated numbers"),
-        (["accuracy", "--distances", "-10"], "distance_m must satisfy distance_m >= 0"),
-        (["accuracy", "--angles", "100"], "-90 <= gamma_deg <= 90"),
-        (["targets", "--step-mm-at-10m", "0"], "step_mm_at_10m must be one number > 0"),
+        (["accuracy", "--distances", "-10"], "argument --distances: must be > 0 and <= 10000 [m]"),
+        (["accuracy", "--angles", "100"], "argument --angles: must be >= -90 and <= 90 [deg]"),
+        (["targets", "--step-mm-at-10m", "0"], "must be >= 0.01 and <= 1000 [mm]"),
         (["accuracy", "--scanner", "missing.toml"], "does not exist"),
     ],
 )

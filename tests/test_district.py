@@ -188,7 +188,7 @@ def test_a_worker_that_dies_on_the_bound_leaves_the_plan_standing(tmp_path):
 @pytest.mark.parametrize(
     ("option", "message"),
     [
-        (("--workers", "0"), "--workers must be at least 1"),
+        (("--workers", "0"), "argument --workers: must be a whole number >= 1"),
         (("--worker-memory", "lots"), "worker memory 'lots' is not a size"),
         (("--worker-memory", "100MB"), "at least 256 MB"),
     ],

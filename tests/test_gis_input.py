@@ -149,7 +149,7 @@ def test_broken_gis_files_exit_2_with_a_message(tmp_path):
     bad = tmp_path / "bad.gpkg"
     bad.write_bytes(b"not a geopackage" * 64)
     code, _, err = cli("plan", str(bad), "--out", str(tmp_path / "p"), "-q")
-    assert code == 2 and "bad.gpkg: cannot open it as GeoPackage" in err
+    assert code == 2 and "bad.gpkg has the extension .gpkg but is not a GeoPackage" in err
     assert "Traceback" not in err and not (tmp_path / "p").exists()
 
 

@@ -47,7 +47,7 @@ def test_report_bad_input_exits_2(tmp_path):
         "--out",
         str(tmp_path / "r.html"),
     )
-    assert code == 2 and "max_z_mm must be > 0" in err
+    assert code == 2 and "max_z_mm must be >= 0.01" in err
     assert not (tmp_path / "r.html").exists()
     code, _, err = run(
         "report",

@@ -525,7 +525,7 @@ def test_baseline_outliers_are_flagged(tmp_path):
         (["report", "--out", "{tmp}"], "must name an .html file"),
         (["report", "--out", "{tmp}/dir.html"], "is a folder"),
         (["plan", "--out", "{tmp}/x", "--scanner", "no-such-scanner"], "Unknown scanner"),
-        (["plan", "--out", "{tmp}/x", "--max-z-mm", "-1"], "max_z_mm must be > 0"),
+        (["plan", "--out", "{tmp}/x", "--max-z-mm", "-1"], "max_z_mm must be >= 0.01"),
         (["plan", "--out", "{tmp}/x", "--max-gamma-deg", "95"], "max_gamma_deg must be > 0 and"),
         (["plan", "--out", "{tmp}/x", "--buildings", "nope"], "no building with id"),
         (["plan", "--out", "{tmp}/x", "--inventory", "{tmp}/inv.txt"], "inventory line 1"),

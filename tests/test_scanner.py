@@ -70,11 +70,14 @@ def test_constructor_of_the_public_api():
 @pytest.mark.parametrize(
     ("field", "value", "message"),
     [
-        ("range_rms_mm", -1.0, "range_rms_mm must be a finite number > 0 [mm]"),
-        ("range_rms_mm", 0.0, "range_rms_mm must be a finite number > 0"),
-        ("angle_rms_arcsec", math.nan, "angle_rms_arcsec must be a finite number > 0"),
+        ("range_rms_mm", -1.0, "range_rms_mm must be >= 0.01 and <= 1000 [mm]"),
+        ("range_rms_mm", 0.0, "range_rms_mm must be >= 0.01"),
+        ("range_rms_mm", 1e-300, "range_rms_mm must be >= 0.01"),  # no division by ~0
+        ("range_rms_mm", 1e308, "range_rms_mm must be >= 0.01 and <= 1000 [mm]"),
+        ("angle_rms_arcsec", math.nan, "angle_rms_arcsec must be >= 0.01 and <= 3600"),
+        ("measurement_rate_hz", 1e-300, "measurement_rate_hz must be >= 100"),
         ("vertical_angle_rms_arcsec", -2.0, "vertical_angle_rms_arcsec"),
-        ("range_ppm", -5.0, "range_ppm must be a finite number >= 0 [ppm]"),
+        ("range_ppm", -5.0, "range_ppm must be >= 0 and <= 10000 [ppm]"),
         ("step_mm_at_10m", 0.0, "step_mm_at_10m"),
         ("min_range_m", 130.0, "min_range_m (130 m) must be smaller than max_range_m (120 m)"),
         ("max_range_m", math.inf, "max_range_m"),

@@ -175,7 +175,7 @@ BAD_ZONES = [
     ("facade=nowhere-f00,max_xy_mm=4", "not a building"),
     ("facade=main-f00,mx_xy_mm=4", "did you mean 'max_xy_mm'"),
     ("facade=main-f00,max_xy_mm=four", "max_xy_mm must be a number"),
-    ("facade=main-f00,max_xy_mm=-1", "max_xy_mm must be > 0"),
+    ("facade=main-f00,max_xy_mm=-1", "max_xy_mm must be >= 0.01"),
     ("max_xy_mm=4", "give a building_id or a facade_id"),
     ("facade=main-f00,building=main,max_xy_mm=4", "one of them"),
     ("facade=main-f00,from=10,to=4,max_xy_mm=4", "must run from a number >= 0 to a larger one"),

@@ -28,6 +28,7 @@ from pathlib import Path
 import pandas as pd
 
 from planner.errors import InputError, PlannerError
+from planner.numbers import argument
 from planner.scanner import DEFAULT_SCANNER, Scanner, catalogue, load_scanner
 from planner.tables import (
     PAPER_DISTANCES_M,
@@ -65,6 +66,17 @@ def _floats(text: str) -> list[float]:
     if not values:
         raise argparse.ArgumentTypeError("expected at least one number")
     return values
+
+
+def _floats_in(name: str) -> Callable[[str], list[float]]:
+    """Comma-separated numbers, each within ``RANGES[name]`` (:mod:`planner.numbers`)."""
+    one = argument(name)
+
+    def parse(text: str) -> list[float]:
+        return [one(str(v)) for v in _floats(text)]
+
+    parse.__name__ = name
+    return parse
 
 
 def _fmt(df: pd.DataFrame, fmt: str, decimals: int = 1) -> str:
@@ -636,7 +648,7 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
     )
     pl.add_argument(
         "--mesh-offset",
-        type=_floats,
+        type=_floats_in("offset_m"),
         default=None,
         metavar="E,N,H",
         help="added to the mesh's coordinates (a mesh in local coordinates) [m]",
@@ -658,14 +670,14 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
     )
     pl.add_argument(
         "--height",
-        type=float,
+        type=argument("height_m"),
         default=None,
         metavar="H",
         help="height [m] for buildings and obstacles that have none (nor building:levels)",
     )
     pl.add_argument(
         "--storey-height-m",
-        type=float,
+        type=argument("storey_height_m"),
         default=None,
         metavar="M",
         help="storey height for buildings known only by their number of storeys "
@@ -796,7 +808,7 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
     for f in fields(SiteLimits):
         limits.add_argument(
             "--" + f.name.replace("_", "-"),
-            type=float,
+            type=argument("site_limit_m"),
             default=None,
             metavar="M",
             help=f"refuse a site beyond this (default {f.default:g} m): raise it for a real one",
@@ -856,28 +868,28 @@ def build_parser() -> argparse.ArgumentParser:
     _scanner_arg(a)
     a.add_argument(
         "--distances",
-        type=_floats,
+        type=_floats_in("distance_m"),
         default=list(PAPER_DISTANCES_M),
         metavar="D,D,...",
         help="horizontal / slope distances [m]",
     )
     a.add_argument(
         "--angles",
-        type=_floats,
+        type=_floats_in("angle_deg"),
         default=list(PAPER_GAMMAS_DEG),
         metavar="G,G,...",
         help="deviation angles γ from the facade normal [deg]",
     )
     a.add_argument(
         "--tilts",
-        type=_floats,
+        type=_floats_in("angle_deg"),
         default=list(PAPER_NUS_DEG),
         metavar="N,N,...",
         help="beam tilts ν [deg]",
     )
     a.add_argument(
         "--station-rms-mm",
-        type=float,
+        type=argument("rms_mm"),
         default=0.0,
         help="station / registration RMS m_xc = m_yc [mm]",
     )
@@ -886,10 +898,15 @@ def build_parser() -> argparse.ArgumentParser:
 
     t = sub.add_parser("targets", help="minimum target sizes (Sossa's Table 2 layout)")
     _scanner_arg(t)
-    t.add_argument("--distances", type=_floats, default=list(SOSSA_DISTANCES_M), metavar="D,D,...")
+    t.add_argument(
+        "--distances",
+        type=_floats_in("distance_m"),
+        default=list(SOSSA_DISTANCES_M),
+        metavar="D,D,...",
+    )
     t.add_argument(
         "--step-mm-at-10m",
-        type=float,
+        type=argument("step_mm_at_10m"),
         default=None,
         help="scan step at 10 m [mm]; default the scanner's",
     )
@@ -915,14 +932,14 @@ def build_parser() -> argparse.ArgumentParser:
     )
     pl.add_argument(
         "--block-m",
-        type=float,
+        type=argument("block_m"),
         default=DEFAULT_BLOCK_M,
         metavar="M",
         help=f"side of a district block [m] (default {DEFAULT_BLOCK_M:g})",
     )
     pl.add_argument(
         "--workers",
-        type=int,
+        type=argument("workers"),
         default=2,
         metavar="N",
         help="worker processes of the local Dask cluster (default 2)",
@@ -961,10 +978,12 @@ def build_parser() -> argparse.ArgumentParser:
     rp.set_defaults(func=cmd_report)
 
     sv = sub.add_parser("serve", help="serve the station-planner dashboard with Voilà on 127.0.0.1")
-    sv.add_argument("--port", type=int, default=8866, help="port on 127.0.0.1 (default 8866)")
+    sv.add_argument(
+        "--port", type=argument("port"), default=8866, help="port on 127.0.0.1 (default 8866)"
+    )
     sv.add_argument(
         "--kernel-idle-s",
-        type=float,
+        type=argument("kernel_idle_s"),
         default=600.0,
         metavar="S",
         help="shut down the kernel of a closed page after this long (default 600 s)",
@@ -999,12 +1018,17 @@ def build_parser() -> argparse.ArgumentParser:
     lab = csub.add_parser("lab", help="laboratory uncertainty test (Helmert, m_r, M_r)")
     lab.add_argument("reference", metavar="REF.csv", help="lab-frame targets: id,x,y,z[,sigma_mm]")
     lab.add_argument("scan", metavar="SCAN.csv", help="scanner-frame targets: id,x,y,z")
-    lab.add_argument("--k", type=float, default=2.0, help="coverage factor of M_r (default 2)")
+    lab.add_argument(
+        "--k",
+        type=argument("coverage_factor"),
+        default=2.0,
+        help="coverage factor of M_r (default 2)",
+    )
     lab.add_argument("--pairs", choices=["all", "first"], default="all")
-    lab.add_argument("--reference-precision-mm", type=float, default=None)
+    lab.add_argument("--reference-precision-mm", type=argument("rms_mm"), default=None)
     lab.add_argument(
         "--declared-precision-mm",
-        type=float,
+        type=argument("rms_mm"),
         default=None,
         help="the scanner's declared target precision, to check the reference network",
     )

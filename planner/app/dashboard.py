@@ -109,7 +109,7 @@ def _field_box(spec: FieldSpec, label: str | None = None) -> w.Widget:
     value = spec.default if spec.default is not None else 0.0
     if isinstance(value, tuple):
         value = value[0]
-    lo = 0.0 if spec.lo is None else spec.lo
+    lo = 0.0 if spec.lo is None or spec.optional else spec.lo  # 0: "none" where optional
     hi = _NO_UPPER if spec.hi is None else spec.hi
     if isinstance(spec.default, int) and not isinstance(spec.default, bool):
         return w.BoundedIntText(

@@ -47,6 +47,7 @@ import shapely
 from shapely.geometry import box
 
 from planner.errors import InputError
+from planner.numbers import RANGES
 from planner.pipeline.evaluate import Progress
 from planner.pipeline.facades import check_sample_count, estimate_samples
 from planner.pipeline.requirements import (
@@ -117,8 +118,7 @@ def partition(
     """The planned buildings in square blocks of ``block_m`` (by footprint centroid), in
     row order from the south-west; a block with more than ``max_buildings`` is split into
     quadrants, again while needed (down to 20 m), so that every block fits a worker."""
-    if not (isinstance(block_m, int | float) and math.isfinite(block_m) and block_m >= 20):
-        raise InputError(f"the block size must be at least 20 m; got {block_m!r}")
+    RANGES["block_m"].check(block_m, "the block size")
     cells: dict[tuple[float, float, float], list] = {}  # (south, west, side) → buildings
 
     def place(buildings: list, south: float, west: float, side: float) -> None:
@@ -474,8 +474,7 @@ def plan_district(
     spacing = [req.max_spacing_mm, *(z.requirement.get("max_spacing_mm") for z in site.zones)]
     spacing = [float(v) for v in spacing if v]  # the strictest anywhere: one step for all blocks
     st = st.for_scanner(scanner, min(spacing, default=None), halo)
-    if workers < 1:
-        raise InputError(f"--workers must be at least 1 (got {workers})")
+    RANGES["workers"].check(workers, "the number of workers")
     _memory_bytes(memory_limit)
     sites = [block_site(site, b, halo) for b in blocks]
     # each block's samples, refused here as a block's plan would refuse them (before a

@@ -26,6 +26,7 @@ from planner.accuracy import station_rms_pair
 from planner.classes import class_limits, parse_class
 from planner.cloud_registration import DEFAULT_CLOUD_FLOOR_MM, DEFAULT_MIN_OVERLAP_PCT
 from planner.errors import InputError
+from planner.numbers import Range, check_number
 from planner.targets import DEFAULT_INVENTORY, TargetItem, as_inventory
 
 if TYPE_CHECKING:
@@ -93,14 +94,14 @@ class FieldSpec:
         """The command-line option: ``max_z_mm`` → ``--max-z-mm``."""
         return "--" + self.name.replace("_", "-")
 
+    @property
+    def range(self) -> Range:
+        """The values it may take (:class:`planner.numbers.Range`)."""
+        return Range(self.lo, self.hi, self.unit, self.open_lo)
+
     def rule(self) -> str:
         """The valid range in words, e.g. ``> 0 and <= 89``."""
-        parts = []
-        if self.lo is not None:
-            parts.append(f"{'>' if self.open_lo else '>='} {self.lo:g}")
-        if self.hi is not None:
-            parts.append(f"<= {self.hi:g}")
-        return " and ".join(parts) or "any number"
+        return self.range.rule()
 
 
 def field_specs(cls: type) -> dict[str, FieldSpec]:
@@ -115,24 +116,7 @@ def field_specs(cls: type) -> dict[str, FieldSpec]:
 def _number(value: Any, spec: FieldSpec) -> float | None:
     if value is None and spec.optional:
         return None
-    if isinstance(value, bool) or isinstance(value, str):
-        raise InputError(
-            f"{spec.name} must be a number [{spec.unit}] ({spec.rule()}); got {value!r}"
-        )
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise InputError(
-            f"{spec.name} must be a number [{spec.unit}] ({spec.rule()}); got {value!r}"
-        ) from None
-    bad = not math.isfinite(v)
-    if spec.lo is not None:
-        bad |= v <= spec.lo if spec.open_lo else v < spec.lo
-    if spec.hi is not None:
-        bad |= v > spec.hi
-    if bad:
-        raise InputError(f"{spec.name} must be {spec.rule()} [{spec.unit}]; got {value!r}")
-    return v
+    return check_number(value, spec.name, spec.range)
 
 
 def _validate_numbers(obj: Any, skip: tuple[str, ...] = ()) -> None:
@@ -173,9 +157,25 @@ class Requirements:
     """
 
     max_xy_mm: float | tuple[float, float] = _spec(
-        5.0, "mm", "largest m_x, m_y", step=0.5, help="largest m_x and m_y in the facade frame"
+        5.0,
+        "mm",
+        "largest m_x, m_y",
+        step=0.5,
+        help="largest m_x and m_y in the facade frame",
+        hi=1000.0,
+        lo=0.01,
+        open_lo=False,
     )
-    max_z_mm: float = _spec(5.0, "mm", "largest m_z", step=0.5, help="largest height RMS m_z")
+    max_z_mm: float = _spec(
+        5.0,
+        "mm",
+        "largest m_z",
+        step=0.5,
+        help="largest height RMS m_z",
+        hi=1000.0,
+        lo=0.01,
+        open_lo=False,
+    )
     max_gamma_deg: float = _spec(
         75.0,
         "deg",
@@ -190,6 +190,9 @@ class Requirements:
         "largest point spacing",
         optional=True,
         help="largest point spacing on the facade at the scan step in use",
+        hi=10000.0,
+        lo=0.1,
+        open_lo=False,
     )
     min_range_m: float | None = _spec(
         None,
@@ -198,6 +201,7 @@ class Requirements:
         open_lo=False,
         optional=True,
         help="shortest slope distance station to point (default: the scanner's)",
+        hi=10000.0,
     )
     max_incidence_deg: float | None = _spec(
         None,
@@ -215,6 +219,9 @@ class Requirements:
         optional=True,
         step=5.0,
         help="longest slope distance station to point (default: the scanner's)",
+        hi=10000.0,
+        lo=0.1,
+        open_lo=False,
     )
     stations_per_sample: int = _spec(
         1,
@@ -568,6 +575,7 @@ class PlanSettings:
         step=0.5,
         help="candidate grid spacing",
         group="sampling",
+        hi=1000.0,
     )
     clearance_m: float = _spec(
         1.0,
@@ -577,6 +585,7 @@ class PlanSettings:
         step=0.5,
         help="free space kept around buildings and obstacles for the tripod",
         group="sampling",
+        hi=100.0,
     )
     sample_spacing_m: float = _spec(
         2.0,
@@ -585,6 +594,9 @@ class PlanSettings:
         step=0.5,
         help="facade sample spacing along the facade",
         group="sampling",
+        hi=1000.0,
+        lo=0.01,
+        open_lo=False,
     )
     sample_height_step_m: float = _spec(
         2.0,
@@ -593,6 +605,9 @@ class PlanSettings:
         step=0.5,
         help="facade sample spacing up the facade",
         group="sampling",
+        hi=1000.0,
+        lo=0.01,
+        open_lo=False,
     )
     instrument_height_m: float = _spec(
         1.5,
@@ -601,6 +616,9 @@ class PlanSettings:
         step=0.1,
         help="scanner centre above the ground",
         group="sampling",
+        hi=100.0,
+        lo=0.1,
+        open_lo=False,
     )
     step_mm_at_10m: float | None = _spec(
         None,
@@ -610,6 +628,9 @@ class PlanSettings:
         step=0.5,
         help="scan step in use at 10 m (default: the scanner's)",
         group="sampling",
+        hi=1000.0,
+        lo=0.01,
+        open_lo=False,
     )
     preset: str | None = field(default=None, metadata={"group": "sampling"})
     demand_roofs: bool = field(default=False, metadata={"group": "sampling"})
@@ -631,6 +652,7 @@ class PlanSettings:
         help="a fixed station / registration RMS m_xc, m_yc (the paper's) in place of the "
         "registration error computed from the targets; 0: computed",
         group="registration",
+        hi=1000.0,
     )
     inventory: tuple[TargetItem, ...] = field(
         metadata={"group": "registration"}, default=DEFAULT_INVENTORY
@@ -642,6 +664,9 @@ class PlanSettings:
         step=0.1,
         help="height of targets on stands and on walls",
         group="registration",
+        hi=100.0,
+        lo=0.01,
+        open_lo=False,
     )
     high_target_height_m: float | None = _spec(
         3.0,
@@ -651,6 +676,9 @@ class PlanSettings:
         step=0.5,
         help="height of a second row of wall targets, so that a link's targets spread in height",
         group="registration",
+        hi=100.0,
+        lo=0.01,
+        open_lo=False,
     )
     target_spacing_m: float = _spec(
         6.0,
@@ -659,6 +687,9 @@ class PlanSettings:
         step=1.0,
         help="spacing of candidate target positions along facades and on free ground",
         group="registration",
+        hi=1000.0,
+        lo=0.1,
+        open_lo=False,
     )
     max_target_incidence_deg: float = _spec(
         45.0,
@@ -677,6 +708,7 @@ class PlanSettings:
         step=1,
         help="each quadrant of a flat target must hold this many scan points",
         group="registration",
+        hi=1000000.0,
     )
     min_points_on_sphere: float = _spec(
         20,
@@ -685,6 +717,7 @@ class PlanSettings:
         step=1,
         help="a sphere's visible cap must hold this many scan points for its centre fit",
         group="registration",
+        hi=1000000.0,
     )
     target_rms_mm: float | None = _spec(
         None,
@@ -694,6 +727,9 @@ class PlanSettings:
         step=0.1,
         help="your figure for a target centre's RMS per axis (default: the model)",
         group="registration",
+        hi=1000.0,
+        lo=0.001,
+        open_lo=False,
     )
     target_floor_mm: float = _spec(
         0.5,
@@ -703,6 +739,7 @@ class PlanSettings:
         step=0.1,
         help="what a centre fit does not see (printing, turning, centring), per axis",
         group="registration",
+        hi=1000.0,
     )
     max_targets_per_link: float = _spec(
         6,
@@ -734,6 +771,7 @@ class PlanSettings:
         help="what the plane fit of a 2 m surface patch does not see (roughness, edges, "
         "calibration), per scan",
         group="registration",
+        hi=1000.0,
     )
     traverse_mm: float = _spec(
         2.0,
@@ -743,6 +781,9 @@ class PlanSettings:
         help="RMS per coordinate that one leg of a total-station traverse adds to planned "
         "control (a 1\u2033 instrument over legs up to 80 m)",
         group="registration",
+        hi=1000.0,
+        lo=0.001,
+        open_lo=False,
     )
     gnss_mm: float = _spec(
         15.0,
@@ -751,6 +792,9 @@ class PlanSettings:
         step=1.0,
         help="RMS per coordinate of a planned control point fixed by GNSS (network RTK)",
         group="registration",
+        hi=10000.0,
+        lo=0.001,
+        open_lo=False,
     )
     # -- field work and documents (SETTING_GROUPS['field'])
     setup_min: float = _spec(
@@ -760,6 +804,9 @@ class PlanSettings:
         step=1.0,
         help="field time to set up, level and take down the scanner at a station",
         group="field",
+        hi=1440.0,
+        lo=0.01,
+        open_lo=False,
     )
     target_setup_min: float = _spec(
         2.0,
@@ -769,6 +816,7 @@ class PlanSettings:
         step=0.5,
         help="field time to place one target (stand or wall) before the first scan that sees it",
         group="field",
+        hi=1440.0,
     )
     target_collect_min: float = _spec(
         1.0,
@@ -778,9 +826,18 @@ class PlanSettings:
         step=0.5,
         help="field time to collect one target once the last station that uses it is scanned",
         group="field",
+        hi=1440.0,
     )
     walk_speed_m_s: float = _spec(
-        0.8, "m/s", "walking speed", step=0.1, help="walking speed carrying the kit", group="field"
+        0.8,
+        "m/s",
+        "walking speed",
+        step=0.1,
+        help="walking speed carrying the kit",
+        group="field",
+        hi=50.0,
+        lo=0.01,
+        open_lo=False,
     )
     session_h: float = _spec(
         4.0,
@@ -789,6 +846,9 @@ class PlanSettings:
         step=0.5,
         help="longest field session (a battery set, half a day); the route is split into these",
         group="field",
+        hi=168.0,
+        lo=0.01,
+        open_lo=False,
     )
     scan_rate_hz: float = _spec(
         500_000.0,
@@ -797,6 +857,9 @@ class PlanSettings:
         step=50_000.0,
         help="measurement rate for the scan time when the scanner profile gives none",
         group="field",
+        hi=100000000.0,
+        lo=100.0,
+        open_lo=False,
     )
     imaging: bool = field(default=True, metadata={"group": "field"})
     drawing_scale: int = _spec(
@@ -808,6 +871,7 @@ class PlanSettings:
         step=50,
         help="the drawing's scale 1:N (plan.dxf): lettering 2.5 mm and symbols 3 mm on paper",
         group="field",
+        hi=1000000.0,
     )
     # -- optimiser, time budget and work limits (SETTING_GROUPS['solver'])
     method: str = field(default="auto", metadata={"group": "solver"})
@@ -819,6 +883,7 @@ class PlanSettings:
         help="time budget of the whole plan (reading, evaluation, optimiser, registration, "
         "documents); when it runs out the best plan so far is kept, and says so",
         group="solver",
+        hi=604800.0,
     )
     max_samples: float = _spec(
         1_000_000,
@@ -827,6 +892,7 @@ class PlanSettings:
         step=100_000,
         help="refuse a site that needs more facade samples than this (raise it explicitly)",
         group="solver",
+        hi=1000000000.0,
     )
     max_pairs: float = _spec(
         1e9,
@@ -836,6 +902,7 @@ class PlanSettings:
         help="refuse a plan that needs more station × sample evaluations than this (about "
         "20 million a second)",
         group="solver",
+        hi=10000000000000.0,
     )
 
     def __post_init__(self) -> None:
