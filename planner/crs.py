@@ -93,6 +93,19 @@ def check_projected(label: str, xy: np.ndarray) -> None:
         return
     if not crs.is_projected:
         raise InputError(f"the CRS {name_of(label)} is not projected in metres; reproject")
+    units = {(a.unit_name, a.unit_conversion_factor) for a in crs.axis_info[:2]}
+    if any(abs(factor - 1.0) > 1e-12 for _, factor in units):
+        unit, factor = next(u for u in units if abs(u[1] - 1.0) > 1e-12)
+        metric = ""
+        if len(xy):
+            lon, lat = to_wgs84(label, xy[:1, 0], xy[:1, 1])
+            if np.isfinite(lon[0]) and np.isfinite(lat[0]):
+                metric = f", e.g. {name_of(utm_for(float(lon[0]), float(lat[0])))}"
+        raise InputError(
+            f"the CRS {name_of(label)} measures in {unit} (1 {unit} = {factor:.7g} m); the "
+            f"planner works in metres (heights too): reproject the file to a CRS in "
+            f"metres{metric}, and give its heights in metres"
+        )
     area = crs.area_of_use
     if area is None or not len(xy):
         return

@@ -25,6 +25,7 @@ from planner.citymodel import Surface
 from planner.errors import InputError
 from planner.sitecheck import CLIP_SHARE, SiteNote, SiteProblem, SiteProblems, near_mask
 from planner.terrain import Terrain
+from planner.text import printable
 from planner.zones import Zone
 
 __all__ = [
@@ -389,6 +390,20 @@ DEFAULT_NEAR_M = 150.0
 FAR_HEIGHT_M = 10.0
 
 
+def _printable_ids(items: Iterable[Any]) -> list[Any]:
+    """The features with their ids and names as :func:`planner.text.printable` shows them
+    (a control character in an id is escaped once here, so every output shows the same id)."""
+    out = []
+    for item in items:
+        names = {
+            k: printable(v)
+            for k in ("id", "name")
+            if isinstance(v := getattr(item, k, None), str) and printable(v) != v
+        }
+        out.append(replace(item, **names) if names else item)
+    return out
+
+
 @dataclass
 class Site:
     """Buildings (planned or not), obstacles, no-go areas and an optional boundary.
@@ -447,12 +462,14 @@ class Site:
                 )
         if not (isinstance(self.near_m, int | float) and self.near_m >= 0):
             raise InputError(f"near_m must be a distance >= 0 [m]; got {self.near_m!r}")
-        self.buildings = list(self.buildings)
-        self.control = list(self.control)
-        self.obstacles = list(self.obstacles)
-        self.no_go = list(self.no_go)
+        self.buildings = _printable_ids(self.buildings)
+        self.control = _printable_ids(self.control)
+        self.obstacles = _printable_ids(self.obstacles)
+        self.no_go = _printable_ids(self.no_go)
         self.notes = list(self.notes)
-        self.passages = list(self.passages)
+        self.passages = _printable_ids(self.passages)
+        self.zones = _printable_ids(self.zones)
+        self.name = printable(str(self.name))
         problems: list[SiteProblem] = []
         any_planned = any(b.planned for b in self.buildings)
         self._check_features(problems)

@@ -21,9 +21,10 @@ import sys
 import tempfile
 import time
 import traceback
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import fields
 from pathlib import Path
+from typing import Any
 
 import pandas as pd
 
@@ -40,6 +41,7 @@ from planner.tables import (
     target_size_table,
 )
 from planner.targets import recommend_targets
+from planner.text import printable
 
 EXIT_OK = 0
 EXIT_UNMET = 1
@@ -229,6 +231,16 @@ class _StderrProgress:
         elif stage != self.last:
             print(f"planner: {message}", file=sys.stderr)
         self.last = stage
+
+
+def _scheduler(text: str) -> str:
+    """``--scheduler``'s address, its form checked where it is read."""
+    from planner.pipeline.district import scheduler_address
+
+    try:
+        return scheduler_address(text)
+    except InputError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
 
 
 def _ids(text: str) -> list[str]:
@@ -953,6 +965,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     pl.add_argument(
         "--scheduler",
+        type=_scheduler,
         default=None,
         metavar="ADDRESS",
         help="an existing Dask cluster's scheduler, e.g. tcp://10.0.0.5:8786 (its workers "
@@ -1128,9 +1141,39 @@ def _stop_on_signals():
             signal.signal(sig, handler)
 
 
+class _PrintableStream:
+    """A text stream that writes user text as :func:`planner.text.printable` shows it: an
+    id's ESC never reaches the terminal, a file name that is not UTF-8 prints as its bytes."""
+
+    def __init__(self, stream: Any) -> None:
+        self._stream = stream
+
+    def write(self, text: str) -> int:
+        return self._stream.write(printable(text, keep="\n\r\t"))
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._stream, name)
+
+
+@contextlib.contextmanager
+def _printable_output() -> Iterator[None]:
+    """stdout and stderr as :class:`_PrintableStream` for the command's run."""
+    out, err = sys.stdout, sys.stderr
+    sys.stdout, sys.stderr = _PrintableStream(out), _PrintableStream(err)
+    try:
+        yield
+    finally:
+        sys.stdout, sys.stderr = out, err
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command; the one boundary that turns every error into a message and an exit
     code (never a traceback): bad input 2, an unusable output place 2, a bug 3."""
+    with _printable_output():
+        return _main(argv)
+
+
+def _main(argv: Sequence[str] | None) -> int:
     # the command's start: the process's when this process is the command (argv from its
     # command line), else now (called in a running program)
     started = command_started() if argv is None else time.monotonic()

@@ -32,6 +32,7 @@ from planner.pipeline.schema import in_id_order
 from planner.pipeline.tables import PROCESSING_WORDS
 from planner.pipeline.visibility import SIGHT_CLEARANCE_M
 from planner.reference import REFERENCES
+from planner.text import printable
 
 __all__ = ["SECTIONS", "ReportContent", "make_report", "render_html"]
 
@@ -441,4 +442,4 @@ pre { background: #f7f7f7; padding: 0.6em; }
 
 def make_report(p: Plan, out: str | Path) -> Path:
     """Write the report of plan ``p`` to ``out`` (:func:`render_html`), atomically."""
-    return write_text_atomic(out, render_html(p), create_parents=False)
+    return write_text_atomic(out, printable(render_html(p), keep="\n\r\t"), create_parents=False)

@@ -39,6 +39,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass, replace
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -428,8 +429,78 @@ def meeting_table(p: Plan, region: shapely.Geometry | None = None) -> pd.DataFra
 
 
 #: How long a scheduler named by --scheduler is waited for before the plan says it cannot
-#: be reached [s].
+#: be reached [s]: Dask's own connection timeout, and the deadline for the whole
+#: connection (a peer that accepts but never answers as a scheduler: an HTTP server, a
+#: silent port) at three times that.
 SCHEDULER_TIMEOUT_S = 5.0
+#: The address schemes of Dask's communication layers a planner can connect over.
+SCHEDULER_SCHEMES = ("tcp", "tls", "ws", "wss")
+
+
+def scheduler_address(text: str) -> str:
+    """A Dask scheduler's address as ``SCHEME://HOST:PORT`` (:data:`SCHEDULER_SCHEMES`), or
+    InputError saying what is wrong with it — before anything is connected to."""
+    from urllib.parse import urlsplit
+
+    example = "e.g. tcp://10.0.0.5:8786"
+    if not isinstance(text, str) or "://" not in text:
+        raise InputError(f"a scheduler's address is SCHEME://HOST:PORT ({example}); got {text!r}")
+    try:
+        parts = urlsplit(text)
+        port = parts.port
+    except ValueError as exc:
+        raise InputError(
+            f"the scheduler address {text[:80]!r} is malformed ({exc}); {example}"
+        ) from None
+    if parts.scheme not in SCHEDULER_SCHEMES:
+        raise InputError(
+            f"the scheduler address {text[:80]!r} uses {parts.scheme + '://'!r}; a plan connects "
+            f"over {', '.join(s + '://' for s in SCHEDULER_SCHEMES)} ({example})"
+        )
+    host = parts.hostname or ""
+    if not host or len(host) > 253 or port is None or not 1 <= port <= 65535:
+        raise InputError(
+            f"the scheduler address {text[:80]!r} needs a host (at most 253 characters) and a "
+            f"port from 1 to 65535 ({example})"
+        )
+    if parts.path.strip("/") or parts.query or parts.fragment or parts.username:
+        raise InputError(
+            f"the scheduler address {text[:80]!r} has more than SCHEME://HOST:PORT ({example})"
+        )
+    return text
+
+
+def connect(address: str, timeout_s: float = SCHEDULER_TIMEOUT_S) -> Any:
+    """A Dask client of the scheduler at ``address``, or InputError within ``3 × timeout_s``
+    seconds: the connection runs in a daemon thread, so a peer that accepts and never
+    answers cannot hold the plan (the thread is left to end with the process)."""
+    import threading
+
+    from dask.distributed import Client
+
+    scheduler_address(address)
+    got: dict[str, Any] = {}
+
+    def attempt() -> None:
+        try:
+            got["client"] = Client(address, timeout=timeout_s)
+        except Exception as exc:  # every failure to connect is about the address given
+            got["error"] = exc
+
+    thread = threading.Thread(target=attempt, name="scheduler-connect", daemon=True)
+    thread.start()
+    thread.join(3 * timeout_s)
+    fix = "start one (dask scheduler) or leave --scheduler out for a local cluster"
+    if "client" in got:
+        return got["client"]
+    if "error" in got:
+        exc = got["error"]
+        why = f"{type(exc).__name__}: {str(exc).splitlines()[0][:160] if str(exc) else ''}"
+        raise InputError(f"cannot reach a Dask scheduler at {address[:80]!r} ({why}); {fix}")
+    raise InputError(
+        f"nothing answered as a Dask scheduler at {address[:80]!r} within "
+        f"{3 * timeout_s:.0f} s (something listens there, but not a scheduler); {fix}"
+    )
 
 
 def plan_district(
@@ -489,13 +560,7 @@ def plan_district(
 
     cluster = None
     if scheduler:
-        try:
-            client = Client(scheduler, timeout=SCHEDULER_TIMEOUT_S)
-        except (OSError, TimeoutError) as exc:
-            raise InputError(
-                f"cannot reach the Dask scheduler at {scheduler!r} ({exc}); start one "
-                "(dask scheduler) or leave --scheduler out for a local cluster"
-            ) from None
+        client = connect(scheduler)
     else:
         cluster = local_cluster(workers, memory_limit)
         client = Client(cluster)

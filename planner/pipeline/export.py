@@ -26,6 +26,7 @@ from planner.pipeline.schema import (
     to_csv,
 )
 from planner.sitecheck import notes_table
+from planner.text import printable
 
 __all__ = [
     "FILES",
@@ -112,9 +113,15 @@ FILES = {
 
 
 def render(p: Plan) -> dict[str, str]:
-    """Every file of the plan as text, by file name (those a plan cannot have left out)."""
+    """Every file of the plan as text, by file name (those a plan cannot have left out); no
+    control character of a user's id or name gets into one (:func:`planner.text.printable`:
+    a KML stays valid XML, a summary shown in a terminal runs nothing)."""
     out = {name: make(p) for name, make in FILES.items()}
-    return {name: text for name, text in out.items() if text is not None}
+    return {name: printable(text, keep=_LINES) for name, text in out.items() if text is not None}
+
+
+#: The control characters a text file keeps: its line breaks and tabs.
+_LINES = "\n\r\t"
 
 
 #: Every file name a plan folder may hold from any run (so an old plan's file is never
