@@ -36,6 +36,7 @@ from planner.errors import InputError
 
 __all__ = [
     "FAULT_ENV",
+    "check_inputs_kept",
     "check_output_file",
     "check_output_folder",
     "fault_point",
@@ -105,6 +106,7 @@ def check_output_file(path: str | Path) -> Path:
     if str(path) == "":
         raise InputError("the output path is empty; name a file")
     p = Path(path)
+    _check_no_dangling_link(p)
     if p.is_dir():
         raise InputError(f"{str(p)!r} is a folder; name a file to write")
     _check_parent(p, create=False)
@@ -118,8 +120,11 @@ def check_output_folder(folder: str | Path) -> Path:
     if str(folder) == "":
         raise InputError("the output folder is empty; name a folder (e.g. --out plan)")
     target = Path(folder)
+    _check_no_dangling_link(target)
     if target.exists() and not target.is_dir():
         raise InputError(f"{str(target)!r} exists and is not a folder; choose another --out")
+    if target.is_dir():
+        _check_no_mount_point(target)
     try:
         above = target.resolve().parent
     except (OSError, RuntimeError) as exc:  # RuntimeError: a loop of symbolic links
@@ -133,6 +138,53 @@ def check_output_folder(folder: str | Path) -> Path:
     if not os.access(above, os.W_OK | os.X_OK):
         raise InputError(f"the folder {str(above)!r} cannot be written in; choose another --out")
     return target
+
+
+def check_inputs_kept(outputs: Iterable[str | Path], inputs: Iterable[str | Path | None]) -> None:
+    """Refuse to write over an input: an output path that is one of the files read (the
+    user's ``zones.csv`` given to ``--zones`` from inside the plan's folder, which the
+    plan's own ``zones.csv`` would replace)."""
+
+    def resolved(path: str | Path) -> Path | None:
+        try:
+            return Path(path).resolve()
+        except (OSError, RuntimeError, ValueError):  # a loop of links, a NUL: not a file read
+            return None
+
+    files = {resolved(given): given for given in inputs if given is not None and str(given)}
+    files.pop(None, None)
+    for out in outputs:
+        hit = files.get(resolved(out))
+        if hit is not None:
+            raise InputError(
+                f"the input {str(hit)!r} is where the output {Path(out).name} is written, "
+                "and would be lost; move the input out of the way or choose another --out"
+            )
+
+
+def _check_no_dangling_link(p: Path) -> None:
+    """A symbolic link on the way to ``p`` that points nowhere is refused: writing through it
+    would create the tree it names, somewhere the user did not choose."""
+    for q in (p, *p.parents):
+        if q.is_symlink() and not q.exists():
+            raise InputError(
+                f"{str(q)!r} is a symbolic link to {os.readlink(q)!r}, which does not exist; "
+                "fix the link or choose another output path"
+            )
+
+
+def _check_no_mount_point(folder: Path) -> None:
+    """A plan's folder is exchanged as a whole, and the user's entries travel with it; a
+    filesystem mounted inside cannot travel (it would be left under a temporary name), so
+    it is refused before any work."""
+    for root, dirs, _ in os.walk(folder):
+        for d in dirs:
+            if os.path.ismount(os.path.join(root, d)):
+                raise InputError(
+                    f"{os.path.join(root, d)!r} is a mount point inside the output folder; a "
+                    "plan replaces its folder as a whole, which a mounted filesystem cannot "
+                    "follow: unmount it or choose another --out"
+                )
 
 
 def _check_parent(p: Path, create: bool) -> None:

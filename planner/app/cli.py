@@ -192,7 +192,7 @@ def cmd_figures(args: argparse.Namespace) -> int:
 def cmd_audit(args: argparse.Namespace) -> int:
     from pathlib import Path
 
-    from planner.atomic import check_output_file, write_bytes_atomic
+    from planner.atomic import check_inputs_kept, check_output_file, write_bytes_atomic
     from planner.cityio import read_city_model
     from planner.pipeline.audit import audit, audit_summary, read_plan_tables
     from planner.site import with_terrain
@@ -203,6 +203,7 @@ def cmd_audit(args: argparse.Namespace) -> int:
         model = with_terrain(model, args.terrain)
     table = audit(model, cov, fac, st)
     out = check_output_file(Path(args.out) if args.out else Path(args.plan) / "audit.csv")
+    check_inputs_kept([out], _input_paths(args))
     write_bytes_atomic(out, table.to_csv(index=False).encode("utf-8"))
     summary = audit_summary(table)
     print(summary.to_string(index=False))
@@ -344,6 +345,24 @@ def _read_text(path: str, what: str) -> str:
         raise InputError(f"{what} {path!r} is not UTF-8 text") from None
 
 
+#: The options that name a file the command reads.
+INPUT_OPTIONS = (
+    "site", "zones", "control", "inventory", "scanner", "terrain", "mesh", "model",
+    "reference", "scan", "file",
+)  # fmt: skip
+
+
+def _input_paths(args: argparse.Namespace) -> list[str]:
+    """Every file the command reads (the options of :data:`INPUT_OPTIONS` given; a plan's
+    tables for ``audit``), so that no output is written over one."""
+    paths = [getattr(args, name, None) for name in INPUT_OPTIONS]
+    if getattr(args, "plan", None):
+        paths += [
+            str(Path(args.plan) / name) for name in ("coverage.csv", "facades.csv", "stations.csv")
+        ]
+    return [p for p in paths if isinstance(p, str) and p]
+
+
 def _district(args: argparse.Namespace, site, settings) -> bool:
     """Whether to plan block by block on Dask: asked for, or (auto) the site is more work
     than one process does well (:func:`planner.pipeline.district.needs_district`)."""
@@ -397,14 +416,15 @@ def run_plan(args: argparse.Namespace) -> int:
     command's start (reading the site included): planning ends with
     :data:`DOCUMENT_SHARE` of the budget left, and the booklet leaves out the pages there is
     no time for (said in the summary and on its last page)."""
-    from planner.atomic import check_output_folder
+    from planner.atomic import check_inputs_kept, check_output_folder
     from planner.pipeline.clock import pace
-    from planner.pipeline.export import save
+    from planner.pipeline.export import OWNED_FILES, save
     from planner.pipeline.planning import plan
 
     started = getattr(args, "started", None) or time.monotonic()
     progress = _StderrProgress(args.quiet)
     check_output_folder(args.out)  # before the plan, which can take minutes
+    check_inputs_kept([Path(args.out) / name for name in OWNED_FILES], _input_paths(args))
     site, scanner, req, settings = plan_inputs(args)
     import ezdxf  # noqa: F401  (the DXF writer's import, 0.7 s, made now: not after planning)
 
@@ -481,13 +501,14 @@ def run_plan(args: argparse.Namespace) -> int:
 
 def cmd_report(args: argparse.Namespace) -> int:
     from planner.app.report import make_report
-    from planner.atomic import check_output_file
+    from planner.atomic import check_inputs_kept, check_output_file
     from planner.pipeline.planning import plan
 
     out = Path(args.out)
     if out.suffix.lower() not in (".html", ".htm"):
         raise InputError(f"--out must name an .html file; got {args.out!r}")
     check_output_file(out)
+    check_inputs_kept([out], _input_paths(args))
     result = plan(*plan_inputs(args), progress=_StderrProgress(args.quiet))
     if not args.quiet:
         print("planner: rendering the report …", file=sys.stderr)
@@ -506,6 +527,10 @@ def _profile_name(args: argparse.Namespace) -> str | None:
 
     if not args.profile_out and not args.install:
         return None
+    if args.profile_out:
+        from planner.atomic import check_inputs_kept
+
+        check_inputs_kept([args.profile_out], [*_input_paths(args), args.base_scanner])
     name = args.name or (Path(args.profile_out).stem if args.profile_out else None)
     if not name:
         raise InputError("--install needs a profile name: give --name NAME")
