@@ -12,6 +12,7 @@ site given a terrain (:attr:`Site.terrain`). A building drawn as a footprint sta
 from __future__ import annotations
 
 import math
+from collections import Counter
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
@@ -46,6 +47,11 @@ Polygonal = Polygon | MultiPolygon
 OVERLAP_TOLERANCE_M2 = 0.01
 #: Consecutive vertices closer than this make a zero-length edge [m].
 ZERO_EDGE_M = 1e-3
+#: A ring with more vertices than this is thinned (:meth:`Site._thinned`): no building's
+#: outline drawn for a survey needs more (a 200 m round tower at 0.3 m edges has 2 100).
+DENSE_RING_VERTICES = 5000
+#: How far a thinned outline may move from the one given [m].
+THIN_TOLERANCE_M = 0.01
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -542,6 +548,32 @@ class Site:
         planned = [b.footprint for b in self.buildings if b.planned and _usable(b.footprint)]
         return near_mask(planned, geoms, self.near_m)
 
+    def _thinned(self, item: Any, attr: str) -> Any:
+        """``item`` with its outline thinned where a ring has more than
+        :data:`DENSE_RING_VERTICES` vertices: vertices within :data:`THIN_TOLERANCE_M` of
+        the simplified line dropped (Douglas & Peucker, "Algorithms for the reduction of the
+        number of points required to represent a digitized line or its caricature", The
+        Canadian Cartographer 10(2), 1973, https://doi.org/10.3138/FM57-6770-U75U-7727), and
+        noted. A densified or traced outline otherwise makes a facade of every millimetre
+        edge, and the plan's time and files grow with them."""
+        geom = getattr(item, attr)
+        counts = [len(r.coords) for r in _rings(geom)]
+        if max(counts, default=0) <= DENSE_RING_VERTICES:
+            return item
+        thin = shapely.simplify(geom, THIN_TOLERANCE_M, preserve_topology=True)
+        if not _usable(thin) or not thin.is_valid:
+            return item  # the shape checks say what is wrong with it
+        after = sum(len(r.coords) for r in _rings(thin))
+        self._note(
+            SiteNote(
+                "outline",
+                (item.id,),
+                "thinned",
+                f"{sum(counts):,} vertices to {after:,}, within {100 * THIN_TOLERANCE_M:g} cm",
+            )
+        )
+        return replace(item, **{attr: thin})
+
     def _check_features(self, problems: list[SiteProblem]) -> None:
         """Every feature on its own: geometry, extent, id, height, outline. A problem far
         from the planned buildings is repaired (or the feature left out) and noted."""
@@ -604,6 +636,9 @@ class Site:
             if p is not None:
                 problems.append(p)
                 self.boundary = None
+        self.buildings = [self._thinned(b, "footprint") for b in self.buildings]
+        self.obstacles = [self._thinned(o, "geometry") for o in self.obstacles]
+        self.no_go = [self._thinned(a, "geometry") for a in self.no_go]
         everything = [b.footprint for b in self.buildings] + [o.geometry for o in self.obstacles]
         if everything and _looks_like_degrees(everything):
             problems.append(
@@ -777,8 +812,7 @@ class Site:
         ``<building>-f<NN>``)."""
         self.zones = list(self.zones)
         out = []
-        ids = [z.id for z in self.zones]
-        for dup in sorted({i for i in ids if ids.count(i) > 1}):
+        for dup in sorted(i for i, k in Counter(z.id for z in self.zones).items() if k > 1):
             out.append(
                 SiteProblem(
                     "zone", (dup,), f"zone id {dup!r} appears twice", "zone ids must be unique"

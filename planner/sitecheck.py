@@ -166,6 +166,10 @@ NOTE_WORDS = {
         "outline repaired (repeated vertices, make_valid)",
         "outlines repaired (repeated vertices, make_valid)",
     ),
+    ("outline", "thinned"): (
+        "dense outline thinned (vertices within 1 cm of a straight line dropped)",
+        "dense outlines thinned (vertices within 1 cm of a straight line dropped)",
+    ),
     ("outline", "far"): (
         "invalid outline, far from the planned buildings, repaired",
         "invalid outlines, far from the planned buildings, repaired",

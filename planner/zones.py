@@ -327,8 +327,4 @@ def read_zones(path: str | Path) -> list[Zone]:
             zones.append(zone_from_row(row, f"Z{n}"))
         except InputError as exc:
             raise InputError(f"{p.name} line {n + 1}: {exc}") from None
-    ids = [z.id for z in zones]
-    dup = sorted({i for i in ids if ids.count(i) > 1})
-    if dup:
-        raise InputError(f"{p.name}: zone id {dup[0]!r} appears twice; zone ids must be unique")
     return zones

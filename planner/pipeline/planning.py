@@ -195,7 +195,8 @@ def _prepare(
         )
     messages += zones.messages
     # the search radius: the farthest any requirement (the site-wide one, a zone's) reaches
-    reach = max(reach_m(sc, r, st) for r in [req, *zones.requirements])
+    distinct = list({id(r): r for r in [req, *zones.requirements]}.values())
+    reach = max(reach_m(sc, r, st) for r in distinct)
     spacing = [r.max_spacing_mm for r in [req, *zones.requirements] if r.max_spacing_mm]
     st = st.for_scanner(sc, min(spacing, default=None), reach)  # step and preset, once
     cand = candidate_grid(site, fac, reach, st.grid_m, st.clearance_m)

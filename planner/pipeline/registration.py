@@ -1079,7 +1079,8 @@ class _Layout:
         """(key, root, tree, cost) of the root whose tree reaches the most stations, then
         keeps the worst station's error smallest — with 6 parameters, its variance plus the
         datum's lean at its facade points (:meth:`datum_tilt_var`); ties go to the lowest
-        root. The most central root is tried first, and after ``deadline`` no other. Once a
+        root. The most central root is tried first, and others only while half of the time
+        left before ``deadline`` remains (the links and the layout after it need the rest). Once a
         root's tree reaches every station, another root's search stops at the first station
         worse than that tree's worst: it cannot win (and none of its links is made)."""
         roots = list(roots)
@@ -1087,8 +1088,10 @@ class _Layout:
             first = _central(self.station_xyz[roots])  # a position in roots
             roots = [roots[first], *roots[:first], *roots[first + 1 :]]
         best = None
+        now = time.monotonic()
+        stop = now + ROOT_SEARCH_SHARE * (deadline - now) if math.isfinite(deadline) else deadline
         for n, root in enumerate(roots):
-            if n and time.monotonic() > deadline:
+            if n and time.monotonic() > stop:
                 break
             tilt = self.datum_tilt_var(root)
             beaten = best[0][1] if best is not None and best[0][0] == -self.k else np.inf
@@ -1620,6 +1623,11 @@ def _planes(surf: clouds.Surfaces | None) -> tuple | None:
         zip(zip(j.tolist(), p.tolist(), strict=True), surf.var_mm2[p, j].tolist(), strict=True)
     )
     return surf.xyz, surf.normal, var
+
+
+#: The share of the time left that the search for the network's datum (its best root) may
+#: take; the rest is for the links and the layout after it.
+ROOT_SEARCH_SHARE = 0.5
 
 
 def _central(xyz: np.ndarray) -> int:

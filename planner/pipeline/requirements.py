@@ -15,6 +15,7 @@ One source of truth:
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields, replace
@@ -104,8 +105,10 @@ class FieldSpec:
         return self.range.rule()
 
 
+@functools.cache
 def field_specs(cls: type) -> dict[str, FieldSpec]:
-    """The fields of :class:`Requirements` or :class:`PlanSettings` that carry a spec."""
+    """The fields of :class:`Requirements` or :class:`PlanSettings` that carry a spec (one
+    dictionary per class, made once: read it, do not change it)."""
     out = {}
     for f in fields(cls):
         if "unit" in f.metadata:

@@ -60,6 +60,10 @@ class SolverReport:
     redundant_removed: int = 0
 
 
+#: The summary lists this many zones at most (zones.csv holds them all).
+LISTED_ZONES = 20
+
+
 @dataclass(kw_only=True)
 class Plan:
     """A field plan: stations, targets, coverage of every facade sample, and diagnostics.
@@ -218,7 +222,14 @@ class Plan:
             lines.insert(3, f"Heights: {self.site.height_system}; {self.scene_description()}")
         if self.route is not None:
             lines.append(self.route.summary())
-        for z in self.zones.itertuples():
+        zones = self.zones
+        if len(zones) > LISTED_ZONES:  # the unmet first, the most unmet first
+            zones = zones.sort_values("unmet", ascending=False, kind="stable").head(LISTED_ZONES)
+            lines.append(
+                f"Zones: {len(self.zones)}, {int((self.zones['unmet'] == 0).sum())} met in "
+                f"full; the {LISTED_ZONES} with the most unmet samples below, all in zones.csv"
+            )
+        for z in zones.itertuples():
             state = "met" if z.unmet == 0 else f"{z.unmet} of {z.samples} samples unmet"
             lines.append(f"Zone {z.zone_id} ({z.where}; {z.requirement}): {state}")
         return "\n".join(lines + self.messages)

@@ -9,6 +9,7 @@ north, degrees); distances in metres on the ground.
 
 from __future__ import annotations
 
+from collections import Counter
 from dataclasses import dataclass
 
 import numpy as np
@@ -74,9 +75,9 @@ def _corners(site: Site) -> tuple[np.ndarray, list[str]]:
                 if turn >= 10.0:
                     side = compass_word(_azimuth((p[0] - cx) / w, (p[1] - cy) / h), short=True)
                     mine.append((p, f"{b.id} {side} corner"))
-        seen = [name for _, name in mine]
+        seen = Counter(name for _, name in mine)
         for p, name in mine:
-            if seen.count(name) > 1:
+            if seen[name] > 1:
                 name += f" (E {p[0]:.1f} N {p[1]:.1f})"
             xy.append(p)
             names.append(name)

@@ -396,19 +396,21 @@ def class_family(req: Requirements, zones: ZoneTable) -> str | None:
 
 def zone_summary(zones: ZoneTable, cov: pd.DataFrame) -> pd.DataFrame:
     """Each zone: where, its requirement, its sampling, and whether it is met."""
+    scanned = ~cov["party_wall"].to_numpy()
+    met = cov["meets"].to_numpy() & scanned
+    said: dict[int, str] = {}  # zones share Requirements objects: each described once
     rows = []
-    for z, r, mask in zip(zones.zones, zones.requirements, zones.masks, strict=True):
-        scanned = mask & ~cov["party_wall"].to_numpy()
-        met = int(cov["meets"].to_numpy()[scanned].sum())
+    for z, r, idx in zip(zones.zones, zones.requirements, zones.members, strict=True):
+        samples, ok = int(scanned[idx].sum()), int(met[idx].sum())
         rows.append(
             {
                 "zone_id": z.id,
                 "where": z.describe(),
-                "requirement": r.describe(),
+                "requirement": said.setdefault(id(r), r.describe()),
                 "sample_spacing_m": z.sample_spacing_m,
-                "samples": int(scanned.sum()),
-                "met": met,
-                "unmet": int(scanned.sum()) - met,
+                "samples": samples,
+                "met": ok,
+                "unmet": samples - ok,
             }
         )
     return pd.DataFrame(rows, columns=ZONE_COLUMNS)

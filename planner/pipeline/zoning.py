@@ -29,6 +29,8 @@ if TYPE_CHECKING:
 
 __all__ = ["SampleRequirements", "ZoneTable", "along_m", "apply_zones"]
 
+#: The plan's messages name this many zones' looser limits at most.
+LISTED_LOOSER = 20
 #: A zone may reach this far past its facade's end or top (digitising) [m].
 ZONE_TOLERANCE_M = 0.05
 
@@ -54,11 +56,11 @@ class SampleRequirements:
 
 @dataclass
 class ZoneTable:
-    """The zones as applied: each zone's requirement and its samples' mask."""
+    """The zones as applied: each zone's requirement and its samples."""
 
     zones: list[Zone]
     requirements: list[Requirements]
-    masks: list[np.ndarray]  # (N,) bool per zone
+    members: list[np.ndarray]  # the indices of each zone's samples
     messages: list[str]
 
 
@@ -85,12 +87,16 @@ def apply_zones(
             continue
         zones.append(z)
         facades.append(f)
+    made: dict[tuple, Requirements] = {}  # one Requirements per distinct zone requirement
     reqs = []
     for z in zones:
-        try:
-            reqs.append(req.with_overrides(z.requirement))
-        except InputError as exc:
-            raise InputError(f"zone {z.id!r}: {exc}") from None
+        key = tuple(sorted((k, repr(v)) for k, v in z.requirement.items()))
+        if key not in made:
+            try:
+                made[key] = req.with_overrides(z.requirement)
+            except InputError as exc:
+                raise InputError(f"zone {z.id!r}: {exc}") from None
+        reqs.append(made[key])
     # finer samples: the coarsest zone first, so that a finer one overrides it
     order = sorted(
         (i for i, z in enumerate(zones) if z.sample_spacing_m is not None),
@@ -100,23 +106,36 @@ def apply_zones(
         fac = _refine(site, fac, zones[i], facades[i], i, scene)
     n = len(fac.z)
     u = along_m(fac)
-    masks = [_inside(z, fac, f, u) for z, f in zip(zones, facades, strict=True)]
-    out = SampleRequirements.uniform(req, n)
-    covered = np.zeros(n, dtype=bool)
-    for z, zr, mask in zip(zones, reqs, masks, strict=True):
-        if not mask.any():
+    on_facade = _samples_by_facade(fac)
+    members = [_inside(z, fac, f, u, on_facade) for z, f in zip(zones, facades, strict=True)]
+    looser: list[str] = []
+    for z, zr, idx in zip(zones, reqs, members, strict=True):
+        if not len(idx):
             raise InputError(
                 f"zone {z.id!r} ({z.describe()}) holds no facade sample; make it larger than "
                 "the sample spacing or give it a finer sample_spacing_m"
             )
-        messages += _looser(z, zr, req)
+        looser += _looser(z, zr, req)
+    messages += looser[:LISTED_LOOSER] + (
+        [f"… and {len(looser) - LISTED_LOOSER} more limits of zones looser than the site-wide ones"]
+        if len(looser) > LISTED_LOOSER
+        else []
+    )
+    out = SampleRequirements.uniform(req, n)
+    # where zones overlap the strictest wins, whatever their order: zones of one requirement
+    # are applied together
+    covered = np.zeros(n, dtype=bool)
+    for zr in {id(r): r for r in reqs}.values():
+        mask = np.zeros(n, dtype=bool)
+        for r, idx in zip(reqs, members, strict=True):
+            if r is zr:
+                mask[idx] = True
         for c in CHECKS:
             limit = c.limit_of(zr)
             value = c.no_limit() if limit is None else float(limit)
             own = out.limits[c.key]
             # the zone replaces the site-wide limit; where zones overlap the strictest wins
-            first = mask & ~covered
-            own[first] = value
+            own[mask & ~covered] = value
             again = mask & covered
             own[again] = (
                 np.minimum(own[again], value) if c.sense == "max" else np.maximum(own[again], value)
@@ -125,9 +144,32 @@ def apply_zones(
         out.stations[mask & covered] = np.maximum(
             out.stations[mask & covered], zr.stations_per_sample
         )
-        out.zone_ids[mask] = [f"{v};{z.id}" if v else z.id for v in out.zone_ids[mask]]
         covered |= mask
-    return fac, out, ZoneTable(zones, reqs, masks, messages)
+    out.zone_ids[:] = _joined_ids([z.id for z in zones], members, n)
+    return fac, out, ZoneTable(zones, reqs, members, messages)
+
+
+def _samples_by_facade(fac: FacadeSet) -> list[np.ndarray]:
+    """The sample indices of each facade, in sample order."""
+    order = np.argsort(fac.facade, kind="stable")
+    cuts = np.searchsorted(fac.facade[order], np.arange(len(fac.length_m) + 1))
+    return [order[cuts[k] : cuts[k + 1]] for k in range(len(fac.length_m))]
+
+
+def _joined_ids(ids: list[str], members: list[np.ndarray], n: int) -> np.ndarray:
+    """(n,) the ";"-joined ids of the zones each sample lies in, in the zones' order."""
+    out = np.full(n, "", dtype=object)
+    if not members:
+        return out
+    sample = np.concatenate(members)
+    zone = np.repeat(np.arange(len(members)), [len(m) for m in members])
+    order = np.lexsort((zone, sample))
+    sample, zone = sample[order], zone[order]
+    starts = np.flatnonzero(np.r_[True, sample[1:] != sample[:-1]])
+    for k, lo in enumerate(starts):
+        hi = starts[k + 1] if k + 1 < len(starts) else len(sample)
+        out[sample[lo]] = ";".join(ids[j] for j in zone[lo:hi])
+    return out
 
 
 def _facades_of(z: Zone, fac: FacadeSet, site: Site) -> np.ndarray:
@@ -185,20 +227,22 @@ def _facades_of(z: Zone, fac: FacadeSet, site: Site) -> np.ndarray:
     return np.flatnonzero(fac.building_id == z.building_id)
 
 
-def _inside(z: Zone, fac: FacadeSet, facades: np.ndarray, u: np.ndarray) -> np.ndarray:
-    """(N,) samples inside the zone."""
+def _inside(
+    z: Zone, fac: FacadeSet, facades: np.ndarray, u: np.ndarray, on_facade: list[np.ndarray]
+) -> np.ndarray:
+    """The indices of the samples inside the zone (ascending); ``on_facade``: each facade's
+    samples (:func:`_samples_by_facade`)."""
     tol = 1e-6
-    mask = np.isin(fac.facade, facades)
+    idx = np.sort(np.concatenate([on_facade[f] for f in facades]))
     if z.along_m is not None:
-        mask &= (u >= z.along_m[0] - tol) & (u <= z.along_m[1] + tol)
-    h = fac.z - fac.base_z[fac.facade]  # above the building's base
+        idx = idx[(u[idx] >= z.along_m[0] - tol) & (u[idx] <= z.along_m[1] + tol)]
+    h = fac.z[idx] - fac.base_z[fac.facade[idx]]  # above the building's base
     if z.height_m is not None:
-        mask &= (h >= z.height_m[0] - tol) & (h <= z.height_m[1] + tol)
+        keep = (h >= z.height_m[0] - tol) & (h <= z.height_m[1] + tol)
+        idx, h = idx[keep], h[keep]
     if z.elevation is not None:
-        idx = np.flatnonzero(mask)
-        inside = shapely.contains_xy(z.elevation.buffer(tol), u[idx], h[idx])
-        mask[idx[~inside]] = False
-    return mask
+        idx = idx[shapely.contains_xy(z.elevation.buffer(tol), u[idx], h)]
+    return idx
 
 
 def _refine(
@@ -207,7 +251,8 @@ def _refine(
     """``fac`` with the samples inside zone ``z`` replaced by a grid at the zone's spacing
     (new columns on its facades, rows over its height range, on the facade's outline)."""
     u = along_m(fac)
-    drop = _inside(z, fac, facades, u)
+    drop = np.zeros(len(fac.z), dtype=bool)
+    drop[_inside(z, fac, facades, u, _samples_by_facade(fac))] = True
     new_cols_f, new_cols_u, new_s = [], [], []  # samples: (facade, column, u, h, id)
     n_cols = len(fac.col_facade)
     for f in facades:
