@@ -145,6 +145,11 @@ def test_serve_refuses_strangers_and_a_taken_port_and_frees_idle_kernels(tmp_pat
         assert second.returncode == 2 and f"port {port} on 127.0.0.1 is taken" in second.stderr
         for _ in range(2):
             assert _get(port) == 200
+        # a template's static file is served; an encoded way out of it is not found (never
+        # a server error), after pages were served
+        assert _get(port, "/voila/templates/lab/static/voila.js") == 200
+        for sneaky in ("lab/static/..%2f..%2f..%2fetc%2fpasswd", "..%2f..%2fetc", "lab%2fstatic"):
+            assert _get(port, "/voila/templates/" + sneaky) == 404, sneaky
         assert len(_kernels(proc.pid)) >= 2  # the two pages' (and the next one warming)
         deadline = time.time() + 60
         while len(_kernels(proc.pid)) > 1 and time.time() < deadline:

@@ -86,7 +86,40 @@ class LoopbackApplication(tornado.web.Application):
             )
         if request.path == INSTANCE_PATH:
             return self.get_handler_delegate(request, _InstanceHandler)
+        if not is_template_file(request.path):
+            return self.get_handler_delegate(
+                request, tornado.web.ErrorHandler, {"status_code": 404}
+            )
         return super().find_handler(request, **kwargs)
+
+
+#: Where Voilà serves its templates' static files: ``/voila/templates/<template>/static/…``.
+TEMPLATE_PREFIX = "/voila/templates/"
+
+
+def is_template_file(path: str) -> bool:
+    """Whether a request's path, if it asks for a template's static file, asks for one
+    Voilà's handler can answer: ``<template>/static/<file>`` once percent-decoded, with no
+    ``..`` or empty segment and no control character (its handler asserts the form and
+    fails with a 500 on another, e.g. an encoded ``..%2f``). Other paths pass.
+
+    >>> is_template_file("/voila/templates/lab/static/voila.js")
+    True
+    >>> is_template_file("/voila/templates/lab/static/..%2f..%2fsecret")
+    False
+    """
+    if not path.startswith(TEMPLATE_PREFIX):
+        return True
+    from urllib.parse import unquote
+
+    rest = unquote(path[len(TEMPLATE_PREFIX) :])
+    parts = rest.replace("\\", "/").split("/")
+    return (
+        len(parts) >= 3
+        and parts[1] == "static"
+        and all(p not in ("", ".", "..") for p in parts)
+        and not any(ord(c) < 32 for c in rest)
+    )
 
 
 def skip_iri_grammar() -> None:
