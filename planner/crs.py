@@ -31,6 +31,7 @@ GEOJSON_DEFAULT = "OGC:CRS84"
 def _crs(label: str):
     import pyproj  # heavy: only when a CRS is used
 
+    pyproj.network.set_network_enabled(active=False)  # PROJ fetches no grid, whatever the env
     try:
         return pyproj.CRS.from_user_input(label)
     except pyproj.exceptions.CRSError as exc:

@@ -185,9 +185,11 @@ def read_terrain(
     from rasterio.errors import RasterioError, WindowError
     from rasterio.windows import from_bounds
 
+    from planner.gdalio import CONFIG as GDAL_CONFIG  # nothing fetched, nothing written
+
     try:
         with (
-            rasterio.Env(GDAL_DISABLE_READDIR_ON_OPEN="EMPTY_DIR", GDAL_HTTP_TIMEOUT="1"),
+            rasterio.Env(GDAL_DISABLE_READDIR_ON_OPEN="EMPTY_DIR", **GDAL_CONFIG),
             rasterio.open(p, driver="GTiff") as src,
         ):
             t = src.transform
