@@ -86,3 +86,47 @@ try:  # property-based tests: the same examples on every CI run, fresh ones loca
     _hypothesis_settings.load_profile("ci" if os.environ.get("CI") else "dev")
 except ImportError:  # pragma: no cover - hypothesis is a dev dependency
     pass
+
+
+class _Sentinel:
+    """A listener on the loopback that nothing should ever call: the hostile files of the
+    tests name its address (a URL, a WFS server, a scheduler), and a connection means the
+    planner fetched something. It records every connection it accepts."""
+
+    def __init__(self) -> None:
+        import socket
+        import threading
+
+        self.sock = socket.socket()
+        self.sock.bind(("127.0.0.1", 0))
+        self.sock.listen(16)
+        self.port = self.sock.getsockname()[1]
+        self.calls: list[bytes] = []
+        threading.Thread(target=self._serve, name="sentinel", daemon=True).start()
+
+    def _serve(self) -> None:
+        while True:
+            try:
+                conn, _ = self.sock.accept()
+            except OSError:
+                return
+            with conn:
+                conn.settimeout(1.0)
+                try:
+                    self.calls.append(conn.recv(200) or b"(connected)")
+                except OSError:
+                    self.calls.append(b"(connected)")
+
+    @property
+    def url(self) -> str:
+        return f"http://127.0.0.1:{self.port}"
+
+
+@pytest.fixture(autouse=True, scope="session")
+def sentinel():
+    """The loopback listener no request may reach during the suite (:class:`_Sentinel`):
+    the session fails if one did."""
+    s = _Sentinel()
+    yield s
+    s.sock.close()
+    assert not s.calls, f"the planner made {len(s.calls)} request(s) on the loopback: {s.calls}"

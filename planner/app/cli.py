@@ -197,13 +197,13 @@ def cmd_audit(args: argparse.Namespace) -> int:
     from planner.pipeline.audit import audit, audit_summary, read_plan_tables
     from planner.site import with_terrain
 
+    out = check_output_file(Path(args.out) if args.out else Path(args.plan) / "audit.csv")
+    check_inputs_kept([out], _input_paths(args))
     cov, fac, st = read_plan_tables(args.plan)
     model = read_city_model(args.model, lod=args.lod, crs=args.crs)
     if args.terrain:
         model = with_terrain(model, args.terrain)
     table = audit(model, cov, fac, st)
-    out = check_output_file(Path(args.out) if args.out else Path(args.plan) / "audit.csv")
-    check_inputs_kept([out], _input_paths(args))
     write_bytes_atomic(out, table.to_csv(index=False).encode("utf-8"))
     summary = audit_summary(table)
     print(summary.to_string(index=False))

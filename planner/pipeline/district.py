@@ -496,7 +496,11 @@ def connect(address: str, timeout_s: float = SCHEDULER_TIMEOUT_S) -> Any:
     if "error" in got:
         exc = got["error"]
         why = f"{type(exc).__name__}: {str(exc).splitlines()[0][:160] if str(exc) else ''}"
-        raise InputError(f"cannot reach a Dask scheduler at {address[:80]!r} ({why}); {fix}")
+        if isinstance(exc, OSError | TimeoutError):
+            raise InputError(f"cannot reach a Dask scheduler at {address[:80]!r} ({why}); {fix}")
+        raise InputError(
+            f"something answers at {address[:80]!r}, but not as a Dask scheduler ({why}); {fix}"
+        )
     raise InputError(
         f"nothing answered as a Dask scheduler at {address[:80]!r} within "
         f"{3 * timeout_s:.0f} s (something listens there, but not a scheduler); {fix}"

@@ -909,7 +909,9 @@ class PlanSettings:
     )
 
     def __post_init__(self) -> None:
-        station_rms_pair(self.station_rms_mm)
+        spec = field_specs(PlanSettings)["station_rms_mm"]
+        for value in station_rms_pair(self.station_rms_mm):
+            _number(value, spec)
         _validate_numbers(self, skip=("station_rms_mm",))
         object.__setattr__(self, "inventory", as_inventory(self.inventory))
         if self.method not in METHODS:
