@@ -392,7 +392,6 @@ def quick_connect(monkeypatch):
     from planner.pipeline import district
 
     monkeypatch.setattr(district, "SCHEDULER_TIMEOUT_S", 1.0)
-    monkeypatch.setattr(district.connect, "__defaults__", (1.0,))
 
 
 def _peer(kind: str) -> tuple[socket.socket, int]:

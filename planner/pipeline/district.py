@@ -470,14 +470,16 @@ def scheduler_address(text: str) -> str:
     return text
 
 
-def connect(address: str, timeout_s: float = SCHEDULER_TIMEOUT_S) -> Any:
+def connect(address: str, timeout_s: float | None = None) -> Any:
     """A Dask client of the scheduler at ``address``, or InputError within ``3 × timeout_s``
-    seconds: the connection runs in a daemon thread, so a peer that accepts and never
-    answers cannot hold the plan (the thread is left to end with the process)."""
+    seconds (default :data:`SCHEDULER_TIMEOUT_S`): the connection runs in a daemon thread,
+    so a peer that accepts and never answers cannot hold the plan (the thread is left to
+    end with the process)."""
     import threading
 
     from dask.distributed import Client
 
+    timeout_s = SCHEDULER_TIMEOUT_S if timeout_s is None else timeout_s
     scheduler_address(address)
     got: dict[str, Any] = {}
 
