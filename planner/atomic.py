@@ -166,11 +166,19 @@ def _check_no_dangling_link(p: Path) -> None:
     """A symbolic link on the way to ``p`` that points nowhere is refused: writing through it
     would create the tree it names, somewhere the user did not choose."""
     for q in (p, *p.parents):
-        if q.is_symlink() and not q.exists():
+        if not q.is_symlink():
+            continue
+        try:
+            q.resolve(strict=True)
+        except FileNotFoundError:
             raise InputError(
                 f"{str(q)!r} is a symbolic link to {os.readlink(q)!r}, which does not exist; "
                 "fix the link or choose another output path"
-            )
+            ) from None
+        except (OSError, RuntimeError) as exc:  # a loop of links
+            raise InputError(
+                f"{str(q)!r} cannot be followed ({exc}); choose another output path"
+            ) from None
 
 
 def _check_no_mount_point(folder: Path) -> None:

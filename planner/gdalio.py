@@ -215,12 +215,6 @@ def _check_kmz(p: Path) -> None:
         kml = [i for i in infos if i.filename.lower().endswith(".kml")]
         if not kml:
             raise InputError(f"{p.name}: a KMZ archive holds a .kml file; this one holds none")
-        if len(kml) > 1:  # GDAL reads one of them: the others' features would be dropped
-            names = ", ".join(i.filename for i in kml[:4]) + (" …" if len(kml) > 4 else "")
-            raise InputError(
-                f"{p.name} holds {len(kml)} KML files ({names}); only one would be read: "
-                "export the site as one KML (or KMZ with one KML in it)"
-            )
         if sum(i.file_size for i in infos) > MAX_FILE_BYTES:
             raise InputError(
                 f"{p.name} unpacks to more than {MAX_FILE_BYTES / 1e6:.0f} MB; a site file "

@@ -95,6 +95,7 @@ RANGES: dict[str, Range] = {
     "range_rms_mm": Range(0.01, 1000.0, "mm"),
     "range_ppm": Range(0.0, 10_000.0, "ppm"),
     "angle_rms_arcsec": Range(0.01, 3600.0, "arc-seconds"),
+    "levelling_rms_arcsec": Range(0.0, 3600.0, "arc-seconds", open_lo=True),  # ~0: ideal
     "step_mm_at_10m": Range(0.01, 1000.0, "mm"),
     "max_range_m": Range(0.5, 10_000.0, "m"),
     "min_range_m": Range(0.0, 1000.0, "m"),

@@ -175,7 +175,7 @@ class Scanner:
         optional = {
             "vertical_angle_rms_arcsec": "angle_rms_arcsec",
             "measurement_rate_hz": "measurement_rate_hz",
-            "levelling_rms_arcsec": "angle_rms_arcsec",
+            "levelling_rms_arcsec": "levelling_rms_arcsec",
             "beam_divergence_mrad": "beam_divergence_mrad",
             "beam_exit_mm": "beam_exit_mm",
         }

@@ -200,7 +200,7 @@ def test_bad_cluster_options_are_exit_2(tmp_path, option, message):
 
 
 def test_block_size_is_checked(district):
-    with pytest.raises(InputError, match="at least 20 m"):
+    with pytest.raises(InputError, match="must be >= 20"):
         partition(district[0], 5.0)
 
 

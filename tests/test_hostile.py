@@ -3,7 +3,7 @@ property-based test generating more of its kind.
 
 1. Nothing is fetched and nothing outside the input is read (GIS files pinned to their
    format and driver; the session's loopback sentinel, ``conftest.sentinel``, sees no call).
-2. Nothing is dropped silently (a shapefile's tables disagreeing, a KMZ of several KMLs).
+2. Nothing is dropped silently (a shapefile's tables disagreeing).
 3. A bad number is exit 2 naming its range, never 3 (:mod:`planner.numbers`).
 4. ``--scheduler`` fails fast and clearly.
 5. Units: a CRS in feet is refused, not planned as metres.
@@ -229,13 +229,15 @@ def test_a_shapefile_whose_dbf_lost_a_record_is_refused(tmp_path):
         planner.read_site(path)
 
 
-def test_a_kmz_of_several_kml_files_is_refused(tmp_path):
+def test_every_kml_of_a_kmz_is_pinned(tmp_path, sentinel):
+    """GDAL's LIBKML reads every KML of a KMZ (its own KMZ: doc.kml linking layers/*.kml),
+    so each one must be KML: a virtual dataset as the second is refused."""
     path = tmp_path / "site.kmz"
     kml = '<kml xmlns="http://www.opengis.net/kml/2.2"><Document/></kml>'
     with zipfile.ZipFile(path, "w") as zf:
         zf.writestr("doc.kml", kml)
-        zf.writestr("more/other.kml", kml)
-    with pytest.raises(InputError, match="holds 2 KML files"):
+        zf.writestr("layers/b.kml", _vrt(f"/vsicurl/{sentinel.url}/x.geojson"))
+    with pytest.raises(InputError, match=r"site.kmz:layers/b.kml is not a KML file"):
         planner.read_site(path)
 
 

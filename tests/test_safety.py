@@ -406,10 +406,10 @@ SITE_ATTACKS = [
         "longitude/latitude",
     ),
     (
-        "sample spacing 1 mm",
+        "sample spacing 1 cm",
         "a.geojson",
         _fc(_feature(_square(), height=10)),
-        ["--sample-spacing-m", "0.001", "--sample-height-step-m", "0.01"],
+        ["--sample-spacing-m", "0.01", "--sample-height-step-m", "0.01"],
         "more than",
     ),
     (
@@ -463,7 +463,7 @@ SCANNER_ATTACKS = [
     (
         "a negative ranging RMS",
         '[[scanner]]\nname="x"\nrange_rms_mm=-2\nangle_rms_arcsec=9\n',
-        "range_rms_mm must be a finite number > 0",
+        "range_rms_mm must be >= 0.01",
     ),
     ("no angles", '[[scanner]]\nname="x"\nrange_rms_mm=2\n', "lacks angle_rms_arcsec"),
 ]

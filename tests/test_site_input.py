@@ -221,7 +221,7 @@ def test_make_valid_is_an_explicit_option(tmp_path):
         ("a.wkt", "POLYGON ((0 0, 1 0, 1", "line 1 is not WKT"),
         ("a.geojson", '{"type": "FeatureCollection", "features": [', "is not valid JSON"),
         ("a.geojson", '{"features": []}', "not GeoJSON"),
-        ("a.shp", "whatever", "cannot open it as Shapefile"),
+        ("a.shp", "whatever", "has the extension .shp but is not a Shapefile"),
         ("a.csv", "name,easting\nx,1\n", "needs the columns id, x, y"),
     ],
 )
