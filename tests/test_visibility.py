@@ -241,3 +241,32 @@ def test_one_end_is_shared_by_every_sight_line_as_before():
     np.testing.assert_array_equal(stand_blocks(src, dst, centre, 0.1), want)
     np.testing.assert_array_equal(stand_blocks(dst, src, centre, 0.1), want)
     assert want.sum() == 2  # the first line by the first sphere, the second by the second
+
+
+@pytest.mark.parametrize("engine", ["prisms", "rays"])
+def test_a_round_tower_drawn_as_many_edges_is_seen_all_round(engine):
+    """A tower of 20 m radius drawn as 200 edges (0.63 m each): its facades are merged
+    chords up to 10 cm behind the drawn outline, and the outline is the facade itself, not
+    a wall in front of it — every sample is met by a few stations (it was 1 station and 6
+    of 402 samples). Negative control: with no band for the merged edges, the drawn edges
+    stand in front of the chord."""
+    import planner
+    from planner.pipeline.facades import MERGE_OFFSET_M
+    from planner.pipeline.visibility import edges_in_front
+    from planner.site import Building, Site
+
+    a = np.linspace(0, 2 * np.pi, 200, endpoint=False)
+    ring = np.c_[20 * np.cos(a), 20 * np.sin(a)] + [500000.0, 5400000.0]
+    site = Site([Building("tower", shapely.Polygon(ring), 12.0)], crs="EPSG:25832")
+    p = planner.plan(site, settings=planner.PlanSettings(time_limit_s=60, sight_engine=engine))
+    assert len(p.facades) == 34  # merged: 200 edges → 34 facades
+    assert p.coverage["meets"].all() and 3 <= len(p.stations) <= 8
+    edges = np.array([[*ring[k], *ring[(k + 1) % 200]] for k in range(200)])
+    f = p.facades.iloc[0]
+    start, end = np.array([f.x0, f.y0]), np.array([f.x1, f.y1])
+    normal = np.array([end[1] - start[1], start[0] - end[0]]) / f.length_m
+    normal *= np.sign(normal @ (start - ring.mean(axis=0)))  # outward
+    box = (*(ring.min(axis=0) - 50), *(ring.max(axis=0) + 50))
+    naive = edges_in_front(edges, start, normal, box)
+    banded = edges_in_front(edges, start, normal, box, end=end, band_m=MERGE_OFFSET_M)
+    assert banded.sum() < naive.sum()  # its own run's edges are no longer in front of it

@@ -431,7 +431,9 @@ def run_plan(args: argparse.Namespace) -> int:
     from planner.pipeline.facades import estimate_samples
 
     deadline = started + settings.time_limit_s
+    # the coverage table's rows, and the zone table's (a zones file may hold many)
     rows = estimate_samples(site, settings.sample_spacing_m, settings.sample_height_step_m)
+    rows += len(site.zones)
     # the files' time as measured on an idle machine, stretched by the pace this command
     # has had so far (its start, imports and reading: a loaded machine slows all of it)
     slow = pace(time.monotonic() - started, time.process_time())

@@ -25,7 +25,7 @@ import scipy.sparse as sp
 from planner.accuracy import eq2_variances, eq4_variance
 from planner.accuracy3d import footprint_mm, incidence_ranging_rms_mm, variances_3d
 from planner.pipeline.candidates import GroundRegions
-from planner.pipeline.facades import SIGHT_OFFSET_M, FacadeSet
+from planner.pipeline.facades import MERGE_OFFSET_M, SIGHT_OFFSET_M, FacadeSet
 from planner.pipeline.requirements import CHECKS, Check, PlanSettings, Requirements
 from planner.pipeline.scene import Scene
 from planner.pipeline.schema import METRIC_KEYS
@@ -34,6 +34,7 @@ from planner.pipeline.visibility import (
     clear_height,
     edges_in_box,
     edges_in_front,
+    own_edges,
     visible,
 )
 from planner.pipeline.zoning import SampleRequirements
@@ -91,6 +92,9 @@ class Context:
     reach_m: float
     scene: Scene  # every sight line is answered here
     edge_mask: list[np.ndarray]  # per facade: edges that can block its sight lines
+    #: per facade: how far in front of it its rays end [m] (:data:`SIGHT_OFFSET_M`, and in
+    #: front of the curved run of edges a merged facade stands for)
+    ray_end_m: np.ndarray
     cols_of: list[np.ndarray]  # per facade: its columns
     samples_of: list[np.ndarray]  # per facade: its samples
     step_mm_at_10m: float
@@ -118,7 +122,7 @@ class Context:
         ``scene`` the sight lines' (made for ``site`` with the settings' engine when not
         given)."""
         scene = scene or Scene(site, settings.sight_engine)
-        masks, cols_of, samples_of = [], [], []
+        masks, cols_of, samples_of, ahead = [], [], [], []
         col_order = np.argsort(facades.col_facade, kind="stable")
         smp_order = np.argsort(facades.facade, kind="stable")
         col_bounds = np.searchsorted(
@@ -133,7 +137,20 @@ class Context:
                 max(a[0], e[0]) + reach,
                 max(a[1], e[1]) + reach,
             )
-            masks.append(np.flatnonzero(edges_in_front(scene.edges, a, facades.normal[f], bbox)))
+            n = facades.normal[f]
+            masks.append(
+                np.flatnonzero(
+                    edges_in_front(scene.edges, a, n, bbox, end=e, band_m=MERGE_OFFSET_M)
+                )
+            )
+            # a facade merged from a curved run of edges stands behind them: its rays end in
+            # front of the run (a single edge: the facade itself, 0 m ahead)
+            own = scene.edges[own_edges(scene.edges, a, n, e, MERGE_OFFSET_M)]
+            ahead.append(
+                max(0.0, *((own[:, [0, 2]] - a[0]) * n[0] + (own[:, [1, 3]] - a[1]) * n[1]).ravel())
+                if len(own)
+                else 0.0
+            )
             cols_of.append(col_order[col_bounds[f] : col_bounds[f + 1]])
             samples_of.append(smp_order[smp_bounds[f] : smp_bounds[f + 1]])
         sample_req = sample_req or SampleRequirements.uniform(req, len(facades.z))
@@ -146,6 +163,7 @@ class Context:
             reach_m=reach,
             scene=scene,
             edge_mask=masks,
+            ray_end_m=SIGHT_OFFSET_M + np.array(ahead, dtype=float),
             cols_of=cols_of,
             samples_of=samples_of,
             step_mm_at_10m=settings.step_mm_at_10m or scanner.step_mm_at_10m,
@@ -268,7 +286,7 @@ class Context:
             zs = self.station_z(cand_xy) if cand_z is None else cand_z  # (per candidate)
             src = np.column_stack([cand_xy[ci], zs[ci]])
             dst = np.column_stack([fac.xy[smp[si]], fac.z[smp[si]]])
-            seen[ci, cols[si]] = self.scene.seen(src, dst + SIGHT_OFFSET_M * fac.normal3[f])
+            seen[ci, cols[si]] = self.scene.seen(src, dst + self.ray_end_m[f] * fac.normal3[f])
             known[ci, cols[si]] = True
         return pairs & seen[:, cols]
 

@@ -180,6 +180,12 @@ def on_facade(
     return start + u[:, None] * along + w[:, None] * normal, z
 
 
+#: Consecutive footprint edges turning less than this are one facade [deg] …
+MERGE_ANGLE_DEG = 10.0
+#: … while every vertex between stays within this of the facade's chord [m].
+MERGE_OFFSET_M = 0.10
+
+
 def _merge_ring(xy: np.ndarray, max_turn_deg: float, max_offset_m: float) -> list[tuple[int, int]]:
     """Runs ``(i, j)`` of vertex indices of a closed ring (no repeated last point) forming
     straight facades: consecutive edges turning less than ``max_turn_deg`` and with every
@@ -251,8 +257,8 @@ def build_facades(
     sample_spacing_m: float = 2.0,
     sample_height_step_m: float = 2.0,
     *,
-    merge_angle_deg: float = 10.0,
-    merge_offset_m: float = 0.10,
+    merge_angle_deg: float = MERGE_ANGLE_DEG,
+    merge_offset_m: float = MERGE_OFFSET_M,
     scene: Scene | None = None,
     roofs: bool = False,
 ) -> FacadeSet:

@@ -54,6 +54,7 @@ __all__ = [
     "clear_height",
     "edges_in_box",
     "edges_in_front",
+    "own_edges",
     "stand_blocks",
     "visible",
 ]
@@ -281,12 +282,51 @@ def edges_in_front(
     point: np.ndarray,
     normal: np.ndarray,
     bbox: tuple[float, float, float, float],
+    *,
+    end: np.ndarray | None = None,
+    band_m: float = 0.0,
 ) -> np.ndarray:
     """Mask of edges that can block a sight line ending on a facade: an end strictly in front
-    of the facade line (through ``point``, outward ``normal``) and overlapping ``bbox``."""
+    of the facade line (through ``point``, outward ``normal``) and overlapping ``bbox``.
+
+    A facade merged from nearly collinear edges (a curved wall drawn as many short edges,
+    :func:`~planner.pipeline.facades.build_facades`) is sampled on its chord, up to
+    ``band_m`` behind the edges it stands for; with its ``end`` given, those edges
+    (:func:`own_edges`) are the facade itself, not in front of it."""
+    d0, d1 = _ahead(edges, point, normal)
+    front = edges_in_box(edges, bbox) & (np.maximum(d0, d1) > 1e-6)
+    if end is None or band_m <= 0.0:
+        return front
+    return front & ~own_edges(edges, point, normal, end, band_m)
+
+
+def own_edges(
+    edges: np.ndarray, point: np.ndarray, normal: np.ndarray, end: np.ndarray, band_m: float
+) -> np.ndarray:
+    """Mask of the edges a facade from ``point`` to ``end`` (outward ``normal``) was merged
+    from: both ends within ``band_m`` in front of its line and within its length."""
+    d0, d1 = _ahead(edges, point, normal)
+    along = np.asarray(end, dtype=float)[:2] - np.asarray(point, dtype=float)[:2]
+    length = float(np.hypot(*along))
+    if length == 0.0:
+        return np.zeros(len(edges), dtype=bool)
+    t = along / length
+    u0 = (edges[:, 0] - point[0]) * t[0] + (edges[:, 1] - point[1]) * t[1]
+    u1 = (edges[:, 2] - point[0]) * t[0] + (edges[:, 3] - point[1]) * t[1]
+    tol = 1e-6
+    return (
+        (np.minimum(d0, d1) >= -tol)
+        & (np.maximum(d0, d1) <= band_m + tol)
+        & (np.minimum(u0, u1) >= -tol)
+        & (np.maximum(u0, u1) <= length + tol)
+    )
+
+
+def _ahead(edges: np.ndarray, point: np.ndarray, normal: np.ndarray) -> tuple[np.ndarray, ...]:
+    """How far each edge's two ends stand in front of the line through ``point`` [m]."""
     d0 = (edges[:, 0] - point[0]) * normal[0] + (edges[:, 1] - point[1]) * normal[1]
     d1 = (edges[:, 2] - point[0]) * normal[0] + (edges[:, 3] - point[1]) * normal[1]
-    return edges_in_box(edges, bbox) & (np.maximum(d0, d1) > 1e-6)
+    return d0, d1
 
 
 def stand_blocks(
