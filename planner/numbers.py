@@ -104,6 +104,10 @@ RANGES: dict[str, Range] = {
     "beam_exit_mm": Range(0.01, 1000.0, "mm"),
     "imaging_s": Range(0.0, 86_400.0, "s"),
     "scan_s": Range(1.0, 86_400.0, "s"),
+    # targets and control points (the largest spheres and boards are 450 mm; a control
+    # network's point is known to better than a decimetre, not better than 10 µm)
+    "target_size_mm": Range(1.0, 2000.0, "mm"),
+    "control_rms_mm": Range(0.01, 100.0, "mm"),
     # command line
     "distance_m": Range(0.0, 10_000.0, "m", open_lo=True),
     "angle_deg": Range(-90.0, 90.0, "deg"),

@@ -24,6 +24,7 @@ from shapely.geometry.base import BaseGeometry
 
 from planner.citymodel import Surface
 from planner.errors import InputError
+from planner.numbers import RANGES
 from planner.sitecheck import CLIP_SHARE, SiteNote, SiteProblem, SiteProblems, near_mask
 from planner.terrain import Terrain
 from planner.text import printable
@@ -224,11 +225,7 @@ class ControlPoint:
                 f"control point {self.id!r} needs finite x, y, z [m] (the height too); "
                 f"got {self.xyz!r}"
             )
-        if not math.isfinite(rms) or rms <= 0 or rms > 100:
-            raise InputError(
-                f"control point {self.id!r}: rms_mm must be > 0 and <= 100 [mm]; "
-                f"got {self.rms_mm!r}"
-            )
+        rms = RANGES["control_rms_mm"].check(rms, f"control point {self.id!r}: rms_mm")
         object.__setattr__(self, "xyz", xyz)
         object.__setattr__(self, "rms_mm", rms)
 

@@ -26,6 +26,7 @@ from numpy.typing import ArrayLike
 
 from planner._array import as_float_array, check_range, like_input
 from planner.errors import InputError
+from planner.numbers import RANGES
 from planner.scanner import Scanner
 from planner.spacing import point_spacing_mm, resolve_step_mm
 
@@ -186,11 +187,7 @@ class TargetItem:
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "type", _check_type(self.type))
-        size = float(self.size_mm)
-        if not np.isfinite(size) or size <= 0:
-            raise InputError(
-                f"target {self.name!r}: size_mm must be > 0 [mm]; got {self.size_mm!r}"
-            )
+        size = RANGES["target_size_mm"].check(self.size_mm, f"target {self.name!r}: size_mm")
         object.__setattr__(self, "size_mm", size)
         if self.count is not None:
             if isinstance(self.count, bool) or int(self.count) != self.count or self.count < 1:

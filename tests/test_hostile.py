@@ -280,6 +280,16 @@ SCANNER = (
         (["--workers", "0"], {}, "argument --workers: must be a whole number >= 1"),
         (["--height", "1e308"], {}, "argument --height: must be > 0 and <= 1000 [m]"),
         (["--mesh-offset", "1e308,0,0"], {}, "argument --mesh-offset"),
+        (
+            ["--inventory", "{tmp}/inv.txt"],
+            {"inv.txt": "big, sphere, 1e308\n"},
+            "size_mm must be >= 1 and <= 2000 [mm]",
+        ),
+        (
+            ["--control", "{tmp}/c.csv"],
+            {"c.csv": "id,x,y,z,rms_mm\nA,691005,5334990,1,1e-300\n"},
+            "rms_mm must be >= 0.01",
+        ),
     ],
 )
 def test_a_number_out_of_its_range_is_exit_2_naming_it(tmp_path, args, files, message):

@@ -261,7 +261,7 @@ def test_control_points_from_the_command_line_are_the_datum(tmp_path):
         ("id,x,y,z\nA,691005,5335005,1\n", "inside building 'main'"),
         ("id,x,y\nA,691005,5334990\n", "missing z"),
         ("id,x,y,z\nA,691005,5334990,abc\n", "abc"),
-        ("id,x,y,z,rms_mm\nA,691005,5334990,1,-2\n", "rms_mm must be > 0"),
+        ("id,x,y,z,rms_mm\nA,691005,5334990,1,-2\n", "rms_mm must be >= 0.01"),
         ("id,x,y,z\nA,690990,5334990,1\nA,690995,5334990,1\n", "unique"),
         ("", "no control points"),
     ],

@@ -73,7 +73,7 @@ def test_choose_target_picks_the_smallest_that_fits():
 def test_bad_target_input():
     with pytest.raises(InputError, match="flat, sphere, cylinder"):
         min_target_size_mm(10, "cone")
-    with pytest.raises(InputError, match="size_mm must be > 0"):
+    with pytest.raises(InputError, match="size_mm must be >= 1"):
         TargetItem("x", "flat", -3)
     with pytest.raises(InputError, match="inventory is empty"):
         recommend_targets(10, [])
