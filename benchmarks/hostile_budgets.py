@@ -54,12 +54,17 @@ def dense_site(path: Path, shape: str, n: int = 200_000) -> None:
         t = np.linspace(0.0, 1.0, n // 4, endpoint=False)
         z = 0 * t
         ring = np.vstack(
-            [np.c_[100 * t, z], np.c_[100 + z, 60 * t], np.c_[100 - 100 * t, 60 + z], np.c_[z, 60 - 60 * t]]
+            [
+                np.c_[100 * t, z],
+                np.c_[100 + z, 60 * t],
+                np.c_[100 - 100 * t, 60 + z],
+                np.c_[z, 60 - 60 * t],
+            ]
         )
     else:
         a = np.linspace(0.0, 2 * np.pi, n, endpoint=False)
         ring = 100 * np.c_[np.cos(a), np.sin(a)]
-    ring = np.vstack([ring, ring[:1]]) + [X0, Y0]
+    ring = np.vstack([ring, ring[:1]]) + np.array([X0, Y0])
     doc = {
         "type": "FeatureCollection",
         "crs": {"type": "name", "properties": {"name": "EPSG:25832"}},

@@ -280,6 +280,8 @@ SCANNER = (
         (["--workers", "0"], {}, "argument --workers: must be a whole number >= 1"),
         (["--height", "1e308"], {}, "argument --height: must be > 0 and <= 1000 [m]"),
         (["--mesh-offset", "1e308,0,0"], {}, "argument --mesh-offset"),
+        (["--mesh-offset", "1,2,3"], {}, "--mesh-offset moves the mesh of --mesh"),
+        (["--worker-memory", "lots"], {}, "worker memory 'lots' is not a size"),
         (
             ["--inventory", "{tmp}/inv.txt"],
             {"inv.txt": "big, sphere, 1e308\n"},

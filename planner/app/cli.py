@@ -270,6 +270,8 @@ def plan_inputs(args: argparse.Namespace):
     from planner.siteio import default_site
     from planner.targets import parse_inventory
 
+    if args.mesh_offset and not args.mesh:
+        raise InputError("--mesh-offset moves the mesh of --mesh; give the mesh")
     options = dict(vars(args))
     if args.inventory:
         options["inventory"] = parse_inventory(_read_text(args.inventory, "inventory file"))
@@ -324,8 +326,6 @@ def read_site_args(args: argparse.Namespace, limits, near_m: float):
         lod=args.lod,
         **({"storey_height_m": args.storey_height_m} if args.storey_height_m else {}),
     )
-    if args.mesh_offset and not args.mesh:
-        raise InputError("--mesh-offset moves the mesh of --mesh; give the mesh")
     if args.mesh:
         from planner.cityio import with_mesh
 
@@ -425,6 +425,9 @@ def run_plan(args: argparse.Namespace) -> int:
     progress = _StderrProgress(args.quiet)
     check_output_folder(args.out)  # before the plan, which can take minutes
     check_inputs_kept([Path(args.out) / name for name in OWNED_FILES], _input_paths(args))
+    from planner.pipeline.district import memory_bytes
+
+    memory_bytes(args.worker_memory)  # checked even where the plan needs no cluster
     site, scanner, req, settings = plan_inputs(args)
     import ezdxf  # noqa: F401  (the DXF writer's import, 0.7 s, made now: not after planning)
 

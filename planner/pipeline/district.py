@@ -552,7 +552,7 @@ def plan_district(
     spacing = [float(v) for v in spacing if v]  # the strictest anywhere: one step for all blocks
     st = st.for_scanner(scanner, min(spacing, default=None), halo)
     RANGES["workers"].check(workers, "the number of workers")
-    _memory_bytes(memory_limit)
+    memory_bytes(memory_limit)
     sites = [block_site(site, b, halo) for b in blocks]
     # each block's samples, refused here as a block's plan would refuse them (before a
     # cluster is started for nothing); the largest blocks go first (below)
@@ -675,7 +675,7 @@ def _import_planner() -> None:
     import planner.pipeline.planning  # noqa: F401
 
 
-def _memory_bytes(text: str) -> int:
+def memory_bytes(text: str) -> int:
     """A worker's memory (``"2GB"``, ``"1.5 GiB"``) in bytes, or an input error."""
     from dask.utils import parse_bytes
 
