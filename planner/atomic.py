@@ -123,6 +123,11 @@ def check_output_folder(folder: str | Path) -> Path:
     _check_no_dangling_link(target)
     if target.exists() and not target.is_dir():
         raise InputError(f"{str(target)!r} exists and is not a folder; choose another --out")
+    if target.is_dir() and os.path.ismount(target):
+        raise InputError(
+            f"{str(target)!r} is a mount point; a plan replaces its folder as a whole, which "
+            f"a mount point cannot be: give a folder inside it (e.g. --out {target}/plan)"
+        )
     if target.is_dir():
         _check_no_mount_point(target)
     try:

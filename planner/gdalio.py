@@ -25,8 +25,8 @@ from __future__ import annotations
 import os
 import struct
 import sys
-import xml.etree.ElementTree as ET
 import zipfile
+import zlib
 from pathlib import Path
 from typing import Any
 
@@ -57,6 +57,7 @@ CONFIG = {
     "GDAL_PAM_ENABLED": "NO",
     "GML_SAVE_RESOLVED_TO": "",
     "OGR_SQLITE_JOURNAL": "OFF",
+    "OGR_SQLITE_ALLOW_EXTERNAL_ACCESS": "NO",  # a GeoPackage's SQL opens no other dataset
 }
 _SQLITE = b"SQLite format 3\x00"
 _GPKG_IDS = (b"GPKG", b"GP10", b"GP11")
@@ -101,6 +102,7 @@ def layers(p: Path, kind: str) -> list[str]:
     from pyogrio.errors import DataLayerError, DataSourceError
 
     check_signature(p, kind)
+    _check_plain_path(og, p)
     try:
         names = [str(name) for name, _ in og.list_layers(p)]
         driver = og.read_info(p, layer=names[0], **_open_options(kind))["driver"] if names else ""
@@ -127,6 +129,17 @@ def read_layer(p: Path, kind: str, layer: str) -> tuple[dict, Any, Any, Any]:
         return og.raw.read(p, layer=layer, **_open_options(kind))
     except (DataSourceError, DataLayerError) as exc:
         raise InputError(f"{p.name}: cannot read layer {layer!r} ({_first_line(exc)})") from None
+
+
+def _check_plain_path(og: Any, p: Path) -> None:
+    """Refuse a path that GDAL would read as another file: pyogrio turns ``a.zip!b.gpkg``
+    into a member of a zip, ``x!y.gpkg`` into ``y.gpkg``, ``http:/…`` into a URL."""
+    text = str(p)
+    if og.util.vsi_path(text) != text or text.startswith("/vsi"):
+        raise InputError(
+            f"{p.name}: GDAL would read the path {text!r} as another file (a '!' or a "
+            "'scheme:/' in it); rename the file or its folder"
+        )
 
 
 def _open_options(kind: str) -> dict[str, str]:
@@ -185,19 +198,34 @@ def _check_shapefile(p: Path, head: bytes) -> None:
         )
 
 
+class _Root(Exception):
+    """The first element's name, raised out of the XML parser to stop it there."""
+
+
 def _check_kml(head: bytes, name: str) -> None:
     """XML whose root element is ``kml``, without a document type declaration (KML has none;
-    one could declare entities)."""
-    parser = ET.XMLPullParser(events=("start",))
-    try:
-        parser.feed(head)
-        root = next((el for _, el in parser.read_events()), None)
-    except ET.ParseError as exc:
-        raise InputError(f"{name} is not a KML file (not well-formed XML: {exc})") from None
-    if b"<!DOCTYPE" in head[: head.find(b"<kml") if b"<kml" in head else len(head)]:
+    one could declare entities): read by expat up to its first element."""
+    import xml.parsers.expat as expat
+
+    def doctype(*_args: object) -> None:
         raise InputError(f"{name}: a KML file has no document type declaration; export it again")
-    if root is None or root.tag.rsplit("}", 1)[-1] != "kml":
-        tag = "none" if root is None else repr(root.tag.rsplit("}", 1)[-1])
+
+    def first(tag: str, _attrs: object) -> None:
+        raise _Root(tag)
+
+    parser = expat.ParserCreate()
+    parser.StartDoctypeDeclHandler = doctype
+    parser.EntityDeclHandler = doctype
+    parser.StartElementHandler = first
+    root = None
+    try:
+        parser.Parse(head, False)
+    except _Root as found:
+        root = str(found.args[0]).rsplit(":", 1)[-1]
+    except (expat.ExpatError, LookupError, ValueError) as exc:  # LookupError: an encoding
+        raise InputError(f"{name} is not a KML file (not well-formed XML: {exc})") from None
+    if root != "kml":
+        tag = "none" if root is None else repr(root)
         raise InputError(
             f"{name} is not a KML file (its root element is {tag}, not 'kml'); export the "
             "site again as KML"
@@ -205,21 +233,40 @@ def _check_kml(head: bytes, name: str) -> None:
 
 
 def _check_kmz(p: Path) -> None:
+    """A zip archive of KML: every XML member of it KML (GDAL reads them all; a link in
+    one may name another), no more unpacked than a site file may be."""
     from planner.siteio import MAX_FILE_BYTES
 
     if not zipfile.is_zipfile(p):
         with p.open("rb") as fh:
             _refuse(p, "KMZ", _looks_like(fh.read(512)))
-    with zipfile.ZipFile(p) as zf:
-        infos = zf.infolist()
-        kml = [i for i in infos if i.filename.lower().endswith(".kml")]
-        if not kml:
-            raise InputError(f"{p.name}: a KMZ archive holds a .kml file; this one holds none")
-        if sum(i.file_size for i in infos) > MAX_FILE_BYTES:
-            raise InputError(
-                f"{p.name} unpacks to more than {MAX_FILE_BYTES / 1e6:.0f} MB; a site file "
-                "of that size is not a site"
-            )
-        for info in kml:
-            with zf.open(info) as fh:
-                _check_kml(fh.read(_XML_HEAD), f"{p.name}:{info.filename}")
+    try:
+        with zipfile.ZipFile(p) as zf:
+            infos = zf.infolist()
+            if not any(i.filename.lower().endswith(".kml") for i in infos):
+                raise InputError(f"{p.name}: a KMZ archive holds a .kml file; this one holds none")
+            if sum(i.file_size for i in infos) > MAX_FILE_BYTES:
+                raise InputError(
+                    f"{p.name} unpacks to more than {MAX_FILE_BYTES / 1e6:.0f} MB; a site file "
+                    "of that size is not a site"
+                )
+            for info in infos:
+                with zf.open(info) as fh:
+                    head = fh.read(_XML_HEAD)
+                xml = head.lstrip(b"\xef\xbb\xbf \t\r\n").startswith(b"<")
+                if info.filename.lower().endswith(".kml") or xml:
+                    _check_kml(head, f"{p.name}:{info.filename}")
+    except InputError:
+        raise
+    except (
+        zipfile.BadZipFile,
+        NotImplementedError,
+        RuntimeError,
+        EOFError,
+        OSError,
+        zlib.error,
+    ) as exc:
+        raise InputError(
+            f"{p.name}: cannot read it as a KMZ archive ({type(exc).__name__}: {exc}); export "
+            "the site again as KMZ"
+        ) from None

@@ -53,9 +53,15 @@ def check_number(value: Any, what: str, rng: Range) -> Any:
     """The one check of a user's number: a real number (not a bool or text), finite, whole
     for a count, within ``rng``; the message names ``what``, the range and the unit."""
     kind = "a whole number" if rng.integer else "a number"
-    if isinstance(value, bool) or not isinstance(value, int | float | np.integer | np.floating):
-        raise InputError(f"{what} must be {kind} [{rng.unit}] ({rng.rule()}); got {value!r}")
-    v = float(value)
+    refused = InputError(f"{what} must be {kind} [{rng.unit}] ({rng.rule()}); got {value!r}"[:300])
+    if isinstance(value, bool | str | bytes) or np.ndim(value) != 0:
+        raise refused
+    try:
+        v = float(value)
+    except OverflowError:  # an integer beyond any float: out of every range
+        v = math.inf if value > 0 else -math.inf
+    except (TypeError, ValueError):
+        raise refused from None
     bad = not math.isfinite(v) or (rng.integer and v != round(v))
     if rng.lo is not None:
         bad |= v <= rng.lo if rng.open_lo else v < rng.lo
@@ -63,7 +69,7 @@ def check_number(value: Any, what: str, rng: Range) -> Any:
         bad |= v > rng.hi
     if bad:
         whole = "a whole number " if rng.integer else ""
-        raise InputError(f"{what} must be {whole}{rng.rule()} [{rng.unit}]; got {value!r}")
+        raise InputError(f"{what} must be {whole}{rng.rule()} [{rng.unit}]; got {value!r}"[:300])
     return int(v) if rng.integer else v
 
 

@@ -400,7 +400,7 @@ def _printable_ids(items: Iterable[Any]) -> list[Any]:
     for item in items:
         names = {
             k: printable(v)
-            for k in ("id", "name")
+            for k in ("id", "name", "building_id", "facade_id")
             if isinstance(v := getattr(item, k, None), str) and printable(v) != v
         }
         out.append(replace(item, **names) if names else item)

@@ -1179,7 +1179,9 @@ class _PrintableStream:
         self._stream = stream
 
     def write(self, text: str) -> int:
-        return self._stream.write(printable(text, keep="\n\r\t"))
+        # a line's leading carriage return is the progress bar's own (it redraws its line)
+        lead = "\r" if text.startswith("\r") else ""
+        return self._stream.write(lead + printable(text[len(lead) :], keep="\n\t"))
 
     def __getattr__(self, name: str) -> Any:
         return getattr(self._stream, name)

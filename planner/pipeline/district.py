@@ -452,9 +452,10 @@ def scheduler_address(text: str) -> str:
         raise InputError(
             f"the scheduler address {text[:80]!r} is malformed ({exc}); {example}"
         ) from None
-    if parts.scheme not in SCHEDULER_SCHEMES:
+    scheme = text.split("://", 1)[0]
+    if scheme not in SCHEDULER_SCHEMES:
         raise InputError(
-            f"the scheduler address {text[:80]!r} uses {parts.scheme + '://'!r}; a plan connects "
+            f"the scheduler address {text[:80]!r} uses {scheme[:20] + '://'!r}; a plan connects "
             f"over {', '.join(s + '://' for s in SCHEDULER_SCHEMES)} ({example})"
         )
     host = parts.hostname or ""
@@ -463,7 +464,7 @@ def scheduler_address(text: str) -> str:
             f"the scheduler address {text[:80]!r} needs a host (at most 253 characters) and a "
             f"port from 1 to 65535 ({example})"
         )
-    if parts.path.strip("/") or parts.query or parts.fragment or parts.username:
+    if parts.path.strip("/") or parts.query or parts.fragment or "@" in parts.netloc:
         raise InputError(
             f"the scheduler address {text[:80]!r} has more than SCHEME://HOST:PORT ({example})"
         )
@@ -501,11 +502,13 @@ def connect(address: str, timeout_s: float | None = None) -> Any:
         if isinstance(exc, OSError | TimeoutError):
             raise InputError(f"cannot reach a Dask scheduler at {address[:80]!r} ({why}); {fix}")
         raise InputError(
-            f"something answers at {address[:80]!r}, but not as a Dask scheduler ({why}); {fix}"
+            f"cannot use {address[:80]!r} as a Dask scheduler ({why}): what answers there is "
+            f"not one, or the address needs a setting this one lacks (tls:// needs Dask's TLS "
+            f"configuration); {fix}"
         )
     raise InputError(
         f"nothing answered as a Dask scheduler at {address[:80]!r} within "
-        f"{3 * timeout_s:.0f} s (something listens there, but not a scheduler); {fix}"
+        f"{3 * timeout_s:.0f} s; {fix}"
     )
 
 

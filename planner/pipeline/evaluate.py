@@ -138,17 +138,14 @@ class Context:
                 max(a[1], e[1]) + reach,
             )
             n = facades.normal[f]
-            masks.append(
-                np.flatnonzero(
-                    edges_in_front(scene.edges, a, n, bbox, end=e, band_m=MERGE_OFFSET_M)
-                )
-            )
+            own = own_edges(scene.edges, a, n, e, MERGE_OFFSET_M)
+            masks.append(np.flatnonzero(edges_in_front(scene.edges, a, n, bbox) & ~own))
             # a facade merged from a curved run of edges stands behind them: its rays end in
             # front of the run (a single edge: the facade itself, 0 m ahead)
-            own = scene.edges[own_edges(scene.edges, a, n, e, MERGE_OFFSET_M)]
+            run = scene.edges[own]
             ahead.append(
-                max(0.0, *((own[:, [0, 2]] - a[0]) * n[0] + (own[:, [1, 3]] - a[1]) * n[1]).ravel())
-                if len(own)
+                max(0.0, *((run[:, [0, 2]] - a[0]) * n[0] + (run[:, [1, 3]] - a[1]) * n[1]).ravel())
+                if len(run)
                 else 0.0
             )
             cols_of.append(col_order[col_bounds[f] : col_bounds[f + 1]])

@@ -228,6 +228,16 @@ def _with_room(old: np.ndarray, used: int, need: int) -> np.ndarray:
     return new
 
 
+def target_sight_offset(ctx: Context, tc: TargetCandidates) -> np.ndarray:
+    """(T,) how far in front of its wall each target's sight lines end [m]: a flat target's
+    facade's ray end (:attr:`Context.ray_end_m`: in front of the curved run of edges a
+    merged facade stands for), :data:`SIGHT_OFFSET_M` for the others (their normal is 0)."""
+    on_wall = tc.facade >= 0
+    out = np.full(len(tc.facade), SIGHT_OFFSET_M)
+    out[on_wall] = ctx.ray_end_m[tc.facade[on_wall]]
+    return out
+
+
 def sights(ctx: Context, tc: TargetCandidates, station_xy: np.ndarray) -> Sight:
     """Which targets each station can use (seen: line of sight, range; a flat target in
     front of its wall within ``max_target_incidence_deg``; an inventory item big enough).
@@ -254,7 +264,7 @@ def sights(ctx: Context, tc: TargetCandidates, station_xy: np.ndarray) -> Sight:
     of_type = {ty: tc.type == ty for ty in ("flat", "sphere", "control")}
     is_flat = of_type["flat"]
     xy, z = tc.xyz[:, :2], tc.xyz[:, 2]
-    ends = xy + SIGHT_OFFSET_M * tc.normal  # where the sight lines end
+    ends = xy + target_sight_offset(ctx, tc)[:, None] * tc.normal  # where the sight lines end
     none = np.zeros(0, dtype=np.int64)
     seen_t, seen_j, seen_s, seen_cdot = [none], [none], [none.astype(float)], [none.astype(float)]
     station_z = ctx.station_z(station_xy)
@@ -1353,7 +1363,8 @@ class _Stands:
         self.radius_m = max(sizes, default=0.0) / 2000.0
         self.tc, self.station_xyz = tc, station_xyz
         self.end = tc.xyz.copy()
-        self.end[:, :2] += SIGHT_OFFSET_M * tc.normal  # where target sights end (sights)
+        # where target sights end (:func:`sights`)
+        self.end[:, :2] += target_sight_offset(ctx, tc)[:, None] * tc.normal
         self.spheres: list[int] = []
         self.lines: set[tuple[int, int]] = set()  # (station column, target)
 

@@ -402,11 +402,13 @@ def zone_summary(zones: ZoneTable, cov: pd.DataFrame) -> pd.DataFrame:
     rows = []
     for z, r, idx in zip(zones.zones, zones.requirements, zones.members, strict=True):
         samples, ok = int(scanned[idx].sum()), int(met[idx].sum())
+        if id(r) not in said:
+            said[id(r)] = r.describe()
         rows.append(
             {
                 "zone_id": z.id,
                 "where": z.describe(),
-                "requirement": said.setdefault(id(r), r.describe()),
+                "requirement": said[id(r)],
                 "sample_spacing_m": z.sample_spacing_m,
                 "samples": samples,
                 "met": ok,

@@ -282,29 +282,23 @@ def edges_in_front(
     point: np.ndarray,
     normal: np.ndarray,
     bbox: tuple[float, float, float, float],
-    *,
-    end: np.ndarray | None = None,
-    band_m: float = 0.0,
 ) -> np.ndarray:
     """Mask of edges that can block a sight line ending on a facade: an end strictly in front
-    of the facade line (through ``point``, outward ``normal``) and overlapping ``bbox``.
-
-    A facade merged from nearly collinear edges (a curved wall drawn as many short edges,
-    :func:`~planner.pipeline.facades.build_facades`) is sampled on its chord, up to
-    ``band_m`` behind the edges it stands for; with its ``end`` given, those edges
-    (:func:`own_edges`) are the facade itself, not in front of it."""
+    of the facade line (through ``point``, outward ``normal``) and overlapping ``bbox`` (a
+    merged facade's own edges are in front of it too: :func:`own_edges`)."""
     d0, d1 = _ahead(edges, point, normal)
-    front = edges_in_box(edges, bbox) & (np.maximum(d0, d1) > 1e-6)
-    if end is None or band_m <= 0.0:
-        return front
-    return front & ~own_edges(edges, point, normal, end, band_m)
+    return edges_in_box(edges, bbox) & (np.maximum(d0, d1) > 1e-6)
 
 
 def own_edges(
     edges: np.ndarray, point: np.ndarray, normal: np.ndarray, end: np.ndarray, band_m: float
 ) -> np.ndarray:
-    """Mask of the edges a facade from ``point`` to ``end`` (outward ``normal``) was merged
-    from: both ends within ``band_m`` in front of its line and within its length."""
+    """Mask of the edges a facade from ``point`` to ``end`` (outward ``normal``) stands for:
+    both ends within ``band_m`` in front of its line and within its length. A facade merged
+    from nearly collinear edges (a curved wall drawn as many short edges,
+    :func:`~planner.pipeline.facades.build_facades`) is sampled on its chord, up to
+    ``band_m`` behind them: they are the facade itself, not a wall in front of it (so is any
+    edge that close, e.g. an obstacle drawn against the wall: within a footprint's accuracy)."""
     d0, d1 = _ahead(edges, point, normal)
     along = np.asarray(end, dtype=float)[:2] - np.asarray(point, dtype=float)[:2]
     length = float(np.hypot(*along))

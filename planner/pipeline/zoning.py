@@ -117,7 +117,7 @@ def apply_zones(
             )
         looser += _looser(z, zr, req)
     messages += looser[:LISTED_LOOSER] + (
-        [f"… and {len(looser) - LISTED_LOOSER} more limits of zones looser than the site-wide ones"]
+        [f"… and {len(looser) - LISTED_LOOSER} more zone requirements looser than the site-wide"]
         if len(looser) > LISTED_LOOSER
         else []
     )
@@ -125,26 +125,24 @@ def apply_zones(
     # where zones overlap the strictest wins, whatever their order: zones of one requirement
     # are applied together
     covered = np.zeros(n, dtype=bool)
-    for zr in {id(r): r for r in reqs}.values():
-        mask = np.zeros(n, dtype=bool)
-        for r, idx in zip(reqs, members, strict=True):
-            if r is zr:
-                mask[idx] = True
+    groups: dict[int, tuple[Requirements, list[np.ndarray]]] = {}
+    for zr, idx in zip(reqs, members, strict=True):
+        groups.setdefault(id(zr), (zr, []))[1].append(idx)
+    for zr, parts in groups.values():
+        idx = np.unique(np.concatenate(parts))
+        first, again = idx[~covered[idx]], idx[covered[idx]]
         for c in CHECKS:
             limit = c.limit_of(zr)
             value = c.no_limit() if limit is None else float(limit)
             own = out.limits[c.key]
             # the zone replaces the site-wide limit; where zones overlap the strictest wins
-            own[mask & ~covered] = value
-            again = mask & covered
+            own[first] = value
             own[again] = (
                 np.minimum(own[again], value) if c.sense == "max" else np.maximum(own[again], value)
             )
-        out.stations[mask & ~covered] = zr.stations_per_sample
-        out.stations[mask & covered] = np.maximum(
-            out.stations[mask & covered], zr.stations_per_sample
-        )
-        covered |= mask
+        out.stations[first] = zr.stations_per_sample
+        out.stations[again] = np.maximum(out.stations[again], zr.stations_per_sample)
+        covered[idx] = True
     out.zone_ids[:] = _joined_ids([z.id for z in zones], members, n)
     return fac, out, ZoneTable(zones, reqs, members, messages)
 
