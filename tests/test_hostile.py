@@ -37,6 +37,7 @@ import planner
 from planner import gdalio
 from planner.errors import InputError
 from planner.numbers import RANGES, Range, check_number
+from planner.pipeline.export import OWNED_FILES
 from planner.pipeline.requirements import PlanSettings, Requirements, field_specs
 from planner.text import printable
 
@@ -322,6 +323,28 @@ def test_a_shapefile_whose_dbf_lost_a_record_is_refused(tmp_path):
         planner.read_site(path)
 
 
+@settings(
+    max_examples=12, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
+)
+@given(shapes=st.integers(1, 4), records=st.integers(0, 5))
+def test_a_shapefile_is_read_whole_or_refused(tmp_path_factory, shapes, records):
+    """However many records the .dbf claims, the shapes are all read (the counts agree) or
+    the file is refused: never a building dropped without a word."""
+    path = _shapefile(tmp_path_factory.mktemp("shp"), shapes)
+    dbf = path.with_suffix(".dbf")
+    data = bytearray(dbf.read_bytes())
+    header, record = struct.unpack("<HH", data[8:12])
+    body = bytes(data[header : header + record * shapes])
+    data[4:8] = struct.pack("<I", records)
+    rows = (body * 2)[: record * records]  # as many records as it claims
+    dbf.write_bytes(bytes(data[:header]) + rows + b"\x1a")
+    if records == shapes:
+        assert len(planner.read_site(path).buildings) == shapes
+    else:
+        with pytest.raises(InputError, match=f"indexes {shapes} shape"):
+            planner.read_site(path)
+
+
 def test_every_kml_of_a_kmz_is_pinned(tmp_path, sentinel):
     """GDAL's LIBKML reads every KML of a KMZ (its own KMZ: doc.kml linking layers/*.kml),
     so each one must be KML: a virtual dataset as the second is refused."""
@@ -597,6 +620,38 @@ def test_a_crs_in_feet_is_refused_naming_the_unit_and_a_crs_in_metres(tmp_path, 
         planner.read_site(path)
 
 
+def _projected_codes():
+    import pyproj
+
+    infos = pyproj.database.query_crs_info(auth_name="EPSG", pj_types=["PROJECTED_CRS"])
+    return sorted(f"EPSG:{i.code}" for i in infos if not i.deprecated)
+
+
+@PROPERTY
+@given(code=st.sampled_from(_projected_codes()))
+def test_a_projected_crs_is_taken_only_in_metres(code):
+    """Any projected EPSG CRS: one whose axes are not in metres (feet, US survey feet,
+    chains, links …) is refused naming its unit; one in metres is not refused for its unit."""
+    import pyproj
+
+    from planner import crs as crs_
+
+    try:
+        info = pyproj.CRS.from_user_input(code)
+    except pyproj.exceptions.CRSError:
+        return
+    factors = [a.unit_conversion_factor for a in info.axis_info[:2]]
+    metric = all(abs(f - 1.0) <= 1e-12 for f in factors)
+    try:
+        crs_.check_projected(code, np.empty((0, 2)))
+    except InputError as exc:
+        assert not metric or "measures in" not in str(exc), str(exc)
+        if not metric:
+            assert "measures in" in str(exc) and "the planner works in metres" in str(exc)
+        return
+    assert metric, code
+
+
 def test_a_crs_in_metres_passes(tmp_path):
     path = tmp_path / "m.geojson"
     path.write_text(_site())
@@ -686,6 +741,24 @@ def test_an_audit_or_a_profile_written_over_its_input_is_refused(tmp_path):
     ref.write_text("id,x,y,z\n")
     code, _, err = run_cli("calibrate", "lab", str(ref), str(ref), "--profile-out", str(ref))
     assert code == 2 and "would be lost" in err and ref.read_text() == "id,x,y,z\n", err
+
+
+@PROPERTY
+@given(
+    name=st.sampled_from(sorted(__import__("planner.pipeline.export").pipeline.export.OWNED_FILES)),
+    other=st.text(alphabet="abcdefghijklmnopqrstuvwxyz-_.", min_size=1, max_size=12),
+)
+def test_no_output_is_written_over_an_input(tmp_path_factory, name, other):
+    """An input at the name of any file a plan writes, in the plan's folder, is refused; at
+    any other name there, it is left alone (carried over as the user's own)."""
+    from planner.atomic import check_inputs_kept
+
+    out = tmp_path_factory.mktemp("out")
+    outputs = [out / n for n in OWNED_FILES]
+    with pytest.raises(InputError, match="would be lost"):
+        check_inputs_kept(outputs, [str(out / name)])
+    if other not in OWNED_FILES and other not in (".", ".."):
+        check_inputs_kept(outputs, [str(out / other), str(out.parent / name)])
 
 
 def test_a_dangling_link_as_out_is_refused_and_its_target_not_made(tmp_path):
@@ -842,3 +915,23 @@ def test_the_summary_lists_twenty_zones_of_many(tmp_path):
     assert code in (0, 1), err
     assert "Zones: 30," in out and "the 20 with the most unmet samples below" in out
     assert sum(line.startswith("Zone z") for line in out.splitlines()) == 20
+
+
+# -- 9. planner serve ---------------------------------------------------------------------
+@PROPERTY
+@given(rest=st.text(max_size=40), quoted=st.booleans())
+def test_a_template_path_passes_only_as_template_static_file(rest, quoted):
+    """Any path under Voilà's template prefix passes to its handler only in the form the
+    handler answers (``<template>/static/<file>`` without ``..``, empty segments or control
+    characters, percent-encoded or not): anything else is a 404, never the handler's 500."""
+    from urllib.parse import quote, unquote
+
+    from planner.app.voila_server import TEMPLATE_PREFIX, is_template_file
+
+    path = TEMPLATE_PREFIX + (quote(rest, safe="") if quoted else rest)
+    ok = is_template_file(path)
+    parts = unquote(path[len(TEMPLATE_PREFIX) :]).replace("\\", "/").split("/")
+    if ok:
+        assert len(parts) >= 3 and parts[1] == "static"
+        assert ".." not in parts and "" not in parts
+    assert is_template_file("/voila/static/x.js")  # other paths are Voilà's to answer
