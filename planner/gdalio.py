@@ -10,7 +10,9 @@ local system file, and GML content makes it write a ``.gfs`` file beside the inp
    starts with the file code 9994 and has its ``.shx`` and ``.dbf`` beside it, their record
    counts equal (ESRI Shapefile Technical Description, 1998); a KML file is XML whose root
    is ``kml`` (OGC 12-007r2, KML 2.3) without a document type declaration; a KMZ is a zip
-   archive holding such a KML. After opening, the driver GDAL chose must be the pinned one.
+   archive whose KML and other XML members are all such KML. Its path must name that file
+   to GDAL too (pyogrio reads ``a.zip!b.gpkg`` as a zip's member, ``http:/…`` as a URL).
+   After opening, the driver GDAL chose must be the pinned one.
 2. **Nothing else is reachable.** The drivers that reach the network, run programs or open
    other datasets are not registered (``GDAL_SKIP``, set before GDAL loads), ``/vsicurl/``
    may open no file (``CPL_VSIL_CURL_ALLOWED_FILENAME``), and GDAL writes no side-car file
