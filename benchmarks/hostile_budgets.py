@@ -6,7 +6,8 @@ The two inputs of the second hostile round that broke ``--time-limit-s``, each p
 the command a surveyor types, as a separate process, timed from its start to its exit:
 
 * the default site with a zones table of 60 000 rows (each 4.5 m of one facade, three
-  requirements), ``--time-limit-s 20`` (before: 150 s and no station);
+  requirements; and again with every row its own requirement), ``--time-limit-s 20``
+  (before: 150 s and no station);
 * one building drawn with 200 000 vertices (a 100 × 60 m rectangle densified to 1.6 mm
   edges), ``--sample-height-step-m 6 --time-limit-s 10`` (before: over 400 s, district
   mode on 200 000 facades), and a round tower of 200 000 vertices (r = 100 m).
@@ -34,7 +35,7 @@ PLANNER = ROOT / ".venv" / "bin" / "planner"
 X0, Y0 = 500000.0, 5400000.0
 
 
-def zones_table(path: Path, n: int = 60_000) -> None:
+def zones_table(path: Path, n: int = 60_000, distinct: bool = False) -> None:
     import planner
     from planner.siteio import default_site
 
@@ -45,7 +46,8 @@ def zones_table(path: Path, n: int = 60_000) -> None:
     for k in range(n):
         fid, length = rng.choice(places)
         a = rng.uniform(0, max(0.0, length - 4.5))
-        rows.append(f"z{k},{fid},{a:.2f},{min(length, a + 4.5):.2f},{rng.choice([3, 4, 4.5])}")
+        limit = 3 + k * 1e-5 if distinct else rng.choice([3, 4, 4.5])
+        rows.append(f"z{k},{fid},{a:.2f},{min(length, a + 4.5):.2f},{limit:.5f}")
     path.write_text("\n".join(rows) + "\n")
 
 
@@ -103,10 +105,12 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         t = Path(tmp)
         zones_table(t / "zones.csv")
+        zones_table(t / "distinct.csv", distinct=True)
         dense_site(t / "rectangle.geojson", "rectangle")
         dense_site(t / "round.geojson", "round")
         cases = [
             ("60 000 zones, default site", ["--zones", str(t / "zones.csv")], 20.0),
+            ("60 000 zones, each its own requirement", ["--zones", str(t / "distinct.csv")], 20.0),
             (
                 "200 000-vertex rectangle",
                 [str(t / "rectangle.geojson"), "--sample-height-step-m", "6"],

@@ -53,15 +53,19 @@ def check_number(value: Any, what: str, rng: Range) -> Any:
     """The one check of a user's number: a real number (not a bool or text), finite, whole
     for a count, within ``rng``; the message names ``what``, the range and the unit."""
     kind = "a whole number" if rng.integer else "a number"
-    refused = InputError(f"{what} must be {kind} [{rng.unit}] ({rng.rule()}); got {value!r}"[:300])
-    if isinstance(value, bool | str | bytes) or np.ndim(value) != 0:
-        raise refused
+
+    def refused() -> InputError:
+        return InputError(f"{what} must be {kind} [{rng.unit}] ({rng.rule()}); got {value!r}"[:300])
+
+    plain = type(value) is float or type(value) is int  # the usual case, checked first
+    if not plain and (isinstance(value, bool | str | bytes) or np.ndim(value) != 0):
+        raise refused()
     try:
         v = float(value)
     except OverflowError:  # an integer beyond any float: out of every range
         v = math.inf if value > 0 else -math.inf
     except (TypeError, ValueError):
-        raise refused from None
+        raise refused() from None
     bad = not math.isfinite(v) or (rng.integer and v != round(v))
     if rng.lo is not None:
         bad |= v <= rng.lo if rng.open_lo else v < rng.lo

@@ -95,7 +95,7 @@ class FieldSpec:
         """The command-line option: ``max_z_mm`` → ``--max-z-mm``."""
         return "--" + self.name.replace("_", "-")
 
-    @property
+    @functools.cached_property
     def range(self) -> Range:
         """The values it may take (:class:`planner.numbers.Range`)."""
         return Range(self.lo, self.hi, self.unit, self.open_lo)

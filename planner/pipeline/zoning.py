@@ -129,7 +129,7 @@ def apply_zones(
     for zr, idx in zip(reqs, members, strict=True):
         groups.setdefault(id(zr), (zr, []))[1].append(idx)
     for zr, parts in groups.values():
-        idx = np.unique(np.concatenate(parts))
+        idx = parts[0] if len(parts) == 1 else np.unique(np.concatenate(parts))  # ascending
         first, again = idx[~covered[idx]], idx[covered[idx]]
         for c in CHECKS:
             limit = c.limit_of(zr)
@@ -137,9 +137,9 @@ def apply_zones(
             own = out.limits[c.key]
             # the zone replaces the site-wide limit; where zones overlap the strictest wins
             own[first] = value
-            own[again] = (
-                np.minimum(own[again], value) if c.sense == "max" else np.maximum(own[again], value)
-            )
+            if len(again):
+                pick = np.minimum if c.sense == "max" else np.maximum
+                own[again] = pick(own[again], value)
         out.stations[first] = zr.stations_per_sample
         out.stations[again] = np.maximum(out.stations[again], zr.stations_per_sample)
         covered[idx] = True
