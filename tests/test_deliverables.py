@@ -250,3 +250,33 @@ def test_a_crs_that_contradicts_the_coordinates_is_refused(tmp_path, crs, messag
     code, _, err = cli("plan", str(csv), "--crs", crs, *FAST, "--out", str(out))
     assert code == 2 and message in err, err
     assert "Traceback" not in err and not out.exists()
+
+
+def test_the_geojson_carries_every_column_of_the_stations_links_and_targets(default_plan):
+    """plan.geojson writes each station, link and target with the columns of its table (the
+    one column list): a cloud link is told from a target link (kind, overlap, weakest
+    direction) and a flat target keeps its wall — in the GeoJSON, and so in the KML and the
+    DXF made from it (the target block's FACADE)."""
+    from planner.pipeline.schema import LINK_COLUMNS, TARGET_COLUMNS
+
+    files = render(default_plan)
+    feats = json.loads(files["plan.geojson"])["features"]
+    links = [f["properties"] for f in feats if f["properties"]["layer"] == "link"]
+    targets = [f["properties"] for f in feats if f["properties"]["layer"] == "target"]
+    table = pd.read_csv(io.StringIO(files["links.csv"]), keep_default_na=False)
+    assert len(links) == len(table) > 0
+    for props, row in zip(links, table.to_dict("records"), strict=True):
+        assert set(LINK_COLUMNS) <= set(props)
+        assert (
+            props["kind"] == row["kind"] and props["weakest_direction"] == row["weakest_direction"]
+        )
+    assert all(set(TARGET_COLUMNS) - {"x", "y", "z"} <= set(t) for t in targets)
+    flat = [t for t in targets if t["type"] == "flat"]
+    assert flat and all(t["facade_id"] for t in flat)
+    doc = ezdxf.read(io.StringIO(files["plan.dxf"]))
+    walls = {
+        ref.get_attrib_text("FACADE")
+        for ref in doc.modelspace().query("INSERT")
+        if ref.dxf.name == "TARGET-FLAT"
+    }
+    assert walls == {t["facade_id"] for t in flat}

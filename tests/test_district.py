@@ -526,6 +526,8 @@ def test_the_blocks_networks_are_tied_into_one_across_their_seams(blockwise):
     seams = one.links[one.links["station_a"].str[:3] != one.links["station_b"].str[:3]]
     assert len(seams) == len(blocks) - 1 and (seams["common_targets"] >= 3).all()
     assert (seams["link_rms_mm"] > 0).all()
+    # a seam is a link like the others in links.csv: by targets, its weakest direction said
+    assert (seams["kind"] == "targets").all() and (seams["weakest_direction"] != "").all()
     a, b = apart.scanned.set_index("sample_id"), one.scanned.set_index("sample_id")
     for c in "xyz":
         grown = b[f"reg_m_{c}_mm"] - a.loc[b.index, f"reg_m_{c}_mm"]

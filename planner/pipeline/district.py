@@ -47,6 +47,7 @@ import scipy.sparse as sp
 import shapely
 from shapely.geometry import box
 
+from planner.cloud_registration import weakest_direction
 from planner.errors import InputError
 from planner.numbers import RANGES
 from planner.pipeline.evaluate import Progress
@@ -949,6 +950,9 @@ def _tie_seams(
             "link_rms_mm": s.rms_mm,
             "dilution": np.nan,
             "station_b_rms_mm": np.nan,
+            "kind": "targets",  # a seam: the common targets of two blocks' stations
+            "overlap_pct": np.nan,
+            "weakest_direction": weakest_direction(s.cov),
         }
         for s in used
     ]

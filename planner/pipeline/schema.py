@@ -11,6 +11,7 @@ from __future__ import annotations
 import json
 import math
 import re
+from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -264,6 +265,19 @@ def geometry_json(geom: Any) -> dict:
     return json.loads(shapely.to_geojson(shapely.set_precision(geom, 0.001)))
 
 
+def _columns(row: Any, columns: Sequence[str], skip: Sequence[str] = ()) -> dict[str, Any]:
+    """A table row's columns (one of the column lists) as a feature's properties, those in
+    ``skip`` (the geometry's) left out; a list (a target's stations) ";"-joined, as the
+    CSV writes it."""
+    out = {}
+    for c in columns:
+        if c in skip:
+            continue
+        v = getattr(row, c, None)
+        out[c] = ";".join(map(str, v)) if isinstance(v, list | tuple) else v
+    return out
+
+
 def _clean(props: dict[str, Any]) -> dict[str, Any]:
     out = {}
     for k, v in props.items():
@@ -383,9 +397,7 @@ def geojson(p: Plan) -> dict:
         add(
             {"type": "Point", "coordinates": coords},
             layer="station",
-            station_id=r.station_id,
-            instrument_height_m=r.instrument_height_m,
-            purpose=r.purpose,
+            **_columns(r, STATION_COLUMNS, ("x", "y", "ground_z")),
             samples_met=r.samples_met,
             **extra,
         )
@@ -401,18 +413,7 @@ def geojson(p: Plan) -> dict:
         else:
             a = st.loc[r.station_a]
             geom = {"type": "LineString", "coordinates": [[a.x, a.y], [b.x, b.y]]}
-        add(
-            geom,
-            layer="link",
-            station_a=r.station_a,
-            station_b=r.station_b,
-            common_targets=r.common_targets,
-            targets_placed=r.targets_placed,
-            target_ids=r.target_ids,
-            link_rms_mm=r.link_rms_mm,
-            dilution=r.dilution,
-            station_b_rms_mm=r.station_b_rms_mm,
-        )
+        add(geom, layer="link", **_columns(r, LINK_COLUMNS))
     t_ground = ground(p.targets[["x", "y"]].to_numpy(float)) if three_d else None
     for k, r in enumerate(p.targets.itertuples()):
         extra = {"ground_z": float(t_ground[k])} if three_d else {}
@@ -420,15 +421,7 @@ def geojson(p: Plan) -> dict:
             {"type": "Point", "coordinates": [r.x, r.y, r.z]},
             layer="target",
             **extra,
-            target_id=r.target_id,
-            type=r.type,
-            min_size_mm=r.min_size_mm,
-            size_mm=r.size_mm,
-            item=r.item,
-            sized_by=r.sized_by,
-            station_ids=";".join(r.station_ids),
-            facing_deg=r.facing_deg,
-            centre_rms_mm=r.centre_rms_mm,
+            **_columns(r, TARGET_COLUMNS, ("x", "y", "z")),
         )
     if p.route is not None:
         t = p.route.table
