@@ -280,3 +280,24 @@ def test_the_geojson_carries_every_column_of_the_stations_links_and_targets(defa
         if ref.dxf.name == "TARGET-FLAT"
     }
     assert walls == {t["facade_id"] for t in flat}
+
+
+@pytest.mark.parametrize(
+    ("scanner", "words"), [(None, "6 parameters per scan"), ("leica-p50", "4 parameters per scan")]
+)
+def test_the_files_say_how_the_registration_was_planned(scanner, words, default_plan):
+    """summary.txt and plan.geojson say whether each scan is registered with 4 parameters
+    (a levelled scanner) or 6, and what the promise assumes of the registration software."""
+    import planner
+
+    p = (
+        default_plan
+        if scanner is None
+        else planner.plan(
+            scanner=scanner, settings=planner.PlanSettings(time_limit_s=30, sample_spacing_m=4)
+        )
+    )
+    files = render(p)
+    model = json.loads(files["plan.geojson"])["registration_model"]
+    assert model.startswith(words) and "registered in one adjustment" in model
+    assert f"Registration model: {model}." in files["summary.txt"]

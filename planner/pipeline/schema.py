@@ -452,6 +452,7 @@ def geojson(p: Plan) -> dict:
         "type": "FeatureCollection",
         "name": f"tls-planner plan: {p.site.name}",
         "accuracy_model": p.settings.model_description(),
+        "registration_model": p.registration_model(),
     }
     if p.site.crs:
         out["crs"] = {"type": "name", "properties": {"name": p.site.crs}}
