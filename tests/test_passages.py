@@ -201,3 +201,7 @@ def test_without_its_gateway_the_courtyard_is_named_and_nothing_is_spent_on_it(
     court = [regions.enclosed(int(r)) for r in where]
     assert any(court)
     assert not (np.array(court) & (closed.stations["purpose"] == "registration")).any()
+    # the covering stations in the untied courtyard still say they cover: they link nothing
+    # (they were relabelled "link", and the summary counted them "to link the network")
+    in_court = np.array(court)
+    assert (closed.stations["purpose"][in_court] == "cover").all()

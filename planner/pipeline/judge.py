@@ -270,8 +270,14 @@ def assemble(
         ["hand", "best-effort", "cover", "registration"],
         "link",
     )
-    # a covering station no sample is assigned to any more is there for the network
-    purpose[(purpose == "cover") & (np.asarray(assignment.met_by_station) == 0)] = "link"
+    # a covering station no sample is assigned to any more is there for the network — if
+    # another scan is registered to it (one in an untied courtyard links nothing: it stays
+    # a covering station whose samples the registration cannot carry, and is said so)
+    links_others = np.zeros(len(station_idx), dtype=bool)
+    if net is not None:
+        links_others[[lk.parent for lk in net.links if 0 <= lk.parent < len(station_idx)]] = True
+    idle = (purpose == "cover") & (np.asarray(assignment.met_by_station) == 0)
+    purpose[idle & links_others] = "link"
     for k, i in enumerate(station_idx.tolist()):
         if i in kept and not np.isin(i, hand if hand is not None else []):
             purpose[k] = kept[i][1]
