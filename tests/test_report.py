@@ -165,3 +165,15 @@ def test_every_table_of_the_report_fits_the_page(tmp_path, strict_plan):
     assert len(widths) >= 6
     for heading, right, page_right in widths:
         assert right <= page_right + 0.5, f"the table under {heading!r} runs off the page"
+
+
+def test_the_report_shows_the_plan_that_plan_makes_in_district_mode(tmp_path):
+    """``planner report`` takes the district options and plans as ``planner plan`` does
+    (:func:`planner.app.cli.make_plan`, one function for both): with ``--district on`` its
+    stations are the blocks' (K01-S01 …) and it says the district network (it planned in
+    one process before, and showed another plan than ``plan``'s)."""
+    args = ["--district", "on", "--sample-spacing-m", "4", "--sample-height-step-m", "4", "-q"]
+    code, _, err = run("report", *args, "--out", str(tmp_path / "r.html"))
+    assert code == 0, err
+    html = (tmp_path / "r.html").read_text()
+    assert "K01-S01" in html and "District" in html

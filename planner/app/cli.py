@@ -413,28 +413,19 @@ def command_started() -> float:
     return time.monotonic() - age if 0.0 <= age < 600.0 else time.monotonic()
 
 
-def run_plan(args: argparse.Namespace) -> int:
-    """Plan, draw the booklet and write the files, all within ``--time-limit-s`` from the
-    command's start (reading the site included): planning ends with
-    :data:`DOCUMENT_SHARE` of the budget left, and the booklet leaves out the pages there is
-    no time for (said in the summary and on its last page)."""
-    from planner.atomic import check_inputs_kept, check_output_folder
+def make_plan(args: argparse.Namespace, started: float, progress: Callable[[float, str], None]):
+    """The plan of the options shared by ``plan`` and ``report`` — the one function both
+    use, so that a report shows exactly the plan ``plan`` makes: in district mode where
+    ``plan`` would take it (:func:`_district`), ending with the documents' share of
+    ``--time-limit-s`` left (:data:`DOCUMENT_SHARE`, or the files' estimated time). Returns
+    the plan, the command's deadline and the pace it had (:func:`~planner.pipeline.clock.pace`)."""
     from planner.pipeline.clock import pace
-    from planner.pipeline.export import OWNED_FILES, save
-    from planner.pipeline.planning import plan
-
-    started = getattr(args, "started", None) or time.monotonic()
-    progress = _StderrProgress(args.quiet)
-    check_output_folder(args.out)  # before the plan, which can take minutes
-    check_inputs_kept([Path(args.out) / name for name in OWNED_FILES], _input_paths(args))
     from planner.pipeline.district import memory_bytes
+    from planner.pipeline.facades import estimate_samples
+    from planner.pipeline.planning import plan
 
     memory_bytes(args.worker_memory)  # checked even where the plan needs no cluster
     site, scanner, req, settings = plan_inputs(args)
-    import ezdxf  # noqa: F401  (the DXF writer's import, 0.7 s, made now: not after planning)
-
-    from planner.pipeline.facades import estimate_samples
-
     deadline = started + settings.time_limit_s
     rows = estimate_samples(site, settings.sample_spacing_m, settings.sample_height_step_m)
     # the files' time as measured on an idle machine, stretched by the pace this command
@@ -460,6 +451,25 @@ def run_plan(args: argparse.Namespace) -> int:
         )
     else:
         result = plan(site, scanner, req, settings, progress=progress, deadline=planned_by)
+    return result, deadline, slow
+
+
+def run_plan(args: argparse.Namespace) -> int:
+    """Plan, draw the booklet and write the files, all within ``--time-limit-s`` from the
+    command's start (reading the site included): planning ends with
+    :data:`DOCUMENT_SHARE` of the budget left, and the booklet leaves out the pages there is
+    no time for (said in the summary and on its last page)."""
+    from planner.atomic import check_inputs_kept, check_output_folder
+    from planner.pipeline.export import OWNED_FILES, save
+
+    started = getattr(args, "started", None) or time.monotonic()
+    progress = _StderrProgress(args.quiet)
+    check_output_folder(args.out)  # before the plan, which can take minutes
+    check_inputs_kept([Path(args.out) / name for name in OWNED_FILES], _input_paths(args))
+    import ezdxf  # noqa: F401  (the DXF writer's import, 0.7 s, made now: not after planning)
+
+    result, deadline, slow = make_plan(args, started, progress)
+    site = result.site
     extra = {}
     saving = slow * (
         SAVE_S_PER_ROW * len(result.coverage)
@@ -507,14 +517,14 @@ def run_plan(args: argparse.Namespace) -> int:
 def cmd_report(args: argparse.Namespace) -> int:
     from planner.app.report import make_report
     from planner.atomic import check_inputs_kept, check_output_file
-    from planner.pipeline.planning import plan
 
     out = Path(args.out)
     if out.suffix.lower() not in (".html", ".htm"):
         raise InputError(f"--out must name an .html file; got {args.out!r}")
     check_output_file(out)
     check_inputs_kept([out], _input_paths(args))
-    result = plan(*plan_inputs(args), progress=_StderrProgress(args.quiet))
+    started = getattr(args, "started", None) or time.monotonic()
+    result, _, _ = make_plan(args, started, _StderrProgress(args.quiet))
     if not args.quiet:
         print("planner: rendering the report …", file=sys.stderr)
     path = make_report(result, out)
@@ -887,6 +897,49 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
     pl.add_argument("-q", "--quiet", action="store_true", help="no progress messages")
 
 
+def _district_arguments(pl: argparse.ArgumentParser) -> None:
+    """The district mode's options, shared by plan and report (a report shows the plan
+    ``plan`` makes, in district mode where it takes it)."""
+    from planner.pipeline.requirements import DEFAULT_BLOCK_M, DISTRICT_SAMPLES, WORKER_MEMORY
+
+    pl.add_argument(
+        "--district",
+        choices=["auto", "on", "off"],
+        default="auto",
+        help="plan block by block on Dask (auto: when the facades need more than "
+        f"{DISTRICT_SAMPLES:,} samples)",
+    )
+    pl.add_argument(
+        "--block-m",
+        type=argument("block_m"),
+        default=DEFAULT_BLOCK_M,
+        metavar="M",
+        help=f"side of a district block [m] (default {DEFAULT_BLOCK_M:g})",
+    )
+    pl.add_argument(
+        "--workers",
+        type=argument("workers"),
+        default=2,
+        metavar="N",
+        help="worker processes of the local Dask cluster (default 2)",
+    )
+    pl.add_argument(
+        "--worker-memory",
+        default=WORKER_MEMORY,
+        metavar="SIZE",
+        help=f"memory of each local worker, e.g. 3GB (default {WORKER_MEMORY}); a worker "
+        "that needs more is stopped and the plan not written",
+    )
+    pl.add_argument(
+        "--scheduler",
+        type=_scheduler,
+        default=None,
+        metavar="ADDRESS",
+        help="an existing Dask cluster's scheduler, e.g. tcp://10.0.0.5:8786 (its workers "
+        "need tls-planner installed); default: a local cluster",
+    )
+
+
 def _argparse_text(text: str) -> str:
     """Plain text (a data class's help, unit "%") as argparse help, which formats ``%``."""
     return text.replace("%", "%%")
@@ -963,44 +1016,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     _plan_arguments(pl)
     pl.add_argument("--out", required=True, metavar="DIR", help="folder for the plan's files")
-    from planner.pipeline.requirements import DEFAULT_BLOCK_M, DISTRICT_SAMPLES, WORKER_MEMORY
-
-    pl.add_argument(
-        "--district",
-        choices=["auto", "on", "off"],
-        default="auto",
-        help="plan block by block on Dask (auto: when the facades need more than "
-        f"{DISTRICT_SAMPLES:,} samples)",
-    )
-    pl.add_argument(
-        "--block-m",
-        type=argument("block_m"),
-        default=DEFAULT_BLOCK_M,
-        metavar="M",
-        help=f"side of a district block [m] (default {DEFAULT_BLOCK_M:g})",
-    )
-    pl.add_argument(
-        "--workers",
-        type=argument("workers"),
-        default=2,
-        metavar="N",
-        help="worker processes of the local Dask cluster (default 2)",
-    )
-    pl.add_argument(
-        "--worker-memory",
-        default=WORKER_MEMORY,
-        metavar="SIZE",
-        help=f"memory of each local worker, e.g. 3GB (default {WORKER_MEMORY}); a worker "
-        "that needs more is stopped and the plan not written",
-    )
-    pl.add_argument(
-        "--scheduler",
-        type=_scheduler,
-        default=None,
-        metavar="ADDRESS",
-        help="an existing Dask cluster's scheduler, e.g. tcp://10.0.0.5:8786 (its workers "
-        "need tls-planner installed); default: a local cluster",
-    )
+    _district_arguments(pl)
     pl.add_argument(
         "--booklet",
         action=argparse.BooleanOptionalAction,
@@ -1017,6 +1033,7 @@ def build_parser() -> argparse.ArgumentParser:
         "embedded, no code, opens offline).",
     )
     _plan_arguments(rp)
+    _district_arguments(rp)
     rp.add_argument("--out", required=True, metavar="REPORT.html", help="the HTML file to write")
     rp.set_defaults(func=cmd_report)
 
