@@ -299,5 +299,8 @@ def test_the_files_say_how_the_registration_was_planned(scanner, words, default_
     )
     files = render(p)
     model = json.loads(files["plan.geojson"])["registration_model"]
-    assert model.startswith(words) and "registered in one adjustment" in model
-    assert f"Registration model: {model}." in files["summary.txt"]
+    from planner.pipeline.requirements import REGISTRATION_PROCESSING
+
+    assert model.startswith(words) and model.endswith(REGISTRATION_PROCESSING["adjustment"])
+    assert f"Registration model: {p.registration_model()}." in files["summary.txt"]
+    assert model.startswith(p.registration_model())

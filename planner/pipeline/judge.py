@@ -274,8 +274,9 @@ def assemble(
     # another scan is registered to it (one in an untied courtyard links nothing: it stays
     # a covering station whose samples the registration cannot carry, and is said so)
     links_others = np.zeros(len(station_idx), dtype=bool)
-    if net is not None:
-        links_others[[lk.parent for lk in net.links if 0 <= lk.parent < len(station_idx)]] = True
+    if net is not None:  # a link's parent, or a planned traverse's start
+        parents = [lk.parent for lk in net.links] + [t.start for t in net.ties]
+        links_others[[k for k in parents if 0 <= k < len(station_idx)]] = True
     idle = (purpose == "cover") & (np.asarray(assignment.met_by_station) == 0)
     purpose[idle & links_others] = "link"
     for k, i in enumerate(station_idx.tolist()):

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 import pandas as pd
 
 from planner.crs import name_of as crs_name
-from planner.pipeline.requirements import REGISTRATION_PROCESSING, PlanSettings, Requirements
+from planner.pipeline.requirements import PlanSettings, Requirements
 from planner.pipeline.schema import FACADE_TABLE_COLUMNS, STATION_PURPOSES, ZONE_COLUMNS
 from planner.scanner import Scanner
 from planner.site import Site
@@ -163,29 +163,28 @@ class Plan:
             parts.append(f"the terrain ({site.terrain.source})")
         return "sight lines cast against " + ", ".join(parts)
 
-    def registration_model(self) -> str:
+    def registration_model(self) -> str | None:
         """How the promised registration error registers each scan, in words (the summary
         and plan.geojson say it): 4 parameters for a scanner whose compensator levels each
-        scan, else 6 (the network then leans with the datum scan's levelling), and what it
-        assumes of the registration software; or that it is not computed."""
-        st = self.settings
-        if not st.registration_error:
-            return "not counted (each sample judged by the scanner's error alone)"
-        if not st.computes_registration:
-            return f"a fixed station RMS of {st.station_rms_mm} mm (given), not computed"
-        on_control = self.network is not None and self.network.datum is None
-        params = (
-            "4 parameters per scan (shifts in x, y, z and the rotation about the vertical; "
-            "the scanner's compensator levels each scan, its residual tilt counted)"
-            if self.scanner.is_levelled
-            else "6 parameters per scan (shifts in x, y, z and three rotations; "
-            + (
-                "the control points fix the vertical)"
-                if on_control
-                else "the network leans with the datum scan's levelling)"
+        scan, else 6 — and then whether the datum scan's levelling leans the network or
+        control points hold the vertical. None where the error is not computed (the
+        summary's registration lines say so)."""
+        if not self.settings.computes_registration:
+            return None
+        if self.scanner.is_levelled:
+            return (
+                "4 parameters per scan (shifts in x, y, z and the rotation about the "
+                "vertical; the scanner's compensator levels each scan, its residual tilt "
+                "counted)"
             )
-        )
-        return f"{params}, {REGISTRATION_PROCESSING[st.registration_processing]}"
+        net = self.network
+        if net is None:  # a district's blocks: each block's own network
+            vertical = "each frame leans with its datum scan's levelling unless control holds it"
+        elif net.leaning_datum(self.scanner) is None:
+            vertical = "control points hold the vertical"
+        else:
+            vertical = "the network leans with the datum scan's levelling"
+        return f"6 parameters per scan (shifts in x, y, z and three rotations; {vertical})"
 
     def summary(self) -> str:
         """A few lines a surveyor reads first."""
@@ -256,5 +255,6 @@ class Plan:
         for z in zones.itertuples():
             state = "met" if z.unmet == 0 else f"{z.unmet} of {z.samples} samples unmet"
             lines.append(f"Zone {z.zone_id} ({z.where}; {z.requirement}): {state}")
-        lines.append(f"Registration model: {self.registration_model()}.")
+        if (model := self.registration_model()) is not None:
+            lines.append(f"Registration model: {model}.")
         return "\n".join(lines + self.messages)

@@ -273,7 +273,7 @@ def _columns(row: Any, columns: Sequence[str], skip: Sequence[str] = ()) -> dict
     for c in columns:
         if c in skip:
             continue
-        v = getattr(row, c, None)
+        v = getattr(row, c)  # a column the table lacks is a bug: said, not written empty
         out[c] = ";".join(map(str, v)) if isinstance(v, list | tuple) else v
     return out
 
@@ -452,8 +452,12 @@ def geojson(p: Plan) -> dict:
         "type": "FeatureCollection",
         "name": f"tls-planner plan: {p.site.name}",
         "accuracy_model": p.settings.model_description(),
-        "registration_model": p.registration_model(),
     }
+    if (model := p.registration_model()) is not None:  # and what it assumes of the software
+        from planner.pipeline.requirements import REGISTRATION_PROCESSING
+
+        processing = REGISTRATION_PROCESSING[p.settings.registration_processing]
+        out["registration_model"] = f"{model}, {processing}"
     if p.site.crs:
         out["crs"] = {"type": "name", "properties": {"name": p.site.crs}}
     out["features"] = feats
