@@ -342,19 +342,11 @@ class ReportContent:
                 else "not counted (scanner error only)"
             )
         else:
-            on_control = p.network is not None and p.network.datum is None
-            frame = (
-                "each scan's residual tilt (its compensator) counted"
-                if p.scanner.is_levelled
-                else "the control points fixing the vertical"
-                if on_control
-                else "the whole network leaning with the datum scan's levelling"
-            )
             reg = (
                 "computed from the targets: each target's centre RMS (type, size, distance, "
-                f"incidence; a sphere's fit bias, a checkerboard's edge sampling); {frame} "
-                "(heights against true vertical); propagated to every sample and added in "
-                "quadrature"
+                "incidence; a sphere's fit bias, a checkerboard's edge sampling); each scan "
+                f"registered with {html.escape(p.registration_model() or '')} (heights against "
+                "true vertical); propagated to every sample and added in quadrature"
             )
         items = [
             f"Accuracy model: {html.escape(st.model_description())}, the ranging RMS at "
