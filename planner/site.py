@@ -734,7 +734,7 @@ class Site:
                     continue
                 fixed = repair_geometry(geom)
                 self._note(SiteNote(p.kind, (item.id,), "far", p.text))
-                items[k] = replace(item, **{attr: fixed})
+                items[k] = self._thinned(replace(item, **{attr: fixed}), attr)  # valid now
         empty = [b.id for b in self.buildings if b.footprint.is_empty]
         self.buildings = [b for b in self.buildings if not b.footprint.is_empty]
         self.obstacles = [o for o in self.obstacles if not o.geometry.is_empty]

@@ -935,3 +935,34 @@ def test_a_template_path_passes_only_as_template_static_file(rest, quoted):
         assert len(parts) >= 3 and parts[1] == "static"
         assert ".." not in parts and "" not in parts
     assert is_template_file("/voila/static/x.js")  # other paths are Voilà's to answer
+
+
+def test_a_far_dense_outline_that_needs_repair_is_thinned_once_repaired():
+    """A far, not planned neighbour drawn as a self-crossing bow-tie of 20 000 vertices:
+    repaired (make_valid, as far outlines are) and then thinned — else it stays dense and
+    every sight line pays for its edges."""
+    from planner.site import Building, Site
+
+    t = np.linspace(0.0, 1.0, 5000, endpoint=False)
+    z = 0 * t
+    ring = np.vstack(
+        [
+            np.c_[100 * t, z],
+            np.c_[100 - 100 * t, 60 * t],
+            np.c_[100 * t, 60 + z],
+            np.c_[100 - 100 * t, 60 - 60 * t],
+        ]
+    ) + np.array([X0 + 5000, Y0])
+    bowtie = shapely.Polygon(ring)
+    assert not bowtie.is_valid
+    site = Site(
+        [
+            Building("main", box(X0, Y0, X0 + 20, Y0 + 15), 9.0),
+            Building("far", bowtie, 9.0, planned=False),
+        ],
+        crs="EPSG:25832",
+        near_m=100.0,
+    )
+    far = next(b for b in site.buildings if b.id == "far")
+    assert shapely.get_num_coordinates(far.footprint) < 20
+    assert {(n.kind, n.action) for n in site.notes} == {("outline", "far"), ("outline", "thinned")}
