@@ -167,13 +167,24 @@ def test_every_table_of_the_report_fits_the_page(tmp_path, strict_plan):
         assert right <= page_right + 0.5, f"the table under {heading!r} runs off the page"
 
 
-def test_the_report_shows_the_plan_that_plan_makes_in_district_mode(tmp_path):
-    """``planner report`` takes the district options and plans as ``planner plan`` does
-    (:func:`planner.app.cli.make_plan`, one function for both): with ``--district on`` its
-    stations are the blocks' (K01-S01 …) and it says the district network (it planned in
-    one process before, and showed another plan than ``plan``'s)."""
-    args = ["--district", "on", "--sample-spacing-m", "4", "--sample-height-step-m", "4", "-q"]
-    code, _, err = run("report", *args, "--out", str(tmp_path / "r.html"))
-    assert code == 0, err
-    html = (tmp_path / "r.html").read_text()
-    assert "K01-S01" in html and "District" in html
+def test_the_report_makes_its_plan_as_plan_does(tmp_path, monkeypatch):
+    """``planner report`` takes the district options and makes its plan with the one
+    function ``planner plan`` uses (:func:`planner.app.cli.make_plan`: district mode where
+    ``plan`` takes it, the documents' share of the budget) — it planned in one process
+    before, and showed another plan than ``plan``'s. (District mode itself:
+    test_district.py.)"""
+    import planner.app.cli as cli
+    from planner.errors import InputError
+
+    seen = []
+
+    def make_plan(args, started, progress):
+        seen.append((args.district, args.block_m, args.workers))
+        raise InputError("stop here: the plan is make_plan's")
+
+    monkeypatch.setattr(cli, "make_plan", make_plan)
+    for command, out in (("report", "r.html"), ("plan", "p")):
+        code, _, err = run(command, "--district", "on", "--block-m", "300", "--workers", "1",
+                           "--out", str(tmp_path / out), "-q")  # fmt: skip
+        assert code == 2 and "stop here" in err, err
+    assert seen == [("on", 300.0, 1)] * 2  # the report's, then the plan's
