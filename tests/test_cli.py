@@ -108,7 +108,9 @@ def test_every_command_prints_its_help():
         assert code == 0 and "Traceback" not in err, (name, err[-500:])
         assert out.startswith("usage: planner " + name), name
     code, out, _ = run("plan", "--help")
-    assert "Autodesk ReCap asks more than 20 %) [%] (default 20)" in " ".join(out.split())
+    text = " ".join(out.split())
+    assert "Autodesk ReCap asks more than 20 %) [%] (> 0 and <= 100; default 20)" in text
+    assert "[mm] (>= 0.01 and <= 1000; default 5)" in text  # each one's range, as checked
 
 
 def test_plan_help_shows_every_setting_under_its_group():

@@ -767,7 +767,9 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
                 type=kind,
                 default=None,
                 metavar=pairs.get(name, name.rsplit("_", 1)[-1].upper()),
-                help=_argparse_text(f"{spec.help} [{spec.unit}] (default {default})"),
+                help=_argparse_text(
+                    f"{spec.help} [{spec.unit}] ({spec.rule()}; default {default})"
+                ),
             )
     req.add_argument(
         "--class",
