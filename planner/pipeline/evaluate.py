@@ -34,6 +34,7 @@ from planner.pipeline.visibility import (
     clear_height,
     edges_in_box,
     edges_in_front,
+    ends_ahead,
     own_edges,
     visible,
 )
@@ -122,13 +123,7 @@ class Context:
         ``scene`` the sight lines' (made for ``site`` with the settings' engine when not
         given)."""
         scene = scene or Scene(site, settings.sight_engine)
-        masks, cols_of, samples_of, ahead = [], [], [], []
-        col_order = np.argsort(facades.col_facade, kind="stable")
-        smp_order = np.argsort(facades.facade, kind="stable")
-        col_bounds = np.searchsorted(
-            facades.col_facade[col_order], np.arange(facades.n_facades + 1)
-        )
-        smp_bounds = np.searchsorted(facades.facade[smp_order], np.arange(facades.n_facades + 1))
+        masks, ahead = [], []
         for f in range(facades.n_facades):
             a, e = facades.start[f], facades.end[f]
             bbox = (
@@ -142,14 +137,9 @@ class Context:
             masks.append(np.flatnonzero(edges_in_front(scene.edges, a, n, bbox) & ~own))
             # a facade merged from a curved run of edges stands behind them: its rays end in
             # front of the run (a single edge: the facade itself, 0 m ahead)
-            run = scene.edges[own]
             ahead.append(
-                max(0.0, *((run[:, [0, 2]] - a[0]) * n[0] + (run[:, [1, 3]] - a[1]) * n[1]).ravel())
-                if len(run)
-                else 0.0
+                max(0.0, *(d.max(initial=0.0) for d in ends_ahead(scene.edges[own], a, n)))
             )
-            cols_of.append(col_order[col_bounds[f] : col_bounds[f + 1]])
-            samples_of.append(smp_order[smp_bounds[f] : smp_bounds[f + 1]])
         sample_req = sample_req or SampleRequirements.uniform(req, len(facades.z))
         return cls(
             site=site,
@@ -161,8 +151,8 @@ class Context:
             scene=scene,
             edge_mask=masks,
             ray_end_m=SIGHT_OFFSET_M + np.array(ahead, dtype=float),
-            cols_of=cols_of,
-            samples_of=samples_of,
+            cols_of=facades.per_facade(facades.col_facade),
+            samples_of=facades.per_facade(facades.facade),
             step_mm_at_10m=settings.step_mm_at_10m or scanner.step_mm_at_10m,
             limits=sample_req.limits,
             stations_needed=sample_req.stations,

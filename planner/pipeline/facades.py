@@ -112,6 +112,13 @@ class FacadeSet:
     def n_facades(self) -> int:
         return len(self.facade_id)
 
+    def per_facade(self, of: np.ndarray) -> list[np.ndarray]:
+        """Per facade, the indices of the items whose facade index ``of`` gives (its
+        samples for :attr:`facade`, its columns for :attr:`col_facade`), ascending."""
+        order = np.argsort(of, kind="stable")
+        cuts = np.searchsorted(of[order], np.arange(self.n_facades + 1))
+        return [order[cuts[f] : cuts[f + 1]] for f in range(self.n_facades)]
+
     @property
     def length_m(self) -> np.ndarray:
         return np.hypot(*(self.end - self.start).T) if len(self.start) else np.zeros(0)

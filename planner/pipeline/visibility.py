@@ -54,6 +54,7 @@ __all__ = [
     "clear_height",
     "edges_in_box",
     "edges_in_front",
+    "ends_ahead",
     "own_edges",
     "stand_blocks",
     "visible",
@@ -286,7 +287,7 @@ def edges_in_front(
     """Mask of edges that can block a sight line ending on a facade: an end strictly in front
     of the facade line (through ``point``, outward ``normal``) and overlapping ``bbox`` (a
     merged facade's own edges are in front of it too: :func:`own_edges`)."""
-    d0, d1 = _ahead(edges, point, normal)
+    d0, d1 = ends_ahead(edges, point, normal)
     return edges_in_box(edges, bbox) & (np.maximum(d0, d1) > 1e-6)
 
 
@@ -299,7 +300,7 @@ def own_edges(
     :func:`~planner.pipeline.facades.build_facades`) is sampled on its chord, up to
     ``band_m`` behind them: they are the facade itself, not a wall in front of it (so is any
     edge that close, e.g. an obstacle drawn against the wall: within a footprint's accuracy)."""
-    d0, d1 = _ahead(edges, point, normal)
+    d0, d1 = ends_ahead(edges, point, normal)
     along = np.asarray(end, dtype=float)[:2] - np.asarray(point, dtype=float)[:2]
     length = float(np.hypot(*along))
     if length == 0.0:
@@ -316,7 +317,7 @@ def own_edges(
     )
 
 
-def _ahead(edges: np.ndarray, point: np.ndarray, normal: np.ndarray) -> tuple[np.ndarray, ...]:
+def ends_ahead(edges: np.ndarray, point: np.ndarray, normal: np.ndarray) -> tuple[np.ndarray, ...]:
     """How far each edge's two ends stand in front of the line through ``point`` [m]."""
     d0 = (edges[:, 0] - point[0]) * normal[0] + (edges[:, 1] - point[1]) * normal[1]
     d1 = (edges[:, 2] - point[0]) * normal[0] + (edges[:, 3] - point[1]) * normal[1]

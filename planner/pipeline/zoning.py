@@ -106,7 +106,7 @@ def apply_zones(
         fac = _refine(site, fac, zones[i], facades[i], i, scene)
     n = len(fac.z)
     u = along_m(fac)
-    on_facade = _samples_by_facade(fac)
+    on_facade = fac.per_facade(fac.facade)
     members = [_inside(z, fac, f, u, on_facade) for z, f in zip(zones, facades, strict=True)]
     looser: list[str] = []
     for z, zr, idx in zip(zones, reqs, members, strict=True):
@@ -145,13 +145,6 @@ def apply_zones(
         covered[idx] = True
     out.zone_ids[:] = _joined_ids([z.id for z in zones], members, n)
     return fac, out, ZoneTable(zones, reqs, members, messages)
-
-
-def _samples_by_facade(fac: FacadeSet) -> list[np.ndarray]:
-    """The sample indices of each facade, in sample order."""
-    order = np.argsort(fac.facade, kind="stable")
-    cuts = np.searchsorted(fac.facade[order], np.arange(len(fac.length_m) + 1))
-    return [order[cuts[k] : cuts[k + 1]] for k in range(len(fac.length_m))]
 
 
 def _joined_ids(ids: list[str], members: list[np.ndarray], n: int) -> np.ndarray:
@@ -229,7 +222,7 @@ def _inside(
     z: Zone, fac: FacadeSet, facades: np.ndarray, u: np.ndarray, on_facade: list[np.ndarray]
 ) -> np.ndarray:
     """The indices of the samples inside the zone (ascending); ``on_facade``: each facade's
-    samples (:func:`_samples_by_facade`)."""
+    samples (:meth:`FacadeSet.per_facade`)."""
     tol = 1e-6
     idx = np.sort(np.concatenate([on_facade[f] for f in facades]))
     if z.along_m is not None:
@@ -250,7 +243,7 @@ def _refine(
     (new columns on its facades, rows over its height range, on the facade's outline)."""
     u = along_m(fac)
     drop = np.zeros(len(fac.z), dtype=bool)
-    drop[_inside(z, fac, facades, u, _samples_by_facade(fac))] = True
+    drop[_inside(z, fac, facades, u, fac.per_facade(fac.facade))] = True
     new_cols_f, new_cols_u, new_s = [], [], []  # samples: (facade, column, u, h, id)
     n_cols = len(fac.col_facade)
     for f in facades:
