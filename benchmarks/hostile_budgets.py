@@ -30,6 +30,8 @@ from pathlib import Path
 import numpy as np
 from _results import machine, write_section
 
+from planner.synthetic import densified
+
 ROOT = Path(__file__).resolve().parent.parent
 PLANNER = ROOT / ".venv" / "bin" / "planner"
 X0, Y0 = 500000.0, 5400000.0
@@ -53,16 +55,7 @@ def zones_table(path: Path, n: int = 60_000, distinct: bool = False) -> None:
 
 def dense_site(path: Path, shape: str, n: int = 200_000) -> None:
     if shape == "rectangle":
-        t = np.linspace(0.0, 1.0, n // 4, endpoint=False)
-        z = 0 * t
-        ring = np.vstack(
-            [
-                np.c_[100 * t, z],
-                np.c_[100 + z, 60 * t],
-                np.c_[100 - 100 * t, 60 + z],
-                np.c_[z, 60 - 60 * t],
-            ]
-        )
+        ring = densified(np.array([[0, 0], [100, 0], [100, 60], [0, 60]]), n // 4)
     else:
         a = np.linspace(0.0, 2 * np.pi, n, endpoint=False)
         ring = 100 * np.c_[np.cos(a), np.sin(a)]

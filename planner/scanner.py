@@ -25,7 +25,7 @@ from numpy.typing import ArrayLike
 from planner._array import as_float_array
 from planner.atomic import write_text_atomic
 from planner.errors import InputError
-from planner.numbers import RANGES, check_number
+from planner.ranges import RANGES, check_number
 
 __all__ = [
     "DEFAULT_SCANNER",
@@ -162,7 +162,7 @@ class Scanner:
         if not isinstance(self.name, str) or not self.name.strip():
             raise InputError("Scanner name must be a non-empty text, e.g. name='my-p20'")
         who = f"Scanner {self.name!r}"
-        # each figure's range (planner.numbers.RANGES); the optional ones may be None
+        # each figure's range (planner.ranges.RANGES); the optional ones may be None
         figures = {
             "range_rms_mm": "range_rms_mm",
             "range_ppm": "range_ppm",
@@ -440,7 +440,7 @@ def check_profile_name(name: str) -> str:
 
 
 def _number(value: Any, what: str, rng: str) -> float:
-    """A profile's figure checked against its physical range (:data:`planner.numbers.RANGES`)."""
+    """A profile's figure checked against its physical range (:data:`planner.ranges.RANGES`)."""
     return check_number(value, what, RANGES[rng])
 
 

@@ -24,7 +24,7 @@ from shapely.geometry.base import BaseGeometry
 
 from planner.citymodel import Surface
 from planner.errors import InputError
-from planner.numbers import RANGES
+from planner.ranges import RANGES
 from planner.sitecheck import CLIP_SHARE, SiteNote, SiteProblem, SiteProblems, near_mask
 from planner.terrain import Terrain
 from planner.text import printable

@@ -414,7 +414,7 @@ def _height_of(props: dict[str, Any], geom: BaseGeometry | None, storey_height_m
 
 
 def _check_storey_height(storey_height_m: float) -> None:
-    from planner.numbers import RANGES
+    from planner.ranges import RANGES
 
     RANGES["storey_height_m"].check(storey_height_m, "the storey height")
 

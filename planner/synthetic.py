@@ -25,7 +25,7 @@ from shapely.geometry import Polygon, box
 
 from planner.site import Building, Passage, Site
 
-__all__ = ["GATEWAYS", "TOWN_CRS", "town", "town_geojson"]
+__all__ = ["GATEWAYS", "TOWN_CRS", "densified", "town", "town_geojson"]
 
 #: How a block's courtyard opens to the street: ``open`` — a gap between the buildings
 #: (the footprints show it); ``passage`` — a gateway through a building's ground floor, as
@@ -211,3 +211,16 @@ def town_geojson(site: Site) -> dict:
     ]
     crs = {"type": "name", "properties": {"name": TOWN_CRS}}
     return {"type": "FeatureCollection", "crs": crs, "features": feats}
+
+
+def densified(corners: np.ndarray, per_edge: int) -> np.ndarray:
+    """A closed outline through ``corners`` (K, 2) [m] drawn as ``per_edge`` equal edges
+    along each side, as a traced or densified footprint is: (K × per_edge, 2) vertices, the
+    ring not closed (corners in the order given; corners that cross give a bow-tie).
+
+    >>> densified(np.array([[0, 0], [4, 0], [4, 2], [0, 2]]), 2).tolist()[:3]
+    [[0.0, 0.0], [2.0, 0.0], [4.0, 0.0]]
+    """
+    a = np.asarray(corners, dtype=float)
+    t = np.linspace(0.0, 1.0, per_edge, endpoint=False)[:, None]
+    return np.vstack([p + t * (q - p) for p, q in zip(a, np.roll(a, -1, axis=0), strict=True)])

@@ -26,7 +26,7 @@ from numpy.typing import ArrayLike
 
 from planner._array import as_float_array, check_range, like_input
 from planner.errors import InputError
-from planner.numbers import RANGES
+from planner.ranges import RANGES
 from planner.scanner import Scanner
 from planner.spacing import point_spacing_mm, resolve_step_mm
 

@@ -4,7 +4,7 @@ property-based test generating more of its kind.
 1. Nothing is fetched and nothing outside the input is read (GIS files pinned to their
    format and driver; the session's loopback sentinel, ``conftest.sentinel``, sees no call).
 2. Nothing is dropped silently (a shapefile's tables disagreeing).
-3. A bad number is exit 2 naming its range, never 3 (:mod:`planner.numbers`).
+3. A bad number is exit 2 naming its range, never 3 (:mod:`planner.ranges`).
 4. ``--scheduler`` fails fast and clearly.
 5. Units: a CRS in feet is refused, not planned as metres.
 6. User strings never become live content (:mod:`planner.text`).
@@ -36,9 +36,10 @@ from sites import run_cli
 import planner
 from planner import gdalio
 from planner.errors import InputError
-from planner.numbers import RANGES, Range, check_number
 from planner.pipeline.export import OWNED_FILES
 from planner.pipeline.requirements import PlanSettings, Requirements, field_specs
+from planner.ranges import RANGES, Range, check_number
+from planner.synthetic import densified
 from planner.text import printable
 
 FAST = ["--sample-spacing-m", "5", "--sample-height-step-m", "4", "--grid-m", "4", "-q"]
@@ -803,17 +804,8 @@ def test_a_dense_outline_is_thinned_and_noted():
     from planner.site import Building, Site
 
     def dense(n: int) -> shapely.Polygon:
-        t = np.linspace(0.0, 1.0, n // 4, endpoint=False)
-        z = 0 * t
-        ring = np.vstack(
-            [
-                np.c_[100 * t, z],
-                np.c_[100 + z, 60 * t],
-                np.c_[100 - 100 * t, 60 + z],
-                np.c_[z, 60 - 60 * t],
-            ]
-        )
-        return shapely.Polygon(ring + np.array([X0, Y0]))
+        corners = np.array([[0, 0], [100, 0], [100, 60], [0, 60]]) + np.array([X0, Y0])
+        return shapely.Polygon(densified(corners, n // 4))
 
     site = Site([Building("dense", dense(20_000), 12.0)], crs="EPSG:25832")
     assert len(site.buildings[0].footprint.exterior.coords) == 5
@@ -943,16 +935,8 @@ def test_a_far_dense_outline_that_needs_repair_is_thinned_once_repaired():
     every sight line pays for its edges."""
     from planner.site import Building, Site
 
-    t = np.linspace(0.0, 1.0, 5000, endpoint=False)
-    z = 0 * t
-    ring = np.vstack(
-        [
-            np.c_[100 * t, z],
-            np.c_[100 - 100 * t, 60 * t],
-            np.c_[100 * t, 60 + z],
-            np.c_[100 - 100 * t, 60 - 60 * t],
-        ]
-    ) + np.array([X0 + 5000, Y0])
+    corners = np.array([[0, 0], [100, 0], [0, 60], [100, 60]])  # its sides cross
+    ring = densified(corners + np.array([X0 + 5000, Y0]), 5000)
     bowtie = shapely.Polygon(ring)
     assert not bowtie.is_valid
     site = Site(

@@ -178,7 +178,7 @@ def test_the_report_makes_its_plan_as_plan_does(tmp_path, monkeypatch):
 
     seen = []
 
-    def make_plan(args, started, progress):
+    def make_plan(args, progress):
         seen.append((args.district, args.block_m, args.workers))
         raise InputError("stop here: the plan is make_plan's")
 

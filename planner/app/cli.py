@@ -29,7 +29,7 @@ from typing import Any
 import pandas as pd
 
 from planner.errors import InputError, PlannerError
-from planner.numbers import argument
+from planner.ranges import argument
 from planner.scanner import DEFAULT_SCANNER, Scanner, catalogue, load_scanner
 from planner.tables import (
     PAPER_DISTANCES_M,
@@ -71,7 +71,7 @@ def _floats(text: str) -> list[float]:
 
 
 def _floats_in(name: str) -> Callable[[str], list[float]]:
-    """Comma-separated numbers, each within ``RANGES[name]`` (:mod:`planner.numbers`)."""
+    """Comma-separated numbers, each within ``RANGES[name]`` (:mod:`planner.ranges`)."""
     one = argument(name)
 
     def parse(text: str) -> list[float]:
@@ -413,17 +413,19 @@ def command_started() -> float:
     return time.monotonic() - age if 0.0 <= age < 600.0 else time.monotonic()
 
 
-def make_plan(args: argparse.Namespace, started: float, progress: Callable[[float, str], None]):
+def make_plan(args: argparse.Namespace, progress: Callable[[float, str], None]):
     """The plan of the options shared by ``plan`` and ``report`` — the one function both
     use, so that a report shows exactly the plan ``plan`` makes: in district mode where
     ``plan`` would take it (:func:`_district`), ending with the documents' share of
-    ``--time-limit-s`` left (:data:`DOCUMENT_SHARE`, or the files' estimated time). Returns
-    the plan, the command's deadline and the pace it had (:func:`~planner.pipeline.clock.pace`)."""
+    ``--time-limit-s`` left (:data:`DOCUMENT_SHARE`, or the files' estimated time), counted
+    from the command's start. Returns the plan, the command's deadline and the pace it had
+    (:func:`~planner.pipeline.clock.pace`)."""
     from planner.pipeline.clock import pace
     from planner.pipeline.district import memory_bytes
     from planner.pipeline.facades import estimate_samples
     from planner.pipeline.planning import plan
 
+    started = getattr(args, "started", None) or time.monotonic()
     memory_bytes(args.worker_memory)  # checked even where the plan needs no cluster
     site, scanner, req, settings = plan_inputs(args)
     deadline = started + settings.time_limit_s
@@ -462,13 +464,12 @@ def run_plan(args: argparse.Namespace) -> int:
     from planner.atomic import check_inputs_kept, check_output_folder
     from planner.pipeline.export import OWNED_FILES, save
 
-    started = getattr(args, "started", None) or time.monotonic()
     progress = _StderrProgress(args.quiet)
     check_output_folder(args.out)  # before the plan, which can take minutes
     check_inputs_kept([Path(args.out) / name for name in OWNED_FILES], _input_paths(args))
     import ezdxf  # noqa: F401  (the DXF writer's import, 0.7 s, made now: not after planning)
 
-    result, deadline, slow = make_plan(args, started, progress)
+    result, deadline, slow = make_plan(args, progress)
     site = result.site
     extra = {}
     saving = slow * (
@@ -523,8 +524,7 @@ def cmd_report(args: argparse.Namespace) -> int:
         raise InputError(f"--out must name an .html file; got {args.out!r}")
     check_output_file(out)
     check_inputs_kept([out], _input_paths(args))
-    started = getattr(args, "started", None) or time.monotonic()
-    result, _, _ = make_plan(args, started, _StderrProgress(args.quiet))
+    result, _, _ = make_plan(args, _StderrProgress(args.quiet))
     if not args.quiet:
         print("planner: rendering the report …", file=sys.stderr)
     path = make_report(result, out)

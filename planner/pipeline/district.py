@@ -49,7 +49,6 @@ from shapely.geometry import box
 
 from planner.cloud_registration import weakest_direction
 from planner.errors import InputError
-from planner.numbers import RANGES
 from planner.pipeline.evaluate import Progress
 from planner.pipeline.facades import check_sample_count, estimate_samples
 from planner.pipeline.requirements import (
@@ -70,6 +69,7 @@ from planner.pipeline.tables import (
     rename_stations,
     rename_targets,
 )
+from planner.ranges import RANGES
 from planner.registration_error import datum_tilt_cov
 from planner.scanner import Scanner
 from planner.site import Site

@@ -27,7 +27,7 @@ from planner.accuracy import station_rms_pair
 from planner.classes import class_limits, parse_class
 from planner.cloud_registration import DEFAULT_CLOUD_FLOOR_MM, DEFAULT_MIN_OVERLAP_PCT
 from planner.errors import InputError
-from planner.numbers import Range, check_number
+from planner.ranges import Range, check_number
 from planner.targets import DEFAULT_INVENTORY, TargetItem, as_inventory
 
 if TYPE_CHECKING:
@@ -97,7 +97,7 @@ class FieldSpec:
 
     @functools.cached_property
     def range(self) -> Range:
-        """The values it may take (:class:`planner.numbers.Range`)."""
+        """The values it may take (:class:`planner.ranges.Range`)."""
         return Range(self.lo, self.hi, self.unit, self.open_lo)
 
     def rule(self) -> str:
