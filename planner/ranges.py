@@ -129,6 +129,8 @@ RANGES: dict[str, Range] = {
     "block_m": Range(20.0, 100_000.0, "m"),
     "workers": Range(1, 256, "processes", integer=True),
     "coverage_factor": Range(0.0, 10.0, "", open_lo=True),
+    "beams_per_station": Range(1000, 100_000_000, "beams", integer=True),
+    "seed": Range(0, 2**32 - 1, "", integer=True),
     # dashboard server
     "port": Range(1, 65_535, "TCP port", integer=True),
     "kernel_idle_s": Range(1.0, 1e7, "s"),

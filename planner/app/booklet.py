@@ -14,6 +14,7 @@ import io
 import math
 import textwrap
 import time
+from collections.abc import Collection
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -68,11 +69,15 @@ def booklet_pdf(p: Plan, deadline: float = math.inf) -> bytes:
     return booklet(p, deadline)[0]
 
 
-def booklet(p: Plan, deadline: float = math.inf) -> tuple[bytes, list[str]]:
-    """:func:`booklet_pdf`, and the stations whose pages the deadline left out."""
+def booklet(
+    p: Plan, deadline: float = math.inf, only: Collection[str] | None = None
+) -> tuple[bytes, list[str]]:
+    """:func:`booklet_pdf`, and the stations whose pages the deadline left out; ``only``:
+    pages for these stations alone (the extra stations of a re-plan)."""
     buf = io.BytesIO()
     meta = {"Title": f"tls-planner field booklet: {p.site.name}", "CreationDate": None}
     order = list(_route(p)["station_id"]) if len(_route(p)) else []
+    order = [s for s in order if only is None or s in only]
     left: list[str] = []
     with plt.rc_context({"pdf.fonttype": 42}), PdfPages(buf, metadata=meta) as pdf:
         pdf.savefig(_overview(p))

@@ -532,6 +532,118 @@ def cmd_report(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def _plan_here(args: argparse.Namespace, what: str):
+    """The plan of ``plan``'s options, made in this process (not in district mode: the
+    rehearsal and the re-plan work on one network and its workbench)."""
+    result, _, _ = make_plan(args, _StderrProgress(args.quiet))
+    if result.workbench is None:
+        raise InputError(
+            f"{what} works on a site planned as one network; this one was planned in district "
+            "mode (raise --block-m beyond the site's size, or give one block's buildings "
+            "with --buildings)"
+        )
+    return result
+
+
+def cmd_rehearse(args: argparse.Namespace) -> int:
+    """The plan's simulated scans (E57, LAZ) and its HELIOS++ survey, written as one set."""
+    from planner.atomic import check_inputs_kept, check_output_folder, replace_folder_files
+    from planner.pipeline.helios import FILES as HELIOS_FILES
+    from planner.pipeline.helios import helios_files
+    from planner.pipeline.pointclouds import e57_bytes, laz_bytes, legend_csv
+    from planner.pipeline.rehearsal import estimate, rehearse
+    from planner.pipeline.scene import Scene
+
+    check_output_folder(args.out)
+    owned = ("scans.e57", "scans.laz", "scans_legend.csv", *HELIOS_FILES)
+    check_inputs_kept([Path(args.out) / n for n in owned], _input_paths(args))
+    result = _plan_here(args, "planner rehearse")
+    scene = Scene(result.site, "rays")
+    size = estimate(result, args.beams_per_station, scene)
+    t0 = time.monotonic()
+    if not args.quiet:
+        print(
+            f"planner: simulating {int(size['stations'])} scans at {size['step_mm_at_10m']:.1f} "
+            f"mm at 10 m: about {size['points'] / 1e6:.1f} million points (E57 about "
+            f"{size['e57_bytes'] / 1e6:.0f} MB, LAZ about {size['laz_bytes'] / 1e6:.0f} MB); "
+            "--beams-per-station to change",
+            file=sys.stderr,
+        )
+    reh = rehearse(
+        result,
+        beams_per_station=args.beams_per_station,
+        seed=args.seed,
+        scene=scene,
+        progress=_StderrProgress(args.quiet),
+    )
+    files = {"scans_legend.csv": legend_csv(reh).encode()}
+    if not args.quiet:
+        print("planner: writing scans.e57 and scans.laz …", file=sys.stderr)
+    files["scans.e57"] = e57_bytes(reh)
+    files["scans.laz"] = laz_bytes(reh)
+    files.update(helios_files(result, scene))
+    written = replace_folder_files(args.out, files, owned=owned)
+    for note in reh.notes:
+        print(note)
+    print(
+        f"{len(reh.scans)} simulated scans, {reh.n_points:,} points "
+        f"({time.monotonic() - t0:.0f} s): scans.e57 {len(files['scans.e57']) / 1e6:.1f} MB "
+        f"(one scan per station, its pose), scans.laz {len(files['scans.laz']) / 1e6:.1f} MB "
+        "(site CRS; rms_mm, incidence_deg, surface), scans_legend.csv; the HELIOS++ survey "
+        "helios_survey.xml with its scene and scanner."
+    )
+    print(f"Wrote {', '.join(p.name for p in written)} to {args.out}")
+    return EXIT_OK
+
+
+def cmd_replan(args: argparse.Namespace) -> int:
+    """The plan re-made from the stations as scanned: the extra stations for what is left."""
+    from planner.atomic import check_inputs_kept, check_output_folder
+    from planner.pipeline.asscanned import (
+        compare_links,
+        read_link_report,
+        read_targets_placed,
+        replan,
+    )
+    from planner.pipeline.export import OWNED_FILES, save
+    from planner.pipeline.pointclouds import read_poses
+
+    check_output_folder(args.out)
+    extra_names = ("as_scanned.csv", "link_check.csv")
+    inputs = [*_input_paths(args), args.as_scanned, args.targets_placed, args.link_report]
+    check_inputs_kept([Path(args.out) / n for n in (*OWNED_FILES, *extra_names)], inputs)
+    scanned = read_poses(args.as_scanned)
+    placed = report = None
+    if args.targets_placed:
+        placed = read_targets_placed(args.targets_placed)
+    if args.link_report:
+        report = read_link_report(args.link_report)
+    result = _plan_here(args, "planner replan")
+    unknown = set(scanned["station_id"]) - set(result.stations["station_id"])
+    if len(unknown) == len(scanned):
+        raise InputError(
+            f"{args.as_scanned}: none of its stations ({', '.join(sorted(unknown)[:4])} …) is "
+            "a station of this plan: re-plan with the options the plan was made with, and the "
+            "scans named by their station ids"
+        )
+    r = replan(result, scanned, targets_placed=placed, progress=_StderrProgress(args.quiet))
+    files = {"as_scanned.csv": r.stations.to_csv(index=False).encode()}
+    if report is not None:
+        check = compare_links(r.scanned_plan, report)
+        files["link_check.csv"] = check.to_csv(index=False).encode()
+    if args.booklet and len(r.extra):
+        from planner.app.booklet import booklet
+
+        files["booklet.pdf"], _ = booklet(r.plan, only=set(r.extra["station_id"]))
+    written = save(r.plan, args.out, files)
+    print(r.summary())
+    if report is not None:
+        print("\nLinks as registered against the plan:")
+        print(check.to_string(index=False, float_format=lambda v: f"{v:.2f}"))
+    print(f"\nWrote {', '.join(p.name for p in written)} to {args.out}")
+    return EXIT_OK if r.plan.meets_all else EXIT_UNMET
+
+
 def _print_table(df: pd.DataFrame, decimals: int = 3) -> None:
     print(df.to_string(float_format=lambda v: f"{v:.{decimals}f}"))
 
@@ -1038,6 +1150,71 @@ def build_parser() -> argparse.ArgumentParser:
     _district_arguments(rp)
     rp.add_argument("--out", required=True, metavar="REPORT.html", help="the HTML file to write")
     rp.set_defaults(func=cmd_report)
+
+    rh = sub.add_parser(
+        "rehearse",
+        help="the plan's scans simulated as point clouds (E57, LAZ) and a HELIOS++ survey",
+        description="Plans the site as `plan` does, then simulates every station's scan "
+        "(the scene ray-cast on the scanner's grid, noise by the plan's model, targets as "
+        "geometry) and writes scans.e57 (one scan per station with its pose), scans.laz "
+        "(site CRS, predicted RMS per point), scans_legend.csv and the HELIOS++ survey "
+        "(helios_*.xml, helios_scene.obj). The size is said before writing.",
+    )
+    _plan_arguments(rh)
+    rh.add_argument("--out", required=True, metavar="DIR", help="folder for the clouds")
+    _district_arguments(rh)
+    from planner.pipeline.rehearsal import DEFAULT_BEAMS_PER_STATION
+
+    rh.add_argument(
+        "--beams-per-station",
+        type=argument("beams_per_station"),
+        default=DEFAULT_BEAMS_PER_STATION,
+        help="beams cast per station at most: the preset's step is thinned to it (default "
+        f"{DEFAULT_BEAMS_PER_STATION:,}; about 5 points per beam of 10 fall on something)",
+    )
+    rh.add_argument(
+        "--seed", type=argument("seed"), default=1, help="the noise's random seed (default 1)"
+    )
+    rh.set_defaults(func=cmd_rehearse)
+
+    rr = sub.add_parser(
+        "replan",
+        help="re-plan from the stations as scanned: the extra stations for what is left",
+        description="Plans the site as `plan` does (give the same options), takes the "
+        "stations as scanned (--as-scanned: the registered project's E57, scans named by "
+        "station id, or a CSV station_id,x,y), judges every sample with them and proposes "
+        "the fewest extra stations, each with its reason. Exit codes: 0 every requirement "
+        "met with the extra stations; 1 some samples unmet; 2 bad input.",
+    )
+    _plan_arguments(rr)
+    rr.add_argument("--out", required=True, metavar="DIR", help="folder for the new plan")
+    _district_arguments(rr)
+    rr.add_argument(
+        "--as-scanned",
+        required=True,
+        metavar="FILE",
+        help="the stations as scanned: an .e57 of the registered scans (their poses) or a "
+        ".csv with station_id, x, y",
+    )
+    rr.add_argument(
+        "--targets-placed",
+        metavar="CSV",
+        help="the targets as placed (target_id, x, y); a planned target not listed was not "
+        "set up. Default: as planned",
+    )
+    rr.add_argument(
+        "--link-report",
+        metavar="CSV",
+        help="the registration program's link report (from, to, error [mm]; overlap "
+        "optional): compared with the plan's predicted link errors (link_check.csv)",
+    )
+    rr.add_argument(
+        "--booklet",
+        action=argparse.BooleanOptionalAction,
+        default=False,
+        help="also draw the booklet's pages for the extra stations (booklet.pdf)",
+    )
+    rr.set_defaults(func=cmd_replan)
 
     sv = sub.add_parser("serve", help="serve the station-planner dashboard with Voilà on 127.0.0.1")
     sv.add_argument(

@@ -244,10 +244,13 @@ def choose_stations(
     locked: np.ndarray | None = None,
     locked_ids: list[str | None] | None = None,
     clock: Clock | None = None,
+    edited: bool = False,
 ) -> Plan:
     """The fewest stations (with ``locked`` positions kept, each under its id in
     ``locked_ids`` where one is given) and their registration network, for what ``wb``
-    holds, within the time budget of ``clock`` (default: the settings' from now)."""
+    holds, within the time budget of ``clock`` (default: the settings' from now).
+    ``edited``: the plan's ids are out (printed, scanned): a new station takes a number
+    never given (:attr:`~planner.pipeline.judge.Workbench.last_station`)."""
     ctx, st = wb.ctx, wb.settings
     fac = wb.facades
     say = progress or (lambda _f, _m: None)
@@ -385,6 +388,7 @@ def choose_stations(
         hand=hand,
         best_effort=best_effort,
         kept=kept,
+        edited=edited,
     )
 
 
