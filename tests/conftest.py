@@ -42,7 +42,9 @@ def _quick_booklet(request, monkeypatch):
         return
     import planner.app.booklet as booklet
 
-    monkeypatch.setattr(booklet, "booklet", lambda _p, deadline=math.inf: (_STAND_IN_PDF, []))
+    monkeypatch.setattr(
+        booklet, "booklet", lambda _p, deadline=math.inf, only=None: (_STAND_IN_PDF, [])
+    )
 
 
 @pytest.fixture(scope="session")

@@ -22,6 +22,7 @@ import numpy as np
 import shapely
 from IPython.display import display
 
+from planner.app.as_scanned import AsScannedPanel
 from planner.app.booklet import booklet_pdf
 from planner.app.elevations import elevation_buildings, plot_elevations
 from planner.app.maps import QUANTITIES, plot_coverage, quantity_label
@@ -281,6 +282,7 @@ TABS = [
     "Registration",
     "Unmet",
     "Stations & field work",
+    "As scanned",
     "Downloads",
 ]
 MAP_TAB = TABS.index("Map")
@@ -482,6 +484,9 @@ class StationPlanner:
         self.downloads = w.HTML("")
         self.report_button = w.Button(description="Make HTML report")
         self.report_status = w.HTML("")
+        self.as_scanned = AsScannedPanel(
+            lambda: self.plan, self.start, lambda: Path(self._tmp.name)
+        )
         self.tabs = w.Tab(
             children=[
                 self.map.widget,
@@ -492,6 +497,7 @@ class StationPlanner:
                 self.reg_out,
                 self.unmet_out,
                 self.field_out,
+                self.as_scanned.widget,
                 w.VBox(
                     [
                         self.downloads,
@@ -1157,6 +1163,7 @@ class StationPlanner:
             "Registration": self._draw_registration,
             "Unmet": self._draw_unmet,
             "Stations & field work": self._draw_field_work,
+            "As scanned": lambda: None,  # (drawn when a re-plan ends)
             "Downloads": self._offer_downloads,
         }
         draw[name]()

@@ -1,0 +1,142 @@
+"""planner.pipeline.asscanned and the dashboard's "As scanned" tab: re-planning from the
+stations as scanned, and the registration report compared with the plan."""
+
+from __future__ import annotations
+
+import copy
+import datetime
+
+import numpy as np
+import pandas as pd
+import pytest
+import scipy.sparse as sp
+from scipy.optimize import Bounds, LinearConstraint, milp
+from sites import run_cli as run
+
+from planner.errors import InputError
+from planner.pipeline.asscanned import compare_links, read_link_report, replan
+from planner.pipeline.planning import cover_demand, plan
+from planner.pipeline.pointclouds import read_poses
+from planner.pipeline.requirements import PlanSettings
+
+
+def _moved(p):
+    st = p.scan_stations[["station_id", "x", "y"]].copy()
+    st = st[st["station_id"] != "S05"].copy()  # skipped
+    st.loc[st["station_id"] == "S02", "x"] += 3.0  # m
+    st.loc[st["station_id"] == "S09", "y"] += 3.0
+    return st
+
+
+def test_replan_proposes_the_fewest_extra_stations_for_what_is_left():
+    """Two stations moved 3 m, one skipped: the extra covering stations are as few as an
+    exact re-solve (scipy's MILP over the same evaluation) needs."""
+    p = plan(settings=PlanSettings(registration_error=False))
+    scanned = _moved(p)
+    r = replan(p, scanned)
+    status = r.stations.set_index("station_id")["status"]
+    assert status["S05"] == "skipped" and status["S02"] == "moved" and status["S01"] == "as planned"
+    assert r.stations.set_index("station_id").loc["S02", "moved_m"] == pytest.approx(3.0)
+    wb = p.workbench
+    ok = wb.evaluation.ok
+    forced = wb.add_positions(scanned[["x", "y"]].to_numpy())
+    demand = cover_demand(wb.ctx, np.asarray(ok.sum(axis=1)).ravel())
+    left = np.maximum(0, demand - np.asarray(ok[:, forced].sum(axis=1)).ravel())
+    rows = left > 0
+    free = np.setdiff1d(np.arange(ok.shape[1]), forced)
+    a = sp.csr_matrix(ok[rows][:, free], dtype=float)
+    best = milp(
+        np.ones(len(free)),
+        constraints=LinearConstraint(a, lb=left[rows]),
+        integrality=np.ones(len(free)),
+        bounds=Bounds(0, 1),
+    )
+    assert best.success
+    covering = r.extra["reason"].str.contains("left unmet")
+    assert covering.sum() == round(best.fun) > 0
+    # the others tie the scans made into one network again (S05, skipped, was a link)
+    assert r.extra.loc[~covering, "reason"].str.contains("into the registration network").all()
+    assert r.plan.meets_all
+    # ids: the scans keep theirs, the extra stations take numbers never given
+    assert set(r.extra["station_id"]).isdisjoint(p.stations["station_id"])
+
+
+def test_nothing_changed_means_nothing_extra(default_plan):
+    p = copy.deepcopy(default_plan)  # (a re-plan adds to the plan's workbench)
+    scanned = p.scan_stations[["station_id", "x", "y"]]
+    r = replan(p, scanned)
+    assert r.extra.empty and (r.stations["status"] == "as planned").all()
+    assert r.before[0] == r.before[1]
+
+
+def test_the_link_report_is_read_under_its_own_names_and_compared(default_plan, tmp_path):
+    a, b, pred = default_plan.links.iloc[0][["station_a", "station_b", "link_rms_mm"]]
+    path = tmp_path / "report.csv"
+    path.write_text(f"From;To;Error (m);Overlap\n{b};{a};{3 * pred / 1000};40%\nS01;S99;0.001;5\n")
+    rep = read_link_report(path)
+    assert rep["error_mm"].iloc[0] == pytest.approx(3 * pred)  # mm
+    check = compare_links(default_plan, rep)
+    assert check["ratio"].iloc[0] == pytest.approx(3.0)
+    assert check["verdict"].tolist() == [
+        "over twice the prediction: check this link",
+        "not a link of the plan",
+    ]
+    assert check["reported_overlap_pct"].iloc[0] == 40
+
+
+@pytest.mark.parametrize(
+    ("text", "said"),
+    [
+        ("station_id,x\nS01,3\n", "missing y"),
+        ("station_id,x,y\nS01,a,3\n", "row 2"),
+        ("station_id,x,y\nS01,1,2\nS01,5,6\n", "given twice"),
+    ],
+)
+def test_bad_station_files_are_refused(tmp_path, text, said):
+    path = tmp_path / "st.csv"
+    path.write_text(text)
+    with pytest.raises(InputError, match=said):
+        read_poses(path)
+
+
+def test_replan_command_writes_the_new_plan_and_exit_2_on_bad_input(tmp_path):
+    st = tmp_path / "scanned.csv"
+    pd.DataFrame({"station_id": ["S01"], "x": [690990.0], "y": [5335018.0]}).to_csv(st)
+    out = tmp_path / "re"
+    code, stdout, _ = run("replan", "--out", str(out), "--as-scanned", str(st), "-q")
+    assert code in (0, 1), stdout
+    table = pd.read_csv(out / "as_scanned.csv")
+    assert (table["status"] == "skipped").sum() == 9 and "Extra stations" in stdout
+    bad = tmp_path / "x.e57"
+    bad.write_bytes(b"not an e57")
+    code, _, err = run("replan", "--out", str(tmp_path / "b"), "--as-scanned", str(bad), "-q")
+    assert code == 2 and "not a readable E57" in err
+    assert not (tmp_path / "b").exists()
+
+
+def _upload(name: str, data: bytes) -> tuple[dict, ...]:
+    return (
+        {
+            "name": name,
+            "type": "text/csv",
+            "size": len(data),
+            "content": memoryview(data),
+            "last_modified": datetime.datetime(2026, 1, 1),
+        },
+    )
+
+
+def test_the_dashboard_replans_from_an_uploaded_csv_and_offers_the_extra_booklet():
+    from planner.app.dashboard import StationPlanner
+
+    ui = StationPlanner()
+    ui.as_scanned.run()  # before any plan: said, nothing breaks
+    assert "make a plan first" in ui.as_scanned.status.value
+    ui.run()
+    st = _moved(ui.plan)
+    ui.as_scanned.poses.value = _upload("scanned.csv", st.to_csv(index=False).encode())
+    ui.as_scanned.run().join()
+    assert "Extra stations" in ui.as_scanned.status.value
+    r = ui.as_scanned.last
+    assert len(ui.plan.stations) == len(st) + len(r.extra)  # the map shows the new plan
+    assert "booklet-extra-stations.pdf" in ui.as_scanned.booklet.value
