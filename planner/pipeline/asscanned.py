@@ -173,7 +173,9 @@ def _table(new: Plan, scanned: pd.DataFrame, planned: pd.DataFrame, left: set) -
     for sid in planned.index.difference(scanned["station_id"].astype(str)):
         rows.append((sid, "skipped", planned.loc[sid, "x"], planned.loc[sid, "y"], np.nan, 0, ""))
     known = set(scanned["station_id"].astype(str)) | set(planned.index)
-    for r in new.scan_stations.itertuples():
+    scans = new.scan_stations
+    by_number = scans["station_id"].str.extract(r"(\d+)$")[0].astype(float).to_numpy()
+    for r in scans.iloc[np.argsort(by_number, kind="stable")].itertuples():
         if r.station_id not in known:
             rows.append(
                 (r.station_id, "extra", r.x, r.y, np.nan, int(r.samples_met), _reason(new, r, left))

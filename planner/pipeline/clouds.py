@@ -23,6 +23,7 @@ import numpy as np
 import scipy.sparse as sp
 import shapely
 
+from planner.accuracy3d import incidence_ranging_rms_mm
 from planner.cloud_registration import (
     MAX_LINK_CONDITION,
     link_covariance,
@@ -243,7 +244,10 @@ class SurfaceCache:
             open_ = ctx.scene.seen(src, np.column_stack([g_xy, g_z + lift]), groups=box)
             g_xy, s, height = g_xy[open_], s[open_], height[open_]
             sin_e = height / s
-            sigma2 = (sc.range_rms_at(s) * sin_e) ** 2 + (
+            m_s = sc.range_rms_at(s)
+            if st.incidence_ranging:  # the beam meets the ground at θ = 90° − elevation
+                m_s = incidence_ranging_rms_mm(m_s, sin_e)
+            sigma2 = (m_s * sin_e) ** 2 + (
                 s * 1000.0 * sc.tilt_rms_arcsec / RHO_ARCSEC * np.sqrt(1.0 - sin_e**2)
             ) ** 2
             g_pts = patch_points(

@@ -288,9 +288,11 @@ def rehearse(
     seed: int = 1,
     scene: Scene | None = None,
     noise: bool = True,
+    stations: list[str] | None = None,
     progress: Progress | None = None,
 ) -> Rehearsal:
-    """Every scanning station's simulated scan (module text). ``noise=False``: the points
+    """Every scanning station's simulated scan (module text), or ``stations``' (ids) alone
+    (each scan's heading, tilt and noise the same either way). ``noise=False``: the points
     exactly on the surfaces (a control for checks of the noise)."""
     say = progress or (lambda _f, _m: None)
     scene = scene or Scene(plan.site, "rays")
@@ -306,13 +308,17 @@ def rehearse(
     col, row = np.meshgrid(np.arange(len(az)), np.arange(len(el)))
     col, row = col.ravel(), row.ravel()
     local_dir = _unit(az[col], el[row])
-    rng = np.random.default_rng(seed)
     tau = sc.initial_tilt_rms_arcsec / _RHO
     ids, xyz = station_centres(plan)
     scans = []
     for k, (sid, pos) in enumerate(zip(ids, xyz, strict=True)):
-        say(k / max(len(ids), 1), f"simulated scan of {sid} ({k + 1} of {len(ids)})")
+        # each scan its own stream of random numbers (seed, station): the same scan whichever
+        # others are simulated with it
+        rng = np.random.default_rng([seed, k])
         heading, tilt = rng.uniform(0, 2 * np.pi), rng.normal(0.0, tau, 2)
+        if stations is not None and sid not in stations:
+            continue
+        say(k / max(len(ids), 1), f"simulated scan of {sid} ({k + 1} of {len(ids)})")
         rot = _rotation(heading, *tilt)
         d = local_dir @ rot.T
         o = np.broadcast_to(pos, d.shape)
@@ -334,7 +340,7 @@ def rehearse(
         reflectance = np.where(on_mesh, SURFACE_REFLECTANCE, refl)
         s, a, e, c = dist[keep], az[col[keep]], el[row[keep]], cos_t[keep]
         m_s = sc.range_rms_at(s)
-        if st.incidence_noise:
+        if st.incidence_ranging:
             m_s = incidence_ranging_rms_mm(m_s, c)
         # the point's own noise; the scan's levelling is its frame's error (the pose)
         var = variances_3d(

@@ -1,0 +1,78 @@
+"""An independent point-to-plane ICP for the rehearsal's clouds (tests and benchmarks).
+
+It shares no code with the planner's cloud-link model (``planner.cloud_registration``):
+the parent's normals and local planes come from its own points (PCA of the 12 nearest;
+neighbourhoods that are not planar are left out), each child point is matched to its
+nearest parent point within a distance, the residual taken to that point's local plane,
+correspondences beyond 4 robust standard deviations dropped, and the 6 parameters (shift
+[mm], rotation [rad] about the child's centre) found by Gauss–Newton.
+
+:func:`link_errors` registers a rehearsed pair of scans trial after trial (each with its
+own noise) and returns the estimated poses' errors; :func:`patches_of` keeps of each scan
+what the link model counts: the walls, and the ground within reach of both stations.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+from planner.pipeline.clouds import GROUND_REACH_M
+from planner.pipeline.rehearsal import POINT_KINDS, rehearse
+
+NEIGHBOURS = 12
+PLANAR = 0.02  # smallest eigenvalue over the sum: a planar neighbourhood
+MATCH_M = 0.15
+
+
+def _skew(w: np.ndarray) -> np.ndarray:
+    return np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+
+
+def icp(parent: np.ndarray, child: np.ndarray, centre: np.ndarray, iters: int = 8) -> np.ndarray:
+    """The child's pose error (6,): shift [mm], small rotation [rad] about ``centre``."""
+    tree = cKDTree(parent)
+    _, nb = tree.query(parent, NEIGHBOURS)
+    local = parent[nb] - parent[nb].mean(axis=1, keepdims=True)
+    w, v = np.linalg.eigh(np.einsum("pki,pkj->pij", local, local))
+    normal, planar = v[:, :, 0], w[:, 0] < PLANAR * w.sum(axis=1)
+    plane_at = parent[nb].mean(axis=1)
+    pose = np.zeros(6)  # shift [m], rotation [rad]
+    for _ in range(iters):
+        moved = centre + (child - centre) @ (np.eye(3) + _skew(pose[3:])).T + pose[:3]
+        d, j = tree.query(moved, distance_upper_bound=MATCH_M)
+        ok = np.isfinite(d)
+        ok[ok] = planar[j[ok]]
+        n, m = normal[j[ok]], moved[ok]
+        res = np.einsum("ij,ij->i", m - plane_at[j[ok]], n)
+        keep = np.abs(res) <= 4 * 1.4826 * np.median(np.abs(res)) + 1e-9
+        a = np.hstack([n, np.cross(m - centre, n)])[keep]
+        pose += np.linalg.lstsq(a, -res[keep], rcond=None)[0]
+    return np.concatenate([pose[:3] * 1000.0, pose[3:]])
+
+
+def patches_of(scan, other_position: np.ndarray) -> np.ndarray:
+    """Which of a scan's points the link model counts: walls, and the ground within
+    :data:`GROUND_REACH_M` of both stations."""
+    xy = scan.world_xyz[:, :2]
+    wall = scan.kind == POINT_KINDS.index("wall")
+    ground = scan.kind == POINT_KINDS.index("terrain")
+    near = (np.hypot(*(xy - scan.position[:2]).T) <= GROUND_REACH_M) & (
+        np.hypot(*(xy - other_position[:2]).T) <= GROUND_REACH_M
+    )
+    return wall | (ground & near)
+
+
+def link_errors(plan, parent: str, child: str, trials: int, *, noise: bool = True) -> np.ndarray:
+    """(trials, 6) errors of the child's pose registered to the parent's by :func:`icp`,
+    each trial a new rehearsal of the two scans (seed 100 + trial) at the plan's step."""
+    out = np.empty((trials, 6))
+    for k in range(trials):
+        r = rehearse(
+            plan, beams_per_station=10**8, seed=100 + k, stations=[parent, child], noise=noise
+        )
+        by = {s.station_id: s for s in r.scans}
+        a, b = by[parent], by[child]
+        pa, pb = patches_of(a, b.position), patches_of(b, a.position)
+        out[k] = icp(a.world_xyz[pa], b.world_xyz[pb], b.position)
+    return out
