@@ -37,7 +37,7 @@ def test_replan_proposes_the_fewest_extra_stations_for_what_is_left():
     status = r.stations.set_index("station_id")["status"]
     assert status["S05"] == "skipped" and status["S02"] == "moved" and status["S01"] == "as planned"
     assert r.stations.set_index("station_id").loc["S02", "moved_m"] == pytest.approx(3.0)
-    wb = p.workbench
+    wb = r.plan.workbench  # the re-plan's (it works on a copy of the plan)
     ok = wb.evaluation.ok
     forced = wb.add_positions(scanned[["x", "y"]].to_numpy())
     demand = cover_demand(wb.ctx, np.asarray(ok.sum(axis=1)).ravel())
@@ -140,3 +140,100 @@ def test_the_dashboard_replans_from_an_uploaded_csv_and_offers_the_extra_booklet
     r = ui.as_scanned.last
     assert len(ui.plan.stations) == len(st) + len(r.extra)  # the map shows the new plan
     assert "booklet-extra-stations.pdf" in ui.as_scanned.booklet.value
+
+
+def test_a_scan_where_no_station_can_stand_is_named(default_plan):
+    p = copy.deepcopy(default_plan)
+    scanned = p.scan_stations[["station_id", "x", "y"]].copy()
+    scanned.loc[scanned["station_id"] == "S03", ["x", "y"]] = (691010.0, 5335005.0)  # inside
+    with pytest.raises(InputError, match=r"station S03 as scanned .* inside building main"):
+        replan(p, scanned)
+
+
+@pytest.mark.parametrize(
+    ("argv", "said"),
+    [
+        (["rehearse", "--beams-per-station", "10"], "beams-per-station"),
+        (["rehearse", "--seed", "-1"], "seed"),
+        (["replan", "--as-scanned", "{tmp}/none.csv"], "no such file"),
+        (["replan", "--as-scanned", "{tmp}/other.csv"], "is a station of this plan"),
+        (["replan", "--as-scanned", "{tmp}/poses.las"], "an .e57 file"),
+        (
+            ["replan", "--as-scanned", "{tmp}/other.csv", "--link-report", "{tmp}/poses.txt"],
+            "no column for",
+        ),
+    ],
+)
+def test_the_new_commands_refuse_bad_input_with_exit_2(tmp_path, argv, said):
+    (tmp_path / "other.csv").write_text("station_id,x,y\nScan 1,690990,5335018\n")
+    (tmp_path / "poses.txt").write_text("a b c\n")
+    (tmp_path / "poses.las").write_bytes(b"LASF")
+    out = tmp_path / "out"
+    args = [a.replace("{tmp}", str(tmp_path)) for a in argv]
+    code, _, err = run(*args, "--out", str(out), "-q")
+    assert code == 2, err
+    assert said in err
+    assert not out.exists()  # nothing written
+
+
+def test_a_station_added_on_site_keeps_its_name_and_is_not_proposed_again(default_plan):
+    scanned = default_plan.scan_stations[["station_id", "x", "y"]].copy()
+    scanned.loc[len(scanned)] = ("S40", 691050.0, 5334950.0)  # m: a set-up the plan lacks
+    r = replan(default_plan, scanned)
+    status = r.stations.set_index("station_id")["status"]
+    assert status["S40"] == "added on site"
+    assert r.extra.empty  # nothing was left: no extra station, S40 not renamed
+    assert "S40" in set(r.plan.stations["station_id"])
+    assert len(default_plan.stations) == 10  # the plan given is not changed
+
+
+def test_scan_names_are_matched_as_a_crew_writes_them_and_a_semicolon_csv_is_read(
+    default_plan, tmp_path
+):
+    rows = default_plan.scan_stations[["station_id", "x", "y"]]
+    lines = ["Name;E;N;H"] + [
+        f"{sid.lower().replace('s0', 's')};{str(x).replace('.', ',')};{y};1,5"
+        for sid, x, y in rows.itertuples(index=False)
+    ]
+    (tmp_path / "st.csv").write_text("\n".join(lines))
+    scanned = read_poses(tmp_path / "st.csv")
+    assert scanned["x"].iloc[0] == pytest.approx(rows["x"].iloc[0])  # m
+    r = replan(default_plan, scanned)
+    assert (r.stations["status"] == "as planned").all()
+    assert r.stations["scan_name"].iloc[0] == rows["station_id"].iloc[0].lower().replace("s0", "s")
+
+
+@pytest.mark.parametrize(
+    ("xy", "said"),
+    [((0.0, 0.0), "same position"), ((500000.0, 5000000.0), "not in the site's CRS")],
+)
+def test_poses_that_are_not_the_stations_are_refused(default_plan, xy, said):
+    scanned = default_plan.scan_stations[["station_id", "x", "y"]].copy()
+    if said == "same position":
+        scanned[["x", "y"]] = xy
+    else:
+        scanned.loc[scanned.index[0], ["x", "y"]] = xy
+    with pytest.raises(InputError, match=said):
+        replan(default_plan, scanned)
+
+
+def test_a_link_report_without_an_error_is_said_so(default_plan, tmp_path):
+    a, b = default_plan.links.iloc[0][["station_a", "station_b"]]
+    (tmp_path / "r.csv").write_text(f"from,to,Error [mm]\n{a},{b},\n")
+    check = compare_links(default_plan, read_link_report(tmp_path / "r.csv"))
+    assert check["verdict"].tolist() == ["no error given"]
+
+
+@pytest.mark.booklet
+def test_the_extra_stations_booklet_has_their_pages(default_plan, monkeypatch):
+    import planner.app.booklet as bk
+
+    drawn = []
+    monkeypatch.setattr(bk, "_overview", lambda p: bk.Figure())
+    monkeypatch.setattr(
+        bk,
+        "_station_page",
+        lambda p, n, *a: drawn.append(bk._route(p).iloc[n]["station_id"]) or bk.Figure(),
+    )
+    bk.booklet(default_plan, only={"S07", "S03"})
+    assert sorted(drawn) == ["S03", "S07"]

@@ -669,7 +669,7 @@ def test_stricter_plan_then_bad_upload(page, tmp_path):
         "[500010, 5400000], [500000, 5400010], [500000, 5400000]]]}}"
     )
     with page.expect_file_chooser() as chooser:
-        page.locator(".widget-upload").click()
+        page.locator(".widget-upload").first.click()  # the site file (the As scanned tab has more)
     chooser.value.set_files(str(bad))
     page.get_by_role("button", name="Plan", exact=True).click()
     error = page.locator(".planner-toolbar .planner-error")
@@ -697,7 +697,7 @@ def test_a_city_model_uploaded_shows_its_elevations_and_3d_view(page, tmp_path):
 
     model = write_model(lod2_town(2, seed=1, trees=1), tmp_path / "town.city.json")
     with page.expect_file_chooser() as chooser:
-        page.locator(".widget-upload").click()
+        page.locator(".widget-upload").first.click()
     chooser.value.set_files(str(model))
     page.get_by_role("button", name="Plan", exact=True).click()
     page.locator(".station-count").wait_for(timeout=120_000)  # the error replaced by a plan

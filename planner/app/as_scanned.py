@@ -21,6 +21,7 @@ from planner.app.widgets import download_link, error_html, show
 from planner.errors import PlannerError
 from planner.pipeline.asscanned import (
     Replan,
+    check_scanned,
     compare_links,
     read_link_report,
     read_targets_placed,
@@ -34,10 +35,17 @@ __all__ = ["AsScannedPanel"]
 class AsScannedPanel:
     """The tab's widgets. ``plan_of`` gives the plan on screen (None: none yet); ``start``
     runs ``make(progress) -> Plan`` in the background as the Plan button does and shows
-    its plan; ``folder()`` is where uploads are written."""
+    its plan; ``folder()`` is where uploads are written; ``busy()`` whether a run is under
+    way (one at a time)."""
 
-    def __init__(self, plan_of: Callable, start: Callable, folder: Callable[[], Path]) -> None:
-        self._plan_of, self._start, self._folder = plan_of, start, folder
+    def __init__(
+        self,
+        plan_of: Callable,
+        start: Callable,
+        folder: Callable[[], Path],
+        busy: Callable[[], bool],
+    ) -> None:
+        self._plan_of, self._start, self._folder, self._busy = plan_of, start, folder, busy
         self.poses = w.FileUpload(accept=".e57,.csv", multiple=False, description="Scans")
         self.targets = w.FileUpload(accept=".csv", multiple=False, description="Targets")
         self.report = w.FileUpload(accept=".csv,.txt", multiple=False, description="Report")
@@ -46,6 +54,9 @@ class AsScannedPanel:
         self.out = w.Output()
         self.booklet = w.HTML("")
         self.last: Replan | None = None
+        #: the plan the crew scanned (a second re-plan starts from it, not from the first
+        #: re-plan's result)
+        self.base = None
         self.button.on_click(lambda _b: self.run())
         self.widget = w.VBox(
             [
@@ -54,7 +65,9 @@ class AsScannedPanel:
                     "named by station id, with their poses) or a <b>CSV</b> "
                     "<code>station_id, x, y</code>. Optional: the targets as placed "
                     "(<code>target_id, x, y</code>) and the registration program's link "
-                    "report (<code>from, to, error</code> [mm], overlap).</p>"
+                    "report (<code>from, to, error</code> [mm], overlap). A registered "
+                    "project's E57 is often gigabytes: export the poses alone (or the CSV) "
+                    "to upload it here; <code>planner replan</code> reads any size.</p>"
                 ),
                 w.HBox([self.poses, self.targets, self.report]),
                 self.button,
@@ -65,28 +78,41 @@ class AsScannedPanel:
         )
         self.widget.add_class("planner-as-scanned")
 
-    def _saved(self, upload: w.FileUpload) -> Path | None:
+    def _saved(self, upload: w.FileUpload, role: str) -> Path | None:
         if not upload.value:
             return None
         f = upload.value[0]
-        path = self._folder() / f"as-scanned-{Path(f['name']).name}"
+        path = self._folder() / f"as-scanned-{role}-{Path(f['name']).name}"
         path.write_bytes(bytes(f["content"]))
         return path
 
     def run(self):
         """Read the uploads and re-plan in the background (errors said here); the
         background thread, or None where nothing was started."""
-        base = self._plan_of()
+        if self._busy():
+            self.status.value = error_html(
+                "a plan is being made; re-plan when it is done", "Cannot re-plan"
+            )
+            return None
+        shown = self._plan_of()
+        if self.last is None or shown is not self.last.plan:  # a plan of its own on screen
+            self.base = shown
+        base = self.base
         try:
             if base is None or base.workbench is None:
-                raise PlannerError("make a plan first (the plan the crew scanned)")
-            poses = self._saved(self.poses)
+                raise PlannerError(
+                    "make a plan first (the plan the crew scanned; a district plan cannot "
+                    "be re-planned here: use planner replan)"
+                )
+            poses = self._saved(self.poses, "scans")
             if poses is None:
                 raise PlannerError("choose the scans' E57 or a CSV of station positions")
             scanned = read_poses(poses)
-            placed_path, report_path = self._saved(self.targets), self._saved(self.report)
+            placed_path = self._saved(self.targets, "targets")
+            report_path = self._saved(self.report, "report")
             placed = read_targets_placed(placed_path) if placed_path else None
             report = read_link_report(report_path) if report_path else None
+            check_scanned(base, scanned, placed)  # refused here: the plan on screen stays
         except (PlannerError, ValueError) as exc:
             self.status.value = error_html(str(exc), "Cannot re-plan")
             return None

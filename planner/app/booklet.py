@@ -76,8 +76,10 @@ def booklet(
     pages for these stations alone (the extra stations of a re-plan)."""
     buf = io.BytesIO()
     meta = {"Title": f"tls-planner field booklet: {p.site.name}", "CreationDate": None}
-    order = list(_route(p)["station_id"]) if len(_route(p)) else []
-    order = [s for s in order if only is None or s in only]
+    route = list(_route(p)["station_id"]) if len(_route(p)) else []
+    # (route position, id) of the stations with a page, in visiting order
+    pages = [(k, s) for k, s in enumerate(route) if only is None or s in only]
+    order = [s for _, s in pages]
     left: list[str] = []
     with plt.rc_context({"pdf.fonttype": 42}), PdfPages(buf, metadata=meta) as pdf:
         pdf.savefig(_overview(p))
@@ -88,7 +90,7 @@ def booklet(
                 left = order[n:]
                 pdf.savefig(_left_out_page(left))
                 break
-            pdf.savefig(_station_page(p, n, sectors, ties))
+            pdf.savefig(_station_page(p, pages[n][0], sectors, ties))
     return buf.getvalue(), left
 
 

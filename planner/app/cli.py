@@ -532,19 +532,6 @@ def cmd_report(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def _plan_here(args: argparse.Namespace, what: str):
-    """The plan of ``plan``'s options, made in this process (not in district mode: the
-    rehearsal and the re-plan work on one network and its workbench)."""
-    result, _, _ = make_plan(args, _StderrProgress(args.quiet))
-    if result.workbench is None:
-        raise InputError(
-            f"{what} works on a site planned as one network; this one was planned in district "
-            "mode (raise --block-m beyond the site's size, or give one block's buildings "
-            "with --buildings)"
-        )
-    return result
-
-
 def cmd_rehearse(args: argparse.Namespace) -> int:
     """The plan's simulated scans (E57, LAZ) and its HELIOS++ survey, written as one set."""
     from planner.atomic import check_inputs_kept, check_output_folder, replace_folder_files
@@ -557,7 +544,7 @@ def cmd_rehearse(args: argparse.Namespace) -> int:
     check_output_folder(args.out)
     owned = ("scans.e57", "scans.laz", "scans_legend.csv", *HELIOS_FILES)
     check_inputs_kept([Path(args.out) / n for n in owned], _input_paths(args))
-    result = _plan_here(args, "planner rehearse")
+    result, _, _ = make_plan(args, _StderrProgress(args.quiet))
     scene = Scene(result.site, "rays")
     size = estimate(result, args.beams_per_station, scene)
     t0 = time.monotonic()
@@ -565,8 +552,8 @@ def cmd_rehearse(args: argparse.Namespace) -> int:
         print(
             f"planner: simulating {int(size['stations'])} scans at {size['step_mm_at_10m']:.1f} "
             f"mm at 10 m: about {size['points'] / 1e6:.1f} million points (E57 about "
-            f"{size['e57_bytes'] / 1e6:.0f} MB, LAZ about {size['laz_bytes'] / 1e6:.0f} MB); "
-            "--beams-per-station to change",
+            f"{size['e57_bytes'] / 1e6:.0f} MB, LAZ about {size['laz_bytes'] / 1e6:.0f} MB), "
+            f"about {size['seconds']:.0f} s; --beams-per-station to change",
             file=sys.stderr,
         )
     reh = rehearse(
@@ -618,14 +605,8 @@ def cmd_replan(args: argparse.Namespace) -> int:
         placed = read_targets_placed(args.targets_placed)
     if args.link_report:
         report = read_link_report(args.link_report)
-    result = _plan_here(args, "planner replan")
-    unknown = set(scanned["station_id"]) - set(result.stations["station_id"])
-    if len(unknown) == len(scanned):
-        raise InputError(
-            f"{args.as_scanned}: none of its stations ({', '.join(sorted(unknown)[:4])} …) is "
-            "a station of this plan: re-plan with the options the plan was made with, and the "
-            "scans named by their station ids"
-        )
+    args.district = "off"  # one network: the re-plan works on its workbench
+    result, _, _ = make_plan(args, _StderrProgress(args.quiet))
     r = replan(result, scanned, targets_placed=placed, progress=_StderrProgress(args.quiet))
     files = {"as_scanned.csv": r.stations.to_csv(index=False).encode()}
     if report is not None:
@@ -635,7 +616,7 @@ def cmd_replan(args: argparse.Namespace) -> int:
         from planner.app.booklet import booklet
 
         files["booklet.pdf"], _ = booklet(r.plan, only=set(r.extra["station_id"]))
-    written = save(r.plan, args.out, files)
+    written = save(r.plan, args.out, files, owned=extra_names)
     print(r.summary())
     if report is not None:
         print("\nLinks as registered against the plan:")

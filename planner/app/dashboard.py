@@ -485,7 +485,10 @@ class StationPlanner:
         self.report_button = w.Button(description="Make HTML report")
         self.report_status = w.HTML("")
         self.as_scanned = AsScannedPanel(
-            lambda: self.plan, self.start, lambda: Path(self._tmp.name)
+            lambda: self.plan,
+            self.start,
+            lambda: Path(self._tmp.name),
+            lambda: self._worker is not None and self._worker.is_alive(),
         )
         self.tabs = w.Tab(
             children=[

@@ -13,23 +13,35 @@ optionally its overlap) and sets it beside the plan's predicted link errors.
 
 from __future__ import annotations
 
+import copy
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
+import shapely
 
 from planner.errors import InputError
 from planner.pipeline.evaluate import Progress
+from planner.pipeline.judge import _station_number, free_positions
 from planner.pipeline.planning import choose_stations
+from planner.pipeline.pointclouds import read_table
 from planner.pipeline.result import Plan
-from planner.pipeline.whatif import _workbench, edit_targets, evaluate_stations
+from planner.pipeline.whatif import (
+    MIN_STATION_SEPARATION_M,
+    _workbench,
+    edit_targets,
+    evaluate_stations,
+)
 
 __all__ = [
     "AS_SCANNED_COLUMNS",
     "REPORT_ALIASES",
     "Replan",
+    "check_scanned",
     "compare_links",
+    "match_ids",
     "read_link_report",
     "read_targets_placed",
     "replan",
@@ -37,10 +49,17 @@ __all__ = [
 
 #: A scanned station this far [m] from its planned place counts as moved.
 MOVED_M = 0.05
-#: Two scans within this [m] of each other are one set-up twice.
-SAME_SPOT_M = 0.5
-#: The table of stations as scanned against the plan.
-AS_SCANNED_COLUMNS = ["station_id", "status", "x", "y", "moved_m", "samples_met", "reason"]
+#: The table of stations as scanned against the plan (``scan_name``: as the file named it).
+AS_SCANNED_COLUMNS = [
+    "station_id",
+    "scan_name",
+    "status",
+    "x",
+    "y",
+    "moved_m",
+    "samples_met",
+    "reason",
+]
 
 
 @dataclass(frozen=True)
@@ -97,15 +116,18 @@ def replan(
     targets_placed: pd.DataFrame | None = None,
     progress: Progress | None = None,
 ) -> Replan:
-    """The plan ``p`` (made in this process) re-planned from the stations ``scanned``
-    (``station_id, x, y`` [m], site CRS) and the targets as placed (``target_id, x, y``;
-    None: as planned): see the module text. A scanned id the plan does not have is a
-    station added on site; a planned station missing from ``scanned`` was skipped."""
+    """The plan ``p`` (made in this process; not changed) re-planned from the stations
+    ``scanned`` (``station_id, x, y`` [m], site CRS) and the targets as placed
+    (``target_id, x, y``; None: as planned): see the module text. A scan's name is matched
+    to the plan's ids as a crew writes them ("s5", "S5", "5" are S05); a name the plan does
+    not have is a station added on site, and a planned station missing from ``scanned`` was
+    skipped."""
+    p = copy.deepcopy(p)  # the re-plan adds to the workbench; the plan on screen stays
     wb = _workbench(p)
     planned = p.scan_stations.set_index("station_id")
+    scanned = check_scanned(p, scanned, targets_placed)
     xy = scanned[["x", "y"]].to_numpy(dtype=float)
-    ids = scanned["station_id"].astype(str).tolist()
-    _one_setup_each(xy, ids)
+    ids = scanned["station_id"].tolist()
     if targets_placed is not None and len(targets_placed):
         p = _targets_as_placed(p, targets_placed)
     wb.last_station = max(wb.last_station, _highest(p))
@@ -125,10 +147,86 @@ def replan(
     )
 
 
+def match_ids(names: pd.Series, plan_ids: list[str]) -> pd.Series:
+    """The plan's station id for each scan name where one is meant — the same id in
+    another case or zero padding ("s5", "S005", "5" → "S05"); else the name itself.
+
+    >>> match_ids(pd.Series(["s5", "S05", "12", "Scan 3", "S99"]), ["S05", "S12"]).tolist()
+    ['S05', 'S05', 'S12', 'Scan 3', 'S99']
+    """
+    by_number = {_station_number(i): i for i in plan_ids if _station_number(i) is not None}
+
+    def one(name: str) -> str:
+        m = re.fullmatch(r"[sS]?0*(\d+)", name.strip())
+        return by_number.get(int(m.group(1)), name) if m else name
+
+    return names.astype(str).map(one)
+
+
+def check_scanned(
+    p: Plan, scanned: pd.DataFrame, targets_placed: pd.DataFrame | None = None
+) -> pd.DataFrame:
+    """The stations as scanned, checked against the plan before any work (an
+    :class:`InputError` naming the fault): names matched to the plan's ids
+    (:func:`match_ids`; the file's own in ``scan_name``), at least one of them the plan's,
+    positions on the site (not all at one point, not kilometres away: poses not in the
+    site's CRS), each where a station can stand, no two on one spot, the targets placed
+    the plan's."""
+    wb = _workbench(p)
+    out = scanned.copy()
+    out["scan_name"] = out["station_id"].astype(str)
+    out["station_id"] = match_ids(out["scan_name"], p.stations["station_id"].tolist())
+    dup = out["station_id"][out["station_id"].duplicated()]
+    if len(dup):
+        names = out.loc[out["station_id"] == dup.iloc[0], "scan_name"].tolist()
+        raise InputError(f"scans {' and '.join(names)} are both station {dup.iloc[0]}")
+    if not out["station_id"].isin(p.stations["station_id"]).any():
+        raise InputError(
+            f"none of the scans ({', '.join(out['scan_name'].head(4))}"
+            + (" …" if len(out) > 4 else "")
+            + ") is a station of this plan: name each scan by its station id (S01, S02 …), "
+            "and re-plan with the options the plan was made with"
+        )
+    xy = out[["x", "y"]].to_numpy(dtype=float)
+    if len(xy) > 1 and np.ptp(xy, axis=0).max() < 1e-3:
+        raise InputError(
+            "every scan has the same position: the file's poses are not the stations' (export "
+            "the registered project with each scan's pose in the site's CRS)"
+        )
+    x0, y0, x1, y1 = shapely.total_bounds([b.footprint for b in p.site.buildings])
+    far = p.scanner.max_range_m + max(x1 - x0, y1 - y0)
+    off = np.hypot(xy[:, 0] - (x0 + x1) / 2, xy[:, 1] - (y0 + y1) / 2) > far
+    if off.any():
+        k = int(np.flatnonzero(off)[0])
+        raise InputError(
+            f"scan {out['scan_name'].iloc[k]} stands at E {xy[k, 0]:.1f}, N {xy[k, 1]:.1f}, "
+            "far from the site: the poses are not in the site's CRS (export them in it, or "
+            "give a CSV of the stations' coordinates)"
+        )
+    for sid, q in zip(out["scan_name"], xy, strict=True):  # each refusal names the scan
+        try:
+            free_positions(wb, q, f"station {sid} as scanned")
+        except InputError as exc:
+            raise InputError(
+                str(exc).replace("; move it onto free ground", "")
+                + ": the planner judges no station there. Check the file's coordinates "
+                "(the site's CRS, x and y not swapped), or re-plan without that area"
+            ) from None
+    _one_setup_each(xy, out["scan_name"].tolist())
+    if targets_placed is not None:
+        unknown = sorted(set(targets_placed["target_id"]) - set(p.targets["target_id"]))
+        if unknown:
+            raise InputError(
+                f"targets {', '.join(unknown[:5])} are not in the plan; give the plan's target "
+                "ids with where each was placed"
+            )
+    return out
+
+
 def _one_setup_each(xy: np.ndarray, ids: list[str]) -> None:
     d = np.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1))
     d[np.tri(len(xy), dtype=bool)] = np.inf
-    if len(xy) > 1 and d.min() < SAME_SPOT_M:
+    if len(xy) > 1 and d.min() < MIN_STATION_SEPARATION_M:
         a, b = np.unravel_index(int(np.argmin(d)), d.shape)
         raise InputError(
             f"stations {ids[a]} and {ids[b]} were scanned {d[a, b]:.2f} m apart: one set-up "
@@ -137,18 +235,12 @@ def _one_setup_each(xy: np.ndarray, ids: list[str]) -> None:
 
 
 def _highest(p: Plan) -> int:
-    nums = p.stations["station_id"].astype(str).str.extract(r"^S(\d+)$")[0].dropna()
-    return int(nums.astype(int).max()) if len(nums) else 0
+    numbers = [_station_number(str(i)) for i in p.stations["station_id"]]
+    return max((n for n in numbers if n is not None), default=0)
 
 
 def _targets_as_placed(p: Plan, placed: pd.DataFrame) -> Plan:
     known = set(p.targets["target_id"].astype(str))
-    unknown = sorted(set(placed["target_id"].astype(str)) - known)
-    if unknown:
-        raise InputError(
-            f"targets {', '.join(unknown[:5])} are not in the plan; give the plan's target ids "
-            "with where each was placed"
-        )
     old = p.targets.set_index("target_id")[["x", "y"]]
     move = {
         str(r.target_id): (float(r.x), float(r.y))
@@ -169,17 +261,17 @@ def _table(new: Plan, scanned: pd.DataFrame, planned: pd.DataFrame, left: set) -
             status = "moved" if d >= MOVED_M else "as planned"
         else:
             d, status = np.nan, "added on site"
-        rows.append((sid, status, r.x, r.y, d, int(met.get(sid, 0)), ""))
+        rows.append((sid, r.scan_name, status, r.x, r.y, d, int(met.get(sid, 0)), ""))
     for sid in planned.index.difference(scanned["station_id"].astype(str)):
-        rows.append((sid, "skipped", planned.loc[sid, "x"], planned.loc[sid, "y"], np.nan, 0, ""))
+        at = planned.loc[sid]
+        rows.append((sid, "", "skipped", at["x"], at["y"], np.nan, 0, ""))
     known = set(scanned["station_id"].astype(str)) | set(planned.index)
     scans = new.scan_stations
-    by_number = scans["station_id"].str.extract(r"(\d+)$")[0].astype(float).to_numpy()
-    for r in scans.iloc[np.argsort(by_number, kind="stable")].itertuples():
+    number = [_station_number(str(i)) or 0 for i in scans["station_id"]]
+    for r in scans.iloc[np.argsort(number, kind="stable")].itertuples():
         if r.station_id not in known:
-            rows.append(
-                (r.station_id, "extra", r.x, r.y, np.nan, int(r.samples_met), _reason(new, r, left))
-            )
+            reason = _reason(new, r, left)
+            rows.append((r.station_id, "", "extra", r.x, r.y, np.nan, int(r.samples_met), reason))
     return pd.DataFrame(rows, columns=AS_SCANNED_COLUMNS)
 
 
@@ -201,19 +293,9 @@ def _reason(p: Plan, st, left: set) -> str:
 
 
 def read_targets_placed(path: str | Path) -> pd.DataFrame:
-    """Targets as placed: a CSV with ``target_id, x, y`` (the plan's ids, site CRS [m])."""
-    try:
-        df = pd.read_csv(path, dtype={"target_id": str})
-    except (OSError, ValueError, UnicodeDecodeError, pd.errors.ParserError) as exc:
-        raise InputError(f"{path}: not a readable CSV ({exc})") from None
-    df.columns = [str(c).strip().lower() for c in df.columns]
-    if not {"target_id", "x", "y"} <= set(df.columns):
-        raise InputError(f"{path}: needs the columns target_id, x, y (where each was placed)")
-    for c in ("x", "y"):
-        df[c] = pd.to_numeric(df[c], errors="coerce")
-    if df[["x", "y"]].isna().any().any():
-        raise InputError(f"{path}: every target needs x and y as numbers (site CRS)")
-    return df[["target_id", "x", "y"]]
+    """Targets as placed: a CSV with ``target_id, x, y`` (the plan's ids, site CRS [m];
+    :func:`~planner.pipeline.pointclouds.read_table`)."""
+    return read_table(path, "target_id", "targets as placed")[["target_id", "x", "y"]]
 
 
 #: A registration report's columns under the names registration programs give them.
@@ -237,12 +319,13 @@ def read_link_report(path: str | Path) -> pd.DataFrame:
     for key, names in REPORT_ALIASES.items():
         for c in df.columns:
             bare = str(c).strip().lower()
-            unit_m = bare.endswith("(m)") or bare.endswith("[m]")
-            bare = bare.removesuffix("(m)").removesuffix("[m]").removesuffix("(mm)").strip()
+            unit_m = bare.endswith(("(m)", "[m]"))
+            bare = re.sub(r"\s*[\(\[](m|mm|%)[\)\]]$", "", bare).strip()
             if bare in names:
                 col = df[c]
                 if key in ("error_mm", "overlap_pct"):
-                    col = pd.to_numeric(col.astype(str).str.rstrip("%"), errors="coerce")
+                    text = col.astype(str).str.strip().str.rstrip("%").str.replace(",", ".")
+                    col = pd.to_numeric(text, errors="coerce")
                     col = col * 1000 if unit_m and key == "error_mm" else col
                 out[key] = col
                 break
@@ -272,6 +355,8 @@ def compare_links(p: Plan, report: pd.DataFrame) -> pd.DataFrame:
         ratio = r.error_mm / pred if pred > 0 else np.nan
         if np.isnan(pred):
             verdict = "not a link of the plan"
+        elif np.isnan(r.error_mm):
+            verdict = "no error given"
         elif ratio <= 1.0:
             verdict = "within the prediction"
         elif ratio <= 2.0:

@@ -153,7 +153,7 @@ class Context:
             ray_end_m=SIGHT_OFFSET_M + np.array(ahead, dtype=float),
             cols_of=facades.per_facade(facades.col_facade),
             samples_of=facades.per_facade(facades.facade),
-            step_mm_at_10m=settings.step_mm_at_10m or scanner.step_mm_at_10m,
+            step_mm_at_10m=settings.scan_step_mm(scanner),
             limits=sample_req.limits,
             stations_needed=sample_req.stations,
         )

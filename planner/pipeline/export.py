@@ -129,11 +129,18 @@ _LINES = "\n\r\t"
 OWNED_FILES = (*FILES, "booklet.pdf")
 
 
-def save(p: Plan, out_dir: str | Path, extra: dict[str, bytes] | None = None) -> list[Path]:
+def save(
+    p: Plan,
+    out_dir: str | Path,
+    extra: dict[str, bytes] | None = None,
+    owned: tuple[str, ...] = (),
+) -> list[Path]:
     """Write the plan's files into ``out_dir`` as one set: the folder holds the old plan or
     the new one, never a mix, whatever happens part-way (an error, a signal, a full disk);
     the user's own files in it are kept (:func:`planner.atomic.replace_folder_files`).
-    ``extra``: more files of the plan made by the application (the booklet), by name."""
+    ``extra``: more files of the plan made by the application (the booklet), by name;
+    ``owned``: more names a run of the same command may have written there (an old one the
+    new set lacks is removed, not kept as if it were the user's)."""
     data = {name: text.encode("utf-8") for name, text in render(p).items()}
     data.update(extra or {})
-    return replace_folder_files(out_dir, data, owned=OWNED_FILES)
+    return replace_folder_files(out_dir, data, owned=(*OWNED_FILES, *owned))

@@ -17,8 +17,11 @@ from OBJ files), the platform (a tripod for terrestrial scanning), the scanner, 
   the ground; the scanner's vertical field, a full turn of the head, the preset's angular
   step), referring to HELIOS++'s own ``data/platforms.xml#tripod``.
 
-HELIOS++ publishes no XML schema; :func:`check_survey` checks what its loader reads (the
-elements, attributes and references above) and :func:`read_survey` reads a survey back.
+HELIOS++ publishes no XML schema; :func:`check_survey` checks the files against the
+elements and attributes of HELIOS++'s own demonstration surveys and scanners (its
+``data/surveys/toyblocks/tls_toyblocks.xml`` and ``data/scanners_tls.xml``: a 4 ns pulse
+and a head turning at most 360°/s as there) and every reference among them;
+:func:`read_survey` reads a survey back. The files have not been run in HELIOS++ here.
 """
 
 from __future__ import annotations
@@ -40,8 +43,9 @@ FILES = ("helios_survey.xml", "helios_scene.xml", "helios_scanner.xml", "helios_
 PLATFORM = "data/platforms.xml#tripod"
 #: The pulse rate written where the profile gives no measurement rate [Hz].
 DEFAULT_PULSE_HZ = 100_000
-#: The beam divergence written where the profile gives none [rad] (a typical 0.3 mrad).
-DEFAULT_DIVERGENCE_RAD = 3e-4
+#: The beam divergence written where the profile gives none [mrad] (HELIOS++'s own
+#: terrestrial scanners, data/scanners_tls.xml, take 0.3 mrad).
+DEFAULT_DIVERGENCE_MRAD = 0.3
 _ID = "tls_planner"
 
 
@@ -91,7 +95,7 @@ def helios_files(plan: Plan, scene: Scene | None = None) -> dict[str, bytes]:
         id=_ID,
         name=sc.label,
         accuracy_m=f"{sc.range_rms_mm / 1000:.5f}",
-        beamDivergence_rad=f"{(sc.beam_divergence_mrad or DEFAULT_DIVERGENCE_RAD * 1e3) / 1e3:.6f}",
+        beamDivergence_rad=f"{(sc.beam_divergence_mrad or DEFAULT_DIVERGENCE_MRAD) / 1e3:.6f}",
         optics="rotating",
         pulseFreqs_Hz=str(int(sc.measurement_rate_hz or DEFAULT_PULSE_HZ)),
         pulseLength_ns="4",
@@ -108,7 +112,7 @@ def helios_files(plan: Plan, scene: Scene | None = None) -> dict[str, bytes]:
     ET.SubElement(scanner, "headRotateAxis", x="0", y="0", z="1")
     scanner_xml = _xml(doc, f"{where}; figures from the profile ({sc.source})")
 
-    step_deg = np.degrees(float(st.step_mm_at_10m or sc.step_mm_at_10m) / 1e4)
+    step_deg = np.degrees(st.scan_step_mm(sc) / 1e4)
     doc = ET.Element("document")
     survey = ET.SubElement(
         doc,
@@ -119,6 +123,7 @@ def helios_files(plan: Plan, scene: Scene | None = None) -> dict[str, bytes]:
         scanner=f"helios_scanner.xml#{_ID}",
     )
     ids, xyz = station_centres(plan)
+    height = plan.stations.set_index("station_id")["instrument_height_m"]
     for sid, p in zip(ids, xyz, strict=True):
         leg = ET.SubElement(survey, "leg")
         leg.append(ET.Comment(f" {sid} "))
@@ -128,7 +133,7 @@ def helios_files(plan: Plan, scene: Scene | None = None) -> dict[str, bytes]:
             "platformSettings",
             x=f"{x:.4f}",
             y=f"{y:.4f}",
-            z=f"{z - st.instrument_height_m:.4f}",
+            z=f"{z - float(height[sid]):.4f}",
             onGround="true",
         )
         ET.SubElement(

@@ -28,7 +28,16 @@ import pandas as pd
 from planner.errors import InputError
 from planner.pipeline.rehearsal import POINT_KINDS, Rehearsal
 
-__all__ = ["LAS_CLASSES", "POSE_COLUMNS", "e57_bytes", "laz_bytes", "legend_csv", "read_poses"]
+__all__ = [
+    "LAS_CLASSES",
+    "POSE_COLUMNS",
+    "TABLE_ALIASES",
+    "e57_bytes",
+    "laz_bytes",
+    "legend_csv",
+    "read_poses",
+    "read_table",
+]
 
 #: ASPRS LAS 1.4 classification of each kind of surface (64 and 65 are user classes: the
 #: targets); a kind not listed is 1, unclassified.
@@ -102,7 +111,9 @@ def laz_bytes(reh: Rehearsal, compressed: bool = True) -> bytes:
     """Every scan in one LAS 1.4 file (LAZ where ``compressed``), in the site's CRS."""
     import laspy
 
-    xyz = np.concatenate([s.world_xyz for s in reh.scans]) if reh.scans else np.empty((0, 3))
+    if not reh.scans:
+        raise InputError("no scan to write: the plan has no scanning station")
+    xyz = np.concatenate([s.world_xyz for s in reh.scans])
     header = laspy.LasHeader(point_format=6, version="1.4")
     header.offsets = np.floor(xyz.min(axis=0)) if len(xyz) else np.zeros(3)
     header.scales = np.array([1e-4, 1e-4, 1e-4])
@@ -158,60 +169,91 @@ def legend_csv(reh: Rehearsal) -> str:
     )
 
 
+#: Column names a station or target table may use for each of the planner's columns.
+TABLE_ALIASES = {
+    "station_id": ("station_id", "station", "name", "scan", "setup", "id", "point"),
+    "target_id": ("target_id", "target", "name", "id", "point"),
+    "x": ("x", "e", "east", "easting"),
+    "y": ("y", "n", "north", "northing"),
+    "z": ("z", "h", "height", "elevation"),
+}
+
+
+def read_table(path: str | Path, id_column: str, what: str) -> pd.DataFrame:
+    """A CSV of points — ``id_column, x, y`` and ``z`` (optional, NaN where not given) —
+    under the planner's names or common others (:data:`TABLE_ALIASES`: Name, E, N, H,
+    Easting…), comma- or semicolon-separated (a decimal comma with semicolons), ids kept
+    as written ("01" stays "01"); an :class:`InputError` saying what is wrong otherwise.
+    ``what`` names the table in messages."""
+    try:
+        df = pd.read_csv(path, sep=None, engine="python", dtype=str, skipinitialspace=True)
+    except (OSError, ValueError, UnicodeDecodeError, pd.errors.ParserError) as exc:
+        raise InputError(f"{path}: not a readable CSV of {what} ({exc})") from None
+    found: dict[str, str] = {}
+    for key in (id_column, "x", "y", "z"):
+        for c in df.columns:
+            if (
+                str(c).strip().lower().replace(" ", "_") in TABLE_ALIASES[key]
+                and c not in found.values()
+            ):
+                found[key] = c
+                break
+    missing = [k for k in (id_column, "x", "y") if k not in found]
+    if missing:
+        raise InputError(
+            f"{path}: a table of {what} needs the columns {id_column}, x, y (z optional; "
+            f"also Name, E/Easting, N/Northing, H); missing " + ", ".join(missing)
+        )
+    out = pd.DataFrame({id_column: df[found[id_column]].astype(str).str.strip()})
+    for key in ("x", "y", "z"):
+        text = df[found[key]] if key in found else pd.Series(np.nan, index=df.index)
+        out[key] = pd.to_numeric(
+            text.astype(str).str.strip().str.replace(",", "."), errors="coerce"
+        )
+    bad = ~np.isfinite(out[["x", "y"]].to_numpy(dtype=float)).all(axis=1)
+    if bad.any():
+        k = int(np.flatnonzero(bad)[0])
+        raise InputError(f"{path}: row {k + 2} has no usable x, y (numbers in the site's CRS)")
+    return _checked(out, path, id_column)
+
+
 def read_poses(path: str | Path) -> pd.DataFrame:
     """Station positions as scanned (:data:`POSE_COLUMNS`, site CRS [m]) from an E57 file's
     scan headers (the scan's name its station id, the pose's translation its position) or
-    a CSV with columns ``station_id, x, y`` (and ``z``, optional)."""
+    a CSV (:func:`read_table`)."""
     p = Path(path)
     if not p.is_file():
         raise InputError(f"{path}: no such file (give the E57 or CSV of the stations as scanned)")
     if p.suffix.lower() == ".e57":
         return _e57_poses(p)
-    if p.suffix.lower() != ".csv":
+    if p.suffix.lower() not in (".csv", ".txt"):
         raise InputError(
             f"{path}: the stations as scanned are read from an .e57 file (its scan poses) or "
             "a .csv with columns station_id, x, y[, z]"
         )
-    try:
-        df = pd.read_csv(p, dtype={"station_id": str})
-    except (ValueError, UnicodeDecodeError, pd.errors.ParserError) as exc:
-        raise InputError(f"{path}: not a readable CSV ({exc})") from None
-    df.columns = [str(c).strip().lower() for c in df.columns]
-    missing = [c for c in ("station_id", "x", "y") if c not in df.columns]
-    if missing:
-        raise InputError(
-            f"{path}: needs the columns station_id, x, y (z optional); missing "
-            + ", ".join(missing)
-        )
-    if "z" not in df.columns:
-        df["z"] = np.nan
-    out = df[POSE_COLUMNS].copy()
-    for c in ("x", "y", "z"):
-        out[c] = pd.to_numeric(out[c], errors="coerce")
-    bad = out[["x", "y"]].isna().any(axis=1) | ~np.isfinite(out[["x", "y"]]).all(axis=1)
-    if bad.any():
-        k = int(np.flatnonzero(bad.to_numpy())[0])
-        raise InputError(f"{path}: row {k + 2} has no usable x, y (numbers in the site's CRS)")
-    return _checked(out, path)
+    return read_table(p, "station_id", "stations as scanned")
 
 
 def _e57_poses(p: Path) -> pd.DataFrame:
     import pye57
 
-    try:
-        e57 = pye57.E57(str(p))
-    except Exception as exc:  # libE57Format raises its own types for a broken file
-        raise InputError(f"{p}: not a readable E57 file ({str(exc).splitlines()[0]})") from None
     rows = []
-    with e57:
-        for k in range(e57.scan_count):
-            h = e57.get_header(k)
-            if not h.has_pose():
-                raise InputError(
-                    f"{p}: scan {k} ({h['name'].value()}) has no pose: export the registered "
-                    "project (scans with their poses) from the registration software"
-                )
-            rows.append((h["name"].value(), *np.asarray(h.translation, dtype=float)))
+    try:
+        with pye57.E57(str(p)) as e57:
+            for k in range(e57.scan_count):
+                h = e57.get_header(k)
+                name = h["name"].value() if h.node.isDefined("name") else f"scan {k + 1}"
+                if not h.has_pose():
+                    raise InputError(
+                        f"{p}: scan {k + 1} ({name}) has no pose: export the registered "
+                        "project (scans with their poses) from the registration software"
+                    )
+                rows.append((name, *np.asarray(h.translation, dtype=float)))
+    except InputError:
+        raise
+    except Exception as exc:  # libE57Format raises its own types for a broken file
+        first = (str(exc).splitlines() or [type(exc).__name__])[0]
+        raise InputError(f"{p}: not a readable E57 file ({first})") from None
     return _checked(pd.DataFrame(rows, columns=POSE_COLUMNS), p)
 
 
@@ -237,14 +279,14 @@ def read_e57_scans(path: str | Path) -> list[dict]:
     return out
 
 
-def _checked(df: pd.DataFrame, path) -> pd.DataFrame:
-    df["station_id"] = df["station_id"].astype(str).str.strip()
-    dup = df["station_id"][df["station_id"].duplicated()]
+def _checked(df: pd.DataFrame, path, id_column: str = "station_id") -> pd.DataFrame:
+    df[id_column] = df[id_column].astype(str).str.strip()
+    dup = df[id_column][df[id_column].duplicated()]
     if len(dup):
         raise InputError(
-            f"{path}: station {dup.iloc[0]} is given twice; one position per station "
-            "(name a second set-up on the same spot as a station of its own)"
+            f"{path}: {dup.iloc[0]} is given twice; one position each (name a second set-up "
+            "on the same spot as one of its own)"
         )
     if df.empty:
-        raise InputError(f"{path}: no stations in it")
+        raise InputError(f"{path}: nothing in it")
     return df.reset_index(drop=True)

@@ -15,11 +15,13 @@ scanner's range. Each return is measured with the planner's error model:
   figure, else ``m_ν``, the model's assumption) and turned to a random heading, so that the
   scan's own frame is not the site's (a scanner does not know north).
 
-Each point keeps its predicted RMS — the 3-D model's ``√(m_x² + m_y² + m_z²)`` of the
-point's own noise (:func:`planner.accuracy3d.variances_3d` without the levelling, which
-moves the whole scan: its pose carries it) — its incidence, the
-surface it hit and what kind of surface that is. The intensity is the surface's reflectance
-times ``cos θ`` (a range-corrected intensity, as scanners report it): the targets' white
+Each point keeps its predicted RMS — whatever the plan's model, the 3-D model's
+``√(m_x² + m_y² + m_z²)`` of the point's own noise
+(:func:`planner.accuracy3d.variances_3d` without the levelling, which moves the whole
+scan: its pose carries it) — its incidence, the surface it hit and what kind of surface
+that is. The intensity is the surface's reflectance
+times ``cos θ`` (Lambert's law with the range corrected, as scanners' software reports
+it; Kaasalainen et al. 2011, under :data:`SURFACE_REFLECTANCE`): the targets' white
 (:data:`WHITE`) and black (:data:`BLACK`) quadrants stand out against the walls'
 :data:`SURFACE_REFLECTANCE`, as registration software needs to find them.
 
@@ -58,20 +60,26 @@ __all__ = [
 DEFAULT_BEAMS_PER_STATION = 1_000_000
 #: What a point lies on: the scene's triangle kinds, then the two target types.
 POINT_KINDS = (*TRIANGLE_KINDS, "sphere", "checkerboard")
-#: Reflectance of every surface of the scene where the material is not known (a grey
-#: plaster or concrete; matt white is about 0.9, black about 0.05).
+#: Reflectance of every surface of the scene where the material is not known: a mid grey
+#: (weathered concrete and plaster lie about 0.3–0.6 in the near infrared; Kaasalainen et
+#: al., "Analysis of incidence angle and distance effects on terrestrial laser scanner
+#: intensity", Remote Sensing 3(10), 2011, https://doi.org/10.3390/rs3102207).
 SURFACE_REFLECTANCE = 0.5
-#: Reflectance of a sphere and of a checkerboard's white quadrants.
+#: Reflectance of a sphere and of a checkerboard's white quadrants (matt white paint) and
+#: of its black quadrants (matt black): the contrast registration software looks for.
 WHITE = 0.9
-#: Reflectance of a checkerboard's black quadrants.
 BLACK = 0.05
 #: A checkerboard stands this far in front of its wall [m] (its own thickness and fixing).
 BOARD_STANDOFF_M = 0.005
 #: Bytes per point of the files, for the size said before writing: an E57 scan's point
-#: (three doubles, an intensity, row and column) and a compressed LAS point (measured on
-#: the default site, benchmarks/RESULTS.md).
+#: (three single-precision coordinates, an intensity, row and column, as pye57 writes them)
+#: and a compressed LAS point (measured on the default site, benchmarks/RESULTS.md).
 E57_BYTES_PER_POINT = 19
 LAZ_BYTES_PER_POINT = 6
+#: Seconds per beam cast and per point written (E57 and LAZ), for the time said before
+#: (measured on the default site on two cores, benchmarks/RESULTS.md).
+SECONDS_PER_BEAM = 1.4e-6
+SECONDS_PER_POINT = 0.9e-6
 _RHO = 180.0 * 3600.0 / np.pi  # arc-seconds per radian
 
 
@@ -136,7 +144,7 @@ def grid_step_mm_at_10m(plan: Plan, beams_per_station: int) -> float:
             f"default is {DEFAULT_BEAMS_PER_STATION}"
         )
     lo, hi = plan.scanner.vertical_fov_deg
-    preset = float(plan.settings.step_mm_at_10m or plan.scanner.step_mm_at_10m)
+    preset = plan.settings.scan_step_mm(plan.scanner)
     step = preset / 1e4  # rad
     beams = 2 * np.pi * np.radians(hi - lo) / step**2
     if beams > beams_per_station:
@@ -182,12 +190,10 @@ class _Targets:
     board_id: np.ndarray
 
     @classmethod
-    def of(cls, plan: Plan, scene: Scene, first_id: int) -> _Targets:
+    def of(cls, plan: Plan, first_id: int) -> _Targets:
         t = plan.targets
         kinds = t["type"].astype(str).to_numpy() if len(t) else np.empty(0, str)
-        xy = t[["x", "y"]].to_numpy(dtype=float) if len(t) else np.empty((0, 2))
-        z = scene.ground_z(xy) + (t["z"].to_numpy(dtype=float) if len(t) else 0.0)
-        xyz = np.column_stack([xy, z]) if len(t) else np.empty((0, 3))
+        xyz = t[["x", "y", "z"]].to_numpy(dtype=float) if len(t) else np.empty((0, 3))
         size_m = t["size_mm"].to_numpy(dtype=float) / 1000.0 if len(t) else np.empty(0)
         ids = first_id + np.arange(len(t))
         sph = kinds == "sphere"
@@ -262,8 +268,8 @@ def station_centres(plan: Plan) -> tuple[list[str], np.ndarray]:
 def estimate(
     plan: Plan, beams_per_station: int = DEFAULT_BEAMS_PER_STATION, scene: Scene | None = None
 ) -> dict[str, float]:
-    """The rehearsal's size before it is made: points, E57 and LAZ bytes (a pilot scan of
-    every station at a coarse grid counts the share of beams that return)."""
+    """The rehearsal's size before it is made: points, E57 and LAZ bytes and seconds (a
+    pilot scan of every station at a coarse grid counts the share of beams that return)."""
     scene = scene or Scene(plan.site, "rays")
     step = grid_step_mm_at_10m(plan, beams_per_station)
     pilot = rehearse(plan, beams_per_station=4000, scene=scene, seed=0)
@@ -278,6 +284,7 @@ def estimate(
         "step_mm_at_10m": step,
         "e57_bytes": points * E57_BYTES_PER_POINT,
         "laz_bytes": points * LAZ_BYTES_PER_POINT,
+        "seconds": beams * SECONDS_PER_BEAM + points * SECONDS_PER_POINT,
     }
 
 
@@ -302,7 +309,7 @@ def rehearse(
     surfaces = [*owner_ids, *plan.targets["target_id"].astype(str).tolist()]
     if plan.site.terrain is None:
         surfaces.append("ground")
-    targets = _Targets.of(plan, scene, len(owner_ids))
+    targets = _Targets.of(plan, len(owner_ids))
     step = grid_step_mm_at_10m(plan, beams_per_station)
     az, el = _grid(step / 1e4, sc.vertical_fov_deg)
     col, row = np.meshgrid(np.arange(len(az)), np.arange(len(el)))
@@ -367,7 +374,7 @@ def rehearse(
             )
         )
     say(1.0, "simulated scans done")
-    preset = float(st.step_mm_at_10m or sc.step_mm_at_10m)
+    preset = st.scan_step_mm(sc)
     notes = []
     if step > preset * 1.001:
         notes.append(

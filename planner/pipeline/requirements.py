@@ -958,6 +958,11 @@ class PlanSettings:
         ]
         return "full 3-D propagation" + (f" with {' and '.join(terms)}" if terms else "")
 
+    def scan_step_mm(self, scanner: Scanner) -> float:
+        """The scan step [mm at 10 m] the plan uses with ``scanner``: the one given or
+        decided (:meth:`for_scanner`), else the profile's own."""
+        return float(self.step_mm_at_10m or scanner.step_mm_at_10m)
+
     def for_scanner(
         self, scanner: Scanner, max_spacing_mm: float | None, reach: float
     ) -> PlanSettings:

@@ -121,9 +121,10 @@ OPTIONAL_COVERAGE_COLUMNS = ["class_achieved"]
 #: how many of its samples (not on party walls) meet it.
 ZONE_COLUMNS = ["zone_id", "where", "requirement", "sample_spacing_m", "samples", "met", "unmet"]
 
-#: The target list: where (site CRS, z above the ground), which type, the smallest size its
-#: stations need and the item placed, the rule that sized it, the stations using it, the
-#: wall it is on and which way it faces (azimuth of the normal), its centre's RMS [mm].
+#: The target list: where (site CRS; z the centre's height in the site's height system),
+#: which type, the smallest size its stations need and the item placed, the rule that sized
+#: it, the stations using it, the wall it is on and which way it faces (azimuth of the
+#: normal), its centre's RMS [mm].
 TARGET_COLUMNS = [
     "target_id",
     "x",

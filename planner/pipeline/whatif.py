@@ -50,8 +50,9 @@ def evaluate_stations(
     :class:`~planner.errors.InputError` saying which. The registration network may add a
     station where it needs one to tie the others (its purpose is "link").
 
-    ``ids`` names the station each position was (``None`` for one added); without it a
-    position the plan already has a station at is that station. A station keeps its id
+    ``ids`` names the station each position was (``None`` for one added; an id the plan
+    does not have is kept, as for a station added on site); without it a position the plan
+    already has a station at is that station. A station keeps its id
     through edits, and its purpose where it has not moved; one moved or added is "hand", and
     an added station takes the next number never given (a deleted station's id is not given
     again)."""
@@ -77,6 +78,8 @@ def evaluate_stations(
         j = by_id.get(sid) if sid else None
         if j is None:
             hand.append(i)
+            if sid:  # an id the plan does not have (a station added on site): it keeps it
+                kept[i] = (str(sid), "hand")
             continue
         moved = bool(np.abs(old_xy[j] - q).max() >= 1e-3)
         kept[i] = (str(sid), "hand" if moved else str(scans["purpose"].iloc[j]))
