@@ -3,9 +3,12 @@
 On site a crew sets up where the ground allows, skips a scan, meets a van in front of a
 facade. :func:`replan` takes the stations as scanned (read from the registered project's
 E57 or a CSV, :func:`planner.pipeline.pointclouds.read_poses`) and the targets as placed,
-judges every sample again with the real positions — coverage, scanner ⊕ registration —
-and proposes the fewest extra stations for what is left, each with its reason; the
-stations scanned keep their ids and the extra ones take numbers never given before.
+judges every sample again with the real positions — coverage, scanner ⊕ registration
+with the targets that stood (the plan's, or where the file says they were placed, and the
+control points: no other candidate) — and proposes the fewest extra stations for what is
+left, each with its reason; the stations scanned keep their ids and the extra ones take
+numbers never given before. The extra stations' registration may take new targets (the
+crew sets them up when it comes back).
 
 :func:`compare_links` reads a registration program's report (the error of each link,
 optionally its overlap) and sets it beside the plan's predicted link errors.
@@ -30,6 +33,7 @@ from planner.pipeline.pointclouds import read_table
 from planner.pipeline.result import Plan
 from planner.pipeline.whatif import (
     MIN_STATION_SEPARATION_M,
+    _target_index,
     _workbench,
     edit_targets,
     evaluate_stations,
@@ -128,10 +132,21 @@ def replan(
     scanned = check_scanned(p, scanned, targets_placed)
     xy = scanned[["x", "y"]].to_numpy(dtype=float)
     ids = scanned["station_id"].tolist()
+    planned_targets = [_target_index(wb, p, t) for t in p.targets["target_id"]]
     if targets_placed is not None and len(targets_placed):
         p = _targets_as_placed(p, targets_placed)
     wb.last_station = max(wb.last_station, _highest(p))
-    as_scanned = evaluate_stations(p, xy, ids)
+    # the scans made are judged with the targets that stood: the plan's (or those placed by
+    # hand where the file moved them) and the control points, no other candidate
+    seen, edited = wb.seen, wb.seen.barred.copy()
+    stood = seen.by_hand.copy()
+    stood[planned_targets] = True
+    stood |= np.asarray(seen.tc.type == "control")
+    seen.barred = edited | ~stood
+    try:
+        as_scanned = evaluate_stations(p, xy, ids)
+    finally:
+        seen.barred = edited  # the extra stations may have targets of their own
     before = (int(as_scanned.scanned["meets"].sum()), len(as_scanned.scanned))
     left = set(as_scanned.unmet["sample_id"])
     new = as_scanned
