@@ -49,7 +49,11 @@ class AsScannedPanel:
         self.poses = w.FileUpload(accept=".e57,.csv", multiple=False, description="Scans")
         self.targets = w.FileUpload(accept=".csv", multiple=False, description="Targets")
         self.report = w.FileUpload(accept=".csv,.txt", multiple=False, description="Report")
-        self.button = w.Button(description="Re-plan from the scans", button_style="primary")
+        self.button = w.Button(
+            description="Re-plan from the scans",
+            button_style="primary",
+            layout=w.Layout(width="auto"),
+        )
         self.status = w.HTML("")
         self.out = w.Output()
         self.booklet = w.HTML("")
