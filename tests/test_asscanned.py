@@ -237,3 +237,17 @@ def test_the_extra_stations_booklet_has_their_pages(default_plan, monkeypatch):
     )
     bk.booklet(default_plan, only={"S07", "S03"})
     assert sorted(drawn) == ["S03", "S07"]
+
+
+def test_replan_checks_it_starts_from_the_plan_the_crew_followed(default_plan, tmp_path):
+    from planner.pipeline.asscanned import check_same_plan
+
+    folder = tmp_path / "plan"
+    folder.mkdir()
+    default_plan.stations.to_csv(folder / "stations.csv", index=False)
+    check_same_plan(default_plan, folder)  # the same plan: no complaint
+    moved = default_plan.stations.copy()
+    moved.loc[moved["station_id"] == "S04", "x"] += 0.01  # m
+    moved.to_csv(folder / "stations.csv", index=False)
+    with pytest.raises(InputError, match="stations S04 differ"):
+        check_same_plan(default_plan, folder)

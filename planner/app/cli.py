@@ -587,6 +587,7 @@ def cmd_replan(args: argparse.Namespace) -> int:
     """The plan re-made from the stations as scanned: the extra stations for what is left."""
     from planner.atomic import check_inputs_kept, check_output_folder
     from planner.pipeline.asscanned import (
+        check_same_plan,
         compare_links,
         read_link_report,
         read_targets_placed,
@@ -607,6 +608,8 @@ def cmd_replan(args: argparse.Namespace) -> int:
         report = read_link_report(args.link_report)
     args.district = "off"  # one network: the re-plan works on its workbench
     result, _, _ = make_plan(args, _StderrProgress(args.quiet))
+    if args.plan:
+        check_same_plan(result, args.plan)
     r = replan(result, scanned, targets_placed=placed, progress=_StderrProgress(args.quiet))
     files = {"as_scanned.csv": r.stations.to_csv(index=False).encode()}
     if report is not None:
@@ -1176,6 +1179,12 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="FILE",
         help="the stations as scanned: an .e57 of the registered scans (their poses) or a "
         ".csv with station_id, x, y",
+    )
+    rr.add_argument(
+        "--plan",
+        metavar="DIR",
+        help="the folder of the plan the crew followed (planner plan's --out): the plan made "
+        "again from the options must be that one (its stations.csv), else exit 2",
     )
     rr.add_argument(
         "--targets-placed",

@@ -43,6 +43,7 @@ __all__ = [
     "AS_SCANNED_COLUMNS",
     "REPORT_ALIASES",
     "Replan",
+    "check_same_plan",
     "check_scanned",
     "compare_links",
     "match_ids",
@@ -311,6 +312,31 @@ def read_targets_placed(path: str | Path) -> pd.DataFrame:
     """Targets as placed: a CSV with ``target_id, x, y`` (the plan's ids, site CRS [m];
     :func:`~planner.pipeline.pointclouds.read_table`)."""
     return read_table(path, "target_id", "targets as placed")[["target_id", "x", "y"]]
+
+
+def check_same_plan(p: Plan, folder: str | Path) -> None:
+    """An :class:`InputError` unless ``p``'s stations are those of the plan written in
+    ``folder`` (its ``stations.csv``: the same ids, each within a millimetre): the re-plan
+    must start from the plan the crew followed, and a plan made again from its options can
+    differ (another time budget, another version)."""
+    path = Path(folder) / "stations.csv"
+    if not path.is_file():
+        raise InputError(f"{folder}: no stations.csv (give the folder planner plan wrote)")
+    try:
+        old = pd.read_csv(path, dtype={"station_id": str}).set_index("station_id")[["x", "y"]]
+    except (ValueError, KeyError, UnicodeDecodeError, pd.errors.ParserError) as exc:
+        raise InputError(f"{path}: not a plan's stations.csv ({exc})") from None
+    new = p.stations.set_index("station_id")[["x", "y"]]
+    differ = sorted(set(old.index) ^ set(new.index))
+    if not differ:
+        gap = np.hypot(*(old.loc[new.index].to_numpy(float) - new.to_numpy(float)).T)
+        differ = [sid for sid, d in zip(new.index, gap, strict=True) if d > 1e-3]
+    if differ:
+        raise InputError(
+            f"the plan made again from these options is not the plan in {folder} (stations "
+            f"{', '.join(differ[:5])}{' …' if len(differ) > 5 else ''} differ): give the options "
+            "that plan was made with, and a --time-limit-s long enough for it to finish"
+        )
 
 
 #: A registration report's columns under the names registration programs give them.
