@@ -251,3 +251,12 @@ def test_replan_checks_it_starts_from_the_plan_the_crew_followed(default_plan, t
     moved.to_csv(folder / "stations.csv", index=False)
     with pytest.raises(InputError, match="stations S04 differ"):
         check_same_plan(default_plan, folder)
+
+
+def test_a_tripod_set_up_nearer_a_wall_than_the_plans_clearance_is_taken(default_plan):
+    scanned = default_plan.scan_stations[["station_id", "x", "y"]].copy()
+    # S01 set up 0.5 m west of the building's west wall (x = 691000; the plan keeps 1 m)
+    scanned.loc[scanned["station_id"] == "S01", ["x", "y"]] = (690999.5, 5335018.0)
+    r = replan(default_plan, scanned)
+    assert r.stations.set_index("station_id").loc["S01", "status"] == "moved"
+    assert r.plan.settings.clearance_m == default_plan.settings.clearance_m  # m: as planned

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import copy
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
@@ -54,6 +54,9 @@ __all__ = [
 
 #: A scanned station this far [m] from its planned place counts as moved.
 MOVED_M = 0.05
+#: A station the crew set up may stand this close [m] to a wall or obstacle (a tripod's
+#: legs), nearer than the clearance the plan keeps for the stations it proposes.
+TRIPOD_CLEARANCE_M = 0.3
 #: The table of stations as scanned against the plan (``scan_name``: as the file named it).
 AS_SCANNED_COLUMNS = [
     "station_id",
@@ -129,6 +132,8 @@ def replan(
     skipped."""
     p = copy.deepcopy(p)  # the re-plan adds to the workbench; the plan on screen stays
     wb = _workbench(p)
+    settings = wb.settings  # the scans made may stand nearer a wall than the plan's clearance
+    wb.settings = replace(settings, clearance_m=_scan_clearance(settings.clearance_m))
     planned = p.scan_stations.set_index("station_id")
     scanned = check_scanned(p, scanned, targets_placed)
     xy = scanned[["x", "y"]].to_numpy(dtype=float)
@@ -155,6 +160,8 @@ def replan(
         again = choose_stations(wb, progress, locked=xy, locked_ids=ids, edited=True)
         if again.scanned["meets"].sum() > before[0]:
             new = again
+    for q in {id(new): new, id(as_scanned): as_scanned}.values():
+        q.settings = settings
     return Replan(
         plan=new,
         stations=_table(new, scanned, planned, left),
@@ -219,9 +226,10 @@ def check_scanned(
             "far from the site: the poses are not in the site's CRS (export them in it, or "
             "give a CSV of the stations' coordinates)"
         )
+    clear = _scan_clearance(wb.settings.clearance_m)
     for sid, q in zip(out["scan_name"], xy, strict=True):  # each refusal names the scan
         try:
-            free_positions(wb, q, f"station {sid} as scanned")
+            free_positions(wb, q, f"station {sid} as scanned", clear)
         except InputError as exc:
             raise InputError(
                 str(exc).replace("; move it onto free ground", "")
@@ -237,6 +245,10 @@ def check_scanned(
                 "ids with where each was placed"
             )
     return out
+
+
+def _scan_clearance(clearance_m: float) -> float:
+    return min(clearance_m, TRIPOD_CLEARANCE_M)
 
 
 def _one_setup_each(xy: np.ndarray, ids: list[str]) -> None:

@@ -157,13 +157,16 @@ class Diagnosis:
         return int(self.n_view[j]), best, str(self.roof[j])
 
 
-def free_positions(wb: Workbench, xy: np.ndarray, what: str) -> np.ndarray:
+def free_positions(
+    wb: Workbench, xy: np.ndarray, what: str, clearance_m: float | None = None
+) -> np.ndarray:
     """``xy`` [m] as a ``(k, 2)`` array, refused (InputError) where a station cannot stand:
-    inside a building, obstacle or no-go area, or within the clearance of one."""
+    inside a building, obstacle or no-go area, or within the clearance of one (the
+    settings', or ``clearance_m``)."""
     xy = np.asarray(xy, dtype=float).reshape(-1, 2)
     if not np.isfinite(xy).all():
         raise InputError(f"a {what} has no coordinates (x, y must be numbers)")
-    clear = wb.settings.clearance_m
+    clear = wb.settings.clearance_m if clearance_m is None else clearance_m
     blocked = blocked_ground(wb.site, clear)
     bad = np.flatnonzero(shapely.contains_xy(blocked, xy[:, 0], xy[:, 1]))
     if len(bad):
