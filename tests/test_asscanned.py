@@ -165,7 +165,7 @@ def test_a_scan_where_no_station_can_stand_is_named(default_plan):
     ],
 )
 def test_the_new_commands_refuse_bad_input_with_exit_2(tmp_path, argv, said):
-    (tmp_path / "other.csv").write_text("station_id,x,y\nScan 1,690990,5335018\n")
+    (tmp_path / "other.csv").write_text("station_id,x,y\nPillar A,690990,5335018\n")
     (tmp_path / "poses.txt").write_text("a b c\n")
     (tmp_path / "poses.las").write_bytes(b"LASF")
     out = tmp_path / "out"
@@ -260,3 +260,37 @@ def test_a_tripod_set_up_nearer_a_wall_than_the_plans_clearance_is_taken(default
     r = replan(default_plan, scanned)
     assert r.stations.set_index("station_id").loc["S01", "status"] == "moved"
     assert r.plan.settings.clearance_m == default_plan.settings.clearance_m  # m: as planned
+
+
+def test_field_exports_are_read_as_a_crew_gives_them(default_plan, tmp_path):
+    """A BOM (Excel's CSV UTF-8), Point ID / Easting (m) headers, an empty spreadsheet row,
+    scans named Scan 001…; a link report in cm with units in its cells and Scan A / Scan B."""
+    rows = default_plan.scan_stations[["station_id", "x", "y"]]
+    body = "\r\n".join(
+        f"Scan {sid[1:].zfill(3)},{x},{y},1.5" for sid, x, y in rows.itertuples(index=False)
+    )
+    (tmp_path / "st.csv").write_bytes(
+        ("\ufeffPoint ID,Easting (m),Northing (m),H\r\n" + body + "\r\n,,,\r\n").encode()
+    )
+    scanned = read_poses(tmp_path / "st.csv")
+    assert len(scanned) == len(rows)
+    r = replan(default_plan, scanned)
+    assert (r.stations["status"] == "as planned").all()
+    a, b, pred = default_plan.links.iloc[0][["station_a", "station_b", "link_rms_mm"]]
+    line = f"scan {a[1:]};{b.lower()};{pred / 10:.6f} cm"
+    (tmp_path / "r.csv").write_bytes(f"\ufeffScan A;Scan B;Deviation (cm)\n{line}\n".encode())
+    check = compare_links(default_plan, read_link_report(tmp_path / "r.csv"))
+    assert check["ratio"].iloc[0] == pytest.approx(1.0, abs=1e-3)
+    (tmp_path / "bad.csv").write_text(f"from,to,error\n{a},{b},abc\n")
+    with pytest.raises(InputError, match="'abc' is not a number"):
+        read_link_report(tmp_path / "bad.csv")
+
+
+def test_scans_of_another_plan_and_a_target_typed_far_off_are_refused(default_plan):
+    scanned = default_plan.scan_stations[["station_id", "x", "y"]].copy()
+    with pytest.raises(InputError, match="not the plan the crew followed"):
+        replan(default_plan, scanned.assign(x=scanned["x"] + 40.0))  # m
+    t = default_plan.targets[["target_id", "x", "y"]].copy()
+    t.loc[t.index[0], "x"] -= 1000.0  # m: a digit typed wrong
+    with pytest.raises(InputError, match="a typing error"):
+        replan(default_plan, scanned, targets_placed=t)

@@ -1153,8 +1153,8 @@ def build_parser() -> argparse.ArgumentParser:
         "--beams-per-station",
         type=argument("beams_per_station"),
         default=DEFAULT_BEAMS_PER_STATION,
-        help="beams cast per station at most: the preset's step is thinned to it (default "
-        f"{DEFAULT_BEAMS_PER_STATION:,}; about 5 points per beam of 10 fall on something)",
+        help="beams cast per station at most, 1,000 to 100,000,000: the preset's step is "
+        f"thinned to it (default {DEFAULT_BEAMS_PER_STATION:,}; about 5 beams in 10 return)",
     )
     rh.add_argument(
         "--seed", type=argument("seed"), default=1, help="the noise's random seed (default 1)"

@@ -7,8 +7,9 @@ judges every sample again with the real positions — coverage, scanner ⊕ regi
 with the targets that stood (the plan's, or where the file says they were placed, and the
 control points: no other candidate) — and proposes the fewest extra stations for what is
 left, each with its reason; the stations scanned keep their ids and the extra ones take
-numbers never given before. The extra stations' registration may take new targets (the
-crew sets them up when it comes back).
+numbers never given before. The extra stations are registered with those same targets
+(set again on their marks) or cloud to cloud: a target the scans made do not hold cannot
+tie them.
 
 :func:`compare_links` reads a registration program's report (the error of each link,
 optionally its overlap) and sets it beside the plan's predicted link errors.
@@ -57,6 +58,12 @@ MOVED_M = 0.05
 #: A station the crew set up may stand this close [m] to a wall or obstacle (a tripod's
 #: legs), nearer than the clearance the plan keeps for the stations it proposes.
 TRIPOD_CLEARANCE_M = 0.3
+#: Scans standing this far [m] (median) from the plan's stations of the same ids are not
+#: the plan the crew followed.
+FAR_FROM_PLAN_M = 10.0
+#: A target placed farther than this [m] from its planned place is a typing error, not a
+#: crew's adjustment.
+TARGET_MOVED_LIMIT_M = 20.0
 #: The table of stations as scanned against the plan (``scan_name``: as the file named it).
 AS_SCANNED_COLUMNS = [
     "station_id",
@@ -104,6 +111,14 @@ class Replan:
                 f"{total} met."
             )
             lines += [f"  {r.station_id}: {r.reason}" for r in self.extra.itertuples()]
+            route = self.plan.route.table if self.plan.route is not None else None
+            if route is not None and "station_min" in route:
+                back = route[route["station_id"].isin(self.extra["station_id"])]
+                lines.append(
+                    f"Return trip: {len(back)} set-up(s), {back['station_min'].sum():.0f} min "
+                    "on station (set-up, targets, scans; the walk to the site not counted). "
+                    "The route and field time in the files are the whole job's."
+                )
         else:
             lines.append(
                 "No extra station: "
@@ -135,6 +150,10 @@ def replan(
     settings = wb.settings  # the scans made may stand nearer a wall than the plan's clearance
     wb.settings = replace(settings, clearance_m=_scan_clearance(settings.clearance_m))
     planned = p.scan_stations.set_index("station_id")
+    if targets_placed is not None:
+        targets_placed = targets_placed.assign(
+            target_id=match_ids(targets_placed["target_id"], p.targets["target_id"].tolist(), "T")
+        )
     scanned = check_scanned(p, scanned, targets_placed)
     xy = scanned[["x", "y"]].to_numpy(dtype=float)
     ids = scanned["station_id"].tolist()
@@ -144,15 +163,15 @@ def replan(
     wb.last_station = max(wb.last_station, _highest(p))
     # the scans made are judged with the targets that stood: the plan's (or those placed by
     # hand where the file moved them) and the control points, no other candidate
-    seen, edited = wb.seen, wb.seen.barred.copy()
+    # the scans made hold the targets that stood: the plan's (or those placed by hand where
+    # the file moved them) and the control points. Only those can tie them — to each other
+    # and to the extra stations (whose crew sets targets on the same marks again)
+    seen = wb.seen
     stood = seen.by_hand.copy()
     stood[planned_targets] = True
     stood |= np.asarray(seen.tc.type == "control")
-    seen.barred = edited | ~stood
-    try:
-        as_scanned = evaluate_stations(p, xy, ids)
-    finally:
-        seen.barred = edited  # the extra stations may have targets of their own
+    seen.barred = seen.barred | ~stood
+    as_scanned = evaluate_stations(p, xy, ids)
     before = (int(as_scanned.scanned["meets"].sum()), len(as_scanned.scanned))
     left = set(as_scanned.unmet["sample_id"])
     new = as_scanned
@@ -162,6 +181,8 @@ def replan(
             new = again
     for q in {id(new): new, id(as_scanned): as_scanned}.values():
         q.settings = settings
+        q.messages = [m for m in q.messages if not m.startswith("Stations edited by hand")]
+        q.messages.insert(0, f"Re-planned from {len(ids)} station(s) as scanned.")
     return Replan(
         plan=new,
         stations=_table(new, scanned, planned, left),
@@ -170,18 +191,25 @@ def replan(
     )
 
 
-def match_ids(names: pd.Series, plan_ids: list[str]) -> pd.Series:
-    """The plan's station id for each scan name where one is meant — the same id in
-    another case or zero padding ("s5", "S005", "5" → "S05"); else the name itself.
+def match_ids(names: pd.Series, plan_ids: list[str], prefix: str = "S") -> pd.Series:
+    """The plan's id for each name where one is meant — the same number in another case,
+    padding or wording ("s5", "S005", "5", "Scan 005", "Setup_5" → "S05"; with ``prefix``
+    "T", "t5" → "T05"); else the name itself.
 
-    >>> match_ids(pd.Series(["s5", "S05", "12", "Scan 3", "S99"]), ["S05", "S12"]).tolist()
-    ['S05', 'S05', 'S12', 'Scan 3', 'S99']
+    >>> match_ids(pd.Series(["s5", "S05", "12", "Scan 003", "S99"]), ["S05", "S12", "S03"]).tolist()
+    ['S05', 'S05', 'S12', 'S03', 'S99']
     """
-    by_number = {_station_number(i): i for i in plan_ids if _station_number(i) is not None}
+    number = {}
+    for i in plan_ids:
+        m = re.fullmatch(rf"{prefix}(\d+)", str(i))
+        if m:
+            number[int(m.group(1))] = i
+    words = "scan|setup|station|st" if prefix == "S" else "target|tgt"
+    pattern = re.compile(rf"(?:{prefix}|{words})?[\s_\-.#]*0*(\d+)", re.IGNORECASE)
 
     def one(name: str) -> str:
-        m = re.fullmatch(r"[sS]?0*(\d+)", name.strip())
-        return by_number.get(int(m.group(1)), name) if m else name
+        m = pattern.fullmatch(name.strip())
+        return number.get(int(m.group(1)), name) if m else name
 
     return names.astype(str).map(one)
 
@@ -216,6 +244,15 @@ def check_scanned(
             "every scan has the same position: the file's poses are not the stations' (export "
             "the registered project with each scan's pose in the site's CRS)"
         )
+    st = p.scan_stations.set_index("station_id")
+    same = out["station_id"].isin(st.index).to_numpy()
+    gap = np.hypot(*(xy[same] - st.loc[out["station_id"][same], ["x", "y"]].to_numpy(float)).T)
+    if same.sum() >= 2 and np.median(gap) > FAR_FROM_PLAN_M:
+        raise InputError(
+            f"the scans stand {np.median(gap):.0f} m (median) from the plan's stations of the "
+            "same ids: this is not the plan the crew followed. Give the options it was made "
+            "with (--plan DIR checks it), or the scans' coordinates in the site's CRS"
+        )
     x0, y0, x1, y1 = shapely.total_bounds([b.footprint for b in p.site.buildings])
     far = p.scanner.max_range_m + max(x1 - x0, y1 - y0)
     off = np.hypot(xy[:, 0] - (x0 + x1) / 2, xy[:, 1] - (y0 + y1) / 2) > far
@@ -238,6 +275,24 @@ def check_scanned(
             ) from None
     _one_setup_each(xy, out["scan_name"].tolist())
     if targets_placed is not None:
+        targets_placed = targets_placed.assign(
+            target_id=match_ids(targets_placed["target_id"], p.targets["target_id"].tolist(), "T")
+        )
+        planned_at = p.targets.set_index("target_id")[["x", "y"]]
+        known = targets_placed[targets_placed["target_id"].isin(planned_at.index)]
+        moved = np.hypot(
+            *(
+                known[["x", "y"]].to_numpy(float)
+                - planned_at.loc[known["target_id"]].to_numpy(float)
+            ).T
+        )
+        if (moved > TARGET_MOVED_LIMIT_M).any():
+            k = int(np.argmax(moved))
+            raise InputError(
+                f"target {known['target_id'].iloc[k]} placed {moved[k]:.0f} m from where the "
+                f"plan has it (more than {TARGET_MOVED_LIMIT_M:g} m): a typing error? Check "
+                "its coordinates, or leave it out of the file if it was not set up"
+            )
         unknown = sorted(set(targets_placed["target_id"]) - set(p.targets["target_id"]))
         if unknown:
             raise InputError(
@@ -353,9 +408,36 @@ def check_same_plan(p: Plan, folder: str | Path) -> None:
 
 #: A registration report's columns under the names registration programs give them.
 REPORT_ALIASES = {
-    "station_a": ("station_a", "from", "scan_a", "reference", "scan 1", "setup 1", "source"),
-    "station_b": ("station_b", "to", "scan_b", "scan 2", "setup 2", "target scan", "moving"),
-    "error_mm": ("error_mm", "error", "bundle error", "link error", "rms", "rms_mm", "mean error"),
+    "station_a": (
+        "station_a",
+        "from",
+        "scan_a",
+        "scan a",
+        "reference",
+        "scan 1",
+        "setup 1",
+        "source",
+    ),
+    "station_b": (
+        "station_b",
+        "to",
+        "scan_b",
+        "scan b",
+        "scan 2",
+        "setup 2",
+        "target scan",
+        "moving",
+    ),
+    "error_mm": (
+        "error_mm",
+        "error",
+        "bundle error",
+        "link error",
+        "rms",
+        "rms_mm",
+        "mean error",
+        "deviation",
+    ),
     "overlap_pct": ("overlap_pct", "overlap", "overlap %", "overlap (%)"),
 }
 
@@ -365,21 +447,26 @@ def read_link_report(path: str | Path) -> pd.DataFrame:
     given, ``overlap_pct`` — from a CSV whose columns bear those names or a registration
     program's (:data:`REPORT_ALIASES`; an error given in metres, ``… (m)``, is converted)."""
     try:
-        df = pd.read_csv(path, sep=None, engine="python")
+        df = pd.read_csv(path, sep=None, engine="python", encoding="utf-8-sig")
     except (OSError, ValueError, UnicodeDecodeError, pd.errors.ParserError) as exc:
         raise InputError(f"{path}: not a readable CSV ({exc})") from None
     out = {}
+    raw_error = pd.Series(dtype=object)
     for key, names in REPORT_ALIASES.items():
         for c in df.columns:
-            bare = str(c).strip().lower()
-            unit_m = bare.endswith(("(m)", "[m]"))
-            bare = re.sub(r"\s*[\(\[](m|mm|%)[\)\]]$", "", bare).strip()
-            if bare in names:
+            bare = str(c).strip().lstrip("\ufeff").lower()
+            unit = re.search(r"[\(\[](m|cm|mm|%)[\)\]]$", bare)
+            bare = re.sub(r"\s*[\(\[](m|cm|mm|%)[\)\]]$", "", bare).strip()
+            if bare in names or bare.replace("_", " ") in names:
                 col = df[c]
+                if key == "error_mm":
+                    raw_error = col
                 if key in ("error_mm", "overlap_pct"):
                     text = col.astype(str).str.strip().str.rstrip("%").str.replace(",", ".")
+                    text = text.str.replace(r"\s*(mm|cm|m)$", "", regex=True)
                     col = pd.to_numeric(text, errors="coerce")
-                    col = col * 1000 if unit_m and key == "error_mm" else col
+                    scale = {"m": 1000.0, "cm": 10.0}.get(unit.group(1) if unit else "", 1.0)
+                    col = col * scale if key == "error_mm" else col
                 out[key] = col
                 break
     missing = [k for k in ("station_a", "station_b", "error_mm") if k not in out]
@@ -391,6 +478,17 @@ def read_link_report(path: str | Path) -> pd.DataFrame:
     rep = pd.DataFrame(out)
     rep["station_a"] = rep["station_a"].astype(str).str.strip()
     rep["station_b"] = rep["station_b"].astype(str).str.strip()
+    bad = (
+        rep["error_mm"].isna()
+        & raw_error.astype(str).str.strip().ne("").to_numpy()
+        & raw_error.notna().to_numpy()
+    )
+    if bad.any():
+        k = int(np.flatnonzero(bad.to_numpy())[0])
+        raise InputError(
+            f"{path}: row {k + 2}'s error {raw_error.iloc[k]!r} is not a number (give it in mm, "
+            "or say the unit in the column's name: Error (m), Error (cm))"
+        )
     return rep
 
 
@@ -400,6 +498,10 @@ def compare_links(p: Plan, report: pd.DataFrame) -> pd.DataFrame:
     verdict — within the prediction, up to twice it, over twice it, or not a link of the
     plan."""
     links = {frozenset((r.station_a, r.station_b)): r for r in p.links.itertuples(index=False)}
+    ids = p.stations["station_id"].tolist()
+    report = report.assign(
+        station_a=match_ids(report["station_a"], ids), station_b=match_ids(report["station_b"], ids)
+    )
     rows = []
     for r in report.itertuples():
         k = frozenset((r.station_a, r.station_b))

@@ -19,6 +19,7 @@
 from __future__ import annotations
 
 import io
+import re
 import tempfile
 from pathlib import Path
 
@@ -171,8 +172,18 @@ def legend_csv(reh: Rehearsal) -> str:
 
 #: Column names a station or target table may use for each of the planner's columns.
 TABLE_ALIASES = {
-    "station_id": ("station_id", "station", "name", "scan", "setup", "id", "point"),
-    "target_id": ("target_id", "target", "name", "id", "point"),
+    "station_id": (
+        "station_id",
+        "station",
+        "name",
+        "scan",
+        "setup",
+        "id",
+        "point",
+        "point_id",
+        "pointid",
+    ),
+    "target_id": ("target_id", "target", "name", "id", "point", "point_id", "pointid"),
     "x": ("x", "e", "east", "easting"),
     "y": ("y", "n", "north", "northing"),
     "z": ("z", "h", "height", "elevation"),
@@ -186,16 +197,22 @@ def read_table(path: str | Path, id_column: str, what: str) -> pd.DataFrame:
     as written ("01" stays "01"); an :class:`InputError` saying what is wrong otherwise.
     ``what`` names the table in messages."""
     try:
-        df = pd.read_csv(path, sep=None, engine="python", dtype=str, skipinitialspace=True)
-    except (OSError, ValueError, UnicodeDecodeError, pd.errors.ParserError) as exc:
+        df = pd.read_csv(
+            path, sep=None, engine="python", dtype=str, skipinitialspace=True, encoding="utf-8-sig"
+        )
+    except UnicodeDecodeError:
+        raise InputError(
+            f"{path}: not UTF-8 text; save it as CSV UTF-8 (Excel: CSV UTF-8, comma delimited)"
+        ) from None
+    except (OSError, ValueError, pd.errors.ParserError) as exc:
         raise InputError(f"{path}: not a readable CSV of {what} ({exc})") from None
+    df = df.dropna(how="all")  # (a spreadsheet's empty rows: ",,")
     found: dict[str, str] = {}
     for key in (id_column, "x", "y", "z"):
         for c in df.columns:
-            if (
-                str(c).strip().lower().replace(" ", "_") in TABLE_ALIASES[key]
-                and c not in found.values()
-            ):
+            # lower case, a unit in brackets left out, spaces as underscores
+            name = re.sub(r"\s*[\(\[][^\)\]]*[\)\]]$", "", str(c).strip().lower())
+            if name.replace(" ", "_") in TABLE_ALIASES[key] and c not in found.values():
                 found[key] = c
                 break
     missing = [k for k in (id_column, "x", "y") if k not in found]
