@@ -12,6 +12,7 @@ plan, with the booklet of the extra stations to download.
 from __future__ import annotations
 
 import html
+import threading
 from collections.abc import Callable
 from pathlib import Path
 
@@ -58,6 +59,7 @@ class AsScannedPanel:
         self.out = w.Output()
         self.booklet = w.HTML("")
         self.last: Replan | None = None
+        self._links = None  # the link report compared, for the last re-plan
         #: the plan the crew scanned (a second re-plan starts from it, not from the first
         #: re-plan's result)
         self.base = None
@@ -91,8 +93,8 @@ class AsScannedPanel:
         return path
 
     def run(self):
-        """Read the uploads and re-plan in the background (errors said here); the
-        background thread, or None where nothing was started."""
+        """Read the uploads and re-plan in the background (errors said here); the thread
+        that shows the result when the re-plan ends, or None where nothing was started."""
         if self._busy():
             self.status.value = error_html(
                 "a plan is being made; re-plan when it is done", "Cannot re-plan"
@@ -126,14 +128,28 @@ class AsScannedPanel:
         def make(progress):
             r = replan(base, scanned, targets_placed=placed, progress=progress)
             self.last = r
-            self._show(r, compare_links(r.scanned_plan, report) if report is not None else None)
+            self._links = compare_links(r.scanned_plan, report) if report is not None else None
             return r.plan
 
-        return self._start(make, "re-planned from the scans", fresh=False)
+        worker = self._start(make, "re-planned from the scans", fresh=False)
+        # this tab's table once the map and the other tabs show the new plan
+        done = threading.Thread(target=self._show_when_done, args=(worker,), daemon=True)
+        done.start()
+        return done
+
+    def _show_when_done(self, worker: threading.Thread) -> None:
+        worker.join()
+        r = self.last
+        if r is not None and self._plan_of() is r.plan:
+            self._show(r, self._links)
+        elif self.status.value.startswith("<i>re-planning"):
+            self.status.value = ""  # (the re-plan failed or was cancelled: the toolbar says)
 
     def _show(self, r: Replan, links) -> None:
         self.status.value = (
-            "<pre style='white-space:pre-wrap'>" + html.escape(r.summary()) + "</pre>"
+            "<div style='white-space:pre-line;word-break:normal'>"
+            + html.escape(r.summary())
+            + "</div>"
         )
         tables = [r.stations.set_index("station_id").round({"x": 3, "y": 3, "moved_m": 2})]
         if links is not None:
