@@ -30,14 +30,14 @@ from planner.errors import InputError
 from planner.pipeline.evaluate import Progress
 from planner.pipeline.judge import _station_number, free_positions
 from planner.pipeline.planning import choose_stations
-from planner.pipeline.pointclouds import read_table
+from planner.pipeline.pointclouds import find_columns, read_table
 from planner.pipeline.result import Plan
 from planner.pipeline.whatif import (
-    MIN_STATION_SEPARATION_M,
     _target_index,
     _workbench,
-    edit_targets,
+    edit_candidates,
     evaluate_stations,
+    one_setup_twice,
 )
 
 __all__ = [
@@ -150,19 +150,13 @@ def replan(
     settings = wb.settings  # the scans made may stand nearer a wall than the plan's clearance
     wb.settings = replace(settings, clearance_m=_scan_clearance(settings.clearance_m))
     planned = p.scan_stations.set_index("station_id")
-    if targets_placed is not None:
-        targets_placed = targets_placed.assign(
-            target_id=match_ids(targets_placed["target_id"], p.targets["target_id"].tolist(), "T")
-        )
-    scanned = check_scanned(p, scanned, targets_placed)
+    scanned, targets_placed = check_scanned(p, scanned, targets_placed)
     xy = scanned[["x", "y"]].to_numpy(dtype=float)
     ids = scanned["station_id"].tolist()
     planned_targets = [_target_index(wb, p, t) for t in p.targets["target_id"]]
     if targets_placed is not None and len(targets_placed):
-        p = _targets_as_placed(p, targets_placed)
+        _targets_as_placed(p, targets_placed)
     wb.last_station = max(wb.last_station, _highest(p))
-    # the scans made are judged with the targets that stood: the plan's (or those placed by
-    # hand where the file moved them) and the control points, no other candidate
     # the scans made hold the targets that stood: the plan's (or those placed by hand where
     # the file moved them) and the control points. Only those can tie them — to each other
     # and to the extra stations (whose crew sets targets on the same marks again)
@@ -216,13 +210,14 @@ def match_ids(names: pd.Series, plan_ids: list[str], prefix: str = "S") -> pd.Se
 
 def check_scanned(
     p: Plan, scanned: pd.DataFrame, targets_placed: pd.DataFrame | None = None
-) -> pd.DataFrame:
+) -> tuple[pd.DataFrame, pd.DataFrame | None]:
     """The stations as scanned, checked against the plan before any work (an
     :class:`InputError` naming the fault): names matched to the plan's ids
     (:func:`match_ids`; the file's own in ``scan_name``), at least one of them the plan's,
     positions on the site (not all at one point, not kilometres away: poses not in the
     site's CRS), each where a station can stand, no two on one spot, the targets placed
-    the plan's."""
+    the plan's (matched as the stations are) and near their planned places. Returns both
+    tables with the plan's ids."""
     wb = _workbench(p)
     out = scanned.copy()
     out["scan_name"] = out["station_id"].astype(str)
@@ -299,7 +294,7 @@ def check_scanned(
                 f"targets {', '.join(unknown[:5])} are not in the plan; give the plan's target "
                 "ids with where each was placed"
             )
-    return out
+    return out, targets_placed
 
 
 def _scan_clearance(clearance_m: float) -> float:
@@ -307,12 +302,11 @@ def _scan_clearance(clearance_m: float) -> float:
 
 
 def _one_setup_each(xy: np.ndarray, ids: list[str]) -> None:
-    d = np.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1))
-    d[np.tri(len(xy), dtype=bool)] = np.inf
-    if len(xy) > 1 and d.min() < MIN_STATION_SEPARATION_M:
-        a, b = np.unravel_index(int(np.argmin(d)), d.shape)
+    pair = one_setup_twice(xy)
+    if pair is not None:
+        a, b, d = pair
         raise InputError(
-            f"stations {ids[a]} and {ids[b]} were scanned {d[a, b]:.2f} m apart: one set-up "
+            f"stations {ids[a]} and {ids[b]} were scanned {d:.2f} m apart: one set-up "
             "twice; give one of them"
         )
 
@@ -322,7 +316,9 @@ def _highest(p: Plan) -> int:
     return max((n for n in numbers if n is not None), default=0)
 
 
-def _targets_as_placed(p: Plan, placed: pd.DataFrame) -> Plan:
+def _targets_as_placed(p: Plan, placed: pd.DataFrame) -> None:
+    """The workbench's target candidates as the crew placed them (the plan's targets not
+    listed ruled out, those moved offered where they stood); the plan is judged after."""
     known = set(p.targets["target_id"].astype(str))
     old = p.targets.set_index("target_id")[["x", "y"]]
     move = {
@@ -331,7 +327,7 @@ def _targets_as_placed(p: Plan, placed: pd.DataFrame) -> Plan:
         if np.hypot(r.x - old.loc[r.target_id, "x"], r.y - old.loc[r.target_id, "y"]) >= MOVED_M
     }
     missing = sorted(known - set(placed["target_id"].astype(str)))
-    return edit_targets(p, move=move, remove=missing) if move or missing else p
+    edit_candidates(p, move=move, remove=missing)
 
 
 def _table(new: Plan, scanned: pd.DataFrame, planned: pd.DataFrame, left: set) -> pd.DataFrame:
@@ -452,23 +448,18 @@ def read_link_report(path: str | Path) -> pd.DataFrame:
         raise InputError(f"{path}: not a readable CSV ({exc})") from None
     out = {}
     raw_error = pd.Series(dtype=object)
-    for key, names in REPORT_ALIASES.items():
-        for c in df.columns:
-            bare = str(c).strip().lstrip("\ufeff").lower()
-            unit = re.search(r"[\(\[](m|cm|mm|%)[\)\]]$", bare)
-            bare = re.sub(r"\s*[\(\[](m|cm|mm|%)[\)\]]$", "", bare).strip()
-            if bare in names or bare.replace("_", " ") in names:
-                col = df[c]
-                if key == "error_mm":
-                    raw_error = col
-                if key in ("error_mm", "overlap_pct"):
-                    text = col.astype(str).str.strip().str.rstrip("%").str.replace(",", ".")
-                    text = text.str.replace(r"\s*(mm|cm|m)$", "", regex=True)
-                    col = pd.to_numeric(text, errors="coerce")
-                    scale = {"m": 1000.0, "cm": 10.0}.get(unit.group(1) if unit else "", 1.0)
-                    col = col * scale if key == "error_mm" else col
-                out[key] = col
-                break
+    units = ("", "m", "cm", "mm", "%")
+    for key, (c, unit) in find_columns(df.columns, REPORT_ALIASES, units).items():
+        col = df[c]
+        if key == "error_mm":
+            raw_error = col
+        if key in ("error_mm", "overlap_pct"):
+            text = col.astype(str).str.strip().str.rstrip("%").str.replace(",", ".")
+            text = text.str.replace(r"\s*(mm|cm|m)$", "", regex=True)
+            col = pd.to_numeric(text, errors="coerce")
+            scale = {"m": 1000.0, "cm": 10.0}.get(unit, 1.0)
+            col = col * scale if key == "error_mm" else col
+        out[key] = col
     missing = [k for k in ("station_a", "station_b", "error_mm") if k not in out]
     if missing:
         raise InputError(

@@ -34,6 +34,7 @@ __all__ = [
     "POSE_COLUMNS",
     "TABLE_ALIASES",
     "e57_bytes",
+    "find_columns",
     "laz_bytes",
     "legend_csv",
     "read_poses",
@@ -190,6 +191,32 @@ TABLE_ALIASES = {
 }
 
 
+def find_columns(
+    columns, aliases: dict[str, tuple[str, ...]], units: tuple[str, ...] | None = None
+) -> dict[str, tuple[object, str]]:
+    """For each key of ``aliases``, the first of ``columns`` not taken by an earlier key
+    whose name — lower case, a byte-order mark and a unit in brackets at its end left out,
+    spaces as underscores — is one of the key's names; with that unit ("" none). ``units``:
+    the units a name may carry (a column with another does not match); None: any.
+
+    >>> find_columns(["Point ID", "Easting (m)", "N"], {"id": ("point_id",), "x": ("easting",)})
+    {'id': ('Point ID', ''), 'x': ('Easting (m)', 'm')}
+    """
+    found: dict[str, tuple[object, str]] = {}
+    for key, names in aliases.items():
+        wanted = {n.replace(" ", "_") for n in names}
+        for c in columns:
+            name = str(c).strip().lstrip("\ufeff").lower()
+            unit = re.search(r"\s*[\(\[]([^\)\]]*)[\)\]]$", name)
+            if units is not None and (unit.group(1).strip() if unit else "") not in units:
+                continue
+            bare = (name[: unit.start()] if unit else name).strip().replace(" ", "_")
+            if bare in wanted and all(c != t for t, _ in found.values()):
+                found[key] = (c, unit.group(1).strip() if unit else "")
+                break
+    return found
+
+
 def read_table(path: str | Path, id_column: str, what: str) -> pd.DataFrame:
     """A CSV of points — ``id_column, x, y`` and ``z`` (optional, NaN where not given) —
     under the planner's names or common others (:data:`TABLE_ALIASES`: Name, E, N, H,
@@ -207,14 +234,10 @@ def read_table(path: str | Path, id_column: str, what: str) -> pd.DataFrame:
     except (OSError, ValueError, pd.errors.ParserError) as exc:
         raise InputError(f"{path}: not a readable CSV of {what} ({exc})") from None
     df = df.dropna(how="all")  # (a spreadsheet's empty rows: ",,")
-    found: dict[str, str] = {}
-    for key in (id_column, "x", "y", "z"):
-        for c in df.columns:
-            # lower case, a unit in brackets left out, spaces as underscores
-            name = re.sub(r"\s*[\(\[][^\)\]]*[\)\]]$", "", str(c).strip().lower())
-            if name.replace(" ", "_") in TABLE_ALIASES[key] and c not in found.values():
-                found[key] = c
-                break
+    keys = (id_column, "x", "y", "z")
+    found = {
+        k: c for k, (c, _) in find_columns(df.columns, {k: TABLE_ALIASES[k] for k in keys}).items()
+    }
     missing = [k for k in (id_column, "x", "y") if k not in found]
     if missing:
         raise InputError(

@@ -93,16 +93,28 @@ def evaluate_stations(
 MIN_STATION_SEPARATION_M = 0.5
 
 
+def one_setup_twice(xy: np.ndarray) -> tuple[int, int, float] | None:
+    """The closest two of the positions ``xy`` (k, 2) [m] where they stand closer than
+    :data:`MIN_STATION_SEPARATION_M` (one set-up twice): their indices and distance [m];
+    None where no two do."""
+    xy = np.asarray(xy, dtype=float).reshape(-1, 2)
+    if len(xy) < 2:
+        return None
+    d = np.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1))
+    d[np.tri(len(xy), dtype=bool)] = np.inf
+    a, b = np.unravel_index(int(np.argmin(d)), d.shape)
+    return (int(a), int(b), float(d[a, b])) if d[a, b] < MIN_STATION_SEPARATION_M else None
+
+
 def _apart(xy: np.ndarray, ids) -> None:
     """An :class:`~planner.errors.InputError` naming the stations two positions put on top
     of each other."""
-    d = np.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1))
-    d[np.tri(len(xy), dtype=bool)] = np.inf
-    if len(xy) > 1 and d.min() < MIN_STATION_SEPARATION_M:
-        a, b = np.unravel_index(int(np.argmin(d)), d.shape)
+    pair = one_setup_twice(xy)
+    if pair is not None:
+        a, b, d = pair
         names = [ids[k] or "the new station" for k in (a, b)]
         raise InputError(
-            f"{names[1]} would stand {d[a, b]:.2f} m from {names[0]} (closer than "
+            f"{names[1]} would stand {d:.2f} m from {names[0]} (closer than "
             f"{MIN_STATION_SEPARATION_M:g} m: one set-up twice); put it elsewhere"
         )
 
@@ -182,6 +194,43 @@ def edit_targets(
     """
     t0 = time.perf_counter()
     wb = _workbench(p)
+    n_added = edit_candidates(p, remove=remove, move=move, add_xy=add_xy)
+    scans = p.scan_stations
+    idx = wb.add_positions(scans[["x", "y"]].to_numpy(dtype=float))
+    kept = {
+        i: (str(sid), str(pu))
+        for i, sid, pu in zip(idx.tolist(), scans["station_id"], scans["purpose"], strict=True)
+    }
+    hand = idx[(scans["purpose"] == "hand").to_numpy()]
+    done = [f"{len(remove)} ruled out"] if remove else []
+    done += [f"{len(move)} moved"] if move else []
+    done += [f"{n_added} added"] if n_added else []
+    q = _judged(p, wb, idx, hand, f"Targets edited by hand: {', '.join(done)}.", t0, kept)
+    q.solver = replace(p.solver, objective=q.solver.objective)
+    mine = int(wb.seen.by_hand.sum())
+    if mine:
+        used = q.network.targets if q.network is not None else []
+        n_used = int(wb.seen.by_hand[used].sum())
+        q.messages.append(
+            "Targets placed or moved by hand in this plan's edits: "
+            f"{n_used} of {mine} used by the registration"
+            + ("" if n_used == mine else " (the others no pair of stations needs or sees)")
+            + "."
+        )
+    return q
+
+
+def edit_candidates(
+    p: Plan,
+    *,
+    remove: tuple[str, ...] | list[str] = (),
+    move: dict[str, tuple[float, float]] | None = None,
+    add_xy: np.ndarray | None = None,
+) -> int:
+    """:func:`edit_targets`' edits made to the target candidates of ``p``'s workbench,
+    without judging the plan again (the caller judges): the old places barred, the new
+    ones offered as placed by hand. Returns the number of spheres added."""
+    wb = _workbench(p)
     tc, st, fac = wb.tc, wb.settings, wb.ctx.facades
     out = [_target_index(wb, p, t) for t in remove]
     n_added = 0
@@ -223,29 +272,7 @@ def edit_targets(
                 control_rms_mm=np.full(len(rows), np.nan),
             )
         )
-    scans = p.scan_stations
-    idx = wb.add_positions(scans[["x", "y"]].to_numpy(dtype=float))
-    kept = {
-        i: (str(sid), str(pu))
-        for i, sid, pu in zip(idx.tolist(), scans["station_id"], scans["purpose"], strict=True)
-    }
-    hand = idx[(scans["purpose"] == "hand").to_numpy()]
-    done = [f"{len(remove)} ruled out"] if remove else []
-    done += [f"{len(move)} moved"] if move else []
-    done += [f"{n_added} added"] if n_added else []
-    q = _judged(p, wb, idx, hand, f"Targets edited by hand: {', '.join(done)}.", t0, kept)
-    q.solver = replace(p.solver, objective=q.solver.objective)
-    mine = int(wb.seen.by_hand.sum())
-    if mine:
-        used = q.network.targets if q.network is not None else []
-        n_used = int(wb.seen.by_hand[used].sum())
-        q.messages.append(
-            "Targets placed or moved by hand in this plan's edits: "
-            f"{n_used} of {mine} used by the registration"
-            + ("" if n_used == mine else " (the others no pair of stations needs or sees)")
-            + "."
-        )
-    return q
+    return n_added
 
 
 def reoptimise(p: Plan, locked_xy: np.ndarray, progress: Progress | None = None) -> Plan:
