@@ -28,7 +28,8 @@ from _results import machine, write_section
 
 
 def run(n: int, workers: int) -> dict:
-    from planner.pipeline.district import partition, plan_district
+    from planner.pipeline.district.blocks import partition
+    from planner.pipeline.district.schedule import plan_district
     from planner.scanner import load_scanner
     from planner.synthetic import town
 

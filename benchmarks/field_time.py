@@ -13,8 +13,8 @@ from dataclasses import replace
 from _results import machine, write_section
 
 from planner.fieldwork import scan_points, scan_time_s
-from planner.pipeline.planning import plan
-from planner.pipeline.route import field_route
+from planner.pipeline.engine.planning import plan
+from planner.pipeline.field.route import field_route
 from planner.scanner import load_scanner
 
 #: What the makers' datasheets state of a full dome, for the comparison column.

@@ -28,8 +28,8 @@ from _results import machine, write_section
 def _truly_met(p) -> int:
     """Samples of plan ``p`` meeting the requirements once its network's registration
     error is added to the scanner's (judged exactly as the planner judges)."""
-    from planner.pipeline.evaluate import Context, assign_stations
-    from planner.pipeline.facades import build_facades
+    from planner.pipeline.evaluation.evaluate import Context, assign_stations
+    from planner.pipeline.geometry.facades import build_facades
 
     st = p.settings
     ctx = Context.build(
@@ -46,8 +46,8 @@ def _truly_met(p) -> int:
 
 
 def run(name: str, site) -> list[str]:
-    from planner.pipeline.planning import plan
-    from planner.pipeline.requirements import PlanSettings
+    from planner.pipeline.engine.planning import plan
+    from planner.pipeline.inputs.requirements import PlanSettings
 
     old = plan(site, settings=PlanSettings(registration_error=False))
     t0 = time.perf_counter()

@@ -14,8 +14,8 @@ import numpy as np
 from _results import machine, write_section
 from shapely.geometry import box
 
-from planner.pipeline.planning import plan
-from planner.pipeline.requirements import PlanSettings, Requirements
+from planner.pipeline.engine.planning import plan
+from planner.pipeline.inputs.requirements import PlanSettings, Requirements
 from planner.site import Building, Site
 from planner.synthetic import town
 

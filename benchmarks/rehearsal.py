@@ -11,7 +11,7 @@
    with no patch floor (``cloud_floor_mm = 0``: the simulation has no roughness); every
    cloud link's two scans rehearsed ``trials`` times at that step and registered by the
    independent ICP of ``tests/icp.py``; per axis, the RMS of the ICP's shift errors against
-   the link model's predicted σ (``planner.pipeline.clouds.cloud_link``), and the same
+   the link model's predicted σ (``planner.pipeline.network.clouds.cloud_link``), and the same
    with noise-free clouds (the negative control: the check can fail).
 
 Results: the ``rehearsal`` section of benchmarks/RESULTS.md.
@@ -32,13 +32,14 @@ sys.path.insert(0, str(HERE.parent / "tests"))
 from _results import machine, write_section  # noqa: E402
 from icp import link_errors  # noqa: E402
 
-from planner.pipeline.asscanned import replan  # noqa: E402
-from planner.pipeline.clouds import cloud_link, surfaces  # noqa: E402
-from planner.pipeline.planning import plan  # noqa: E402
-from planner.pipeline.pointclouds import e57_bytes, laz_bytes  # noqa: E402
-from planner.pipeline.rehearsal import DEFAULT_BEAMS_PER_STATION, rehearse  # noqa: E402
-from planner.pipeline.requirements import PlanSettings  # noqa: E402
-from planner.pipeline.scene import Scene  # noqa: E402
+from planner.pipeline.engine.judge import workbench_of  # noqa: E402
+from planner.pipeline.engine.planning import plan  # noqa: E402
+from planner.pipeline.geometry.scene import Scene  # noqa: E402
+from planner.pipeline.inputs.requirements import PlanSettings  # noqa: E402
+from planner.pipeline.network.clouds import cloud_link, surfaces  # noqa: E402
+from planner.pipeline.survey.asscanned import replan  # noqa: E402
+from planner.pipeline.survey.pointclouds import e57_bytes, laz_bytes  # noqa: E402
+from planner.pipeline.survey.rehearsal import DEFAULT_BEAMS_PER_STATION, rehearse  # noqa: E402
 from planner.synthetic import town  # noqa: E402
 
 
@@ -91,7 +92,7 @@ def replanning() -> list[str]:
 def agreement(trials: int) -> list[str]:
     st = PlanSettings(registration="cloud", cloud_floor_mm=0.0, step_mm_at_10m=60.0)
     p = plan(settings=st)
-    ctx = p.workbench.ctx
+    ctx = workbench_of(p).ctx
     at = p.scan_stations.set_index("station_id")
     rows = [
         "",

@@ -72,11 +72,12 @@ def run_case(case: str, time_limit_s: float | None = None) -> dict:
     """Run one case in this process and return its measurements."""
     import numpy as np
 
-    from planner.pipeline.candidates import candidate_grid
-    from planner.pipeline.evaluate import Context, evaluate_candidates
-    from planner.pipeline.facades import build_facades
-    from planner.pipeline.planning import plan, reach_m
-    from planner.pipeline.requirements import PlanSettings, Requirements
+    from planner.pipeline.engine.planning import plan
+    from planner.pipeline.evaluation.evaluate import Context, evaluate_candidates
+    from planner.pipeline.geometry.candidates import candidate_grid
+    from planner.pipeline.geometry.facades import build_facades
+    from planner.pipeline.inputs.requirements import PlanSettings, Requirements
+    from planner.pipeline.inputs.resolved import reach_m
     from planner.scanner import Scanner
 
     site = build_site(case)

@@ -4,7 +4,7 @@ plans from the same buildings' footprints, each audited against the model.
     .venv/bin/python benchmarks/scene3d.py            # writes the scene3d section of RESULTS.md
     .venv/bin/python benchmarks/scene3d.py --no-write
 
-1. Ray throughput (``planner.pipeline.scene.Scene``): occlusion and first-hit rays per
+1. Ray throughput (``planner.pipeline.geometry.scene.Scene``): occlusion and first-hit rays per
    second, and sight lines with their clearance (five rays each where the first is clear),
    on the synthetic LoD2 town of 20 buildings and on 2 000 random boxes (24 000 triangles,
    the issue's yardstick); the prism test's sight lines per second on the default site for
@@ -53,8 +53,8 @@ def _boxes_site(n: int = 2000):
 
 def throughput() -> list[dict]:
     from planner.cityio import site_from_cityjson
-    from planner.pipeline.scene import Scene
-    from planner.pipeline.visibility import clear_height
+    from planner.pipeline.geometry.scene import Scene
+    from planner.pipeline.geometry.visibility import clear_height
     from planner.siteio import default_site
     from planner.synthetic3d import lod2_town
 
@@ -147,9 +147,10 @@ def _cases():
 
 def plans() -> list[dict]:
     from planner.cityio import footprints_of
-    from planner.pipeline.audit import audit_plan
-    from planner.pipeline.planning import plan
-    from planner.pipeline.requirements import PlanSettings, Requirements
+    from planner.pipeline.engine.judge import workbench_of
+    from planner.pipeline.engine.planning import plan
+    from planner.pipeline.geometry.audit import audit_plan
+    from planner.pipeline.inputs.requirements import PlanSettings, Requirements
     from planner.siteio import site_from_geojson
 
     req = Requirements(max_xy_mm=6.0, max_z_mm=8.0)
@@ -174,7 +175,9 @@ def plans() -> list[dict]:
                     "hidden": int(counts.get("hidden", 0)),
                     "no_wall": int(counts.get("no wall", 0)),
                     "plan_s": took,
-                    "engine": p.workbench.ctx.scene.engine if p.workbench is not None else "",
+                    "engine": workbench_of(p).ctx.scene.engine
+                    if workbench_of(p) is not None
+                    else "",
                 }
             )
             print(rows[-1], flush=True)

@@ -24,8 +24,8 @@ sys.path.insert(0, str(HERE.parent / "tests"))
 from _results import machine, write_section  # noqa: E402
 from virtual_survey import report, survey, world_of  # noqa: E402
 
-from planner.pipeline.planning import plan  # noqa: E402
-from planner.pipeline.requirements import PlanSettings  # noqa: E402
+from planner.pipeline.engine.planning import plan  # noqa: E402
+from planner.pipeline.inputs.requirements import PlanSettings  # noqa: E402
 from planner.synthetic import town  # noqa: E402
 
 BEFORE = HERE / "virtual_survey_before.json"

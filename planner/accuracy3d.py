@@ -159,7 +159,7 @@ def point_rms_3d(
     ``incidence_noise``, grown with the 3-D incidence (:func:`incidence_ranging_rms_mm`).
     σ_τ, the tilt of the vertical axis: ``axis_tilt_rms_arcsec``, default the scanner's
     m_ν0 (a scan levelled on its own; a plan whose registration part carries the frame's
-    tilt counts 0 here, :meth:`planner.pipeline.requirements.PlanSettings
+    tilt counts 0 here, :meth:`planner.pipeline.inputs.requirements.PlanSettings
     .scan_tilt_rms_arcsec`).
 
     Examples

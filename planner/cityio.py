@@ -982,7 +982,7 @@ def _model_terrain(model: _Model, blds: list[Building], project) -> Terrain | No
 def footprints_of(site: Site) -> dict:
     """A model's buildings as a surveyor without the model draws them — each building's
     ground outline with the height of its highest point above its base — as a GeoJSON site
-    in the model's CRS (the comparison :mod:`planner.pipeline.audit` makes)."""
+    in the model's CRS (the comparison :mod:`planner.pipeline.geometry.audit` makes)."""
     feats = [
         {
             "type": "Feature",

@@ -5,7 +5,7 @@ against its :class:`Range`: finite, within what the quantity can physically be. 
 outside (``1e308`` mm, ``1e-300`` points a second, a port of 70 000) is an
 :class:`~planner.errors.InputError` naming the quantity, its unit and its range — never an
 overflow or a division by zero deep in the model. The requirements' and settings' ranges
-live with their fields (:mod:`planner.pipeline.requirements`); the scanner profile's, the
+live with their fields (:mod:`planner.pipeline.inputs.requirements`); the scanner profile's, the
 command line's and the server's are in :data:`RANGES`.
 """
 

@@ -4,7 +4,7 @@ Voroshilov & Karachentsev note, after their eq. 2, that once the stations are ti
 coordinate system m_x and m_y grow by the errors of the station coordinates and of the
 joining (their m_xc, m_yc). This module computes those errors per station, and per point,
 from the targets that tie the scans together. It goes beyond the paper; the model is the
-planner's, checked by a Monte Carlo of the whole chain in ``tests/test_registration.py``.
+planner's, checked by a Monte Carlo of the whole chain in ``tests/test_registration_error.py``.
 
 **Target centres.** A target's fitted centre is uncertain by (per axis) σ_t² = σ_floor² +
 (fit) + (systematic), with σ_r the ranging RMS and σ_l = S·m/ρ the lateral RMS of one point
@@ -382,7 +382,7 @@ def adjust(
     adjusted together). Stations not in ``tied`` keep zero covariance; the observations of
     ``target_rms_mm`` must tie every station in ``tied`` (the pairwise links that
     :func:`propagate` follows do). Checked by a Monte Carlo of rigid registrations in
-    ``tests/test_registration.py``.
+    ``tests/test_registration_error.py``.
     """
     k = len(station_xyz)
     control_rms_mm = control_rms_mm or {}

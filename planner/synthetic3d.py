@@ -6,7 +6,7 @@ model. The same seed gives the same model.
 
 The same town drawn as footprints with their highest point (:func:`footprints_geojson`) is
 what a plan made without the model sees: the comparison the planner's audit makes
-(:func:`planner.pipeline.audit.audit_plan`).
+(:func:`planner.pipeline.geometry.audit.audit_plan`).
 
 >>> model = lod2_town(4, seed=1)
 >>> sorted({o["type"] for o in model["CityObjects"].values()})

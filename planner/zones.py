@@ -37,7 +37,7 @@ from planner.errors import InputError
 
 __all__ = ["ZONE_KEYS", "Zone", "parse_zone", "read_zones", "zone_from_row"]
 
-#: What a zone may require (the names of :class:`planner.pipeline.requirements.Requirements`
+#: What a zone may require (the names of :class:`planner.pipeline.inputs.requirements.Requirements`
 #: fields; ``class`` is accepted for ``accuracy_class``).
 ZONE_KEYS = (
     "max_xy_mm",

@@ -17,8 +17,8 @@ from __future__ import annotations
 import numpy as np
 from scipy.spatial import cKDTree
 
-from planner.pipeline.clouds import GROUND_REACH_M
-from planner.pipeline.rehearsal import POINT_KINDS, rehearse
+from planner.pipeline.network.clouds import GROUND_REACH_M
+from planner.pipeline.survey.rehearsal import POINT_KINDS, rehearse
 
 NEIGHBOURS = 12
 PLANAR = 0.02  # smallest eigenvalue over the sum: a planar neighbourhood

@@ -81,7 +81,7 @@ def test_max_distance_3d_inverts_the_model(paper_scanner, component, gamma, nu):
 
 
 def test_planning_reports_theta_and_bounds_it(default_plan):
-    from planner.pipeline.planning import plan
+    from planner.pipeline.engine.planning import plan
 
     free = default_plan
     theta = free.scanned["incidence_deg"]

@@ -1,9 +1,8 @@
-"""planner.pipeline.asscanned and the dashboard's "As scanned" tab: re-planning from the
+"""planner.pipeline.survey.asscanned and the dashboard's "As scanned" tab: re-planning from the
 stations as scanned, and the registration report compared with the plan."""
 
 from __future__ import annotations
 
-import copy
 import datetime
 
 import numpy as np
@@ -14,10 +13,11 @@ from scipy.optimize import Bounds, LinearConstraint, milp
 from sites import run_cli as run
 
 from planner.errors import InputError
-from planner.pipeline.asscanned import compare_links, read_link_report, replan
-from planner.pipeline.planning import cover_demand, plan
-from planner.pipeline.pointclouds import read_poses
-from planner.pipeline.requirements import PlanSettings
+from planner.pipeline.engine.judge import copy_plan, workbench_of
+from planner.pipeline.engine.planning import cover_demand, plan
+from planner.pipeline.inputs.requirements import PlanSettings
+from planner.pipeline.survey.asscanned import compare_links, read_link_report, replan
+from planner.pipeline.survey.pointclouds import read_poses
 
 
 def _moved(p):
@@ -37,7 +37,7 @@ def test_replan_proposes_the_fewest_extra_stations_for_what_is_left():
     status = r.stations.set_index("station_id")["status"]
     assert status["S05"] == "skipped" and status["S02"] == "moved" and status["S01"] == "as planned"
     assert r.stations.set_index("station_id").loc["S02", "moved_m"] == pytest.approx(3.0)
-    wb = r.plan.workbench  # the re-plan's (it works on a copy of the plan)
+    wb = workbench_of(r.plan)  # the re-plan's (it works on a copy of the plan)
     ok = wb.evaluation.ok
     forced = wb.add_positions(scanned[["x", "y"]].to_numpy())
     demand = cover_demand(wb.ctx, np.asarray(ok.sum(axis=1)).ravel())
@@ -62,7 +62,7 @@ def test_replan_proposes_the_fewest_extra_stations_for_what_is_left():
 
 
 def test_nothing_changed_means_nothing_extra(default_plan):
-    p = copy.deepcopy(default_plan)  # (a re-plan adds to the plan's workbench)
+    p = copy_plan(default_plan)  # (a re-plan adds to the plan's workbench)
     scanned = p.scan_stations[["station_id", "x", "y"]]
     r = replan(p, scanned)
     assert r.extra.empty and (r.stations["status"] == "as planned").all()
@@ -143,7 +143,7 @@ def test_the_dashboard_replans_from_an_uploaded_csv_and_offers_the_extra_booklet
 
 
 def test_a_scan_where_no_station_can_stand_is_named(default_plan):
-    p = copy.deepcopy(default_plan)
+    p = copy_plan(default_plan)
     scanned = p.scan_stations[["station_id", "x", "y"]].copy()
     scanned.loc[scanned["station_id"] == "S03", ["x", "y"]] = (691010.0, 5335005.0)  # inside
     with pytest.raises(InputError, match=r"station S03 as scanned .* inside building main"):
@@ -240,7 +240,7 @@ def test_the_extra_stations_booklet_has_their_pages(default_plan, monkeypatch):
 
 
 def test_replan_checks_it_starts_from_the_plan_the_crew_followed(default_plan, tmp_path):
-    from planner.pipeline.asscanned import check_same_plan
+    from planner.pipeline.survey.asscanned import check_same_plan
 
     folder = tmp_path / "plan"
     folder.mkdir()

@@ -12,7 +12,7 @@ import pandas as pd
 import pytest
 from sites import run_cli
 
-from planner.pipeline.clock import MAX_PACE, Clock
+from planner.pipeline.inputs.clock import MAX_PACE, Clock
 from planner.synthetic import town, town_geojson
 
 

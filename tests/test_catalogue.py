@@ -14,8 +14,8 @@ import pytest
 
 from planner.accuracy import height_rms, planimetric_rms
 from planner.accuracy3d import footprint_mm, point_rms_3d
-from planner.pipeline.planning import plan
-from planner.pipeline.requirements import PlanSettings, Requirements
+from planner.pipeline.engine.planning import plan
+from planner.pipeline.inputs.requirements import PlanSettings, Requirements
 from planner.scanner import Scanner, catalogue
 from planner.siteio import default_site
 from planner.spacing import facade_spacing_kernel

@@ -15,7 +15,7 @@ import shapely
 
 from planner.cityio import read_city_model, site_from_cityjson
 from planner.errors import InputError
-from planner.pipeline.facades import build_facades
+from planner.pipeline.geometry.facades import build_facades
 from planner.synthetic3d import lod2_town, write_model
 
 DATA = Path(__file__).parent / "data" / "citymodels"

@@ -5,10 +5,17 @@ from __future__ import annotations
 import io
 import subprocess
 import sys
+from dataclasses import fields
 
 import pandas as pd
 import pytest
 from sites import run_cli as run
+
+from planner.pipeline.inputs.requirements import (
+    PlanSettings,
+    Requirements,
+)
+from planner.scanner import DEFAULT_SCANNER
 
 
 def test_accuracy_prints_both_tables_for_the_paper_scanner():
@@ -116,9 +123,8 @@ def test_every_command_prints_its_help():
 def test_plan_help_shows_every_setting_under_its_group():
     """The settings' groups (PlanSettings' fields, one declaration) are the help's sections:
     every setting's option stands under its group's title, none elsewhere."""
-    from dataclasses import fields
 
-    from planner.pipeline.requirements import SETTING_GROUPS, PlanSettings, setting_groups
+    from planner.pipeline.inputs.requirements import SETTING_GROUPS, setting_groups
 
     assert {f.metadata.get("group") for f in fields(PlanSettings)} == set(SETTING_GROUPS)
     code, out, _ = run("plan", "--help")
@@ -141,3 +147,9 @@ def test_plan_help_shows_every_setting_under_its_group():
             )
     assert "--grid-m" not in sections["registration and targets"]
     assert "--max-z-mm" in sections["requirements"]
+
+
+def test_cli_defaults_are_the_data_class_defaults(tmp_path):
+    code, out, err = run("plan", "--out", str(tmp_path / "p"), "-q")
+    assert code == 0, err
+    assert f"Scanner {DEFAULT_SCANNER}; required {Requirements().describe()}" in out

@@ -13,9 +13,9 @@ import pytest
 import shapely
 from sites import courtyard_site, poly, rect
 
-from planner.pipeline.control import CONTROL_SHOT_MM
-from planner.pipeline.planning import plan
-from planner.pipeline.requirements import PlanSettings, Requirements
+from planner.pipeline.engine.planning import plan
+from planner.pipeline.inputs.requirements import PlanSettings, Requirements
+from planner.pipeline.network.control import CONTROL_SHOT_MM
 from planner.registration_error import CONTROL, Link, propagate, transport_pose_cov
 from planner.site import Building, Passage, Site
 from planner.targets import parse_inventory
@@ -67,7 +67,7 @@ def test_stations_edited_by_hand_on_a_plan_with_a_traverse(gated):
     which stand on scanner stations): the scanner stations are judged again under their
     ids and purposes, the traverse is planned again with the network, not taken for
     stations placed by hand."""
-    from planner.pipeline.whatif import evaluate_stations
+    from planner.pipeline.engine.whatif import evaluate_stations
 
     p = gated
     q = evaluate_stations(p, p.stations[["x", "y"]].to_numpy(), list(p.stations["station_id"]))
@@ -83,7 +83,7 @@ def test_stations_edited_by_hand_on_a_plan_with_a_traverse(gated):
 
 
 def _stakeout(p) -> str:
-    from planner.pipeline.deliver import stakeout_csv
+    from planner.pipeline.documents.deliver import stakeout_csv
 
     return stakeout_csv(p)
 

@@ -542,7 +542,7 @@ def test_the_map_zooms_keeps_labels_apart_picks_a_facade_and_draws_a_passage(pag
     facade" mode picks that wall for a zone and the end of its range dragged along the wall
     sets the zone's range; two clicks across a building in "Draw a passage" mode add a
     gateway, and the plan is out of date."""
-    from planner.pipeline.facades import build_facades
+    from planner.pipeline.geometry.facades import build_facades
     from planner.siteio import default_site
 
     _open_map(page)

@@ -13,16 +13,12 @@ from sites import rect
 from sites import run_cli as cli
 
 from planner.errors import InputError
-from planner.pipeline.district import (
-    block_region,
-    block_site,
-    local_cluster,
-    partition,
-    plan_district,
-    stitch,
-)
-from planner.pipeline.planning import plan
-from planner.pipeline.requirements import PlanSettings, Requirements
+from planner.pipeline.district.blocks import block_region, block_site, partition
+from planner.pipeline.district.schedule import local_cluster, plan_district
+from planner.pipeline.district.stitch import stitch
+from planner.pipeline.engine.judge import workbench_of
+from planner.pipeline.engine.planning import plan
+from planner.pipeline.inputs.requirements import PlanSettings, Requirements
 from planner.scanner import load_scanner
 from planner.site import Building, Passage, Site
 from planner.synthetic import town
@@ -74,7 +70,7 @@ def test_a_block_site_keeps_a_passage_with_its_building():
     assert block_site(site, block, 77.0).passages == []
     assert block_site(site, block, 85.0).passages == [gate]  # the building in the halo
     # a seam's context over a region holding the gateway's end but not its building
-    from planner.pipeline.seams import context_of
+    from planner.pipeline.network.seams import context_of
 
     make = context_of(site, UNLEVELLED, Requirements(), SETTINGS, 60.0)
     assert make(rect(15, 0, 99, 20)).site.passages == []
@@ -127,9 +123,9 @@ def test_stitched_matches_the_single_process_plan_within_its_bound(stitched, dis
 
 
 def test_unreachable_scheduler_is_exit_2(tmp_path, monkeypatch):
-    import planner.pipeline.district as district
+    from planner.pipeline.district import schedule
 
-    monkeypatch.setattr(district, "SCHEDULER_TIMEOUT_S", 0.5)  # nothing answers on port 9
+    monkeypatch.setattr(schedule, "SCHEDULER_TIMEOUT_S", 0.5)  # nothing answers on port 9
     code, _, err = cli(
         "plan", "--scheduler", "tcp://127.0.0.1:9", "--out", str(tmp_path / "p"), "-q"
     )
@@ -150,8 +146,8 @@ def test_a_worker_that_dies_is_exit_2_and_nothing_written(tmp_path):
     with cluster, Client(cluster) as client:
         client.run(  # in the worker's process: planning a block ends it
             exec,
-            "import os, planner.pipeline.district as d\n"
-            "d._plan_block = lambda *a, **k: os._exit(1)",
+            "import os, planner.pipeline.district.blocks as d\n"
+            "d.plan_block = lambda *a, **k: os._exit(1)",
         )
         out = tmp_path / "p"
         code, _, err = cli("plan", "--scheduler", cluster.scheduler_address, "--out", str(out))
@@ -174,8 +170,8 @@ def test_a_worker_that_dies_on_the_bound_leaves_the_plan_standing(tmp_path):
     with cluster, Client(cluster) as client:
         client.run(
             exec,
-            "import os, planner.pipeline.district as d\n"
-            "d._shared_bound = lambda *a, **k: os._exit(1)",
+            "import os, planner.pipeline.district.bounds as d\n"
+            "d.shared_bound = lambda *a, **k: os._exit(1)",
         )
         out = tmp_path / "p"
         code, _, err = cli("plan", "--scheduler", cluster.scheduler_address, "--out", str(out))
@@ -227,7 +223,7 @@ def test_local_workers_keep_the_dynamic_mmap_threshold():
 
 def _table(rows):
     """A meeting table from (facade, sample, station, own) rows on distinct points."""
-    from planner.pipeline.schema import MEETING_COLUMNS, METRIC_KEYS
+    from planner.pipeline.inputs.schema import MEETING_COLUMNS, METRIC_KEYS
 
     out = pd.DataFrame(
         [
@@ -242,7 +238,7 @@ def _table(rows):
 
 
 def test_a_station_another_block_makes_redundant_is_found():
-    from planner.pipeline.district import redundant_stations
+    from planner.pipeline.district.stitch import redundant_stations
 
     stations = pd.DataFrame(
         {"station_id": ["K1-S01", "K1-S02", "K2-S01"], "purpose": ["cover"] * 3}
@@ -278,7 +274,7 @@ def test_a_station_another_block_makes_redundant_is_found():
     moved.loc[3, "x"] += 0.01
     assert redundant_stations(stations, coverage, links, moved) == []
     # … and that view is not one a moved sample can be given either
-    from planner.pipeline.district import _counting_pairs
+    from planner.pipeline.district.stitch import _counting_pairs
 
     assert len(_counting_pairs(coverage, moved)) == 3
     assert len(_counting_pairs(coverage, meeting)) == 4
@@ -305,8 +301,8 @@ def test_a_station_another_block_makes_redundant_is_found():
 @pytest.fixture(scope="module")
 def blockwise(district):
     """The blocks of the small district planned in this process, with their meeting tables."""
-    from planner.pipeline.district import block_region, meeting_table
-    from planner.pipeline.planning import reach_m
+    from planner.pipeline.district.blocks import block_region, meeting_table
+    from planner.pipeline.inputs.resolved import reach_m
 
     site, blocks = district
     req = Requirements()
@@ -319,7 +315,7 @@ def blockwise(district):
 def test_the_meeting_table_agrees_with_the_coverage(blockwise):
     import shapely
 
-    from planner.pipeline.district import block_region
+    from planner.pipeline.district.blocks import block_region
 
     _, blocks, plans, tables, halo = blockwise
     assert any((~t["own"]).any() for t in tables)  # stations do meet samples across edges
@@ -357,7 +353,7 @@ def test_stitching_removes_redundant_stations_and_keeps_every_sample(blockwise):
     # a reason naming a block's station names it by its id in the whole plan
     import copy
 
-    from planner.pipeline.tables import REASON_DATA, Reason
+    from planner.pipeline.engine.tables import REASON_DATA, Reason
 
     first = copy.copy(plans[0])
     first.coverage = first.coverage.copy()
@@ -381,11 +377,11 @@ def test_stitching_removes_redundant_stations_and_keeps_every_sample(blockwise):
 
 
 def test_meeting_reach_is_the_farthest_meeting_pair(blockwise):
-    from planner.pipeline.district import meeting_reach
+    from planner.pipeline.district.blocks import meeting_reach
 
     _, _, plans, _, halo = blockwise
     for p in plans:
-        wb = p.workbench
+        wb = workbench_of(p)
         i, j = np.nonzero(wb.evaluation.ok.toarray())
         farthest = np.hypot(*(wb.facades.xy[i] - wb.pool[j]).T).max()
         assert meeting_reach(p, rows_per_chunk=7) == pytest.approx(farthest, abs=1e-9)  # m
@@ -393,7 +389,7 @@ def test_meeting_reach_is_the_farthest_meeting_pair(blockwise):
 
 
 def test_shared_prices_split_a_candidate_between_the_blocks_holding_it():
-    from planner.pipeline.district import shared_prices
+    from planner.pipeline.district.bounds import shared_prices
 
     a = np.array([[0.0, 0.0], [2.0, 0.0], [4.0, 0.0]])
     b = np.array([[4.0, 0.0], [6.0, 0.0]])
@@ -428,8 +424,8 @@ def test_shared_bounds_add_up_to_a_bound_of_the_whole():
     a station serves two strips)."""
     import scipy.sparse as sp
 
-    from planner.pipeline.district import shared_prices
-    from planner.pipeline.optimise import lp_bound
+    from planner.pipeline.district.bounds import shared_prices
+    from planner.pipeline.optimise.cover import lp_bound
 
     rng = np.random.default_rng(3)
     reach, edges = 18.0, np.array([0.0, 50.0, 100.0, 150.0, 200.0])
@@ -469,7 +465,8 @@ def test_blocks_farther_apart_than_their_meeting_reaches_add_their_bounds():
 
     from shapely.geometry import box
 
-    from planner.pipeline.district import Block, _honest_bound
+    from planner.pipeline.district.blocks import Block
+    from planner.pipeline.district.bounds import honest_bound
 
     blocks = [Block("K01", ("a",), box(0, 0, 10, 10)), Block("K02", ("b",), box(110, 0, 120, 10))]
 
@@ -479,16 +476,16 @@ def test_blocks_farther_apart_than_their_meeting_reaches_add_their_bounds():
             for b in (7, 5)
         ]
 
-    assert _honest_bound(blocks, plans(30.0), 80.0) == 12
-    assert _honest_bound(blocks, plans(60.0), 80.0) == 7
-    assert _honest_bound(blocks, plans(np.inf), 80.0) == 7  # never beyond the reach
-    assert _honest_bound(blocks, plans(30.0), 40.0) == 12
+    assert honest_bound(blocks, plans(30.0), 80.0) == 12
+    assert honest_bound(blocks, plans(60.0), 80.0) == 7
+    assert honest_bound(blocks, plans(np.inf), 80.0) == 7  # never beyond the reach
+    assert honest_bound(blocks, plans(30.0), 40.0) == 12
 
 
 def test_auto_plans_block_by_block_only_when_one_process_is_not_enough():
     """The work estimate decides, not a block line: the default site (about 1 000 samples)
     and a 10-building city block in one process, the 50-building town on Dask."""
-    from planner.pipeline.district import needs_district
+    from planner.pipeline.district.blocks import needs_district
     from planner.siteio import default_site
 
     st = PlanSettings()
@@ -506,20 +503,14 @@ def test_the_blocks_networks_are_tied_into_one_across_their_seams(blockwise):
     seam carries the seam's error on top of its own: larger registration errors, never
     smaller; the seams are links of the plan. Negative control: without the frames kept,
     the blocks stay apart and nothing changes."""
-    import copy
 
-    from planner.pipeline.district import keep_frame
+    from planner.pipeline.district.blocks import keep_frame
 
     site, blocks, plans, _tables, halo = blockwise
     req = Requirements()
     apart = stitch(site, UNLEVELLED, req, SETTINGS, blocks, plans, halo)
-    kept = []
-    for p in plans:
-        q = copy.copy(p)
-        q.coverage, q.solver = p.coverage.copy(), copy.copy(p.solver)
-        keep_frame(q)
-        kept.append(q)
-    one = stitch(site, UNLEVELLED, req, SETTINGS, blocks, kept, halo)
+    frames = [keep_frame(p) for p in plans]
+    one = stitch(site, UNLEVELLED, req, SETTINGS, blocks, plans, halo, frames=frames)
     note = next(m for m in one.messages if m.startswith("District network:"))
     assert f"{len(blocks)} of {len(blocks)} blocks tied into one frame" in note
     assert not any(m.startswith("District network:") for m in apart.messages)
@@ -533,7 +524,7 @@ def test_the_blocks_networks_are_tied_into_one_across_their_seams(blockwise):
         grown = b[f"reg_m_{c}_mm"] - a.loc[b.index, f"reg_m_{c}_mm"]
         assert (grown.dropna() >= -1e-9).all()  # mm: the seams only add
         assert (grown.dropna() > 1e-3).any()
-    assert "_lim_m_x" not in one.coverage.columns
+    assert list(one.coverage.columns) == list(apart.coverage.columns)  # nothing hidden
     lost = a["meets"] & ~b.loc[a.index, "meets"]
     assert b.loc[a.index[lost], "reason"].str.contains("once its block is tied").all()
 
@@ -544,18 +535,14 @@ def test_one_datums_tilt_leans_the_whole_district(blockwise):
     to every block however far. Every sample of the other block is at least as uncertain in
     height as the lean at its distance from that datum; within its own block, about its
     own datum, many were less."""
-    import copy
 
-    from planner.pipeline.district import keep_frame
+    from planner.pipeline.district.blocks import keep_frame
 
     site, blocks, plans, _tables, halo = blockwise
-    plans = [copy.copy(q) for q in plans]  # the fixture's plans stay as they are
-    for q in plans:
-        q.coverage, q.solver = q.coverage.copy(), copy.copy(q.solver)
-        keep_frame(q)  # as a worker does
-    p = stitch(site, UNLEVELLED, Requirements(), SETTINGS, blocks, plans, halo)
+    frames = [keep_frame(q) for q in plans]  # as a worker does
+    p = stitch(site, UNLEVELLED, Requirements(), SETTINGS, blocks, plans, halo, frames=frames)
     root = max(range(len(plans)), key=lambda k: len(plans[k].stations))
-    datum = plans[root].block_frame.datum  # the root block's datum (x, y, z)
+    datum = frames[root].datum  # the root block's datum (x, y, z)
     key = blocks[root].key
     cov = p.scanned[~p.scanned["station_id"].str.startswith(key) & (p.scanned["station_id"] != "")]
     assert len(cov) > 50

@@ -1,13 +1,13 @@
 """A requirement too strict gives the plan that comes closest (best effort) and says which
-quantity fails, where, by how much, and what would meet it (planner.pipeline.explain)."""
+quantity fails, where, by how much, and what would meet it (planner.pipeline.engine.explain)."""
 
 import re
 
 import pytest
 
-from planner.pipeline.explain import explain_unmet, relaxation_text, suggestions
-from planner.pipeline.planning import plan
-from planner.pipeline.requirements import Requirements
+from planner.pipeline.engine.explain import explain_unmet, relaxation_text, suggestions
+from planner.pipeline.engine.planning import plan
+from planner.pipeline.inputs.requirements import Requirements
 
 
 @pytest.fixture(scope="module")

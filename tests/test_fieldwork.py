@@ -14,9 +14,9 @@ from sites import E0, N0, rect, square_site
 
 from planner.app.booklet import booklet_pdf, compass
 from planner.fieldwork import scan_points, scan_time_s
-from planner.pipeline.planning import plan
-from planner.pipeline.requirements import PlanSettings
-from planner.pipeline.route import _open_path_order, field_route, walk_paths
+from planner.pipeline.engine.planning import plan
+from planner.pipeline.field.route import _open_path_order, field_route, walk_paths
+from planner.pipeline.inputs.requirements import PlanSettings
 from planner.scanner import load_scanner
 from planner.site import Area, Building, Site
 from planner.siteio import default_site
@@ -274,8 +274,8 @@ def test_the_plan_picks_the_coarsest_setting_the_spacing_allows():
     """No spacing required: the scanner's usual setting; a spacing required at the search
     radius: the coarsest setting meeting it; a step given: that step (and its setting's
     name)."""
-    from planner.pipeline.planning import reach_m
-    from planner.pipeline.requirements import Requirements
+    from planner.pipeline.inputs.requirements import Requirements
+    from planner.pipeline.inputs.resolved import reach_m
 
     sc = load_scanner("leica-rtc360")
     st = PlanSettings()
@@ -298,7 +298,7 @@ def test_the_plan_picks_the_coarsest_setting_the_spacing_allows():
 
 # -- setting out and the kit -------------------------------------------------------------------
 def test_tape_ties_and_wall_places_in_a_crews_words():
-    from planner.pipeline.setout import corner_ties, wall_place
+    from planner.pipeline.field.setout import corner_ties, wall_place
 
     site = Site([Building("A", rect(0, 0, 20, 10), 12.0)])
     (ties,) = corner_ties(site, np.array([[E0 + 23.0, N0 - 4.0]]))
@@ -346,7 +346,7 @@ def test_a_station_page_says_where_everything_goes(default_plan):
     from matplotlib.text import Text
 
     from planner.app import booklet as bk
-    from planner.pipeline.route import view_sectors
+    from planner.pipeline.field.route import view_sectors
 
     p = default_plan
     sectors = view_sectors(p.stations, p.coverage, p.targets)

@@ -36,8 +36,8 @@ from sites import run_cli
 import planner
 from planner import gdalio
 from planner.errors import InputError
-from planner.pipeline.export import OWNED_FILES
-from planner.pipeline.requirements import PlanSettings, Requirements, field_specs
+from planner.pipeline.documents.export import OWNED_FILES
+from planner.pipeline.inputs.requirements import PlanSettings, Requirements, field_specs
 from planner.ranges import RANGES, Range, check_number
 from planner.synthetic import densified
 from planner.text import printable
@@ -521,9 +521,9 @@ def test_a_malformed_scheduler_address_is_exit_2_before_any_work(tmp_path, addre
 @pytest.fixture()
 def quick_connect(monkeypatch):
     """The scheduler's connection deadline at 3 s (1 s for Dask, three times over)."""
-    from planner.pipeline import district
+    from planner.pipeline.district import schedule
 
-    monkeypatch.setattr(district, "SCHEDULER_TIMEOUT_S", 1.0)
+    monkeypatch.setattr(schedule, "SCHEDULER_TIMEOUT_S", 1.0)
 
 
 def _peer(kind: str) -> tuple[socket.socket, int]:
@@ -586,7 +586,7 @@ def test_any_scheduler_text_is_an_address_or_input_error(text):
     more; anything else is an InputError (never another exception)."""
     from urllib.parse import urlsplit
 
-    from planner.pipeline.district import SCHEDULER_SCHEMES, scheduler_address
+    from planner.pipeline.district.schedule import SCHEDULER_SCHEMES, scheduler_address
 
     try:
         assert scheduler_address(text) == text
@@ -746,7 +746,7 @@ def test_an_audit_or_a_profile_written_over_its_input_is_refused(tmp_path):
 
 @PROPERTY
 @given(
-    name=st.sampled_from(sorted(__import__("planner.pipeline.export").pipeline.export.OWNED_FILES)),
+    name=st.sampled_from(sorted(OWNED_FILES)),
     other=st.text(alphabet="abcdefghijklmnopqrstuvwxyz-_.", min_size=1, max_size=12),
 )
 def test_no_output_is_written_over_an_input(tmp_path_factory, name, other):
@@ -800,7 +800,7 @@ def test_a_dense_outline_is_thinned_and_noted():
     """A 100 × 60 m building drawn with 20 000 vertices (its edges 16 mm) plans as four
     facades, and the thinning is in site_repairs.csv; a negative control of 4 000 vertices
     (under the limit) keeps them."""
-    from planner.pipeline.facades import build_facades
+    from planner.pipeline.geometry.facades import build_facades
     from planner.site import Building, Site
 
     def dense(n: int) -> shapely.Polygon:
@@ -817,8 +817,8 @@ def test_a_dense_outline_is_thinned_and_noted():
 
 def _zone_by_zone(zones, reqs, members, site_req, n):
     """The zones applied one by one, in order, as before this round (the reference)."""
-    from planner.pipeline.requirements import CHECKS
-    from planner.pipeline.zoning import SampleRequirements
+    from planner.pipeline.geometry.zoning import SampleRequirements
+    from planner.pipeline.inputs.requirements import CHECKS
 
     out = SampleRequirements.uniform(site_req, n)
     covered = np.zeros(n, dtype=bool)
@@ -851,8 +851,8 @@ def test_many_zones_are_applied_as_zone_by_zone(default_plan, distinct):
     one by one, as before; one Requirements per distinct requirement."""
     from dataclasses import replace
 
-    from planner.pipeline.facades import build_facades
-    from planner.pipeline.zoning import apply_zones
+    from planner.pipeline.geometry.facades import build_facades
+    from planner.pipeline.geometry.zoning import apply_zones
     from planner.zones import Zone
 
     rng = np.random.default_rng(7)

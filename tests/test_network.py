@@ -12,10 +12,11 @@ import pytest
 from sites import l_site
 from sites import run_cli as _cli
 
-from planner.pipeline.evaluate import Context, assign_stations, evaluate_stations
-from planner.pipeline.facades import build_facades
-from planner.pipeline.planning import plan
-from planner.pipeline.requirements import PlanSettings, Requirements
+from planner.pipeline.engine.judge import workbench_of
+from planner.pipeline.engine.planning import plan
+from planner.pipeline.evaluation.evaluate import Context, assign_stations, evaluate_stations
+from planner.pipeline.geometry.facades import build_facades
+from planner.pipeline.inputs.requirements import PlanSettings, Requirements
 from planner.scanner import Scanner
 from planner.synthetic import town
 
@@ -156,8 +157,8 @@ def test_a_sample_the_registration_estimate_leaves_is_still_covered_by_the_scann
     from 113 m at 80° incidence, "the chosen stations do not cover this sample"). It is now
     covered by a station meeting it by the scanner's error, where only the registration
     error can still fail it."""
-    from planner.pipeline.district import block_site, partition
-    from planner.pipeline.planning import reach_m
+    from planner.pipeline.district.blocks import block_site, partition
+    from planner.pipeline.inputs.resolved import reach_m
     from planner.scanner import load_scanner
 
     site, scanner, st = town(50, seed=0), load_scanner("leica-4mm-60urad"), PlanSettings()
@@ -165,7 +166,7 @@ def test_a_sample_the_registration_estimate_leaves_is_still_covered_by_the_scann
     halo = reach_m(scanner, Requirements(), st)
     p = plan(block_site(site, block, halo), scanner)
     c = p.coverage
-    wb = p.workbench
+    wb = workbench_of(p)
     meetable = (np.asarray(wb.evaluation.ok.sum(axis=1)).ravel() > 0) & ~c["party_wall"]
     by_scanner = np.all(
         [c[f"scanner_m_{k}_mm"] <= wb.ctx.limits[f"m_{k}"] + 1e-9 for k in "xyz"], axis=0
@@ -195,7 +196,7 @@ def test_poor_targets_are_named_as_the_reason():
 
 
 def test_links_csv_and_geojson_carry_the_per_link_report(default_plan, tmp_path):
-    from planner.pipeline.export import save
+    from planner.pipeline.documents.export import save
 
     save(default_plan, tmp_path / "plan")
     links = pd.read_csv(tmp_path / "plan" / "links.csv")
@@ -310,7 +311,7 @@ def _queue_bfs(common_pp, common_ps, groups):
 def test_bridge_search_finds_the_queue_searchs_chain():
     """The level-at-a-time search returns the very chain of a plain queue search (or none
     where it finds none), on random pools of linking candidates."""
-    from planner.pipeline.registration import _bfs_chain
+    from planner.pipeline.network.bridges import _bfs_chain
 
     rng = np.random.default_rng(8)
     found = 0
@@ -331,7 +332,7 @@ def test_the_pool_s_hops_are_made_only_for_the_candidates_the_search_reaches():
     """The search for linking stations reads the pool's hop matrix a row at a time: the
     same chains as from the whole matrix, rows made only for the candidates reached (none
     where a candidate beside the stations links them), and a hop struck off both ways."""
-    from planner.pipeline.registration import _bfs_chain, _PoolHops, _target_hops
+    from planner.pipeline.network.bridges import _bfs_chain, _PoolHops, _target_hops
 
     rng = np.random.default_rng(9)
     made = asked = 0
@@ -368,7 +369,7 @@ def test_a_datum_station_in_the_middle_keeps_the_block_s_heights(block_plan, mon
     The ten-building block's first network leaves a third of its samples short in m_z,
     nearly all by that lean; one station nearer the middle, held as the datum, meets them
     (the far heights lean about it instead). Without that step the plan meets fewer."""
-    import planner.pipeline.judge as judge
+    import planner.pipeline.engine.judge as judge
 
     p = block_plan
     monkeypatch.setattr(judge, "datum_station", lambda *_a: None)
@@ -383,9 +384,9 @@ def test_a_search_over_many_candidates_keeps_one_bit_per_pair(default_plan):
     candidates can use: the answer is the full sights' usable field to the bit, for the
     candidates kept as stations and the others alike, a barred target used by none; of the
     others only that field is kept (town(30), default settings: peak memory 711 -> 440 MB)."""
-    from planner.pipeline.registration import sights
+    from planner.pipeline.network.targets import sights
 
-    seen = default_plan.workbench.seen
+    seen = workbench_of(default_plan).seen
     mine = seen.fork(list(seen.column))  # (the session's plan keeps its own cache)
     kept = list(mine.column)
     step = max(1, len(mine.cand_xy) // 300)
@@ -417,15 +418,16 @@ def test_links_made_only_when_the_tree_search_reaches_them_give_the_same_trees(
     targets, fewer links are made and a bound says more than the link's own error."""
     from dataclasses import replace
 
-    from planner.pipeline.registration import _components, _Layout, _tree
+    from planner.pipeline.network.bridges import link_groups
+    from planner.pipeline.network.layout import Layout, _tree
 
     p = request.getfixturevalue(which)
-    seen, stations = p.workbench.seen, [int(s) for s in p.network.stations]
+    seen, stations = workbench_of(p).seen, [int(s) for s in p.network.stations]
 
     def layout():  # a cache of its own each: no link known beforehand
         mine = seen.fork(stations)
         mine.ctx = replace(mine.ctx, settings=replace(mine.ctx.settings, registration=mode))
-        return _Layout(mine.ctx, mine, mine.cand_xy, stations, {}, goal_mm=2.0)
+        return Layout(mine.ctx, mine, mine.cand_xy, stations, {}, goal_mm=2.0)
 
     lazy, eager = layout(), layout()
     assert lazy.mode == mode
@@ -454,6 +456,6 @@ def test_links_made_only_when_the_tree_search_reaches_them_give_the_same_trees(
             ab for ab in eager.pairs if min(eager.link(*ab)[1], eager.link(*ab[::-1])[1]) <= weak
         ]
         groups = fresh.weak_groups(weak)  # (the links it made for the last limit kept)
-        np.testing.assert_array_equal(groups, _components(eager.k, every))
+        np.testing.assert_array_equal(groups, link_groups(eager.k, every))
         splits.append(int(groups.max()))
     assert max(splits) > 0 and min(splits) == 0  # split into groups, and joined

@@ -12,9 +12,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.optimize import linprog
 
-import planner.pipeline.optimise as opt
+import planner.pipeline.optimise.cover as opt
 from planner.errors import PlannerError
-from planner.pipeline.reduce import reduce_cover, subset_pairs
+from planner.pipeline.optimise.reduce import reduce_cover, subset_pairs
 
 
 def random_cover(n_rows=80, n_cols=120, density=0.05, seed=3, max_demand=1):
@@ -251,7 +251,7 @@ def test_milp_method_is_strict(monkeypatch):
 
 
 def _unreduced(a, d):
-    from planner.pipeline.reduce import Reduced
+    from planner.pipeline.optimise.reduce import Reduced
 
     a = sp.csr_matrix(a)
     return Reduced(a=a, demand=d, columns=np.arange(a.shape[1]), forced=np.empty(0, dtype=int))
@@ -301,7 +301,7 @@ def test_copied_columns_go_first_and_the_optimum_stays():
     problem keeps the optimum of the whole (an integer program on both)."""
     from scipy.optimize import Bounds, LinearConstraint, milp
 
-    from planner.pipeline.reduce import _copies
+    from planner.pipeline.optimise.reduce import _copies
 
     cols = sp.csr_matrix(np.array([[1, 0, 1], [0, 1, 0], [1, 0, 1], [1, 0, 1], [0, 0, 0]]))
     assert _copies(cols).tolist() == [False, False, True, True, False]

@@ -13,10 +13,11 @@ import shapely
 from shapely.geometry import LineString, box
 from sites import E0, N0, rect
 
-from planner.pipeline.facades import bridge_edges, build_facades, footprint_edges
-from planner.pipeline.planning import plan
-from planner.pipeline.requirements import PlanSettings, Requirements
-from planner.pipeline.visibility import bridge_interval, clear_height, visible
+from planner.pipeline.engine.planning import plan
+from planner.pipeline.geometry.facades import build_facades
+from planner.pipeline.geometry.scene import bridge_edges, footprint_edges
+from planner.pipeline.geometry.visibility import bridge_interval, clear_height, visible
+from planner.pipeline.inputs.requirements import PlanSettings, Requirements
 from planner.site import Building, Passage, Site
 from planner.siteio import read_site
 from planner.synthetic import town
@@ -194,7 +195,7 @@ def test_without_its_gateway_the_courtyard_is_named_and_nothing_is_spent_on_it(
     assert inside.sum() >= 150
     assert closed.scanned["meets"].sum() < gated.scanned["meets"].sum() - 150
     # no station in the courtyard was added for the registration error
-    from planner.pipeline.candidates import GroundRegions
+    from planner.pipeline.geometry.candidates import GroundRegions
 
     regions = GroundRegions(closed.site)
     where = regions.label(closed.stations[["x", "y"]].to_numpy())

@@ -1,6 +1,6 @@
 """Plans on the real building in 3-D: from a city model (synthetic LoD2 town, the shipped
 real samples), on a terrain model, and a plan from footprints audited against the model
-(planner/pipeline/audit.py) — the planner saying what a footprint plan gets wrong."""
+(planner/pipeline/geometry/audit.py) — the planner saying what a footprint plan gets wrong."""
 
 from __future__ import annotations
 
@@ -16,10 +16,11 @@ import shapely
 from planner.app.cli import main
 from planner.cityio import read_city_model, site_from_cityjson
 from planner.errors import InputError
-from planner.pipeline.audit import audit_plan, audit_summary
-from planner.pipeline.evaluate import Context, facade_pairs
-from planner.pipeline.planning import plan, reach_m
-from planner.pipeline.requirements import PlanSettings, Requirements
+from planner.pipeline.engine.planning import plan
+from planner.pipeline.evaluation.evaluate import Context, facade_pairs
+from planner.pipeline.geometry.audit import audit_plan, audit_summary
+from planner.pipeline.inputs.requirements import PlanSettings, Requirements
+from planner.pipeline.inputs.resolved import reach_m
 from planner.scanner import load_scanner
 from planner.site import Building, Site, with_terrain
 from planner.siteio import site_from_geojson
@@ -84,7 +85,7 @@ def test_a_sloping_walls_incidence_is_taken_in_3d(town):
     site = town[1]
     st = PlanSettings(sample_spacing_m=2.0, sample_height_step_m=2.0)
     sc = load_scanner(None or "leica-4mm-60urad")
-    from planner.pipeline.facades import build_facades
+    from planner.pipeline.geometry.facades import build_facades
 
     fac = build_facades(site, 2.0, 2.0)
     ctx = Context.build(site, fac, sc, Requirements(), st, reach_m(sc, Requirements(), st))
@@ -241,7 +242,7 @@ def test_the_files_carry_the_walls_and_points_in_3d(town, model_plan):
 
     import ezdxf
 
-    from planner.pipeline.export import render
+    from planner.pipeline.documents.export import render
 
     p = model_plan
     files = render(p)
@@ -307,8 +308,8 @@ def test_a_plain_mesh_gives_the_footprints_their_3d_shape(tmp_path, suffix):
 def test_ground_patches_are_seen_on_a_terrain(town):
     """Cloud-to-cloud registration counts the ground a scan holds: on a terrain the ground
     cells round a station are seen (the lines end just above the terrain's triangles)."""
-    from planner.pipeline.clouds import SurfaceCache
-    from planner.pipeline.facades import build_facades
+    from planner.pipeline.geometry.facades import build_facades
+    from planner.pipeline.network.clouds import SurfaceCache
 
     site = town[1]
     st = PlanSettings()
@@ -323,7 +324,7 @@ def test_ground_patches_are_seen_on_a_terrain(town):
 
 
 def test_a_plan_of_another_site_is_not_audited_as_all_wallless(town, default_plan):
-    from planner.pipeline.audit import audit
+    from planner.pipeline.geometry.audit import audit
 
     p = default_plan
     with pytest.raises(InputError, match="not on the model's buildings"):
@@ -334,8 +335,8 @@ def test_a_district_block_of_a_model_keeps_its_terrain_and_heights(town):
     """District mode plans a model block by block: each block's site (and a seam's context)
     stands on the model's terrain, in its heights (before, a block stood on flat ground at
     0 m under buildings 500 m up, and saw nothing)."""
-    from planner.pipeline.district import Block, block_site
-    from planner.pipeline.seams import context_of
+    from planner.pipeline.district.blocks import Block, block_site
+    from planner.pipeline.network.seams import context_of
 
     site = town[1]
     b = site.buildings[0]

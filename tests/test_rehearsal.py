@@ -1,9 +1,7 @@
-"""planner.pipeline.rehearsal, .pointclouds, .helios and .asscanned: the survey rehearsed
+"""planner.pipeline.survey.rehearsal, .pointclouds, .helios and .asscanned: the survey rehearsed
 as point clouds, and re-planned from what was scanned."""
 
 from __future__ import annotations
-
-import copy
 
 import laspy
 import numpy as np
@@ -11,18 +9,19 @@ import pandas as pd
 import pytest
 from sites import l_site
 
-from planner.pipeline.helios import check_survey, helios_files, read_survey
-from planner.pipeline.planning import plan
-from planner.pipeline.pointclouds import (
+from planner.pipeline.engine.judge import copy_plan, workbench_of
+from planner.pipeline.engine.planning import plan
+from planner.pipeline.geometry.scene import Scene
+from planner.pipeline.inputs.requirements import PlanSettings
+from planner.pipeline.survey.helios import check_survey, helios_files, read_survey
+from planner.pipeline.survey.pointclouds import (
     e57_bytes,
     laz_bytes,
     legend_csv,
     read_e57_scans,
     read_poses,
 )
-from planner.pipeline.rehearsal import POINT_KINDS, estimate, rehearse
-from planner.pipeline.requirements import PlanSettings
-from planner.pipeline.scene import Scene
+from planner.pipeline.survey.rehearsal import POINT_KINDS, estimate, rehearse
 
 BEAMS = 20_000  # a coarse grid: every check here holds at any density
 RHO = 206_264.806
@@ -167,7 +166,7 @@ def test_an_independent_icp_on_the_rehearsed_clouds_is_of_the_link_models_order(
     finds the true pose (negative control: the check can fail)."""
     from icp import link_errors
 
-    from planner.pipeline.clouds import cloud_link, surfaces
+    from planner.pipeline.network.clouds import cloud_link, surfaces
 
     st = PlanSettings(registration="cloud", cloud_floor_mm=0.0, step_mm_at_10m=100.0)
     p = plan(l_site(), settings=st)
@@ -175,7 +174,7 @@ def test_an_independent_icp_on_the_rehearsed_clouds_is_of_the_link_models_order(
     link = cloud.loc[cloud["overlap_pct"].idxmax()]
     a, b = link["station_a"], link["station_b"]
     xy = p.scan_stations.set_index("station_id").loc[[a, b], ["x", "y"]].to_numpy(float)
-    model = cloud_link(p.workbench.ctx, surfaces(p.workbench.ctx, xy), 0, 1)
+    model = cloud_link(workbench_of(p).ctx, surfaces(workbench_of(p).ctx, xy), 0, 1)
     predicted = np.sqrt(np.trace(model.cov[:3, :3]))  # mm
     typical = np.median(np.linalg.norm(link_errors(p, a, b, 8)[:, :3], axis=1))  # mm
     assert 0.5 < typical / (0.888 * predicted) < 3.0
@@ -183,7 +182,7 @@ def test_an_independent_icp_on_the_rehearsed_clouds_is_of_the_link_models_order(
 
 
 def test_a_targets_height_is_its_centres_in_the_sites_height_system(default_plan):
-    p = copy.deepcopy(default_plan)
+    p = copy_plan(default_plan)
     p.targets["z"] = p.targets["z"] + 100.0  # m: every target lifted
     lifted = rehearse(
         p, beams_per_station=200_000, seed=2, noise=False, stations=["S03", "S04", "S06"]

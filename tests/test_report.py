@@ -2,8 +2,11 @@
 
 from __future__ import annotations
 
+import html.parser
 import re
+from pathlib import Path
 
+import pandas as pd
 import pytest
 from sites import PAPER_5MM
 from sites import run_cli as run
@@ -109,8 +112,8 @@ def test_the_reports_numbers_are_the_files_numbers(strict_plan):
     import pandas as pd
 
     from planner.app.report import render_html
-    from planner.pipeline.export import render
-    from planner.pipeline.whatif import evaluate_stations
+    from planner.pipeline.documents.export import render
+    from planner.pipeline.engine.whatif import evaluate_stations
 
     p = strict_plan
     xy = p.stations[["x", "y"]].to_numpy().copy()
@@ -188,3 +191,89 @@ def test_the_report_makes_its_plan_as_plan_does(tmp_path, monkeypatch):
                            "--out", str(tmp_path / out), "-q")  # fmt: skip
         assert code == 2 and "stop here" in err, err
     assert seen == [("on", 300.0, 1)] * 2  # the report's, then the plan's
+
+
+# -- the report shows exactly the plan ``plan`` makes -------------------------------------
+class _Cells(html.parser.HTMLParser):
+    """The text of every table cell, row by row."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.rows: list[list[str]] = []
+        self._cell: list[str] | None = None
+
+    def handle_starttag(self, tag, attrs):
+        if tag == "tr":
+            self.rows.append([])
+        elif tag in ("td", "th"):
+            self._cell = []
+
+    def handle_endtag(self, tag):
+        if tag in ("td", "th") and self._cell is not None and self.rows:
+            self.rows[-1].append("".join(self._cell).strip())
+            self._cell = None
+
+    def handle_data(self, data):
+        if self._cell is not None:
+            self._cell.append(data)
+
+
+def test_report_describes_the_plan_that_plan_makes(tmp_path, monkeypatch):
+    """Non-default settings and a scanner profile given by a relative path: the report's
+    station table equals stations.csv of ``plan`` with the same arguments."""
+    monkeypatch.chdir(tmp_path)
+    Path("profiles").mkdir()
+    Path("profiles/mine.toml").write_text(
+        '[[scanner]]\nname = "mine"\nrange_rms_mm = 2.0\nangle_rms_arcsec = 8.0\n'
+        "vertical_angle_rms_arcsec = 10.0\nmax_range_m = 80.0\n"
+    )
+    flags = [
+        "--scanner",
+        "profiles/mine.toml",
+        "--max-xy-mm",
+        "4",
+        "--max-z-mm",
+        "4.5",
+        "--grid-m",
+        "3",
+        "--clearance-m",
+        "1.5",
+        "--instrument-height-m",
+        "1.8",
+        "--sample-spacing-m",
+        "3",
+        "--sample-height-step-m",
+        "3",
+        "--station-rms-mm",
+        "0.5",
+        "--step-mm-at-10m",
+        "3",
+        "--max-range-m",
+        "70",
+        "--method",
+        "greedy",
+        "-q",
+    ]
+    code, _, err = run("plan", *flags, "--out", "plan")
+    assert code in (0, 1), err
+    code, _, err = run("report", *flags, "--out", "report.html")
+    assert code == 0, err
+    stations = pd.read_csv("plan/stations.csv")
+    parser = _Cells()
+    parser.feed(Path("report.html").read_text())
+    reported = {  # the station table's rows: id, x, y, ground, height, purpose, samples met
+        r[0]: r
+        for r in parser.rows
+        if len(r) == 7 and r[0].startswith("S") and r[0][1:].isdigit() and r[5] in ("cover", "link")
+    }
+    assert sorted(reported) == sorted(stations["station_id"])
+    for s in stations.itertuples():
+        row = reported[s.station_id]
+        assert float(row[1]) == pytest.approx(s.x, abs=1e-3)  # m
+        assert float(row[2]) == pytest.approx(s.y, abs=1e-3)  # m
+        assert float(row[3]) == pytest.approx(0.0)  # flat ground
+        assert float(row[4]) == pytest.approx(1.8)  # the instrument height given
+    summary = next(
+        line for line in Path("plan/summary.txt").read_text().splitlines() if "Stations:" in line
+    )
+    assert "greedy" in summary and summary in Path("report.html").read_text()

@@ -25,7 +25,7 @@ from sites import run_cli as run
 import planner
 from planner.atomic import FAULT_ENV, write_text_atomic
 from planner.errors import InputError
-from planner.pipeline.export import OWNED_FILES
+from planner.pipeline.documents.export import OWNED_FILES
 
 SQUARE = {
     "type": "FeatureCollection",
@@ -431,7 +431,7 @@ def test_bad_site_input_is_exit_2_with_a_message_and_nothing_written(
 ):
     """Refused before any work: no Dask cluster is started for it (facades of too many
     samples send ``--district auto`` to district mode; each block's are counted first)."""
-    import planner.pipeline.district as district
+    import planner.pipeline.district.blocks as district
 
     def no_cluster(*_a, **_k):
         raise AssertionError("a Dask cluster was started for an input to refuse")
@@ -557,7 +557,7 @@ def test_a_bad_output_folder_is_refused_before_the_plan(
 ):
     """A plan can take minutes: an --out that cannot be written is said at once."""
     import planner.app.figures as figures
-    import planner.pipeline.planning as planning
+    import planner.pipeline.engine.planning as planning
 
     def planned(*_a, **_k):
         raise AssertionError("planned before the output folder was checked")
@@ -573,7 +573,7 @@ def test_a_bad_output_folder_is_refused_before_the_plan(
 
 def test_an_internal_error_is_exit_3_with_a_log(monkeypatch, tmp_path):
     """A bug is not "bad input" and not "some samples unmet": its own code, one line, a log."""
-    import planner.pipeline.planning as planning
+    import planner.pipeline.engine.planning as planning
 
     def broken(*_a, **_k):
         raise ZeroDivisionError("a bug")
@@ -669,7 +669,7 @@ def _hostile_site():
 
 
 def test_csv_cells_that_a_spreadsheet_would_run_are_neutralised(tmp_path):
-    from planner.pipeline.export import render
+    from planner.pipeline.documents.export import render
 
     p = planner.plan(_hostile_site(), settings=planner.PlanSettings(sample_spacing_m=5))
     files = render(p)

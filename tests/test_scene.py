@@ -1,4 +1,4 @@
-"""The scene and its one sight-line interface (planner/pipeline/scene.py): the ray engine
+"""The scene and its one sight-line interface (planner/pipeline/geometry/scene.py): the ray engine
 against an independent ray–triangle test, the rays against the prism test on footprints,
 and negative controls (an overhang or a tree removed: what it hid is seen)."""
 
@@ -9,8 +9,8 @@ import pytest
 import shapely
 
 from planner.citymodel import Surface
-from planner.pipeline.scene import Scene
-from planner.pipeline.visibility import bridge_interval, clear_height, visible
+from planner.pipeline.geometry.scene import Scene
+from planner.pipeline.geometry.visibility import bridge_interval, clear_height, visible
 from planner.site import Building, Obstacle, Site
 from planner.siteio import default_site
 from planner.synthetic import town

@@ -10,8 +10,8 @@ import pytest
 import shapely
 from sites import osm_like_export, rect, run_cli
 
-from planner.pipeline.planning import plan
-from planner.pipeline.requirements import PlanSettings
+from planner.pipeline.engine.planning import plan
+from planner.pipeline.inputs.requirements import PlanSettings
 from planner.site import FAR_HEIGHT_M, Building, Site
 from planner.sitecheck import SiteProblems, notes_table, resolve_overlaps
 from planner.siteio import read_site

@@ -13,8 +13,8 @@ import numpy as np
 import pytest
 from virtual_survey import report, survey, world_of
 
-from planner.pipeline.planning import plan
-from planner.pipeline.requirements import PlanSettings
+from planner.pipeline.engine.planning import plan
+from planner.pipeline.inputs.requirements import PlanSettings
 
 
 @pytest.fixture(scope="module")

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 import shapely
 
-from planner.pipeline.visibility import (
+from planner.pipeline.geometry.visibility import (
     SIGHT_CLEARANCE_M,
     STAND_RADIUS_M,
     bridge_interval,
@@ -251,8 +251,8 @@ def test_a_round_tower_drawn_as_many_edges_is_seen_all_round(engine):
     is met by a few stations (it was 1 station and 6 of 402 samples with either engine).
     Negative control: the drawn edges do stand in front of the chord."""
     import planner
-    from planner.pipeline.facades import MERGE_OFFSET_M
-    from planner.pipeline.visibility import edges_in_front, own_edges
+    from planner.pipeline.geometry.facades import MERGE_OFFSET_M
+    from planner.pipeline.geometry.visibility import edges_in_front, own_edges
     from planner.site import Building, Site
 
     a = np.linspace(0, 2 * np.pi, 200, endpoint=False)

@@ -1,4 +1,4 @@
-"""What-if by hand (planner.pipeline.whatif): stations moved, deleted, added or locked are
+"""What-if by hand (planner.pipeline.engine.whatif): stations moved, deleted, added or locked are
 judged again as a plan is, from what the plan keeps."""
 
 import copy
@@ -7,13 +7,14 @@ import numpy as np
 import pytest
 
 from planner.errors import InputError
-from planner.pipeline.whatif import edit_targets, evaluate_stations, reoptimise
+from planner.pipeline.engine.judge import copy_plan, workbench_of
+from planner.pipeline.engine.whatif import edit_targets, evaluate_stations, reoptimise
 
 
 @pytest.fixture(scope="module")
 def default_plan(default_plan):
     """The session's default plan, copied: the edits here add to a plan's workbench."""
-    return copy.deepcopy(default_plan)
+    return copy_plan(default_plan)
 
 
 def _xy(p):
@@ -156,10 +157,9 @@ def test_reoptimise_keeps_the_locked_station_and_covers_the_rest(default_plan):
 
 
 def test_a_plan_without_its_workbench_says_so(default_plan):
-    from dataclasses import replace
 
     with pytest.raises(InputError, match="plan the site again"):
-        evaluate_stations(replace(default_plan, workbench=None), _xy(default_plan))
+        evaluate_stations(copy.copy(default_plan), _xy(default_plan))
 
 
 # -- targets by hand (they change the plan's workbench: a plan of their own) ----------------
@@ -168,7 +168,7 @@ BY_HAND = "Targets placed or moved by hand in this plan's edits:"
 
 @pytest.fixture
 def own_plan(default_plan):
-    return copy.deepcopy(default_plan)
+    return copy_plan(default_plan)
 
 
 def _has(targets, xyz) -> bool:
@@ -196,8 +196,8 @@ def test_a_moved_flat_target_slides_along_its_wall_and_is_used(own_plan):
     assert not _has(q.targets, flat[["x", "y", "z"]].to_numpy(dtype=float))
     # the default site's first target is on a wall along E: it moves 1.5 m along it,
     # not the 3 m off it
-    wall = p.workbench.ctx.facades
-    f = int(p.workbench.tc.facade[p.workbench.seen.by_hand][0])
+    wall = workbench_of(p).ctx.facades
+    f = int(workbench_of(p).tc.facade[workbench_of(p).seen.by_hand][0])
     a, b = wall.start[f], wall.end[f]
     new = q.targets[q.targets["facade_id"] == flat["facade_id"]][["x", "y", "z"]].to_numpy(float)
     moved = new[np.argmin(np.abs(new[:, 0] - (flat["x"] + 1.5)) + np.abs(new[:, 1] - flat["y"]))]
@@ -218,7 +218,7 @@ def test_a_sphere_added_by_hand_is_preferred_where_it_can_serve(own_plan):
     a, b = st.loc[link["station_a"]].to_numpy(float), st.loc[link["station_b"]].to_numpy(float)
     xy = a + (b - a) / 3 + 0.7
     q = edit_targets(p, add_xy=xy[None])
-    z = p.workbench.settings.target_height_m
+    z = workbench_of(p).settings.target_height_m
     assert _has(q.targets, np.array([*xy, z]))
     assert (
         "Targets placed or moved by hand in this plan's edits: 1 of 1 used by the registration."
@@ -247,7 +247,7 @@ def test_the_plan_says_which_registration_processing_its_promise_assumes(default
     the booklet and the report, which print it) says so, and that pairwise registration
     along the links can do worse."""
     from planner.app.report import ReportContent
-    from planner.pipeline.tables import PROCESSING_WORDS
+    from planner.pipeline.engine.tables import PROCESSING_WORDS
 
     summary = default_plan.summary()
     line = next(m for m in summary.splitlines() if m.startswith("Registration error: worst"))
@@ -266,7 +266,7 @@ def test_one_id_everywhere_in_the_files_and_targets_numbered_as_they_are_set_up(
     import ezdxf
     import pandas as pd
 
-    from planner.pipeline.export import render
+    from planner.pipeline.documents.export import render
 
     p = default_plan
     files = render(p)

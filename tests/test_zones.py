@@ -11,10 +11,10 @@ import pandas as pd
 import pytest
 from sites import run_cli as _cli
 
-from planner.pipeline.facades import build_facades
-from planner.pipeline.planning import plan
-from planner.pipeline.requirements import PlanSettings, Requirements
-from planner.pipeline.zoning import along_m, apply_zones
+from planner.pipeline.engine.planning import plan
+from planner.pipeline.geometry.facades import build_facades
+from planner.pipeline.geometry.zoning import along_m, apply_zones
+from planner.pipeline.inputs.requirements import PlanSettings, Requirements
 from planner.siteio import default_site, site_from_geojson
 from planner.zones import Zone, parse_zone, read_zones
 

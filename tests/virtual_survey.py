@@ -38,6 +38,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from numba import njit
 
+from planner.pipeline.engine.judge import workbench_of
+
 RHO = 180.0 * 3600.0 / np.pi  # arc-seconds per radian
 STAND_RADIUS_M = 0.05  # the pole under a sphere
 
@@ -100,7 +102,7 @@ class World:
 
 
 def world_of(p, model=None) -> World:
-    """The plan ``p`` (a :class:`planner.pipeline.result.Plan` by targets) as a world to
+    """The plan ``p`` (a :class:`planner.pipeline.engine.result.Plan` by targets) as a world to
     survey; ``model`` (a :class:`planner.site.Site` read from a city model): the world is
     that model, its surfaces and terrain the beams meet (a plan made on flat ground carried
     onto it: its heights above each building's base, its stations on the model's ground)."""
@@ -120,7 +122,7 @@ def world_of(p, model=None) -> World:
         assert d[t] < 1e-6
         size[t] = float(r.size_mm) if np.isfinite(r.size_mm) else 200.0
     cov = p.coverage.reset_index(drop=True)
-    limits = np.column_stack([p.workbench.ctx.limits[f"m_{k}"] for k in "xyz"])
+    limits = np.column_stack([workbench_of(p).ctx.limits[f"m_{k}"] for k in "xyz"])
     assert len(limits) == len(cov)
     keep = (~cov["party_wall"] & (cov["station_id"] != "")).to_numpy()
     cov, limits = cov[keep], limits[keep]
@@ -136,7 +138,7 @@ def world_of(p, model=None) -> World:
     if model is not None:
         triangles = _model_triangles(model)
         if not p.site.is_3d:  # heights above flat ground: onto the model's ground
-            from planner.pipeline.audit import model_base
+            from planner.pipeline.geometry.audit import model_base
 
             xyz = xyz.copy()
             xyz[:, 2] += model_base(model, cov["building_id"].to_numpy(object), xyz[:, :2])
@@ -160,7 +162,7 @@ def world_of(p, model=None) -> World:
         # (written out, not PlanSettings.incidence_ranging: the survey also reads plans made
         # by the code before it, for benchmarks/virtual_survey_before.json)
         scan=ScanModel.of(
-            sc, p.workbench.ctx.step_mm_at_10m, st.model == "3d" and st.incidence_noise
+            sc, workbench_of(p).ctx.step_mm_at_10m, st.model == "3d" and st.incidence_noise
         ),
         floor_mm=st.target_floor_mm,
         xyz=xyz,

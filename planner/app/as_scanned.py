@@ -2,7 +2,7 @@
 
 The surveyor uploads the registered project's E57 (its scan poses) or a CSV of the station
 positions — optionally the targets as placed and the registration program's link report —
-and presses *Re-plan from the scans*: :func:`planner.pipeline.asscanned.replan` judges
+and presses *Re-plan from the scans*: :func:`planner.pipeline.survey.asscanned.replan` judges
 every sample with the stations as scanned and proposes the fewest extra stations; the map
 and every tab then show that plan, this tab the table of stations (as planned, moved,
 skipped, added on site, extra with its reason) and the links as registered against the
@@ -20,7 +20,8 @@ import ipywidgets as w
 
 from planner.app.widgets import download_link, error_html, show
 from planner.errors import PlannerError
-from planner.pipeline.asscanned import (
+from planner.pipeline.engine.judge import workbench_of
+from planner.pipeline.survey.asscanned import (
     Replan,
     check_scanned,
     compare_links,
@@ -28,7 +29,7 @@ from planner.pipeline.asscanned import (
     read_targets_placed,
     replan,
 )
-from planner.pipeline.pointclouds import read_poses
+from planner.pipeline.survey.pointclouds import read_poses
 
 __all__ = ["AsScannedPanel"]
 
@@ -105,7 +106,7 @@ class AsScannedPanel:
             self.base = shown
         base = self.base
         try:
-            if base is None or base.workbench is None:
+            if base is None or workbench_of(base) is None:
                 raise PlannerError(
                     "make a plan first (the plan the crew scanned; a district plan cannot "
                     "be re-planned here: use planner replan)"

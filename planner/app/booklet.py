@@ -35,10 +35,10 @@ from planner.app.maps import (
     survey_frame,
 )
 from planner.crs import name_of as crs_name
-from planner.pipeline.result import Plan
-from planner.pipeline.route import view_sectors
-from planner.pipeline.schema import STATION_PURPOSES
-from planner.pipeline.setout import CornerTies, compass_word, wall_place, walls_scanned
+from planner.pipeline.engine.result import Plan
+from planner.pipeline.field.route import view_sectors
+from planner.pipeline.field.setout import CornerTies, compass_word, wall_place, walls_scanned
+from planner.pipeline.inputs.schema import STATION_PURPOSES
 
 __all__ = ["booklet_pdf", "compass", "kit_list", "target_places"]
 

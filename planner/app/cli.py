@@ -194,7 +194,7 @@ def cmd_audit(args: argparse.Namespace) -> int:
 
     from planner.atomic import check_inputs_kept, check_output_file, write_bytes_atomic
     from planner.cityio import read_city_model
-    from planner.pipeline.audit import audit, audit_summary, read_plan_tables
+    from planner.pipeline.geometry.audit import audit, audit_summary, read_plan_tables
     from planner.site import with_terrain
 
     out = check_output_file(Path(args.out) if args.out else Path(args.plan) / "audit.csv")
@@ -236,7 +236,7 @@ class _StderrProgress:
 
 def _scheduler(text: str) -> str:
     """``--scheduler``'s address, its form checked where it is read."""
-    from planner.pipeline.district import scheduler_address
+    from planner.pipeline.district.schedule import scheduler_address
 
     try:
         return scheduler_address(text)
@@ -264,8 +264,8 @@ def plan_inputs(args: argparse.Namespace):
     """Site, scanner, requirements and settings from the options shared by ``plan`` and
     ``report`` — the one function both use, so a report shows exactly the plan ``plan``
     makes. Options not given are None, and the data classes' defaults apply."""
-    from planner.pipeline.planning import reach_m
-    from planner.pipeline.requirements import requirements_and_settings
+    from planner.pipeline.inputs.requirements import requirements_and_settings
+    from planner.pipeline.inputs.resolved import resolve
     from planner.site import SiteLimits
     from planner.siteio import default_site
     from planner.targets import parse_inventory
@@ -280,7 +280,7 @@ def plan_inputs(args: argparse.Namespace):
     limits = SiteLimits(
         **{f.name: getattr(args, f.name) for f in fields(SiteLimits) if getattr(args, f.name)}
     )
-    near = reach_m(scanner, req, settings)  # a problem farther than any station reaches
+    near = resolve(scanner, req, settings).reach_m  # a problem farther than any station reaches
     site = read_site_args(args, limits, near) if args.site else None
     if site is None:
         site = default_site(buildings=args.buildings, limits=limits)
@@ -365,8 +365,8 @@ def _input_paths(args: argparse.Namespace) -> list[str]:
 
 def _district(args: argparse.Namespace, site, settings) -> bool:
     """Whether to plan block by block on Dask: asked for, or (auto) the site is more work
-    than one process does well (:func:`planner.pipeline.district.needs_district`)."""
-    from planner.pipeline.district import needs_district
+    than one process does well (:func:`planner.pipeline.district.blocks.needs_district`)."""
+    from planner.pipeline.district.blocks import needs_district
 
     if args.district == "off":
         if args.scheduler:
@@ -382,7 +382,8 @@ DOCUMENT_SHARE = 0.15
 #: target on an idle machine [s] (measured on a 50-building town, 11 201 rows, 40
 #: stations, 93 targets: 2.75 s, the coverage CSV 0.4 s and the DXF 1.7 s of it, a first
 #: use); the booklet ends in time for them, and planning ends in time for a fifth as much
-#: again — both stretched by the pace the command gets (:func:`~planner.pipeline.clock.pace`).
+#: again — both stretched by the pace the command gets
+#: (:func:`~planner.pipeline.inputs.clock.pace`).
 SAVE_S_PER_ROW = 2e-4
 SAVE_S_PER_POINT = 4e-3
 #: … and per row of the zone table (zones.csv alone: 0.4 s for 60 000 rows) [s].
@@ -419,11 +420,11 @@ def make_plan(args: argparse.Namespace, progress: Callable[[float, str], None]):
     ``plan`` would take it (:func:`_district`), ending with the documents' share of
     ``--time-limit-s`` left (:data:`DOCUMENT_SHARE`, or the files' estimated time), counted
     from the command's start. Returns the plan, the command's deadline and the pace it had
-    (:func:`~planner.pipeline.clock.pace`)."""
-    from planner.pipeline.clock import pace
-    from planner.pipeline.district import memory_bytes
-    from planner.pipeline.facades import estimate_samples
-    from planner.pipeline.planning import plan
+    (:func:`~planner.pipeline.inputs.clock.pace`)."""
+    from planner.pipeline.district.schedule import memory_bytes
+    from planner.pipeline.engine.planning import plan
+    from planner.pipeline.geometry.facades import estimate_samples
+    from planner.pipeline.inputs.clock import pace
 
     started = getattr(args, "started", None) or time.monotonic()
     memory_bytes(args.worker_memory)  # checked even where the plan needs no cluster
@@ -437,7 +438,7 @@ def make_plan(args: argparse.Namespace, progress: Callable[[float, str], None]):
     reserve = max(DOCUMENT_SHARE * settings.time_limit_s, slow * SAVE_MARGIN * files_s)
     planned_by = deadline - reserve
     if _district(args, site, settings):
-        from planner.pipeline.district import plan_district
+        from planner.pipeline.district.schedule import plan_district
 
         result = plan_district(
             site,
@@ -462,7 +463,7 @@ def run_plan(args: argparse.Namespace) -> int:
     :data:`DOCUMENT_SHARE` of the budget left, and the booklet leaves out the pages there is
     no time for (said in the summary and on its last page)."""
     from planner.atomic import check_inputs_kept, check_output_folder
-    from planner.pipeline.export import OWNED_FILES, save
+    from planner.pipeline.documents.export import OWNED_FILES, save
 
     progress = _StderrProgress(args.quiet)
     check_output_folder(args.out)  # before the plan, which can take minutes
@@ -535,11 +536,11 @@ def cmd_report(args: argparse.Namespace) -> int:
 def cmd_rehearse(args: argparse.Namespace) -> int:
     """The plan's simulated scans (E57, LAZ) and its HELIOS++ survey, written as one set."""
     from planner.atomic import check_inputs_kept, check_output_folder, replace_folder_files
-    from planner.pipeline.helios import FILES as HELIOS_FILES
-    from planner.pipeline.helios import helios_files
-    from planner.pipeline.pointclouds import e57_bytes, laz_bytes, legend_csv
-    from planner.pipeline.rehearsal import estimate, rehearse
-    from planner.pipeline.scene import Scene
+    from planner.pipeline.geometry.scene import Scene
+    from planner.pipeline.survey.helios import FILES as HELIOS_FILES
+    from planner.pipeline.survey.helios import helios_files
+    from planner.pipeline.survey.pointclouds import e57_bytes, laz_bytes, legend_csv
+    from planner.pipeline.survey.rehearsal import estimate, rehearse
 
     check_output_folder(args.out)
     owned = ("scans.e57", "scans.laz", "scans_legend.csv", *HELIOS_FILES)
@@ -586,15 +587,15 @@ def cmd_rehearse(args: argparse.Namespace) -> int:
 def cmd_replan(args: argparse.Namespace) -> int:
     """The plan re-made from the stations as scanned: the extra stations for what is left."""
     from planner.atomic import check_inputs_kept, check_output_folder
-    from planner.pipeline.asscanned import (
+    from planner.pipeline.documents.export import OWNED_FILES, save
+    from planner.pipeline.survey.asscanned import (
         check_same_plan,
         compare_links,
         read_link_report,
         read_targets_placed,
         replan,
     )
-    from planner.pipeline.export import OWNED_FILES, save
-    from planner.pipeline.pointclouds import read_poses
+    from planner.pipeline.survey.pointclouds import read_poses
 
     check_output_folder(args.out)
     extra_names = ("as_scanned.csv", "link_check.csv")
@@ -759,7 +760,7 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
     """The site, scanner, requirement and setting options shared by plan and report. The
     requirement and setting options are made from the data classes' fields (name, unit,
     help, default), so both commands and the data classes cannot drift apart."""
-    from planner.pipeline.requirements import (
+    from planner.pipeline.inputs.requirements import (
         METHODS,
         MODELS,
         REGISTRATION_MODES,
@@ -998,7 +999,11 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
 def _district_arguments(pl: argparse.ArgumentParser) -> None:
     """The district mode's options, shared by plan and report (a report shows the plan
     ``plan`` makes, in district mode where it takes it)."""
-    from planner.pipeline.requirements import DEFAULT_BLOCK_M, DISTRICT_SAMPLES, WORKER_MEMORY
+    from planner.pipeline.inputs.requirements import (
+        DEFAULT_BLOCK_M,
+        DISTRICT_SAMPLES,
+        WORKER_MEMORY,
+    )
 
     pl.add_argument(
         "--district",
@@ -1147,7 +1152,7 @@ def build_parser() -> argparse.ArgumentParser:
     _plan_arguments(rh)
     rh.add_argument("--out", required=True, metavar="DIR", help="folder for the clouds")
     _district_arguments(rh)
-    from planner.pipeline.rehearsal import DEFAULT_BEAMS_PER_STATION
+    from planner.pipeline.survey.rehearsal import DEFAULT_BEAMS_PER_STATION
 
     rh.add_argument(
         "--beams-per-station",

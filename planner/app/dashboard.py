@@ -40,11 +40,12 @@ from planner.app.widgets import (
 from planner.app.wording import SITE_LABELS, for_dashboard
 from planner.classes import class_limits, parse_class
 from planner.errors import PlannerError
-from planner.pipeline.explain import explain_unmet, suggestions
-from planner.pipeline.export import render
-from planner.pipeline.facades import build_facades
-from planner.pipeline.planning import plan, reach_m
-from planner.pipeline.requirements import (
+from planner.pipeline.documents.export import render
+from planner.pipeline.engine.explain import explain_unmet, suggestions
+from planner.pipeline.engine.planning import plan
+from planner.pipeline.engine.whatif import edit_targets, evaluate_stations, reoptimise
+from planner.pipeline.geometry.facades import build_facades
+from planner.pipeline.inputs.requirements import (
     REGISTRATION_PROCESSING,
     SETTING_GROUPS,
     FieldSpec,
@@ -54,7 +55,7 @@ from planner.pipeline.requirements import (
     requirements_and_settings,
     setting_groups,
 )
-from planner.pipeline.whatif import edit_targets, evaluate_stations, reoptimise
+from planner.pipeline.inputs.resolved import resolve
 from planner.scanner import Scanner
 from planner.site import DEFAULT_NEAR_M, Passage
 from planner.siteio import DEFAULT_STOREY_HEIGHT_M, default_site, read_outlines, read_site
@@ -898,7 +899,7 @@ class StationPlanner:
         )
         scanner = Scanner.from_name(self.scanner.value)
         # a problem farther than any station reaches cannot change the plan
-        site = self._site(reach_m(scanner, req, settings))
+        site = self._site(resolve(scanner, req, settings).reach_m)
         if self.zone_editor.zones:
             site = replace(site, zones=[*site.zones, *self.zone_editor.zones])
         return site, scanner, req, settings
@@ -1073,7 +1074,7 @@ class StationPlanner:
 
     def edit_targets_by_hand(self, **edits) -> None:
         """The plan with its targets ruled out, moved or added (the map's edit),
-        judged at once (:func:`planner.pipeline.whatif.edit_targets`)."""
+        judged at once (:func:`planner.pipeline.engine.whatif.edit_targets`)."""
         self._by_hand(lambda p: edit_targets(p, **edits))
 
     def _by_hand(self, edit) -> None:

@@ -12,7 +12,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from planner.app.maps import UNROLL_GAP_M, draw_outlines, facade_offsets, facade_outline, unrolled
-from planner.pipeline.result import Plan
+from planner.pipeline.engine.result import Plan
 
 __all__ = ["elevation_buildings", "plot_elevations"]
 

@@ -15,7 +15,7 @@ from matplotlib.figure import Figure
 from planner.app.curves import plot_height, plot_models, plot_planimetric, plot_target_sizes
 from planner.app.maps import plot_coverage, plot_plan_map
 from planner.atomic import check_output_folder, write_bytes_atomic
-from planner.pipeline.planning import plan
+from planner.pipeline.engine.planning import plan
 from planner.scanner import DEFAULT_SCANNER, Scanner
 
 __all__ = ["make_figures"]

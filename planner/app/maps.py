@@ -24,9 +24,9 @@ from mpl_toolkits.axes_grid1.anchored_artists import AnchoredSizeBar
 from shapely.geometry.base import BaseGeometry
 
 from planner.crs import name_of as crs_name
-from planner.pipeline.result import Plan
-from planner.pipeline.route import view_sectors
-from planner.pipeline.schema import STATION_ID, STATION_PURPOSES, SYMBOLS
+from planner.pipeline.engine.result import Plan
+from planner.pipeline.field.route import view_sectors
+from planner.pipeline.inputs.schema import STATION_ID, STATION_PURPOSES, SYMBOLS
 from planner.site import Site
 
 __all__ = [
@@ -309,7 +309,7 @@ def plot_plan_map(
 #: A plan map with more labels than this leaves out the targets' ids.
 MAX_MAP_LABELS = 400
 
-#: Matplotlib's marker of each symbol (:data:`~planner.pipeline.schema.SYMBOLS`).
+#: Matplotlib's marker of each symbol (:data:`~planner.pipeline.inputs.schema.SYMBOLS`).
 MARKERS = {
     kind: {"triangle-up": "^", "square": "s", "circle": "o", "triangle-down": "v"}[shape]
     for kind, shape in SYMBOLS.items()

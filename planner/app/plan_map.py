@@ -3,7 +3,7 @@ links, route), its coverage (every facade column coloured by the quantity chosen
 edits by hand (stations dragged, added, deleted, locked; targets moved, added, ruled out;
 buildings picked; a facade picked for a zone and its range dragged along the wall; a
 passage drawn through a building) — judged again at once
-(:mod:`planner.pipeline.whatif`).
+(:mod:`planner.pipeline.engine.whatif`).
 
 The map is a ``bqplot`` figure: an ipywidget (served by Voilà like any other, nothing
 rendered on the server per drag, no tile server: only the site's own layers), with pan and
@@ -30,8 +30,8 @@ import shapely
 
 from planner.app.maps import COLOURS, QUANTITIES, quantity_label, quantity_limit
 from planner.errors import PlannerError
-from planner.pipeline.result import Plan
-from planner.pipeline.schema import SYMBOLS
+from planner.pipeline.engine.result import Plan
+from planner.pipeline.inputs.schema import SYMBOLS
 from planner.site import DEFAULT_PASSAGE_HEIGHT_M, DEFAULT_PASSAGE_WIDTH_M
 
 __all__ = ["COLOUR_BY", "MODES", "PlanMap", "declutter"]

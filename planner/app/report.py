@@ -1,4 +1,4 @@
-"""The static HTML report of a :class:`~planner.pipeline.result.Plan`: one self-contained
+"""The static HTML report of a :class:`~planner.pipeline.engine.result.Plan`: one self-contained
 HTML file (tables, figures embedded as PNG), opening offline.
 
 :data:`SECTIONS` says what the report holds, section by section; :class:`ReportContent`
@@ -25,12 +25,12 @@ from planner.app.elevations import elevation_buildings, plot_elevations
 from planner.app.maps import plot_coverage, plot_plan_map
 from planner.atomic import write_text_atomic
 from planner.classes import parse_class
-from planner.pipeline.planning import plan
-from planner.pipeline.requirements import PlanSettings, field_specs
-from planner.pipeline.result import Plan
-from planner.pipeline.schema import in_id_order
-from planner.pipeline.tables import PROCESSING_WORDS
-from planner.pipeline.visibility import SIGHT_CLEARANCE_M
+from planner.pipeline.engine.planning import plan
+from planner.pipeline.engine.result import Plan
+from planner.pipeline.engine.tables import PROCESSING_WORDS
+from planner.pipeline.geometry.visibility import SIGHT_CLEARANCE_M
+from planner.pipeline.inputs.requirements import PlanSettings, field_specs
+from planner.pipeline.inputs.schema import in_id_order
 from planner.reference import REFERENCES
 from planner.text import printable
 

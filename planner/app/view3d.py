@@ -8,8 +8,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from planner.pipeline.result import Plan
-from planner.pipeline.scene import TRIANGLE_KINDS, Scene
+from planner.pipeline.engine.judge import workbench_of
+from planner.pipeline.engine.result import Plan
+from planner.pipeline.geometry.scene import TRIANGLE_KINDS, Scene
 
 __all__ = ["KIND_COLOURS", "view_3d", "view_extent"]
 
@@ -62,7 +63,8 @@ def view_3d(p: Plan, height_px: int = 560):
     samples, stations (labelled) and targets."""
     import k3d
 
-    scene = p.workbench.ctx.scene if p.workbench is not None else Scene(p.site, "rays")
+    wb = workbench_of(p)
+    scene = wb.ctx.scene if wb is not None else Scene(p.site, "rays")
     tri, _, kind, _ = scene.mesh
     x0, y0, x1, y1 = view_extent(p)
     centre = tri.mean(axis=1) if len(tri) else np.empty((0, 3))

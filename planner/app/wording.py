@@ -4,7 +4,7 @@ controls in their place (‘Repair the site…’), or says that an option is th
 line's only.
 
 The dashboard's controls take their labels from here (:data:`SITE_LABELS`) and from the
-requirement and setting specs (:func:`planner.pipeline.requirements.field_specs`), so a
+requirement and setting specs (:func:`planner.pipeline.inputs.requirements.field_specs`), so a
 label and the message naming it cannot drift apart.
 """
 
@@ -14,7 +14,7 @@ import html
 import re
 from functools import cache
 
-from planner.pipeline.requirements import PlanSettings, Requirements, field_specs
+from planner.pipeline.inputs.requirements import PlanSettings, Requirements, field_specs
 
 __all__ = ["SITE_LABELS", "dashboard_labels", "for_dashboard", "for_dashboard_html"]
 

@@ -1,0 +1,501 @@
+"""The orchestrator: ``plan(site, scanner, requirements, settings) -> Plan``.
+
+Steps: facades and samples → candidate stations → evaluation of every candidate × sample →
+fewest stations (:mod:`~planner.pipeline.optimise.cover`) → registration network and targets
+(:mod:`~planner.pipeline.network.registration`) → coverage by the chosen stations → per-facade
+summary and unmet samples with the reason. The result type is
+:class:`~planner.pipeline.engine.result.Plan`; its files are written by
+:mod:`~planner.pipeline.documents.export`.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import scipy.sparse as sp
+import shapely
+
+from planner.citymodel import LEVEL_ROOF_DEG, level_roof
+from planner.errors import InputError
+from planner.pipeline.engine.judge import (
+    Round,
+    Workbench,
+    assemble,
+    datum_round,
+    estimate_registration,
+    free_positions,
+    judge,
+    prune,
+    round_network,
+    stations_for,
+)
+from planner.pipeline.engine.result import Plan, SolverReport
+from planner.pipeline.engine.tables import budget_message
+from planner.pipeline.evaluation.diagnosis import Diagnosis, diagnose
+from planner.pipeline.evaluation.evaluate import (
+    CandidateEvaluation,
+    Context,
+    Progress,
+    Registration,
+    evaluate_candidates,
+)
+from planner.pipeline.geometry.candidates import candidate_grid
+from planner.pipeline.geometry.facades import (
+    build_facades,
+    check_sample_count,
+    estimate_samples,
+)
+from planner.pipeline.geometry.scene import Scene
+from planner.pipeline.geometry.zoning import apply_zones
+from planner.pipeline.inputs.clock import Clock
+from planner.pipeline.inputs.requirements import (
+    CHECKS,
+    PlanSettings,
+    Requirements,
+)
+from planner.pipeline.inputs.resolved import expect, resolve
+from planner.pipeline.network.targets import SightCache, target_candidates
+from planner.pipeline.optimise.cover import CoverSolution, solve_cover, spread_views
+from planner.scanner import DEFAULT_SCANNER, Scanner, load_scanner
+from planner.site import Site
+from planner.sitecheck import notes_summary
+
+__all__ = ["choose_stations", "plan"]
+
+
+#: Evaluation speed used to put a work estimate in minutes [pairs per second].
+PAIRS_PER_S = 20e6
+#: The optimiser always gets at least this long, even when the evaluation used the budget
+#: (greedy set cover takes well under it) [s].
+MIN_SOLVER_S = 0.5
+#: The first evaluation gets at least this long, or until the plan's end where that comes
+#: sooner, even when the time kept for the plan's last round and tables is already taken (a
+#: loaded machine): a plan has stations for a few facades at least, and says what was left
+#: out [s].
+MIN_EVALUATION_S = 1.0
+#: The share of the time left that the optimiser may take when the registration network is
+#: still to be built and judged after it (its rounds need the rest of the budget).
+SOLVER_SHARE = 0.5
+#: After its rounds a plan judges the last one and makes its tables (coverage, targets,
+#: links, route) whatever the clock says; the rounds end this long per facade sample before
+#: the deadline [s] (measured on a 50-building town, 11 201 samples: 0.53 s; twice that).
+FINISH_S_PER_SAMPLE = 1e-4
+#: The share of the plan's budget the first evaluation of every candidate may take: a site
+#: too large for its budget is evaluated in part, and the optimiser and the registration
+#: still get their time (on a 50-building town given 12 s, the first network of the
+#: stations chosen takes about 3 s).
+EVALUATION_SHARE = 0.45
+
+
+def plan(
+    site: Site | None = None,
+    scanner: Scanner | str | None = None,
+    requirements: Requirements | None = None,
+    settings: PlanSettings | None = None,
+    *,
+    progress: Progress | None = None,
+    locked: np.ndarray | None = None,
+    deadline: float | None = None,
+) -> Plan:
+    """Plan the fewest stations meeting ``requirements`` around the planned buildings.
+
+    Defaults: the built-in default site, the scanner of Voroshilov & Karachentsev's example
+    (:data:`~planner.scanner.DEFAULT_SCANNER`), ``Requirements()`` and ``PlanSettings()``.
+    ``locked`` — ``(k, 2)`` station positions [m] the surveyor fixed: they are kept, and the
+    fewest others chosen around them. Infeasible requirements do not raise: the samples no
+    candidate can satisfy come back with ``meets`` False and the reason (see
+    :attr:`Plan.unmet`). The plan keeps what it was made from
+    (:func:`~planner.pipeline.engine.judge.workbench_of`) for what-if edits
+    (:mod:`planner.pipeline.engine.whatif`).
+
+    The plan ends by ``deadline`` (a :func:`time.monotonic` time; default: now plus the
+    settings' ``time_limit_s``): when it comes, the best plan so far is made, and its
+    messages say what the budget cut short (``solver.cut_short``).
+    """
+    from planner.siteio import default_site
+
+    t0 = time.perf_counter()
+    expect(site, Site, "site", "read one with planner.read_site(path) or planner.default_site()")
+    expect(requirements, Requirements, "requirements", "e.g. Requirements(max_xy_mm=4)")
+    expect(settings, PlanSettings, "settings", "e.g. PlanSettings(grid_m=2)")
+    if scanner is not None and not isinstance(scanner, Scanner | str | Path):
+        raise InputError(
+            f"scanner must be a Scanner, a catalogue name or a profile file; got "
+            f"{type(scanner).__name__}"
+        )
+    st = settings or PlanSettings()
+    clock = Clock.budget(st.time_limit_s, deadline=deadline, started=t0)
+    wb = _prepare(
+        site or default_site(),
+        load_scanner(scanner or DEFAULT_SCANNER),
+        requirements or Requirements(),
+        st,
+        progress or (lambda _f, _m: None),
+    )
+    return choose_stations(wb, progress, locked=locked, clock=clock)
+
+
+def _prepare(
+    site: Site, sc: Scanner, req: Requirements, st: PlanSettings, say: Progress
+) -> Workbench:
+    """Samples, zones, search radius, candidate grid, target candidates (refusing work beyond
+    the settings' limits with what to change)."""
+    t0 = time.perf_counter()
+    messages = [*site.warnings, *notes_summary(site.notes)]
+    say(0.0, "sampling facades")
+    n_est = estimate_samples(site, st.sample_spacing_m, st.sample_height_step_m)
+    check_sample_count(n_est, st.sample_spacing_m, st.sample_height_step_m, st.max_samples)
+    scene = Scene(site, st.sight_engine)
+    fac = build_facades(
+        site, st.sample_spacing_m, st.sample_height_step_m, scene=scene, roofs=st.demand_roofs
+    )
+    fac, sample_req, zones = apply_zones(site, fac, req, scene)
+    if st.demand_roofs:
+        level = [s for b in site.planned for s in b.surfaces if level_roof(s)]
+        if level:
+            messages.append(
+                f"Roofs demanded: {len(level)} level roof surface(s) (within "
+                f"{LEVEL_ROOF_DEG:g}° of level) are not sampled — no station on the ground sees "
+                "them; plan them from an elevated station or the air"
+            )
+    if len(fac.z) > st.max_samples:
+        raise InputError(
+            f"with the zones' finer samples the facades need {len(fac.z):,} samples, more than "
+            f"{st.max_samples:,.0f}; use coarser zone spacings or raise the limit (--max-samples)"
+        )
+    messages += zones.messages
+    # the search radius, preset and step: the farthest any requirement (the site-wide one, a
+    # zone's) reaches, the strictest spacing any asks
+    inputs = resolve(sc, req, st, zones.requirements)
+    st, reach = inputs.settings, inputs.reach_m
+    cand = candidate_grid(site, fac, reach, st.grid_m, st.clearance_m)
+    ctx = Context.build(site, fac, sc, req, st, reach, sample_req, scene)
+    pairs = ctx.pair_count(cand)
+    if pairs > st.max_pairs:
+        raise InputError(
+            f"the plan would evaluate {pairs:.3g} station × sample pairs (about "
+            f"{pairs / PAIRS_PER_S / 60:.0f} min), more than {st.max_pairs:.3g}; use a coarser "
+            "grid (--grid-m) or coarser samples, plan fewer buildings, or raise the limit "
+            "(--max-pairs)"
+        )
+    if len(cand) == 0:
+        messages.append(
+            "no free ground for a station within reach of the facades "
+            f"({reach:.0f} m, clearance {st.clearance_m:g} m)"
+        )
+    stand_xy = candidate_grid(site, fac, min(reach, 40.0), st.target_spacing_m, st.clearance_m)
+    if site.passages and len(cand):  # a gateway's stand sees both sides: one every grid step
+        through = shapely.union_all([g.geometry for g in site.passages])
+        stand_xy = np.vstack([stand_xy, cand[shapely.contains_xy(through, cand[:, 0], cand[:, 1])]])
+    tc = target_candidates(ctx, stand_xy)
+    return Workbench(
+        site=site,
+        scanner=sc,
+        req=req,
+        settings=st,
+        facades=fac,
+        zones=zones,
+        zone_ids=sample_req.zone_ids,
+        ctx=ctx,
+        seen=SightCache(ctx, tc, cand),
+        reach=reach,
+        n_grid=len(cand),
+        pairs=pairs,
+        messages=messages,
+        setup_s=time.perf_counter() - t0,
+    )
+
+
+def choose_stations(
+    wb: Workbench,
+    progress: Progress | None = None,
+    *,
+    locked: np.ndarray | None = None,
+    locked_ids: list[str | None] | None = None,
+    clock: Clock | None = None,
+    edited: bool = False,
+) -> Plan:
+    """The fewest stations (with ``locked`` positions kept, each under its id in
+    ``locked_ids`` where one is given) and their registration network, for what ``wb``
+    holds, within the time budget of ``clock`` (default: the settings' from now).
+    ``edited``: the plan's ids are out (printed, scanned): a new station takes a number
+    never given (:attr:`~planner.pipeline.engine.judge.Workbench.last_station`)."""
+    ctx, st = wb.ctx, wb.settings
+    fac = wb.facades
+    say = progress or (lambda _f, _m: None)
+    clock = Clock.budget(st.time_limit_s) if clock is None else clock
+    clock.note("setup", wb.setup_s)
+    # the last round's judgement and the plan's tables come after the rounds whatever the
+    # clock says: the rounds end in time for them
+    whole, clock = clock, clock.sooner(FINISH_S_PER_SAMPLE * len(fac.z))
+    forced = np.empty(0, dtype=np.int64)
+    if locked is not None and len(np.asarray(locked).reshape(-1, 2)):
+        forced = wb.add_positions(free_positions(wb, locked, "locked station"))
+    named = zip(forced, locked_ids, strict=True) if locked_ids is not None else []
+    kept = {int(i): (sid, "hand") for i, sid in named if sid}  # pool index → its id
+    cand, seen = wb.pool, wb.seen
+    # stations and registration chosen together (docs/science.md): the fewest stations by
+    # the scanner's error, their network, every sample judged on the total; while the
+    # registration keeps samples short, stations are added that meet them with the
+    # registration error they would have (estimated from the network) and the network is
+    # built and judged again; once none is short, the fewest stations are chosen again with
+    # every candidate's estimated registration error, the network's backbone kept
+    cut: list[str] = []  # what the time budget cut short, in words
+    at_least = min(time.monotonic() + MIN_EVALUATION_S, whole.deadline)
+    by = max(clock.share(EVALUATION_SHARE), at_least)
+    ev = _evaluate(ctx, cand, say, clock, by=by)
+    demanded = ~fac.party_wall
+    if not ev.evaluated[demanded].all():
+        cut.append(
+            f"the evaluation ({int(ev.evaluated[demanded].sum())} of {int(demanded.sum())} "
+            "samples; the plan covers those)"
+        )
+    wb.evaluation = ev
+    # the diagnosis before the optimiser: the optimiser takes a share of the time left, and
+    # what it leaves must not decide what the plan says of the samples no position meets
+    wb.diagnosis = diagnose(ctx, cand, ev, clock)
+    if len(wb.diagnosis.samples) and not np.all(wb.diagnosis.best["done"]):
+        cut.append("the diagnosis of the samples no position meets")
+    sol = _optimise(ctx, cand, ev, say, clock, forced=forced)
+    if len(wb.diagnosis.samples) and clock.over:
+        cut.append("the best-effort stations for the samples no position meets")
+    best_effort, relaxed_by = _best_effort(ctx, cand, sol.chosen, wb.diagnosis, clock)
+    cover = np.union1d(sol.chosen, best_effort) if len(best_effort) else sol.chosen
+    if len(best_effort):
+        forced = np.union1d(forced, best_effort)
+        say(0.8, f"best effort: {len(best_effort)} station(s) for what no position meets")
+    r = Round(cover=cover, net=round_network(ctx, cand, seen, cover, clock))
+    r.judged = judge(ctx, cand, r)
+    best, rounds, adds, resolved, moved = r, 0, 0, False, False
+    while st.computes_registration and rounds < MAX_REGISTRATION_ROUNDS:
+        if r.net is None:
+            break
+        if clock.over:
+            if r.judged.short_by_registration.any() or not resolved:
+                cut.append(f"the registration rounds (after {rounds})")
+            break
+        short = r.judged.short_by_registration
+        if short.any() and not moved:  # once: a datum nearer the middle, kept if better
+            moved = True
+            trial = datum_round(ctx, cand, seen, r, clock, say)
+            if trial is not None:  # else: as if untried
+                rounds += 1
+                r = trial
+                best = r if r.judged.better_than(best.judged) else best
+                continue
+        more = np.empty(0, dtype=np.int64)
+        if short.any() and (resolved or adds < ADD_ROUNDS):
+            say(0.85, f"registration: {int(short.sum())} samples short; adding stations")
+            more = stations_for(ctx, cand, r.net, short, clock)
+        grown_from = r.net
+        if len(more):
+            adds += 1
+            chosen = np.concatenate([r.net.stations, more])
+            r = Round(cover=r.cover, added=np.union1d(r.added, more))
+        elif not resolved and len(r.net.stations) > len(cover):
+            say(0.9, "registration: choosing the fewest stations again")
+            resolved = True
+            backbone = np.union1d(r.net.backbone, forced)
+            estimate = estimate_registration(ctx, r.net, cand)
+            again = _evaluate(ctx, cand, say, clock, estimate=estimate)
+            chosen = _optimise(ctx, cand, again, say, clock, backbone, scanner_ok=ev.ok).chosen
+            r = Round(cover=chosen)
+        else:
+            break
+        rounds += 1
+        keep = grown_from.datum_station if len(more) else None
+        r.net = round_network(ctx, cand, seen, chosen, clock, keep)
+        r.judged = judge(ctx, cand, r)
+        if r.judged.better_than(best.judged):
+            best = r
+    r = best
+    if st.computes_registration and r.net is not None:
+        r = prune(ctx, cand, seen, r, clock, keep=forced)
+    if any(n.cut_short for n in (r.net,) if n is not None):
+        cut.append("the search for linking stations")
+    messages = list(wb.messages)
+    if cut:
+        messages.append(budget_message(st.time_limit_s, cut))
+    n_locked = len(forced) - len(best_effort)
+    if n_locked:
+        messages.append(f"{n_locked} station(s) locked by hand; the others chosen around them.")
+    if len(best_effort):
+        messages.append(
+            f"Best effort: {len(best_effort)} station(s) added for the samples no position "
+            f"meets, meeting them within {relaxed_by:.2f} × the "
+            "limits (they stay unmet; see the best achievable values and what would meet them)."
+        )
+    solver = SolverReport(
+        method=sol.method,
+        status=sol.status,
+        objective=sol.objective,
+        lower_bound=sol.lower_bound,
+        gap=sol.gap,
+        seconds=sol.seconds,
+        greedy_objective=sol.greedy_objective,
+        reductions=sol.details.get("reductions", ""),
+        parts=sol.details.get("parts", 0),
+        registration_rounds=rounds,
+        cut_short=cut,
+        samples_total=int((~fac.party_wall).sum()),
+        samples_evaluated=int((ev.evaluated & ~fac.party_wall).sum()),
+    )
+    if r.net is not None and len(r.net.stations) != sol.objective and st.computes_registration:
+        messages.append(
+            f"Stations: {sol.objective} meet the requirement by the scanner's error alone; "
+            f"{len(r.net.stations)} with the registration error counted ({rounds} round(s) of "
+            "adding stations and choosing again)."
+        )
+    hand = np.setdiff1d(forced, best_effort)
+    return assemble(
+        wb,
+        r,
+        solver,
+        messages,
+        whole,
+        progress=say,
+        hand=hand,
+        best_effort=best_effort,
+        kept=kept,
+        edited=edited,
+    )
+
+
+#: The samples no position meets are served, best effort, within this share of the smallest
+#: uniform relaxation of the limits under which every one of them could be met.
+BEST_EFFORT_SLACK = 1.02
+
+
+def _best_effort(
+    ctx: Context,
+    cand: np.ndarray,
+    chosen: np.ndarray,
+    diagnosis: Diagnosis,
+    clock: Clock,
+) -> tuple[np.ndarray, float]:
+    """Candidates (not among ``chosen``) for the samples no candidate meets, and the factor
+    they meet them within: the smallest uniform relaxation of the limits under which every
+    such sample seen could be met (the largest of their best achievable scores, value /
+    limit, times :data:`BEST_EFFORT_SLACK`), the fewest candidates (greedy) meeting them
+    under it — so that a requirement a little too strict gives the plan that comes closest,
+    not zero stations. The samples stay unmet. None is spent on the samples beyond the
+    ground's reach (:attr:`Diagnosis.elevated`): they need an elevated station."""
+    none = np.empty(0, dtype=np.int64), 1.0
+    if not len(diagnosis.samples) or clock.over:
+        return none
+    best = diagnosis.best
+    good = best["done"] & np.isfinite(best["score"]) & ~diagnosis.elevated
+    if not good.any():
+        return none
+    factor = float(best["score"][good].max()) * BEST_EFFORT_SLACK
+    limits = {
+        c.key: ctx.limits[c.key] * factor if c.sense == "max" else ctx.limits[c.key] / factor
+        for c in CHECKS
+    }
+    relaxed = replace(ctx, limits=limits, stations_needed=np.ones_like(ctx.stations_needed))
+    only = np.zeros(len(ctx.facades.z), dtype=bool)
+    only[diagnosis.samples[good]] = True
+    ok = evaluate_candidates(relaxed, cand, deadline=clock.deadline, only=only).ok
+    ok = sp.csr_matrix(ok[np.flatnonzero(only)])
+    served = np.asarray(ok[:, chosen].sum(axis=1)).ravel() > 0 if len(chosen) else False
+    demand = ((np.asarray(ok.sum(axis=1)).ravel() > 0) & ~served).astype(np.int64)
+    if not demand.any():
+        return none
+    sol = solve_cover(ok, demand, _solver_time(ctx, clock), ctx.settings.method)
+    return np.asarray(sol.chosen, dtype=np.int64), factor
+
+
+#: How many times stations are added or chosen again for the registration error (each time
+#: the network is built and judged again) …
+MAX_REGISTRATION_ROUNDS = 4
+#: … of which rounds of adding before the fewest are chosen again.
+ADD_ROUNDS = 2
+
+
+def _evaluate(
+    ctx: Context,
+    cand: np.ndarray,
+    say: Progress,
+    clock: Clock,
+    estimate: Registration | None = None,
+    by: float | None = None,
+) -> CandidateEvaluation:
+    """Every candidate against every sample on the scanner's error (plus the ``estimate`` of
+    its registration error), until the clock's deadline, or until ``by`` where given."""
+    with clock.timed("evaluate"):
+        return evaluate_candidates(
+            ctx,
+            cand,
+            progress=lambda f, m: say(0.05 + 0.6 * f, m),
+            deadline=clock.deadline if by is None else by,
+            registration=estimate,
+        )
+
+
+def _optimise(
+    ctx: Context,
+    cand: np.ndarray,
+    ev: CandidateEvaluation,
+    say: Progress,
+    clock: Clock,
+    forced: np.ndarray | None = None,
+    scanner_ok: sp.csr_matrix | None = None,
+) -> CoverSolution:
+    """The fewest stations meeting the evaluation ``ev`` (with the redundant views spread);
+    the ``forced`` candidates are taken and the fewest others added to them. A sample the
+    evaluation leaves fewer candidates than the ``scanner_ok`` (the evaluation on the
+    scanner's error alone) would give it is covered on ``scanner_ok``: by stations it is
+    met from by the scanner's error, where the exact network may still meet it — not by
+    whichever station happens to be nearest."""
+    fac, req, st = ctx.facades, ctx.req, ctx.settings
+    say(0.7, "choosing the fewest stations")
+    t = time.perf_counter()
+    ok = ev.ok
+    n_ok = np.asarray(ok.sum(axis=1)).ravel()
+    if scanner_ok is not None:
+        n_scanner = np.asarray(scanner_ok.sum(axis=1)).ravel()
+        lost = n_ok < np.minimum(ctx.stations_needed, n_scanner)
+        if lost.any():
+            mixed = ok.multiply(~lost[:, None]) + scanner_ok.multiply(lost[:, None])
+            ok = sp.csr_matrix(mixed > 0)
+            n_ok = np.where(lost, n_scanner, n_ok)
+    demand = cover_demand(ctx, n_ok)
+    remaining = _solver_time(ctx, clock)
+    if forced is None or not len(forced):
+        sol = solve_cover(ok, demand, remaining, st.method)
+    else:  # the others for what the forced stations leave
+        free = np.ones(len(cand))
+        free[forced] = 0.0
+        left = np.maximum(0, demand - np.asarray(ok[:, forced].sum(axis=1)).ravel())
+        sol = solve_cover(sp.csr_matrix((ok @ sp.diags(free)) > 0), left, remaining, st.method)
+        sol.chosen = np.union1d(sol.chosen, forced)
+        sol.objective = len(sol.chosen)
+        if sol.lower_bound is not None:  # the bound of the others plus the forced ones
+            sol.lower_bound = float(sol.lower_bound) + len(np.unique(forced))
+            sol.gap = max(0.0, (sol.objective - sol.lower_bound) / max(sol.objective, 1))
+    if (ctx.stations_needed > 1).any():
+        spread = spread_views(ok, demand, sol.chosen, cand, fac.xy, req.min_view_angle_deg)
+        if len(spread) > len(sol.chosen):  # the bound still holds; the gap is the spread's
+            sol.status += f"; {len(spread) - len(sol.chosen)} added for separate views"
+            sol.chosen, sol.objective = spread, len(spread)
+            sol.gap = (sol.objective - sol.lower_bound) / sol.objective
+    clock.note("optimise", time.perf_counter() - t)
+    return sol
+
+
+def _solver_time(ctx: Context, clock: Clock) -> float:
+    """The optimiser's time limit [s]: what is left of the plan's budget, or its
+    :data:`SOLVER_SHARE` when the registration network is still to be built and judged;
+    never under :data:`MIN_SOLVER_S`."""
+    share = SOLVER_SHARE if ctx.settings.computes_registration else 1.0
+    return max(MIN_SOLVER_S, share * clock.left_s())
+
+
+def cover_demand(ctx: Context, n_ok: np.ndarray) -> np.ndarray:
+    """How many of the chosen stations each sample needs, given how many candidates meet it
+    (``n_ok``): the stations its requirement asks for, at most as many as meet it; none on a
+    party wall."""
+    return np.where(ctx.facades.party_wall, 0, np.minimum(ctx.stations_needed, n_ok))

@@ -1,0 +1,377 @@
+"""The surfaces the stations' scans share, and the cloud-to-cloud links over them.
+
+The model is :mod:`planner.cloud_registration`; this module finds its patches on a site:
+
+- **facade patches**: every facade sample is a patch of ``sample_spacing_m`` ×
+  ``sample_height_step_m`` on its wall, seen by a station where the evaluation says so, its
+  points from the scan step and the incidence, its noise across the wall the accuracy
+  model's m_y (:func:`planner.pipeline.evaluation.evaluate.evaluate_stations`);
+- **ground patches**: cells of :data:`GROUND_CELL_M` on open ground within
+  :data:`GROUND_REACH_M` of a station that it sees over the buildings, its noise along the
+  vertical from the ranging and the vertical angle at that elevation.
+
+Obstacles other than buildings (trees, cars, street furniture) are not modelled: they add
+overlap in practice, and move.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+import shapely
+
+from planner.accuracy3d import incidence_ranging_rms_mm
+from planner.cloud_registration import (
+    MAX_LINK_CONDITION,
+    link_covariance,
+    link_information,
+    link_strength,
+    overlap_pct,
+    patch_points,
+    patch_variance_mm2,
+    plane_rows,
+    weakest_direction,
+)
+from planner.pipeline.evaluation.evaluate import Context, evaluate_stations
+from planner.spacing import point_spacing_mm
+from planner.units import RHO_ARCSEC
+
+__all__ = ["CloudLink", "SurfaceCache", "Surfaces", "cloud_link", "overlap_matrix", "surfaces"]
+
+#: Ground cells [m] and how far from a station its ground counts [m].
+GROUND_CELL_M = 2.0
+GROUND_REACH_M = 25.0
+#: A ground cell's sight line, cast as a ray, ends this far above the ground [m]: above the
+#: terrain's triangles and the clearance the lines beside it keep.
+GROUND_LIFT_M = 0.05
+
+
+@dataclass(frozen=True)
+class Surfaces:
+    """Patches (P) and what K stations make of them."""
+
+    xyz: np.ndarray  # (P, 3) patch centres [m]
+    normal: np.ndarray  # (P, 3) unit normals
+    points: np.ndarray  # (P, K) scan points on each patch (0: not seen)
+    var_mm2: np.ndarray  # (P, K) variance of the patch's position along its normal [mm²]
+    area_m2: np.ndarray  # (P,)
+    station_xyz: np.ndarray  # (K, 3)
+
+    @property
+    def seen(self) -> np.ndarray:
+        return self.points > 0
+
+
+@dataclass(frozen=True)
+class CloudLink:
+    """Scan ``child`` registered to scan ``parent`` over their common patches."""
+
+    parent: int
+    child: int
+    info: np.ndarray  # (6, 6) point-to-plane information at the child's centre
+    cov: np.ndarray  # (6, 6) the child's pose relative to the parent (levelled: with tilt)
+    overlap_pct: float
+    condition: float
+    patches: int
+
+    @property
+    def fixed(self) -> bool:
+        return bool(np.isfinite(self.condition) and self.condition <= MAX_LINK_CONDITION)
+
+    @property
+    def weakest(self) -> str:
+        return weakest_direction(self.cov)
+
+
+def surfaces(ctx: Context, station_xy: np.ndarray) -> Surfaces:
+    """The facade and ground patches the stations at ``station_xy`` (K, 2) see (module
+    docstring)."""
+    return SurfaceCache(ctx).take(np.arange(len(station_xy)), np.asarray(station_xy, float))
+
+
+class SurfaceCache:
+    """What each candidate position sees of the patches, computed once per candidate for a
+    plan, and the cloud links between candidates (by candidate index). Ground cells lie on
+    one grid for the whole plan, so a candidate's patches do not depend on the others."""
+
+    def __init__(self, ctx: Context) -> None:
+        self.ctx = ctx
+        fac = ctx.facades
+        self._xyz = [np.column_stack([fac.xy, fac.z])]
+        self._normal = [fac.normal3[fac.facade]]
+        self._area = [
+            np.full(len(fac.z), ctx.settings.sample_spacing_m * ctx.settings.sample_height_step_m)
+        ]
+        self._n = len(fac.z)
+        # the ground cells met so far (:data:`_CELL_KEY`), sorted, and their patch indices
+        self._cell_keys = np.empty(0, dtype=np.int64)
+        self._cell_ids = np.empty(0, dtype=np.int64)
+        self._solid = shapely.union_all([g for _, g, _ in ctx.site.blockers])
+        self.columns: dict[int, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
+        # each facade sample's wall class (:meth:`wall_axes`), and each candidate's as bits
+        n = fac.normal[fac.facade]
+        deg = np.degrees(np.arctan2(n[:, 1], n[:, 0])) % 180.0
+        self._axis = (np.floor((deg + 22.5) / 45.0) % 4).astype(np.int64)
+        self._axes: dict[int, int] = {}
+        self.links: dict[tuple[int, int], CloudLink] = {}
+        # the surface every pair of candidates seen by :meth:`overlap` holds in common [m²]
+        self._row: dict[int, int] = {}
+        self._common = np.zeros((0, 0), dtype=np.float32)
+        self._total = np.zeros(0)
+        # which pairs of those overlap by ``_over_pct`` or more (:meth:`overlapping`)
+        self._over = np.zeros((0, 0), dtype=bool)
+        self._over_pct = math.nan
+
+    def take(self, idx: np.ndarray, cand_xy: np.ndarray) -> Surfaces:
+        """The patches candidates ``idx`` (positions ``cand_xy[idx]``) see, as :class:`Surfaces`
+        over the patches any of them sees."""
+        idx = np.asarray(idx, dtype=np.int64)
+        self._compute(idx, cand_xy)
+        cols = [self.columns[int(i)] for i in idx]
+        used = _sorted_union([c[0] for c in cols])
+        xyz, normal, area = (a[used] for a in self._table())
+        points = np.zeros((len(used), len(idx)))
+        var = np.full((len(used), len(idx)), np.inf)
+        for j, (ids, pts, v) in enumerate(cols):
+            rows = np.searchsorted(used, ids)
+            points[rows, j], var[rows, j] = pts, v
+        return Surfaces(
+            xyz=xyz,
+            normal=normal,
+            points=points,
+            var_mm2=var,
+            area_m2=area,
+            station_xyz=np.column_stack([cand_xy[idx], self.ctx.station_z(cand_xy[idx])]),
+        )
+
+    def link(self, parent: int, child: int, cand_xy: np.ndarray) -> CloudLink:
+        """The cloud-to-cloud registration of candidate ``child`` to candidate ``parent``."""
+        if (parent, child) not in self.links:
+            pair = self.take(np.array([parent, child]), cand_xy)
+            self.links[(parent, child)] = cloud_link(self.ctx, pair, 0, 1)
+        return self.links[(parent, child)]
+
+    def overlapping(self, idx: np.ndarray, cand_xy: np.ndarray, min_pct: float) -> np.ndarray:
+        """(K, K) whether the scans of candidates ``idx`` overlap by ``min_pct`` [%] or more
+        (the overlap of :func:`overlap_matrix`), for the searches for linking stations over
+        many candidates. The surface every pair holds in common is kept for the plan (sparse
+        products for the candidates not seen yet), and so is the answer: each pair's overlap
+        is computed once, with the same operands as over the whole matrix."""
+        idx = np.asarray(idx, dtype=np.int64)
+        self._compute(idx, cand_xy)
+        new = [int(i) for i in dict.fromkeys(idx.tolist()) if i not in self._row]
+        if new:
+            area = self._table()[2]
+            every = [*self._row, *new]
+            seen = self._seen_matrix(every)  # (N, P)
+            fresh = (seen[len(self._row) :] @ sp.diags(area) @ seen.T).toarray()
+            n = len(self._row)
+            common = np.zeros((len(every), len(every)), dtype=np.float32)
+            common[:n, :n] = self._common
+            common[n:, :] = fresh
+            common[:n, n:] = fresh[:, :n].T
+            self._common = common
+            self._total = np.concatenate([self._total, seen[n:] @ area])
+            self._row.update({c: n + k for k, c in enumerate(new)})
+        if new or min_pct != self._over_pct:
+            old = len(self._over) if min_pct == self._over_pct else 0
+            over = np.zeros(self._common.shape, dtype=bool)
+            over[:old, :old] = self._over[:old, :old]
+            c, t = self._common, self._total
+            # the new rows against every column, then the old rows against the new columns
+            over[old:] = _overlaps(c[old:], t[old:, None], c[:, old:].T, t[None, :], min_pct)
+            over[:old, old:] = _overlaps(
+                c[:old, old:], t[:old, None], c[old:, :old].T, t[None, old:], min_pct
+            )
+            self._over, self._over_pct = over, min_pct
+        rows = np.array([self._row[int(i)] for i in idx], dtype=np.int64)
+        return self._over[np.ix_(rows, rows)]
+
+    def wall_axes(self, idx: np.ndarray, cand_xy: np.ndarray) -> np.ndarray:
+        """(K,) which of four 45° classes of wall direction (normals modulo 180°) each
+        candidate sees, as bits: two scans whose common walls fall in one class share no two
+        walls that are not parallel — with the ground they leave a shift free."""
+        idx = np.asarray(idx, dtype=np.int64)
+        self._compute(idx, cand_xy)
+        return np.array([self._axes[int(i)] for i in idx], dtype=np.int64)
+
+    def _seen_matrix(self, idx: list[int]) -> sp.csr_matrix:
+        """(len(idx), P) which patches candidates ``idx`` see."""
+        cols = [self.columns[i][0] for i in idx]
+        which = np.repeat(np.arange(len(idx)), [len(c) for c in cols])
+        rows = np.concatenate(cols) if cols else np.empty(0, np.int64)
+        return sp.csr_matrix((np.ones(len(rows)), (which, rows)), shape=(len(idx), self._n))
+
+    def _table(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Every patch's centre, normal and area, joined once after new ones came."""
+        if len(self._xyz) > 1:
+            self._xyz, self._normal, self._area = (
+                [np.concatenate(a)] for a in (self._xyz, self._normal, self._area)
+            )
+        return self._xyz[0], self._normal[0], self._area[0]
+
+    def _compute(self, idx: np.ndarray, cand_xy: np.ndarray) -> None:
+        """The patches of the candidates ``idx`` not seen yet."""
+        new = [int(i) for i in dict.fromkeys(np.asarray(idx).tolist()) if i not in self.columns]
+        if not new:
+            return
+        ctx, sc, st = self.ctx, self.ctx.scanner, self.ctx.settings
+        station_xy = cand_xy[new]
+        station_z = ctx.station_z(station_xy)
+        f_points, f_var = _facade_patches(ctx, station_xy)
+        for j, (c, sxy) in enumerate(zip(new, station_xy, strict=True)):
+            f_ids = np.flatnonzero(f_points[:, j] > 0)
+            g_xy = self._cells_near(sxy)
+            g_z = ctx.scene.ground_z(g_xy)
+            height = station_z[j] - g_z  # the scanner's height over each cell
+            d = np.hypot(*(g_xy - sxy).T)
+            s = np.hypot(d, height)
+            near = s >= sc.min_range_m
+            g_xy, g_z, s, height = g_xy[near], g_z[near], s[near], height[near]
+            src = np.column_stack(
+                [np.broadcast_to(sxy, g_xy.shape), np.full(len(g_xy), station_z[j])]
+            )
+            box = (
+                np.array([0, len(g_xy)]),
+                np.array([[*(sxy - GROUND_REACH_M), *(sxy + GROUND_REACH_M)]]),
+            )
+            # a cell's sight line ends on the ground: just above it where rays answer (the
+            # terrain's own triangles would block a line ending on them)
+            lift = 0.0 if ctx.scene.prisms else GROUND_LIFT_M
+            open_ = ctx.scene.seen(src, np.column_stack([g_xy, g_z + lift]), groups=box)
+            g_xy, s, height = g_xy[open_], s[open_], height[open_]
+            sin_e = height / s
+            m_s = sc.range_rms_at(s)
+            if st.incidence_ranging:  # the beam meets the ground at θ = 90° − elevation
+                m_s = incidence_ranging_rms_mm(m_s, sin_e)
+            sigma2 = (m_s * sin_e) ** 2 + (
+                s * 1000.0 * sc.tilt_rms_arcsec / RHO_ARCSEC * np.sqrt(1.0 - sin_e**2)
+            ) ** 2
+            g_pts = patch_points(
+                GROUND_CELL_M**2, sin_e, point_spacing_mm(s, step_mm_at_10m=ctx.step_mm_at_10m)
+            )
+            g_ids = self._ground_ids(g_xy)
+            self._axes[c] = int(np.bitwise_or.reduce(1 << np.unique(self._axis[f_ids]), initial=0))
+            self.columns[c] = (
+                np.concatenate([f_ids, g_ids]),
+                np.concatenate([f_points[f_ids, j], g_pts]),
+                np.concatenate(
+                    [f_var[f_ids, j], patch_variance_mm2(np.sqrt(sigma2), g_pts, st.cloud_floor_mm)]
+                ),
+            )
+
+    def _cells_near(self, sxy: np.ndarray) -> np.ndarray:
+        """Centres of the grid's ground cells within reach of ``sxy`` outside buildings."""
+        lo = np.floor((sxy - GROUND_REACH_M) / GROUND_CELL_M)
+        hi = np.ceil((sxy + GROUND_REACH_M) / GROUND_CELL_M)
+        gx, gy = np.meshgrid(np.arange(lo[0], hi[0]), np.arange(lo[1], hi[1]))
+        xy = (np.column_stack([gx.ravel(), gy.ravel()]) + 0.5) * GROUND_CELL_M
+        xy = xy[np.hypot(*(xy - sxy).T) <= GROUND_REACH_M]
+        if not self._solid.is_empty and len(xy):
+            xy = xy[~shapely.contains_xy(self._solid, xy[:, 0], xy[:, 1])]
+        return xy
+
+    def _ground_ids(self, g_xy: np.ndarray) -> np.ndarray:
+        """Patch indices of ground cells (centres ``g_xy``), new cells appended."""
+        cells = np.floor(g_xy / GROUND_CELL_M).astype(np.int64).reshape(-1, 2)
+        keys = cells[:, 0] * _CELL_KEY + cells[:, 1]  # one integer per cell
+        at = np.searchsorted(self._cell_keys, keys)
+        known = at < len(self._cell_keys)
+        known[known] = self._cell_keys[at[known]] == keys[known]
+        if not known.all():  # new cells, numbered in the order they first come
+            _, first = np.unique(keys[~known], return_index=True)
+            fresh = cells[~known][np.sort(first)]
+            centres = (fresh + 0.5) * GROUND_CELL_M
+            self._xyz.append(np.column_stack([centres, np.zeros(len(fresh))]))
+            self._normal.append(np.tile([0.0, 0.0, 1.0], (len(fresh), 1)))
+            self._area.append(np.full(len(fresh), GROUND_CELL_M**2))
+            ids = np.concatenate([self._cell_ids, self._n + np.arange(len(fresh))])
+            every = np.concatenate([self._cell_keys, fresh[:, 0] * _CELL_KEY + fresh[:, 1]])
+            order = np.argsort(every, kind="stable")
+            self._cell_keys, self._cell_ids = every[order], ids[order]
+            self._n += len(fresh)
+            at = np.searchsorted(self._cell_keys, keys)
+        return self._cell_ids[at]
+
+
+def _overlaps(common_parent, total_parent, common_child, total_child, min_pct) -> np.ndarray:
+    """Whether :func:`~planner.cloud_registration.overlap_pct` of the surfaces in common (kept
+    as float32, taken exactly as float64) reaches ``min_pct``."""
+    parent, child = common_parent.astype(float), common_child.astype(float)
+    return overlap_pct(parent, total_parent, child, total_child) >= min_pct
+
+
+#: A ground cell (i, j) as one integer, i·_CELL_KEY + j: distinct for |j| < _CELL_KEY / 2,
+#: and within int64 for |i| < 2³¹ (cells of 2 m: coordinates within ±4 000 000 km).
+_CELL_KEY = 1 << 32
+
+
+def _sorted_union(ids: list[np.ndarray]) -> np.ndarray:
+    """The patch indices in any of ``ids`` (each without repeats), sorted: ``np.unique`` of
+    them joined, by a sort (NumPy's hashing ``unique`` is slower on these)."""
+    if not ids:
+        return np.empty(0, dtype=np.int64)
+    joined = np.sort(np.concatenate(ids))
+    first = np.ones(len(joined), dtype=bool)
+    first[1:] = joined[1:] != joined[:-1]
+    return joined[first]
+
+
+def _facade_patches(ctx: Context, station_xy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(N, K) scan points on every facade patch from each station (0: not seen) and the
+    variance of the patch's position across its wall [mm²] (infinite where not seen)."""
+    st = ctx.settings
+    dense = evaluate_stations(ctx, station_xy)
+    view = dense["view"] & np.isfinite(dense["scanner_m_y_mm"])
+    slope = np.where(view, dense["slope_distance_m"], 1.0)
+    cos_inc = np.where(view, np.cos(np.radians(np.nan_to_num(dense["incidence_deg"]))), 0.0)
+    area = st.sample_spacing_m * st.sample_height_step_m
+    spacing = point_spacing_mm(slope, step_mm_at_10m=ctx.step_mm_at_10m)
+    points = np.where(view, patch_points(area, cos_inc, spacing), 0.0)
+    var = patch_variance_mm2(
+        np.nan_to_num(dense["scanner_m_y_mm"], nan=1.0), np.maximum(points, 1.0), st.cloud_floor_mm
+    )
+    return points, np.where(points > 0, var, np.inf)
+
+
+def overlap_matrix(surf: Surfaces) -> np.ndarray:
+    """(K, K) overlap [%] of every pair of stations: the smaller share of either scan's
+    surface that the other scan also holds (:func:`planner.cloud_registration.overlap_pct`;
+    by area, as registration software counts it on clouds thinned to an even spacing)."""
+    seen = surf.seen.astype(float)
+    area = seen * surf.area_m2[:, None]
+    total = area.sum(axis=0)
+    common = area.T @ seen  # [a, b]: the surface both a and b see
+    return overlap_pct(common, total[:, None], common.T, total[None, :])
+
+
+def cloud_link(ctx: Context, surf: Surfaces, parent: int, child: int) -> CloudLink:
+    """The cloud-to-cloud registration of scan ``child`` to scan ``parent``."""
+    seen_p, seen_c = surf.points[:, parent] > 0, surf.points[:, child] > 0
+    both = np.flatnonzero(seen_p & seen_c)
+    rows = plane_rows(surf.xyz[both], surf.normal[both], surf.station_xyz[child])
+    info = link_information(rows, surf.var_mm2[both, parent], surf.var_mm2[both, child])
+    sc = ctx.scanner
+    levelled = sc.is_levelled
+    cov = link_covariance(
+        # a link relative to its parent: the two stations' tilts levelled, none without a
+        # compensator (6 parameters take them out; the datum's lean is the network's)
+        info,
+        levelled=levelled,
+        tilt_rms_arcsec=sc.initial_tilt_rms_arcsec if levelled else 0.0,
+    )
+    area = surf.area_m2
+    common = area[both].sum()
+    ov = overlap_pct(common, area[seen_p].sum(), common, area[seen_c].sum())
+    return CloudLink(
+        parent=parent,
+        child=child,
+        info=info,
+        cov=cov,
+        overlap_pct=float(ov),
+        condition=link_strength(info, levelled=levelled)[0],
+        patches=len(both),
+    )

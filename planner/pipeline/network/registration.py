@@ -1,0 +1,249 @@
+"""Registration planning: the targets that tie the scans together, the network of pairwise
+registrations, and its error at every facade sample (:func:`build_network`, which puts
+the room's pieces together).
+
+1. Where targets can go and what each station sees of them:
+   :mod:`~planner.pipeline.network.targets`.
+2. The targets of each link: :mod:`~planner.pipeline.network.links`.
+3. Linking stations where groups of stations cannot be linked:
+   :mod:`~planner.pipeline.network.bridges`.
+4. The datum and the tree of registrations: :mod:`~planner.pipeline.network.layout`;
+   cloud-to-cloud links: :mod:`~planner.pipeline.network.clouds`.
+5. The network as planned: :class:`~planner.pipeline.network.network.Network`. The error
+   the plan is judged on is that of the simultaneous adjustment of every placed target each
+   station sees (:func:`planner.registration_error.adjust`), as registration software
+   computes it.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+
+import numpy as np
+
+from planner.cloud_registration import weakest_direction
+from planner.pipeline.evaluation.evaluate import Context
+from planner.pipeline.network import clouds
+from planner.pipeline.network.bridges import find_bridges, link_groups, linking_hops, shared_targets
+from planner.pipeline.network.layout import HIDDEN_DETOUR, Layout, Stands
+from planner.pipeline.network.network import Network, network_message
+from planner.pipeline.network.targets import SightCache, TargetCandidates, centre_rms, item_sizes
+from planner.registration_error import (
+    CONTROL,
+    Link,
+    adjust,
+    propagate,
+    transport_pose_cov,
+)
+
+__all__ = [
+    "build_network",
+]
+
+
+def build_network(
+    ctx: Context,
+    tc: TargetCandidates,
+    cand_xy: np.ndarray,
+    chosen: np.ndarray,
+    probes: dict[int, np.ndarray],
+    *,
+    goal_mm: float,
+    weak_mm: float = np.inf,
+    cache: SightCache | None = None,
+    datum: int | None = None,
+    deadline: float = math.inf,
+) -> Network:
+    """Link the chosen stations into one registration network (module docstring).
+
+    ``probes`` maps a position in ``chosen`` to the facade points it serves (P, 3) [m]; a
+    linking station without points is probed at its own targets' spread. A link whose own
+    error exceeds ``weak_mm`` is strengthened, where linking stations can, by a detour
+    that makes the worst station's error smaller. ``cache`` keeps the candidates' sights
+    between calls. ``datum`` (a candidate index) keeps the datum of the network this one
+    grows from, when it is among the stations. After ``deadline`` (a
+    :func:`time.monotonic` time) no linking stations are looked for (``cut_short``).
+    """
+    levelled = ctx.scanner.is_levelled
+    seen = cache if cache is not None else SightCache(ctx, tc, cand_xy)
+    stations = [int(c) for c in chosen]
+    n_cover = len(stations)
+    lay = Layout(ctx, seen, cand_xy, stations, probes, goal_mm, datum, deadline)
+    groups = link_groups(lay.k, lay.pairs)
+    cut_short = False
+    if groups.max() > 0:  # stations neither targets nor clouds tie: linking stations
+        hops = linking_hops(ctx, seen, cand_xy, stations, lay.mode, lay.sight, deadline)
+        extra, cut_short = find_bridges(hops, groups, deadline) if hops else ([], True)
+        if extra:
+            lay = Layout(ctx, seen, cand_xy, stations + extra, probes, goal_mm, datum, deadline)
+    weak = np.zeros(1)
+    if np.isfinite(weak_mm) and lay.k > 1 and time.monotonic() <= deadline:
+        weak = lay.weak_groups(weak_mm)
+    if weak.max() > 0:  # too weak: a detour, if it helps
+        hops = linking_hops(ctx, seen, cand_xy, lay.stations, lay.mode, lay.sight, deadline)
+        extra, _ = find_bridges(hops, weak, deadline) if hops else ([], True)
+        if extra:
+            trial = Layout(
+                ctx, seen, cand_xy, lay.stations + extra, probes, goal_mm, datum, deadline
+            )
+            if len(trial.cost) >= len(lay.cost) and trial.worst_var < 0.8 * lay.worst_var:
+                lay = trial
+    stations, sight, station_xyz, datum = lay.stations, lay.sight, lay.station_xyz, lay.datum
+    k, xyz = lay.k, tc.xyz
+    # the links in tree order, each preferring the targets already set up (those the surveyor
+    # placed by hand are taken first by every link that sees them: choose_link_targets)
+    placed: set[int] = set()
+    links: list[Link] = []
+    link_error: dict[tuple[int, int], float] = {}
+    stands = Stands(ctx, tc, station_xyz)
+    tied = [] if datum is None or datum == CONTROL else [datum]
+    paired = set(lay.pairs)
+    behind = 0  # links that can only use a target another link's sphere hides
+    for parent, child in lay.tree:
+        targets, err = lay.link(parent, child, placed, stands)
+        cl = lay.cloud(parent, child)
+        if not targets and cl is not None:  # cloud to cloud
+            links.append(Link(parent, child, (), cl.info))
+            link_error[(parent, child)] = err
+            tied.append(child)
+            continue
+        if not targets:  # the targets set up hide this link's: register it to another
+            bound = max(lay.goal_mm, HIDDEN_DETOUR * lay.link(parent, child)[1])
+            others = [(i, lay.link(i, child, placed, stands)) for i in tied if i != parent]
+            others = [
+                (e, i, t)
+                for i, (t, e) in others
+                if t and e <= bound and (min(i, child), max(i, child)) in paired
+            ]
+            if others:
+                err, parent, targets = min(others)
+        if not targets:  # no good other either: targets that do not hide one another
+            targets, err = lay.link(parent, child, placed, Stands(ctx, tc, station_xyz))
+            behind += 1  # behind a sphere of another link: the message says so
+        if not targets:
+            targets, err = lay.link(parent, child)
+        links.append(Link(parent, child, tuple(targets)))
+        link_error[(parent, child)] = err
+        placed.update(targets)
+        stands.set_up((parent, child), targets)
+        tied.append(child)
+    sight = stands.hide(sight, placed)  # the spheres set up hide some targets from some stations
+    # the final sizes: each placed target gets the smallest item that serves every station
+    # using it, and the centre RMS with that item
+    users: dict[int, set[int]] = {}
+    for lk in links:
+        for t in lk.targets:
+            users.setdefault(t, set()).add(lk.child)
+            if lk.parent != CONTROL:
+                users[t].add(lk.parent)
+    final_rms: dict[tuple[int, int], float] = {}  # the links' observations
+    observed: dict[tuple[int, int], float] = {}  # and every other station's that sees one
+    for t, who in users.items():
+        need = max(float(sight.need_mm[t, j]) for j in who)
+        size = float(item_sizes(ctx, tc, np.array([t]), np.array([need]))[0])
+        for j in who:
+            final_rms[(j, t)] = observed[(j, t)] = centre_rms(ctx, tc, sight, t, j, size)
+        if tc.type[t] == "control":
+            continue  # a control point is observed by the stations its links tie to it
+        for j in map(int, np.flatnonzero(sight.usable[t] & (sight.need_mm[t] <= size))):
+            if (j, t) not in observed:
+                observed[(j, t)] = centre_rms(ctx, tc, sight, t, j, size)
+    control_rms = {int(t): float(tc.control_rms_mm[t]) for t in np.flatnonzero(tc.is_control)}
+    link_sigma: dict[tuple[int, int], float] = {}
+    error = None
+    if links or datum is not None:
+        error = propagate(
+            station_xyz,
+            xyz,
+            final_rms,
+            links,
+            datum=None if datum == CONTROL else datum,
+            control_rms_mm=control_rms,
+            levelled=levelled,
+            tilt_rms_arcsec=ctx.scanner.initial_tilt_rms_arcsec,
+        )
+    if error is not None and ctx.settings.registration_processing == "adjustment":
+        # the registration as it is computed: every target each scan sees, adjusted together
+        # (pairwise: each scan registered to its parent on the link's targets, the chain's)
+        error.pose_cov = adjust(
+            station_xyz,
+            xyz,
+            observed,
+            error.tied,
+            datum=None if datum == CONTROL else datum,
+            control_rms_mm={t: r for t, r in control_rms.items() if t in users},
+            levelled=levelled,
+            tilt_rms_arcsec=ctx.scanner.initial_tilt_rms_arcsec,
+            planes=_planes(lay.surf),
+        )
+    if error is not None:
+        # each link's own error with the final sizes, at the facade points of its child; and
+        # the RMS of one target's centre difference in it (its dilution's denominator)
+        for lk in links:
+            if lk.info is not None:
+                continue  # a cloud link's own error is known (Layout.link)
+            key = (lk.parent, lk.child)
+            link_error[key] = lay.error_at_probes(error.link_cov[key], lk.child)
+            s2 = [
+                (control_rms[t] if lk.parent == CONTROL else final_rms[(lk.parent, t)]) ** 2
+                + final_rms[(lk.child, t)] ** 2
+                for t in lk.targets
+            ]
+            link_sigma[(lk.parent, lk.child)] = float(np.sqrt(np.mean(s2)))
+    weakest = {}  # each link's weakest direction at the middle of its child's facade points
+    for lk in links:
+        key = (lk.parent, lk.child)
+        cov = lay.cloud(*key).cov if lk.info is not None else None
+        if cov is None and error is not None and key in error.link_cov:
+            cov = error.link_cov[key]
+        if cov is not None and np.isfinite(np.diag(cov)).all():
+            mid = lay.probe(lk.child).mean(axis=0)
+            cov = transport_pose_cov(cov, station_xyz[lk.child], mid)
+        weakest[key] = weakest_direction(cov) if cov is not None else ""
+    n_groups = int(link_groups(k, lay.pairs).max() + 1) if k else 0
+    untied = int((~error.tied).sum()) if error is not None else k
+    message = network_message(k, k - n_cover, datum, untied, n_groups, tc, links, lay.mode)
+    if behind:
+        message += (
+            f"; {behind} link(s) use a target behind another link's sphere (set that sphere "
+            "up only after those scans)"
+        )
+    linkable = [(a, b, len(shared_targets(sight, tc, a, b))) for a, b in lay.pairs]
+    return Network(
+        stations=np.array(stations, dtype=np.int64),
+        n_link_stations=k - n_cover,
+        links=links,
+        link_error_mm=link_error,
+        link_sigma_mm=link_sigma,
+        linkable=linkable,
+        targets=sorted(placed),
+        datum=None if datum == CONTROL else datum,
+        error=error,
+        n_groups=n_groups,
+        message=message,
+        sight=sight,
+        candidates=tc,
+        station_xyz=station_xyz,
+        centre_rms=observed,
+        cut_short=cut_short,
+        mode=lay.mode,
+        weakest=weakest,
+        clouds={
+            (lk.parent, lk.child): lay.cloud(lk.parent, lk.child)
+            for lk in links
+            if lk.info is not None
+        },
+        overlap=lay.overlap,
+    )
+
+
+def _planes(surf: clouds.Surfaces | None) -> tuple | None:
+    """The patches as the adjustment takes them (:func:`planner.registration_error.adjust`)."""
+    if surf is None:
+        return None
+    p, j = np.nonzero(surf.seen)
+    var = dict(
+        zip(zip(j.tolist(), p.tolist(), strict=True), surf.var_mm2[p, j].tolist(), strict=True)
+    )
+    return surf.xyz, surf.normal, var
