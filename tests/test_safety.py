@@ -431,7 +431,7 @@ def test_bad_site_input_is_exit_2_with_a_message_and_nothing_written(
 ):
     """Refused before any work: no Dask cluster is started for it (facades of too many
     samples send ``--district auto`` to district mode; each block's are counted first)."""
-    import planner.pipeline.district.blocks as district
+    import planner.pipeline.district.schedule as district
 
     def no_cluster(*_a, **_k):
         raise AssertionError("a Dask cluster was started for an input to refuse")

@@ -93,6 +93,18 @@ class CalibrationDashboard:
     Zhang) from uploaded files → a scanner profile to download or install."""
 
     def __init__(self) -> None:
+        self._measurement_inputs()
+        self._profile_inputs()
+        self._quiet = False
+        self._replace: str | None = None  # the name whose installed file a 2nd click replaces
+        self.results: dict[str, object] = {}
+        self.scanner: Scanner | None = None
+        self._wire()
+        self.widget = self._lay_out()
+        self.use_example()
+
+    def _measurement_inputs(self) -> None:
+        """The four uploads, the declared precision, the example button and the result tabs."""
         self._tmp = upload_folder()
         self.slots = {
             s.key: s
@@ -125,12 +137,13 @@ class CalibrationDashboard:
         self.example = w.Button(
             description="Use the example data", icon="undo", layout=w.Layout(width="16em")
         )
-        self.example.on_click(lambda _b: self.use_example())
         self.outs = {k: w.Output() for k in ("lab", "distances", "axes")}
         self.tabs = w.Tab(children=[self.outs[k] for k in self.outs])
         for i, title in enumerate(("Lab test", "Distances", "Axis errors")):
             self.tabs.set_title(i, title)
 
+    def _profile_inputs(self) -> None:
+        """The profile's name, the base scanner, where each figure comes from, Install."""
         self.name = w.Text(
             value="my-scanner",
             description="profile name",
@@ -171,19 +184,18 @@ class CalibrationDashboard:
         self.profile_out = w.Output()
         self.download = w.HTML()
         self.install = w.Button(description="Install", icon="download", button_style="primary")
-        self.install.on_click(lambda _b: self.install_profile())
         self.install_status = w.HTML()
-        self._quiet = False
-        self._replace: str | None = None  # the name whose installed file a 2nd click replaces
-        self.results: dict[str, object] = {}
-        self.scanner: Scanner | None = None
 
+    def _wire(self) -> None:
+        self.example.on_click(lambda _b: self.use_example())
+        self.install.on_click(lambda _b: self.install_profile())
         for s in self.slots.values():
             s.upload.observe(lambda _c, key=s.key: self._uploaded(key), "value")
         self.precision.observe(lambda _c: self._compute("lab"), "value")
         for box in (self.name, self.base, self.range_from, self.angles_from, self.include_scale):
             box.observe(lambda _c: self._profile(), "value")
 
+    def _lay_out(self) -> w.VBox:
         files = [
             w.VBox(
                 [
@@ -193,7 +205,7 @@ class CalibrationDashboard:
             )
             for s in self.slots.values()
         ]
-        self.widget = w.VBox(
+        return w.VBox(
             [
                 w.HTML("<h3>1 · Measurements</h3>"),
                 w.HTML(
@@ -217,7 +229,6 @@ class CalibrationDashboard:
             ],
             layout=w.Layout(max_width="1200px"),
         )
-        self.use_example()
 
     # -- inputs ------------------------------------------------------------------------------
     def use_example(self) -> None:

@@ -760,18 +760,52 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
     """The site, scanner, requirement and setting options shared by plan and report. The
     requirement and setting options are made from the data classes' fields (name, unit,
     help, default), so both commands and the data classes cannot drift apart."""
-    from planner.pipeline.inputs.requirements import (
-        METHODS,
-        MODELS,
-        REGISTRATION_MODES,
-        REGISTRATION_PROCESSING,
-        SETTING_GROUPS,
-        SIGHT_ENGINES,
-        PlanSettings,
-        Requirements,
-        field_specs,
+    _site_arguments(pl)
+    req, group = _data_class_arguments(pl)
+    req.add_argument(
+        "--class",
+        dest="accuracy_class",
+        default=None,
+        metavar="CLASS",
+        help="an accuracy class instead of --max-xy-mm/--max-z-mm: DIN 18710-1 OGL0-5 "
+        "(position) / OGH0-5 (height), e.g. OGL4/OGH3, or USIBD LOA20-50 (at 95 %%)",
     )
+    _setting_arguments(group)
+    _site_limit_arguments(pl)
+    req.add_argument(
+        "--zones",
+        metavar="ZONES.csv",
+        default=None,
+        help="requirements per building, facade or part of a facade: a table with "
+        "id, facade_id (or building_id), from_m, to_m, z_from_m, z_to_m (or elevation_wkt), "
+        "and max_xy_mm, max_z_mm, class, max_spacing_mm, stations_per_sample, sample_spacing_m…",
+    )
+    req.add_argument(
+        "--zone",
+        action="append",
+        default=None,
+        metavar="KEY=VALUE,...",
+        help="one zone without a file (repeatable), e.g. "
+        "facade=main-f00,from=4,to=10,z=0-6,max_xy_mm=3,sample_spacing_m=0.5",
+    )
+    group["registration"].add_argument(
+        "--control",
+        metavar="CONTROL.csv",
+        default=None,
+        help="control points with known coordinates (site CRS): id,x,y,z[,rms_mm]; stations "
+        "that see three of them are tied to the site network (the datum)",
+    )
+    group["registration"].add_argument(
+        "--inventory",
+        metavar="FILE",
+        default=None,
+        help="the targets you own, one per line: name, type (flat/sphere/cylinder), size in mm",
+    )
+    pl.add_argument("-q", "--quiet", action="store_true", help="no progress messages")
 
+
+def _site_arguments(pl: argparse.ArgumentParser) -> None:
+    """The site file, how to read it, the buildings to plan and the scanner."""
     pl.add_argument(
         "site",
         nargs="?",
@@ -852,6 +886,20 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         metavar="NAME|FILE.toml",
         help=f"catalogue name ('planner scanners') or a profile file (default {DEFAULT_SCANNER})",
     )
+
+
+def _data_class_arguments(
+    pl: argparse.ArgumentParser,
+) -> tuple[argparse._ArgumentGroup, dict[str, argparse._ArgumentGroup]]:
+    """An option for every field of :class:`Requirements` and :class:`PlanSettings`, in the
+    requirements group or its settings group (both returned)."""
+    from planner.pipeline.inputs.requirements import (
+        SETTING_GROUPS,
+        PlanSettings,
+        Requirements,
+        field_specs,
+    )
+
     req = pl.add_argument_group("requirements")
     group = {key: pl.add_argument_group(title.lower()) for key, title in SETTING_GROUPS.items()}
     pairs = {"max_xy_mm": "X[,Y]", "station_rms_mm": "MXC[,MYC]"}
@@ -868,14 +916,19 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
                     f"{spec.help} [{spec.unit}] ({spec.rule()}; default {default})"
                 ),
             )
-    req.add_argument(
-        "--class",
-        dest="accuracy_class",
-        default=None,
-        metavar="CLASS",
-        help="an accuracy class instead of --max-xy-mm/--max-z-mm: DIN 18710-1 OGL0-5 "
-        "(position) / OGH0-5 (height), e.g. OGL4/OGH3, or USIBD LOA20-50 (at 95 %%)",
+    return req, group
+
+
+def _setting_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
+    """The settings that are not plain numbers: choices and switches."""
+    from planner.pipeline.inputs.requirements import (
+        METHODS,
+        MODELS,
+        REGISTRATION_MODES,
+        REGISTRATION_PROCESSING,
+        SIGHT_ENGINES,
     )
+
     group["solver"].add_argument(
         "--method", choices=METHODS, default=None, help="station optimiser"
     )
@@ -953,6 +1006,10 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         help="judge samples by the scanner's error alone (the paper's eq. 2 and 4 without "
         "m_xc, m_yc); the registration network is still planned",
     )
+
+
+def _site_limit_arguments(pl: argparse.ArgumentParser) -> None:
+    """The site's size limits (a unit slip is refused)."""
     from planner.site import SiteLimits
 
     limits = pl.add_argument_group("site limits (a unit slip is refused)")
@@ -964,36 +1021,6 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
             metavar="M",
             help=f"refuse a site beyond this (default {f.default:g} m): raise it for a real one",
         )
-    req.add_argument(
-        "--zones",
-        metavar="ZONES.csv",
-        default=None,
-        help="requirements per building, facade or part of a facade: a table with "
-        "id, facade_id (or building_id), from_m, to_m, z_from_m, z_to_m (or elevation_wkt), "
-        "and max_xy_mm, max_z_mm, class, max_spacing_mm, stations_per_sample, sample_spacing_m…",
-    )
-    req.add_argument(
-        "--zone",
-        action="append",
-        default=None,
-        metavar="KEY=VALUE,...",
-        help="one zone without a file (repeatable), e.g. "
-        "facade=main-f00,from=4,to=10,z=0-6,max_xy_mm=3,sample_spacing_m=0.5",
-    )
-    group["registration"].add_argument(
-        "--control",
-        metavar="CONTROL.csv",
-        default=None,
-        help="control points with known coordinates (site CRS): id,x,y,z[,rms_mm]; stations "
-        "that see three of them are tied to the site network (the datum)",
-    )
-    group["registration"].add_argument(
-        "--inventory",
-        metavar="FILE",
-        default=None,
-        help="the targets you own, one per line: name, type (flat/sphere/cylinder), size in mm",
-    )
-    pl.add_argument("-q", "--quiet", action="store_true", help="no progress messages")
 
 
 def _district_arguments(pl: argparse.ArgumentParser) -> None:
@@ -1049,19 +1076,36 @@ def _argparse_text(text: str) -> str:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from planner.app.notebooks import DASHBOARDS
-
     p = _Parser(
         prog="planner", description="Plan terrestrial laser scanner stations around buildings."
     )
     p.set_defaults(func=cmd_default)
     sub = p.add_subparsers(title="commands", parser_class=_Parser)
+    for add in (
+        _scanners_command,
+        _accuracy_command,
+        _targets_command,
+        _plan_command,
+        _report_command,
+        _rehearse_command,
+        _replan_command,
+        _serve_command,
+        _calibrate_command,
+        _audit_command,
+        _figures_command,
+    ):
+        add(sub)
+    return p
 
+
+def _scanners_command(sub: argparse._SubParsersAction) -> None:
     s = sub.add_parser("scanners", help="list the scanner catalogue")
     s.add_argument("--format", choices=["text", "csv"], default="text")
     s.add_argument("-v", "--verbose", action="store_true", help="also print sources and notes")
     s.set_defaults(func=cmd_scanners)
 
+
+def _accuracy_command(sub: argparse._SubParsersAction) -> None:
     a = sub.add_parser("accuracy", help="m_x, m_y (Table 1) and m_z (Table 2) for a scanner")
     _scanner_arg(a)
     a.add_argument(
@@ -1094,6 +1138,8 @@ def build_parser() -> argparse.ArgumentParser:
     a.add_argument("--format", choices=["text", "csv"], default="text")
     a.set_defaults(func=cmd_accuracy)
 
+
+def _targets_command(sub: argparse._SubParsersAction) -> None:
     t = sub.add_parser("targets", help="minimum target sizes (Sossa's Table 2 layout)")
     _scanner_arg(t)
     t.add_argument(
@@ -1111,6 +1157,8 @@ def build_parser() -> argparse.ArgumentParser:
     t.add_argument("--format", choices=["text", "csv"], default="text")
     t.set_defaults(func=cmd_targets)
 
+
+def _plan_command(sub: argparse._SubParsersAction) -> None:
     pl = sub.add_parser(
         "plan",
         help="plan stations and targets for a site",
@@ -1129,6 +1177,8 @@ def build_parser() -> argparse.ArgumentParser:
     )
     pl.set_defaults(func=run_plan)
 
+
+def _report_command(sub: argparse._SubParsersAction) -> None:
     rp = sub.add_parser(
         "report",
         help="render the static HTML report of a plan",
@@ -1140,6 +1190,8 @@ def build_parser() -> argparse.ArgumentParser:
     rp.add_argument("--out", required=True, metavar="REPORT.html", help="the HTML file to write")
     rp.set_defaults(func=cmd_report)
 
+
+def _rehearse_command(sub: argparse._SubParsersAction) -> None:
     rh = sub.add_parser(
         "rehearse",
         help="the plan's scans simulated as point clouds (E57, LAZ) and a HELIOS++ survey",
@@ -1166,6 +1218,8 @@ def build_parser() -> argparse.ArgumentParser:
     )
     rh.set_defaults(func=cmd_rehearse)
 
+
+def _replan_command(sub: argparse._SubParsersAction) -> None:
     rr = sub.add_parser(
         "replan",
         help="re-plan from the stations as scanned: the extra stations for what is left",
@@ -1211,6 +1265,10 @@ def build_parser() -> argparse.ArgumentParser:
     )
     rr.set_defaults(func=cmd_replan)
 
+
+def _serve_command(sub: argparse._SubParsersAction) -> None:
+    from planner.app.notebooks import DASHBOARDS
+
     sv = sub.add_parser("serve", help="serve the station-planner dashboard with Voilà on 127.0.0.1")
     sv.add_argument(
         "--port", type=argument("port"), default=8866, help="port on 127.0.0.1 (default 8866)"
@@ -1230,25 +1288,35 @@ def build_parser() -> argparse.ArgumentParser:
     )
     sv.set_defaults(func=cmd_serve)
 
+
+def _calibrate_command(sub: argparse._SubParsersAction) -> None:
     cal = sub.add_parser("calibrate", help="turn calibration measurements into a scanner profile")
     csub = cal.add_subparsers(title="methods", parser_class=_Parser, required=True)
 
-    def profile_options(p: argparse.ArgumentParser) -> None:
-        p.add_argument("--profile-out", metavar="FILE.toml", help="write a scanner profile")
-        p.add_argument(
-            "--install",
-            action="store_true",
-            help="also install the profile in your profile folder, to use it by name "
-            "($TLS_PLANNER_PROFILES or ~/.tls-planner/scanners)",
-        )
-        p.add_argument("--name", help="profile name (default: the file's stem)")
-        p.add_argument(
-            "--base-scanner",
-            default=DEFAULT_SCANNER,
-            metavar="NAME|FILE.toml",
-            help="profile giving the figures not calibrated (step, ranges, field of view)",
-        )
+    _calibrate_lab_command(csub)
+    _calibrate_baseline_command(csub)
+    _calibrate_axes_command(csub)
 
+
+def _profile_options(p: argparse.ArgumentParser) -> None:
+    """The options every calibration method shares: where the profile goes."""
+    p.add_argument("--profile-out", metavar="FILE.toml", help="write a scanner profile")
+    p.add_argument(
+        "--install",
+        action="store_true",
+        help="also install the profile in your profile folder, to use it by name "
+        "($TLS_PLANNER_PROFILES or ~/.tls-planner/scanners)",
+    )
+    p.add_argument("--name", help="profile name (default: the file's stem)")
+    p.add_argument(
+        "--base-scanner",
+        default=DEFAULT_SCANNER,
+        metavar="NAME|FILE.toml",
+        help="profile giving the figures not calibrated (step, ranges, field of view)",
+    )
+
+
+def _calibrate_lab_command(csub: argparse._SubParsersAction) -> None:
     lab = csub.add_parser("lab", help="laboratory uncertainty test (Helmert, m_r, M_r)")
     lab.add_argument("reference", metavar="REF.csv", help="lab-frame targets: id,x,y,z[,sigma_mm]")
     lab.add_argument("scan", metavar="SCAN.csv", help="scanner-frame targets: id,x,y,z")
@@ -1278,9 +1346,11 @@ def build_parser() -> argparse.ArgumentParser:
         default="none",
         help="carry the angular m_r (inflated at short lab distances) or keep the base's",
     )
-    profile_options(lab)
+    _profile_options(lab)
     lab.set_defaults(func=cmd_calibrate_lab)
 
+
+def _calibrate_baseline_command(csub: argparse._SubParsersAction) -> None:
     bl = csub.add_parser("baseline", help="additive constant and scale from a baseline")
     bl.add_argument(
         "file",
@@ -1292,9 +1362,11 @@ def build_parser() -> argparse.ArgumentParser:
         action="store_true",
         help="put |R| into the profile's ppm part (for data not corrected for scale)",
     )
-    profile_options(bl)
+    _profile_options(bl)
     bl.set_defaults(func=cmd_calibrate_baseline)
 
+
+def _calibrate_axes_command(csub: argparse._SubParsersAction) -> None:
     ax = csub.add_parser("axes", help="collimation and trunnion-axis errors")
     ax.add_argument(
         "file", metavar="FILE.csv", help="vertical_angle_deg,observed_deg,reference_deg"
@@ -1304,9 +1376,11 @@ def build_parser() -> argparse.ArgumentParser:
         action="store_true",
         help="no orientation unknown (the paper's eq. 6: both zero directions equal)",
     )
-    profile_options(ax)
+    _profile_options(ax)
     ax.set_defaults(func=cmd_calibrate_axes)
 
+
+def _audit_command(sub: argparse._SubParsersAction) -> None:
     au = sub.add_parser(
         "audit",
         help="audit a plan against a 3-D city model: which samples it marks met are seen, "
@@ -1323,10 +1397,11 @@ def build_parser() -> argparse.ArgumentParser:
     au.add_argument("--out", default=None, metavar="FILE.csv", help="default DIR/audit.csv")
     au.set_defaults(func=cmd_audit)
 
+
+def _figures_command(sub: argparse._SubParsersAction) -> None:
     f = sub.add_parser("figures", help="regenerate the figures in figures/")
     f.add_argument("--out", default="figures", help="output folder (default figures/)")
     f.set_defaults(func=cmd_figures)
-    return p
 
 
 def _log_internal_error(exc: BaseException) -> Path | None:

@@ -308,7 +308,47 @@ class StationPlanner:
     marks it out of date, an error replaces it."""
 
     def __init__(self) -> None:
-        rq, ps = field_specs(Requirements), field_specs(PlanSettings)
+        self._site_inputs()
+        self._scanner_inputs()
+        self._requirement_inputs()
+        more = self._more_settings()
+        self._model_inputs()
+        self._run_controls()
+        self._result_tabs()
+        self.inputs = [
+            self.site_source,
+            self.upload,
+            self.height,
+            self.storey,
+            self.crs,
+            self.make_valid,
+            self.buildings,
+            self.scanner,
+            self.preset,
+            self.max_x,
+            self.max_y,
+            self.max_z,
+            self.max_gamma,
+            self.max_spacing,
+            self.per_sample,
+            self.accuracy_class,
+            self.model,
+            self.registration,
+            self.processing,
+            self.grid,
+            self.registration_error,
+            self.imaging,
+            self.demand_roofs,
+            self.sight_engine,
+            self.inventory,
+            *self.more.values(),
+        ]
+        self.widget = self._lay_out(more)
+        self._reset_state()
+        self._wire()
+
+    def _site_inputs(self) -> None:
+        """The site: the default one or a file, and how to read it."""
         self.site_source = w.ToggleButtons(
             options=["Default site", "Upload a file"], value="Default site"
         )
@@ -340,10 +380,17 @@ class StationPlanner:
             description=SITE_LABELS["--buildings"],
             layout=_FULL,
         )
+
+    def _scanner_inputs(self) -> None:
+        """The scanner and its setting (preset), offered for the scanner chosen."""
         self.scanner = scanner_dropdown()
         self.preset = w.Dropdown(description="scanner setting", style=_STYLE, layout=_FULL)
         self.scanner.observe(lambda _c: self._offer_presets(), "value")
         self._offer_presets()
+
+    def _requirement_inputs(self) -> None:
+        """The main requirements and the candidate grid, from the data classes' specs."""
+        rq, ps = field_specs(Requirements), field_specs(PlanSettings)
         self.max_x = _field_box(rq["max_xy_mm"], "largest m_x")
         self.max_y = _field_box(rq["max_xy_mm"], "largest m_y")
         self.max_z = _field_box(rq["max_z_mm"])
@@ -351,6 +398,11 @@ class StationPlanner:
         self.max_spacing = _field_box(rq["max_spacing_mm"])
         self.per_sample = _field_box(rq["stations_per_sample"])
         self.grid = _field_box(ps["grid_m"])
+
+    def _more_settings(self) -> w.Accordion:
+        """Every other requirement and setting, in the command line's groups, and the
+        zones; folded away."""
+        rq, ps = field_specs(Requirements), field_specs(PlanSettings)
         self._specs = {**rq, **ps}
         self.more = {
             name: _field_box(spec) for name, spec in self._specs.items() if name not in _MAIN_FIELDS
@@ -404,6 +456,10 @@ class StationPlanner:
         more.set_title(0, "More settings (as on the command line)")
         more.selected_index = None
         self.zone_editor = ZoneEditor()
+        return more
+
+    def _model_inputs(self) -> None:
+        """An accuracy class, the accuracy model and how the scans are registered."""
         self.accuracy_class = w.Combobox(
             value="",
             placeholder="none: the limits above; or e.g. OGL4/OGH3, LOA40",
@@ -445,6 +501,9 @@ class StationPlanner:
             style=_STYLE,
         )
         self.accuracy_class.observe(lambda _c: self._show_class(), "value")
+
+    def _run_controls(self) -> None:
+        """Plan, Cancel, progress, status, errors and the plan's summary."""
         self.plan_button = w.Button(description="Plan", button_style="primary")
         self.cancel_button = w.Button(description="Cancel", icon="stop", disabled=True)
         self.progress = w.FloatProgress(
@@ -455,6 +514,9 @@ class StationPlanner:
         self.error = w.HTML("")
         self.stale = w.HTML("")
         self.summary = w.HTML("")
+
+    def _result_tabs(self) -> None:
+        """The result tabs (:data:`TABS`): the map, tables, figures, downloads."""
         self.quantity = w.ToggleButtons(
             options=[(quantity_label(q), q) for q in QUANTITIES],
             value="m_x_mm",
@@ -514,34 +576,9 @@ class StationPlanner:
         )
         for i, title in enumerate(TABS):
             self.tabs.set_title(i, title)
-        self.inputs = [
-            self.site_source,
-            self.upload,
-            self.height,
-            self.storey,
-            self.crs,
-            self.make_valid,
-            self.buildings,
-            self.scanner,
-            self.preset,
-            self.max_x,
-            self.max_y,
-            self.max_z,
-            self.max_gamma,
-            self.max_spacing,
-            self.per_sample,
-            self.accuracy_class,
-            self.model,
-            self.registration,
-            self.processing,
-            self.grid,
-            self.registration_error,
-            self.imaging,
-            self.demand_roofs,
-            self.sight_engine,
-            self.inventory,
-            *self.more.values(),
-        ]
+
+    def _lay_out(self, more: w.Accordion) -> w.VBox:
+        """The page: the toolbar on top, the inputs on the left, the results on the right."""
         controls = w.VBox(
             [
                 w.HTML(_CSS + "<h3>Site</h3>"),
@@ -587,7 +624,7 @@ class StationPlanner:
         )
         self.toolbar.add_class("planner-toolbar")  # (sticky: its boxes do not clip it)
         self.results = w.VBox([self.summary, self.tabs], layout=w.Layout(width="100%"))
-        self.widget = w.VBox(
+        widget = w.VBox(
             [
                 self.toolbar,
                 w.HBox(
@@ -595,7 +632,11 @@ class StationPlanner:
                 ),
             ]
         )
-        self.widget.add_class("planner-root")
+        widget.add_class("planner-root")
+        return widget
+
+    def _reset_state(self) -> None:
+        """No plan on screen, nothing running."""
         self.plan = None
         self._files: dict[str, bytes] = {}  # the downloads of the plan on screen
         self._unshown: set[str] = set()  # tabs not yet drawn for the plan on screen
@@ -608,7 +649,11 @@ class StationPlanner:
         self._ended.set()
         self.last_edit_s: float | None = None
         self._tmp = upload_folder()
+
+    def _wire(self) -> None:
+        """The widgets' events to their handlers (thin callbacks)."""
         # links: thin callbacks
+        self.accuracy_class.observe(lambda _c: self._show_class(), "value")
         self.plan_button.on_click(lambda _b: self.start())
         self.cancel_button.on_click(lambda _b: self.cancel())
         self.upload.observe(lambda _c: self._uploaded(), "value")

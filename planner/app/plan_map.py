@@ -222,27 +222,81 @@ class PlanMap:
         self.on_range_dragged: Callable[[float, float], None] = lambda _a, _b: None
         self.on_passage: Callable[[np.ndarray, np.ndarray], None] = lambda _a, _b: None
         self.sx, self.sy = bq.LinearScale(), bq.LinearScale()
-        sc = {"x": self.sx, "y": self.sy}
+        self._site_marks()
+        self._plan_marks_made()
+        self._label_marks()
+        self.figure = self._figure()
+        self._controls()
+        self._reset_state()
+        self._wire()
+        self.widget = self._lay_out()
+        self._set_mode()
+
+    def _lines(self, **kw) -> bq.Lines:
         nan2 = np.full((1, 2), np.nan)
+        return bq.Lines(x=nan2, y=nan2, scales={"x": self.sx, "y": self.sy}, **kw)
 
-        def lines(**kw) -> bq.Lines:
-            return bq.Lines(x=nan2, y=nan2, scales=sc, **kw)
+    def _dots(self, **kw) -> bq.Scatter:
+        sc = {"x": self.sx, "y": self.sy}
+        return bq.Scatter(**{"x": [], "y": [], "scales": sc, "display_names": False, **kw})
 
-        def dots(**kw) -> bq.Scatter:
-            return bq.Scatter(**{"x": [], "y": [], "scales": sc, "display_names": False, **kw})
-
-        self.others = lines(fill="inside", colors=["#bbb"], stroke_width=1)
-        self.buildings = lines(fill="inside", colors=["#555"], stroke_width=1)
+    def _site_marks(self) -> None:
+        """The site's marks: buildings, roofs, passages, problems, zones, the picks, and
+        the marks the modes draw with (the zone range's handles, a passage's start, the
+        ground's clicks)."""
+        self.others = self._lines(fill="inside", colors=["#bbb"], stroke_width=1)
+        self.buildings = self._lines(fill="inside", colors=["#555"], stroke_width=1)
         # a 3-D building's roof: its edges and ridges over the footprint
-        self.roofs = lines(colors=["#a9a9a9"], stroke_width=0.6)
-        self.passages = lines(colors=[COLOURS["passage"]], line_style="dashed", stroke_width=2)
-        self.problems = lines(colors=["#c0392b"], stroke_width=3)  # features that stop the plan
-        self.route = lines(colors=[COLOURS["route"]], line_style="dashed", stroke_width=1.5)
-        self.target_links = lines(colors=["#c71585"], line_style="dotted", stroke_width=2)
-        self.cloud_links = lines(colors=["#c71585"], line_style="dashed", stroke_width=2)
-        self.zone_lines = lines(colors=["#7d3c98"], stroke_width=5)  # the zones added
-        self.facade_line = lines(colors=["#e67e22"], stroke_width=6)  # the facade picked
-        self.candidates = dots(
+        self.roofs = self._lines(colors=["#a9a9a9"], stroke_width=0.6)
+        self.passages = self._lines(
+            colors=[COLOURS["passage"]], line_style="dashed", stroke_width=2
+        )
+        self.problems = self._lines(
+            colors=["#c0392b"], stroke_width=3
+        )  # features that stop the plan
+        self.zone_lines = self._lines(colors=["#7d3c98"], stroke_width=5)  # the zones added
+        self.facade_line = self._lines(colors=["#e67e22"], stroke_width=6)  # the facade picked
+        self.picks = self._dots(  # each building's centre: its id on hover
+            marker="square",
+            colors=["white"],
+            stroke="#333",
+            default_size=16,  # (smaller than a target's mark: never mistaken for one)
+            tooltip=bq.Tooltip(fields=["name"], labels=["building"]),
+        )
+        self.marked = self._dots(  # where a site problem is (red crosses)
+            marker="cross",
+            colors=["#c0392b"],
+            default_size=90,
+            tooltip=bq.Tooltip(fields=["name"], labels=["problem"]),
+        )
+        self.repaired = self._dots(  # where the site was repaired (site_repairs.csv)
+            marker="diamond",
+            colors=["#d4ac0d"],
+            stroke="#7d6608",
+            default_size=40,
+            tooltip=bq.Tooltip(fields=["name"], labels=["repaired"]),
+        )
+        self.handles = self._dots(  # the zone range's ends, dragged along the facade
+            marker="circle",
+            colors=["#e67e22"],
+            stroke="black",
+            default_size=110,
+            visible=False,
+        )
+        self.draft = self._dots(
+            marker="cross", colors=["#d4ac0d"], default_size=120
+        )  # passage start
+        self.catch = self._dots(  # clicks on the ground in the modes that want their position
+            marker="circle", colors=["#00000000"], default_size=1, interactions={"click": "add"}
+        )
+
+    def _plan_marks_made(self) -> None:
+        """The plan's marks: route, links, candidates, samples, targets, stations."""
+        sc = {"x": self.sx, "y": self.sy}
+        self.route = self._lines(colors=[COLOURS["route"]], line_style="dashed", stroke_width=1.5)
+        self.target_links = self._lines(colors=["#c71585"], line_style="dotted", stroke_width=2)
+        self.cloud_links = self._lines(colors=["#c71585"], line_style="dashed", stroke_width=2)
+        self.candidates = self._dots(
             marker="square",
             default_size=10,
             stroke=None,
@@ -251,44 +305,23 @@ class PlanMap:
             visible=False,
         )
         self.colour_scale = bq.ColorScale(min=0, max=1, colors=[_GREEN, _RED])
-        self.samples = dots(
+        self.samples = self._dots(
             color=[],
             scales={**sc, "color": self.colour_scale},
             default_size=14,
             stroke=None,
             tooltip=bq.Tooltip(fields=["name"], labels=["facade"]),
         )
-        self.picks = dots(  # each building's centre: its id on hover
-            marker="square",
-            colors=["white"],
-            stroke="#333",
-            default_size=16,  # (smaller than a target's mark: never mistaken for one)
-            tooltip=bq.Tooltip(fields=["name"], labels=["building"]),
-        )
-        self.marked = dots(  # where a site problem is (red crosses)
-            marker="cross",
-            colors=["#c0392b"],
-            default_size=90,
-            tooltip=bq.Tooltip(fields=["name"], labels=["problem"]),
-        )
-        self.repaired = dots(  # where the site was repaired (site_repairs.csv)
-            marker="diamond",
-            colors=["#d4ac0d"],
-            stroke="#7d6608",
-            default_size=40,
-            tooltip=bq.Tooltip(fields=["name"], labels=["repaired"]),
-        )
-        target_marks = {}
+        self.target_marks = {}
         for kind, colour in (("flat", "#8e44ad"), ("sphere", "#8e44ad"), ("control", "#17202a")):
-            target_marks[kind] = dots(
+            self.target_marks[kind] = self._dots(
                 marker=SYMBOLS[kind],
                 colors=[colour],
                 stroke="white",
                 default_size=60,
                 tooltip=bq.Tooltip(fields=["name"], labels=[f"{kind} target"]),
             )
-        self.target_marks = target_marks
-        self.stations = dots(
+        self.stations = self._dots(
             names=[],
             marker=SYMBOLS["station"],
             colors=[COLOURS["hand"]],
@@ -297,22 +330,14 @@ class PlanMap:
             enable_move=True,
             tooltip=bq.Tooltip(fields=["name"], labels=["station"]),
         )
-        self.handles = dots(  # the zone range's ends, dragged along the facade
-            marker="circle",
-            colors=["#e67e22"],
-            stroke="black",
-            default_size=110,
-            visible=False,
-        )
-        self.draft = dots(marker="cross", colors=["#d4ac0d"], default_size=120)  # passage start
-        self.catch = dots(  # clicks on the ground in the modes that want their position
-            marker="circle", colors=["#00000000"], default_size=1, interactions={"click": "add"}
-        )
+
+    def _label_marks(self) -> None:
+        """Station and building labels, the notice of a refused click, the colour axis."""
         self.labels = bq.Label(
             x=[],
             y=[],
             text=[],
-            scales=sc,
+            scales={"x": self.sx, "y": self.sy},
             colors=["black"],
             default_size=12,
             x_offset=8,
@@ -322,7 +347,7 @@ class PlanMap:
             x=[],
             y=[],
             text=[],
-            scales=sc,
+            scales={"x": self.sx, "y": self.sy},
             colors=["#17202a"],
             default_size=11,
             x_offset=6,
@@ -332,7 +357,7 @@ class PlanMap:
             x=[],
             y=[],
             text=[],
-            scales=sc,
+            scales={"x": self.sx, "y": self.sy},
             colors=["#922b21"],
             default_size=13,
             font_weight="bold",
@@ -342,6 +367,9 @@ class PlanMap:
         self.colour_axis = bq.ColorAxis(
             scale=self.colour_scale, orientation="vertical", side="right", label="", visible=False
         )
+
+    def _figure(self) -> bq.Figure:
+        """The map's figure with its axes, every mark in drawing order, and pan and zoom."""
         axes = [
             bq.Axis(scale=self.sx, label="E [m]", tick_format=".0f", num_ticks=5),
             bq.Axis(
@@ -361,9 +389,9 @@ class PlanMap:
             self.samples,
             self.stations,
             self.labels,
-            *target_marks.values(),
+            *self.target_marks.values(),
         ]
-        self.figure = bq.Figure(
+        figure = bq.Figure(
             marks=[
                 self.others,
                 self.buildings,
@@ -380,7 +408,7 @@ class PlanMap:
                 self.picks,
                 self.marked,
                 self.repaired,
-                *target_marks.values(),
+                *self.target_marks.values(),
                 self.stations,
                 self.handles,
                 self.draft,
@@ -397,8 +425,12 @@ class PlanMap:
             # as up), never below a usable size
             layout=w.Layout(width="100%", height="calc(100vh - 240px)", min_height="460px"),
         )
-        self.figure.add_class("planner-map")
+        figure.add_class("planner-map")
         self.panzoom = bq.interacts.PanZoom(scales={"x": [self.sx], "y": [self.sy]})
+        return figure
+
+    def _controls(self) -> None:
+        """The modes, view buttons, layer switches, passage options, status and legend."""
         self.mode = w.ToggleButtons(
             options=[(label, key) for label, key, _ in MODES],
             value="move",
@@ -451,6 +483,9 @@ class PlanMap:
         self.status = w.HTML("", layout=w.Layout(min_height="4.6em"))
         self.status.add_class("planner-map-status")
         self.legend = w.HTML(_legend())
+
+    def _reset_state(self) -> None:
+        """Nothing drawn yet: no site, no plan, no edits."""
         self._framed = None  # the site the map's view was fitted to (kept through edits)
         self._framed_ids: set[str] = set()  # its buildings (the same site read again)
         self._site = None
@@ -469,14 +504,17 @@ class PlanMap:
         self._ids: list[str | None] = []  # the station each position is (None: added)
         self._purposes: list[str] = []
         self._targets: dict[str, tuple[list[str], np.ndarray]] = {
-            kind: ([], np.empty((0, 2))) for kind in target_marks
+            kind: ([], np.empty((0, 2))) for kind in self.target_marks
         }
         self._quiet = False
+
+    def _wire(self) -> None:
+        """The marks' and controls' events to their handlers."""
         self.mode.observe(lambda _c: self._set_mode(), "value")
         self.stations.on_drag_end(lambda _m, e: self._dragged(e))
         self.stations.on_element_click(lambda _m, e: self._clicked(e))
         self.stations.observe(lambda _c: self._maybe_added(), names=["x"])
-        for kind, mark in target_marks.items():
+        for kind, mark in self.target_marks.items():
             mark.on_drag_end(lambda _m, e, k=kind: self._target_dragged(k, e))
             mark.on_element_click(lambda _m, e, k=kind: self._target_clicked(k, e))
             mark.observe(lambda _c, k=kind: self._maybe_target_added(k), names=["x"])
@@ -491,7 +529,9 @@ class PlanMap:
         self.show_candidates.observe(lambda _c: self._layers(), "value")
         # once per view change (a pan or zoom moves both scales, and max last)
         self.sx.observe(lambda _c: self._draw_labels(), names=["max"])
-        self.widget = w.VBox(
+
+    def _lay_out(self) -> w.VBox:
+        return w.VBox(
             [
                 w.HTML(_CSS),
                 self.mode,
@@ -514,7 +554,6 @@ class PlanMap:
                 self.legend,
             ]
         )
-        self._set_mode()
 
     # -- showing a site and a plan -------------------------------------------------------------
     def _draw_site(self, site, heights_known: bool = True) -> None:

@@ -8,7 +8,8 @@ workers compute the bound at shared prices (:mod:`~planner.pipeline.district.bou
 from __future__ import annotations
 
 import time
-from dataclasses import replace
+from collections.abc import Callable
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -16,6 +17,7 @@ import pandas as pd
 
 from planner.errors import InputError
 from planner.pipeline.district.blocks import (
+    Block,
     KeptNetwork,
     block_region,
     block_site,
@@ -225,8 +227,7 @@ def plan_district(
         max(work, default=0), st.sample_spacing_m, st.sample_height_step_m, st.max_samples
     )
     say(0.0, f"{len(blocks)} block(s) of {block_m:g} m, halo {halo:.0f} m")
-    from dask.distributed import Client, as_completed
-    from distributed.scheduler import KilledWorker
+    from dask.distributed import Client
 
     cluster = None
     if scheduler:
@@ -234,86 +235,24 @@ def plan_district(
     else:
         cluster = local_cluster(workers, memory_limit)
         client = Client(cluster)
-    # the workers import the planner now, before the blocks' shares of the time are counted:
-    # a share is for planning, not for a worker's start (about 3 s on a loaded machine)
-    client.run(_import_planner)
-    # the time budget: the blocks share what is left before the stitch's share; a block is
-    # given its share when a worker takes it (as many in flight as the cluster has threads),
-    # so that a block finishing early leaves its time to the ones after it
-    left = max(0.0, deadline - time.monotonic())
-    stitching = STITCH_S_PER_SAMPLE * estimate_samples(
-        site, st.sample_spacing_m, st.sample_height_step_m
-    ) + (CLOSE_CLUSTER_S if cluster is not None else 0.0)
-    until = time.monotonic() + left - min(left, max(STITCH_SHARE * left, stitching))
-    slots = max(1, sum(client.nthreads().values()))
-    # the largest blocks first (by their samples), so that the last ones to finish are small
-    # and no worker idles long while another plans a large block at the end
-    queue = sorted(range(len(blocks)), key=lambda k: -work[k])
-    in_flight: dict[int, float] = {}  # block → when its share ends
-    covers: list = [None] * len(blocks)
-    futures: dict = {}
-    pending = as_completed()
-
-    def submit_next() -> None:
-        k = queue.pop(0)
-        now = time.monotonic()
-        busy = sum(max(0.0, end - now) for end in in_flight.values())  # the others' time
-        pool = slots * max(0.0, until - now) - busy
-        share = max(0.0, pool) * work[k] / max(1, sum(work[j] for j in [k, *queue]))
-        share = min(share, max(0.0, until - now))
-        in_flight[k] = now + share
-        f = client.submit(
-            plan_block,
-            sites[k],
-            scanner,
-            req,
-            st,
-            block_region(blocks[k], halo),
-            share,
-            time.time() + (until - now),
-            priority=work[k],
-            pure=False,
-        )
-        # the plans and tables come here; the covers stay on the workers for the bound
-        covers[k] = client.submit(cover_of, f, priority=work[k])
-        shown = client.submit(for_stitch, f, priority=work[k])
-        futures[shown] = k
-        pending.add(shown)
-
     try:
-        while queue and len(in_flight) < slots:
-            submit_next()
-        plans: list[Plan | None] = [None] * len(blocks)
-        tables: list[pd.DataFrame | None] = [None] * len(blocks)
-        xys: list[np.ndarray] = [np.empty((0, 2))] * len(blocks)
-        frames: list[KeptNetwork | None] = [None] * len(blocks)
-        for done, fut in enumerate(pending, start=1):
-            k = futures[fut]
-            in_flight.pop(k, None)
-            if queue:
-                submit_next()
-            try:
-                plans[k], tables[k], xys[k], frames[k] = fut.result()
-            except KilledWorker:
-                limit = "the cluster's limit" if scheduler else memory_limit
-                n = len(blocks[k].buildings)
-                raise InputError(
-                    f"the worker planning block {blocks[k].key} ({n} building"
-                    f"{'s' * (n != 1)}) died, most often because the block needed more "
-                    f"memory than a worker has ({limit}); no plan was written. Plan with "
-                    f"smaller blocks (--block-m {block_m / 2:g}) or give the workers more memory"
-                    + ("" if scheduler else " (--worker-memory)")
-                ) from None
-            say(0.93 * done / len(blocks), f"block {done} of {len(blocks)} planned")
+        # the workers import the planner now, before the blocks' shares of the time are
+        # counted: a share is for planning, not for a worker's start (about 3 s loaded)
+        client.run(_import_planner)
+        job = _BlockJobs(client, blocks, sites, work, scanner, req, st, halo)
+        job.until = _blocks_until(site, st, deadline, closing=cluster is not None)
+        plans, tables, xys, frames = job.run(
+            say, lambda k: _worker_died(blocks[k], scheduler, memory_limit, block_m)
+        )
         # the workers bound the fewest stations while the blocks are stitched here
         say(0.93, "stitching the blocks (and bounding the fewest stations)")
         t = time.perf_counter()
         prices = shared_prices(xys)
         lp_s = min(SHARED_BOUND_S, max(0.0, deadline - time.monotonic()))
         bounds = [
-            client.submit(shared_bound, c, q, lp_s) for c, q in zip(covers, prices, strict=True)
+            client.submit(shared_bound, c, q, lp_s) for c, q in zip(job.covers, prices, strict=True)
         ]
-        covers.clear()  # the bounds hold them now
+        job.covers.clear()  # the bounds hold them now
         out = stitch(site, scanner, req, st, blocks, plans, halo, tables, frames)
         stitched = time.perf_counter()
         shared, why = gather_bound(bounds, deadline)
@@ -334,6 +273,108 @@ def plan_district(
     out.timings_s["total"] = time.perf_counter() - t0
     say(1.0, "plan ready")
     return out
+
+
+def _blocks_until(site: Site, st: PlanSettings, deadline: float, closing: bool) -> float:
+    """When the blocks must be planned by (a :func:`time.monotonic` time): the time left
+    before the stitch's share (:data:`STITCH_SHARE`, or the stitch's estimate where larger,
+    with the local cluster's closing)."""
+    left = max(0.0, deadline - time.monotonic())
+    stitching = STITCH_S_PER_SAMPLE * estimate_samples(
+        site, st.sample_spacing_m, st.sample_height_step_m
+    ) + (CLOSE_CLUSTER_S if closing else 0.0)
+    return time.monotonic() + left - min(left, max(STITCH_SHARE * left, stitching))
+
+
+def _worker_died(block: Block, scheduler: str | None, memory_limit: str, block_m: float) -> str:
+    """What to say when the worker planning ``block`` died."""
+    limit = "the cluster's limit" if scheduler else memory_limit
+    n = len(block.buildings)
+    return (
+        f"the worker planning block {block.key} ({n} building{'s' * (n != 1)}) died, most "
+        f"often because the block needed more memory than a worker has ({limit}); no plan "
+        f"was written. Plan with smaller blocks (--block-m {block_m / 2:g}) or give the "
+        "workers more memory" + ("" if scheduler else " (--worker-memory)")
+    )
+
+
+@dataclass
+class _BlockJobs:
+    """The blocks' plans as Dask tasks: the largest blocks first (by their samples), so that
+    the last ones to finish are small and no worker idles long while another plans a large
+    block at the end; as many in flight as the cluster has threads. The time budget: the
+    blocks share what is left before ``until``; a block is given its share when a worker
+    takes it, so that a block finishing early leaves its time to the ones after it."""
+
+    client: Any
+    blocks: list[Block]
+    sites: list[Site]
+    work: list[int]
+    scanner: Scanner
+    req: Requirements
+    st: PlanSettings
+    halo: float
+    until: float = 0.0
+    covers: list = field(default_factory=list)  # each block's cover, kept on the workers
+
+    def run(
+        self, say: Progress, died: Callable[[int], str]
+    ) -> tuple[list[Plan], list[pd.DataFrame], list[np.ndarray], list[KeptNetwork]]:
+        """Every block's plan, meeting table, cover candidates' positions and frame, in
+        block order; a worker dying is an InputError (``died(k)`` says what to say)."""
+        from dask.distributed import as_completed
+        from distributed.scheduler import KilledWorker
+
+        n = len(self.blocks)
+        self.queue = sorted(range(n), key=lambda k: -self.work[k])
+        self.in_flight: dict[int, float] = {}  # block → when its share ends
+        self.futures: dict = {}
+        self.pending = as_completed()
+        self.covers = [None] * n
+        slots = max(1, sum(self.client.nthreads().values()))
+        while self.queue and len(self.in_flight) < slots:
+            self._submit_next(slots)
+        out: list[list] = [[None] * n, [None] * n, [np.empty((0, 2))] * n, [None] * n]
+        for done, fut in enumerate(self.pending, start=1):
+            k = self.futures[fut]
+            self.in_flight.pop(k, None)
+            if self.queue:
+                self._submit_next(slots)
+            try:
+                for part, value in zip(out, fut.result(), strict=True):
+                    part[k] = value
+            except KilledWorker:
+                raise InputError(died(k)) from None
+            say(0.93 * done / n, f"block {done} of {n} planned")
+        plans, tables, xys, frames = out
+        return plans, tables, xys, frames
+
+    def _submit_next(self, slots: int) -> None:
+        k = self.queue.pop(0)
+        now = time.monotonic()
+        busy = sum(max(0.0, end - now) for end in self.in_flight.values())  # the others'
+        pool = slots * max(0.0, self.until - now) - busy
+        work = self.work
+        share = max(0.0, pool) * work[k] / max(1, sum(work[j] for j in [k, *self.queue]))
+        share = min(share, max(0.0, self.until - now))
+        self.in_flight[k] = now + share
+        f = self.client.submit(
+            plan_block,
+            self.sites[k],
+            self.scanner,
+            self.req,
+            self.st,
+            block_region(self.blocks[k], self.halo),
+            share,
+            time.time() + (self.until - now),
+            priority=work[k],
+            pure=False,
+        )
+        # the plans and tables come here; the covers stay on the workers for the bound
+        self.covers[k] = self.client.submit(cover_of, f, priority=work[k])
+        shown = self.client.submit(for_stitch, f, priority=work[k])
+        self.futures[shown] = k
+        self.pending.add(shown)
 
 
 def _import_planner() -> None:

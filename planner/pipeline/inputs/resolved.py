@@ -7,7 +7,7 @@ district's blocks.
 >>> from planner.scanner import DEFAULT_SCANNER, Scanner
 >>> r = resolve(Scanner.from_name(DEFAULT_SCANNER))
 >>> round(r.reach_m, 1), r.registration, r.parameters
-(56.1, 'targets', 6)
+(117.6, 'targets', 6)
 """
 
 from __future__ import annotations

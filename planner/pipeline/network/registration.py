@@ -28,10 +28,17 @@ from planner.pipeline.network import clouds
 from planner.pipeline.network.bridges import find_bridges, link_groups, linking_hops, shared_targets
 from planner.pipeline.network.layout import HIDDEN_DETOUR, Layout, Stands
 from planner.pipeline.network.network import Network, network_message
-from planner.pipeline.network.targets import SightCache, TargetCandidates, centre_rms, item_sizes
+from planner.pipeline.network.targets import (
+    Sight,
+    SightCache,
+    TargetCandidates,
+    centre_rms,
+    item_sizes,
+)
 from planner.registration_error import (
     CONTROL,
     Link,
+    NetworkError,
     adjust,
     propagate,
     transport_pose_cov,
@@ -65,10 +72,71 @@ def build_network(
     grows from, when it is among the stations. After ``deadline`` (a
     :func:`time.monotonic` time) no linking stations are looked for (``cut_short``).
     """
-    levelled = ctx.scanner.is_levelled
     seen = cache if cache is not None else SightCache(ctx, tc, cand_xy)
-    stations = [int(c) for c in chosen]
-    n_cover = len(stations)
+    n_cover = len(chosen)
+    lay, cut_short = _layout(
+        ctx, seen, cand_xy, [int(c) for c in chosen], probes, goal_mm, weak_mm, datum, deadline
+    )
+    stations, station_xyz, datum, k = lay.stations, lay.station_xyz, lay.datum, lay.k
+    links, link_error, placed, stands, behind = _tree_links(ctx, tc, lay)
+    sight = stands.hide(lay.sight, placed)  # the spheres set up hide targets from stations
+    users, final_rms, observed = _final_sizes(ctx, tc, sight, links)
+    control_rms = {int(t): float(tc.control_rms_mm[t]) for t in np.flatnonzero(tc.is_control)}
+    error = _network_error(ctx, lay, tc, links, final_rms, observed, control_rms, users)
+    link_sigma: dict[tuple[int, int], float] = {}
+    if error is not None:
+        link_sigma = _own_link_errors(lay, links, error, final_rms, control_rms, link_error)
+    n_groups = int(link_groups(k, lay.pairs).max() + 1) if k else 0
+    untied = int((~error.tied).sum()) if error is not None else k
+    message = network_message(k, k - n_cover, datum, untied, n_groups, tc, links, lay.mode)
+    if behind:
+        message += (
+            f"; {behind} link(s) use a target behind another link's sphere (set that sphere "
+            "up only after those scans)"
+        )
+    linkable = [(a, b, len(shared_targets(sight, tc, a, b))) for a, b in lay.pairs]
+    return Network(
+        stations=np.array(stations, dtype=np.int64),
+        n_link_stations=k - n_cover,
+        links=links,
+        link_error_mm=link_error,
+        link_sigma_mm=link_sigma,
+        linkable=linkable,
+        targets=sorted(placed),
+        datum=None if datum == CONTROL else datum,
+        error=error,
+        n_groups=n_groups,
+        message=message,
+        sight=sight,
+        candidates=tc,
+        station_xyz=station_xyz,
+        centre_rms=observed,
+        cut_short=cut_short,
+        mode=lay.mode,
+        weakest=_weakest_directions(lay, links, error),
+        clouds={
+            (lk.parent, lk.child): lay.cloud(lk.parent, lk.child)
+            for lk in links
+            if lk.info is not None
+        },
+        overlap=lay.overlap,
+    )
+
+
+def _layout(
+    ctx: Context,
+    seen: SightCache,
+    cand_xy: np.ndarray,
+    stations: list[int],
+    probes: dict[int, np.ndarray],
+    goal_mm: float,
+    weak_mm: float,
+    datum: int | None,
+    deadline: float,
+) -> tuple[Layout, bool]:
+    """The network's layout over ``stations`` and the linking stations they need (and a
+    detour where a link is weaker than ``weak_mm``, if it makes the worst station's error
+    smaller); and whether the deadline cut the search for linking stations short."""
     lay = Layout(ctx, seen, cand_xy, stations, probes, goal_mm, datum, deadline)
     groups = link_groups(lay.k, lay.pairs)
     cut_short = False
@@ -89,13 +157,21 @@ def build_network(
             )
             if len(trial.cost) >= len(lay.cost) and trial.worst_var < 0.8 * lay.worst_var:
                 lay = trial
-    stations, sight, station_xyz, datum = lay.stations, lay.sight, lay.station_xyz, lay.datum
-    k, xyz = lay.k, tc.xyz
-    # the links in tree order, each preferring the targets already set up (those the surveyor
-    # placed by hand are taken first by every link that sees them: choose_link_targets)
+    return lay, cut_short
+
+
+def _tree_links(
+    ctx: Context, tc: TargetCandidates, lay: Layout
+) -> tuple[list[Link], dict[tuple[int, int], float], set[int], Stands, int]:
+    """The links in tree order, each preferring the targets already set up (those the
+    surveyor placed by hand are taken first by every link that sees them:
+    :func:`~planner.pipeline.network.links.choose_link_targets`): the links, each one's own
+    error [mm], the targets placed, the sphere stands set up, and how many links use a
+    target behind another link's sphere."""
     placed: set[int] = set()
     links: list[Link] = []
     link_error: dict[tuple[int, int], float] = {}
+    station_xyz, datum = lay.station_xyz, lay.datum
     stands = Stands(ctx, tc, station_xyz)
     tied = [] if datum is None or datum == CONTROL else [datum]
     paired = set(lay.pairs)
@@ -128,9 +204,15 @@ def build_network(
         placed.update(targets)
         stands.set_up((parent, child), targets)
         tied.append(child)
-    sight = stands.hide(sight, placed)  # the spheres set up hide some targets from some stations
-    # the final sizes: each placed target gets the smallest item that serves every station
-    # using it, and the centre RMS with that item
+    return links, link_error, placed, stands, behind
+
+
+def _final_sizes(
+    ctx: Context, tc: TargetCandidates, sight: Sight, links: list[Link]
+) -> tuple[dict[int, set[int]], dict[tuple[int, int], float], dict[tuple[int, int], float]]:
+    """The final sizes: each placed target gets the smallest item that serves every station
+    using it, and the centre RMS with that item [mm]: the stations using each target, the
+    links' observations and every station's that sees one (keyed (station, target))."""
     users: dict[int, set[int]] = {}
     for lk in links:
         for t in lk.targets:
@@ -149,49 +231,85 @@ def build_network(
         for j in map(int, np.flatnonzero(sight.usable[t] & (sight.need_mm[t] <= size))):
             if (j, t) not in observed:
                 observed[(j, t)] = centre_rms(ctx, tc, sight, t, j, size)
-    control_rms = {int(t): float(tc.control_rms_mm[t]) for t in np.flatnonzero(tc.is_control)}
-    link_sigma: dict[tuple[int, int], float] = {}
-    error = None
-    if links or datum is not None:
-        error = propagate(
-            station_xyz,
-            xyz,
-            final_rms,
-            links,
-            datum=None if datum == CONTROL else datum,
-            control_rms_mm=control_rms,
-            levelled=levelled,
-            tilt_rms_arcsec=ctx.scanner.initial_tilt_rms_arcsec,
-        )
+    return users, final_rms, observed
+
+
+def _network_error(
+    ctx: Context,
+    lay: Layout,
+    tc: TargetCandidates,
+    links: list[Link],
+    final_rms: dict[tuple[int, int], float],
+    observed: dict[tuple[int, int], float],
+    control_rms: dict[int, float],
+    users: dict[int, set[int]],
+) -> NetworkError | None:
+    """The network's error: the chain's (:func:`planner.registration_error.propagate`),
+    with the pose covariances of the adjustment of every target each scan sees where the
+    software adjusts them together (:func:`planner.registration_error.adjust`). None: no
+    link and no datum."""
+    if not links and lay.datum is None:
+        return None
+    levelled = ctx.scanner.is_levelled
+    datum = None if lay.datum == CONTROL else lay.datum
+    error = propagate(
+        lay.station_xyz,
+        tc.xyz,
+        final_rms,
+        links,
+        datum=datum,
+        control_rms_mm=control_rms,
+        levelled=levelled,
+        tilt_rms_arcsec=ctx.scanner.initial_tilt_rms_arcsec,
+    )
     if error is not None and ctx.settings.registration_processing == "adjustment":
         # the registration as it is computed: every target each scan sees, adjusted together
         # (pairwise: each scan registered to its parent on the link's targets, the chain's)
         error.pose_cov = adjust(
-            station_xyz,
-            xyz,
+            lay.station_xyz,
+            tc.xyz,
             observed,
             error.tied,
-            datum=None if datum == CONTROL else datum,
+            datum=datum,
             control_rms_mm={t: r for t, r in control_rms.items() if t in users},
             levelled=levelled,
             tilt_rms_arcsec=ctx.scanner.initial_tilt_rms_arcsec,
             planes=_planes(lay.surf),
         )
-    if error is not None:
-        # each link's own error with the final sizes, at the facade points of its child; and
-        # the RMS of one target's centre difference in it (its dilution's denominator)
-        for lk in links:
-            if lk.info is not None:
-                continue  # a cloud link's own error is known (Layout.link)
-            key = (lk.parent, lk.child)
-            link_error[key] = lay.error_at_probes(error.link_cov[key], lk.child)
-            s2 = [
-                (control_rms[t] if lk.parent == CONTROL else final_rms[(lk.parent, t)]) ** 2
-                + final_rms[(lk.child, t)] ** 2
-                for t in lk.targets
-            ]
-            link_sigma[(lk.parent, lk.child)] = float(np.sqrt(np.mean(s2)))
-    weakest = {}  # each link's weakest direction at the middle of its child's facade points
+    return error
+
+
+def _own_link_errors(
+    lay: Layout,
+    links: list[Link],
+    error: NetworkError,
+    final_rms: dict[tuple[int, int], float],
+    control_rms: dict[int, float],
+    link_error: dict[tuple[int, int], float],
+) -> dict[tuple[int, int], float]:
+    """Each link's own error with the final sizes, at the facade points of its child (into
+    ``link_error``); and the RMS of one target's centre difference in it (its dilution's
+    denominator), returned."""
+    link_sigma: dict[tuple[int, int], float] = {}
+    for lk in links:
+        if lk.info is not None:
+            continue  # a cloud link's own error is known (Layout.link)
+        key = (lk.parent, lk.child)
+        link_error[key] = lay.error_at_probes(error.link_cov[key], lk.child)
+        s2 = [
+            (control_rms[t] if lk.parent == CONTROL else final_rms[(lk.parent, t)]) ** 2
+            + final_rms[(lk.child, t)] ** 2
+            for t in lk.targets
+        ]
+        link_sigma[(lk.parent, lk.child)] = float(np.sqrt(np.mean(s2)))
+    return link_sigma
+
+
+def _weakest_directions(
+    lay: Layout, links: list[Link], error: NetworkError | None
+) -> dict[tuple[int, int], str]:
+    """Each link's weakest direction at the middle of its child's facade points."""
+    weakest = {}
     for lk in links:
         key = (lk.parent, lk.child)
         cov = lay.cloud(*key).cov if lk.info is not None else None
@@ -199,43 +317,9 @@ def build_network(
             cov = error.link_cov[key]
         if cov is not None and np.isfinite(np.diag(cov)).all():
             mid = lay.probe(lk.child).mean(axis=0)
-            cov = transport_pose_cov(cov, station_xyz[lk.child], mid)
+            cov = transport_pose_cov(cov, lay.station_xyz[lk.child], mid)
         weakest[key] = weakest_direction(cov) if cov is not None else ""
-    n_groups = int(link_groups(k, lay.pairs).max() + 1) if k else 0
-    untied = int((~error.tied).sum()) if error is not None else k
-    message = network_message(k, k - n_cover, datum, untied, n_groups, tc, links, lay.mode)
-    if behind:
-        message += (
-            f"; {behind} link(s) use a target behind another link's sphere (set that sphere "
-            "up only after those scans)"
-        )
-    linkable = [(a, b, len(shared_targets(sight, tc, a, b))) for a, b in lay.pairs]
-    return Network(
-        stations=np.array(stations, dtype=np.int64),
-        n_link_stations=k - n_cover,
-        links=links,
-        link_error_mm=link_error,
-        link_sigma_mm=link_sigma,
-        linkable=linkable,
-        targets=sorted(placed),
-        datum=None if datum == CONTROL else datum,
-        error=error,
-        n_groups=n_groups,
-        message=message,
-        sight=sight,
-        candidates=tc,
-        station_xyz=station_xyz,
-        centre_rms=observed,
-        cut_short=cut_short,
-        mode=lay.mode,
-        weakest=weakest,
-        clouds={
-            (lk.parent, lk.child): lay.cloud(lk.parent, lk.child)
-            for lk in links
-            if lk.info is not None
-        },
-        overlap=lay.overlap,
-    )
+    return weakest
 
 
 def _planes(surf: clouds.Surfaces | None) -> tuple | None:
