@@ -851,6 +851,11 @@ def _site_arguments(pl: argparse.ArgumentParser) -> None:
         help="CRS of the site file's coordinates, e.g. EPSG:25832 or EPSG:4326 (CSV and WKT "
         "carry none; GeoJSON without one is longitude/latitude)",
     )
+    _reading_arguments(pl)
+
+
+def _reading_arguments(pl: argparse.ArgumentParser) -> None:
+    """How to read the site (heights, buildings to plan, repairs) and the scanner."""
     pl.add_argument(
         "--height",
         type=argument("height_m"),
@@ -920,13 +925,20 @@ def _data_class_arguments(
 
 
 def _setting_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
-    """The settings that are not plain numbers: choices and switches."""
+    """The settings that are not plain numbers: choices and switches (in the order of the
+    command line's help)."""
+    _model_arguments(group)
+    _sampling_arguments(group)
+    _switch_arguments(group)
+
+
+def _model_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
+    """The optimiser, the accuracy model and the registration."""
     from planner.pipeline.inputs.requirements import (
         METHODS,
         MODELS,
         REGISTRATION_MODES,
         REGISTRATION_PROCESSING,
-        SIGHT_ENGINES,
     )
 
     group["solver"].add_argument(
@@ -955,6 +967,12 @@ def _setting_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
         + "; or ".join(f"{k}, {v}" for k, v in REGISTRATION_PROCESSING.items())
         + " (default adjustment)",
     )
+
+
+def _sampling_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
+    """What is demanded, how sight lines are answered, the scanner's setting, imaging."""
+    from planner.pipeline.inputs.requirements import SIGHT_ENGINES
+
     group["sampling"].add_argument(
         "--demand-roofs",
         action="store_true",
@@ -984,6 +1002,10 @@ def _setting_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
         default=None,
         help="each station also takes its HDR images (counted in the field time; default on)",
     )
+
+
+def _switch_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
+    """The model's terms and the registration error, each switched off."""
     group["model"].add_argument(
         "--no-incidence-noise",
         dest="incidence_noise",

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import matplotlib.pyplot as plt
 import numpy as np
+import pandas as pd
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
@@ -23,6 +24,43 @@ MAX_FACADES = 40
 def elevation_buildings(p: Plan) -> list[str]:
     """The planned buildings with facades, in the facade table's order."""
     return list(dict.fromkeys(p.facades["building_id"]))
+
+
+def _name_facades(ax: Axes, f: pd.DataFrame, off: dict, building_id: str) -> None:
+    """Each facade's id (without its building's) above its outline."""
+    for row in f.itertuples():
+        b = facade_outline(row).bounds
+        ax.annotate(
+            str(row.Index).removeprefix(f"{building_id}-"),
+            (off[row.Index] + b[2] / 2, b[3]),
+            xytext=(0, 2),
+            textcoords="offset points",
+            ha="center",
+            va="bottom",
+            fontsize=7,
+            color="0.3",
+        )
+
+
+def _legend(ax: Axes, stations: list[str], colour: dict, n_unmet: int, party: bool) -> None:
+    """A legend of the stations' colours (the first 20), the unmet samples and party walls."""
+    handles = [
+        plt.Line2D([], [], ls="", marker="o", color=colour[s], label=s) for s in stations[:20]
+    ]
+    if n_unmet:
+        handles.append(
+            plt.Line2D([], [], ls="", marker="x", color="red", label=f"unmet ({n_unmet})")
+        )
+    if party:
+        handles.append(plt.Line2D([], [], ls="", marker="o", color="0.7", label="party wall"))
+    if handles:
+        ax.legend(
+            handles=handles,
+            loc="upper left",
+            bbox_to_anchor=(1.0, 1.0),
+            fontsize=7,
+            title="station",
+        )
 
 
 def plot_elevations(p: Plan, building_id: str | None = None, ax: Axes | None = None) -> Figure:
@@ -61,41 +99,14 @@ def plot_elevations(p: Plan, building_id: str | None = None, ax: Axes | None = N
         ax.scatter(u[unmet], h[unmet], marker="x", c="red", s=22, lw=1.2)
     if party.any():
         ax.scatter(u[party], h[party], c="0.7", s=10, lw=0)
-    for row in f.itertuples():
-        b = facade_outline(row).bounds
-        ax.annotate(
-            str(row.Index).removeprefix(f"{building_id}-"),
-            (off[row.Index] + b[2] / 2, b[3]),
-            xytext=(0, 2),
-            textcoords="offset points",
-            ha="center",
-            va="bottom",
-            fontsize=7,
-            color="0.3",
-        )
+    _name_facades(ax, f, off, building_id)
     last = list(off)[-1]
     ax.set_xlim(-UNROLL_GAP_M / 2, off[last] + f.loc[last, "length_m"] + UNROLL_GAP_M / 2)
     ax.set_ylim(
         min(0.0, float((f["z0"] - f["base_z"]).min())) - 0.5, float(tops.max()) * 1.12 + 1.0
     )
     ax.set_aspect("equal", adjustable="box")
-    handles = [
-        plt.Line2D([], [], ls="", marker="o", color=colour[s], label=s) for s in stations[:20]
-    ]
-    if unmet.any():
-        handles.append(
-            plt.Line2D([], [], ls="", marker="x", color="red", label=f"unmet ({int(unmet.sum())})")
-        )
-    if party.any():
-        handles.append(plt.Line2D([], [], ls="", marker="o", color="0.7", label="party wall"))
-    if handles:
-        ax.legend(
-            handles=handles,
-            loc="upper left",
-            bbox_to_anchor=(1.0, 1.0),
-            fontsize=7,
-            title="station",
-        )
+    _legend(ax, stations, colour, int(unmet.sum()), bool(party.any()))
     base = float(f["base_z"].iloc[0])
     ax.set_xlabel("distance along each facade [m] (facades side by side)")
     if p.site.is_3d:

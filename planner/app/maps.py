@@ -27,7 +27,7 @@ from planner.crs import name_of as crs_name
 from planner.pipeline.engine.result import Plan
 from planner.pipeline.field.route import view_sectors
 from planner.pipeline.inputs.schema import STATION_ID, STATION_PURPOSES, SYMBOLS
-from planner.site import Site
+from planner.site import Building, Site
 
 __all__ = [
     "legend_outside",
@@ -95,6 +95,39 @@ COLOURS = {
 }
 
 
+def _draw_building(ax: Axes, b: Building, labelled: set[str]) -> None:
+    """A building's footprint (planned dark, others light), a 3-D building's roof edges and
+    ridges, its id and height; a legend entry for each kind not yet ``labelled``."""
+    kind = "planned" if b.planned else "other"
+    label = "building (planned)" if b.planned else "building (blocks the beam)"
+    ax.add_patch(
+        _patch(
+            b.footprint,
+            fc=COLOURS[kind],
+            ec="k",
+            lw=0.8,
+            label=None if kind in labelled else label,
+        )
+    )
+    labelled.add(kind)
+    if b.surfaces:  # a 3-D building: its roof's edges and ridges, its parts' outlines
+        roof = [s.rings[0][:, :2] for s in b.surfaces if s.kind == "roof"]
+        for ring in roof:
+            ax.add_patch(MplPolygon(ring, closed=True, fill=False, ec="0.55", lw=0.4, zorder=2))
+        if roof and "roof" not in labelled:
+            ax.plot([], [], color="0.55", lw=0.4, label="roof edges and ridges (3-D model)")
+            labelled.add("roof")
+    c = b.footprint.representative_point()
+    ax.annotate(
+        f"{b.id}\n{round(b.height_m, 1):g} m",
+        (c.x, c.y),
+        ha="center",
+        va="center",
+        fontsize=7,
+        color="w" if b.planned else "k",
+    )
+
+
 def plot_site(site: Site, ax: Axes | None = None, window: BaseGeometry | None = None) -> Axes:
     """Buildings (planned dark, others light), obstacles, no-go areas and the boundary, in
     the site's coordinates, each kind with a legend entry; only those meeting ``window``
@@ -123,34 +156,7 @@ def plot_site(site: Site, ax: Axes | None = None, window: BaseGeometry | None = 
         )
     labelled: set[str] = set()
     for b in shown(site.buildings, lambda b: b.footprint):
-        kind = "planned" if b.planned else "other"
-        label = "building (planned)" if b.planned else "building (blocks the beam)"
-        ax.add_patch(
-            _patch(
-                b.footprint,
-                fc=COLOURS[kind],
-                ec="k",
-                lw=0.8,
-                label=None if kind in labelled else label,
-            )
-        )
-        labelled.add(kind)
-        if b.surfaces:  # a 3-D building: its roof's edges and ridges, its parts' outlines
-            roof = [s.rings[0][:, :2] for s in b.surfaces if s.kind == "roof"]
-            for ring in roof:
-                ax.add_patch(MplPolygon(ring, closed=True, fill=False, ec="0.55", lw=0.4, zorder=2))
-            if roof and "roof" not in labelled:
-                ax.plot([], [], color="0.55", lw=0.4, label="roof edges and ridges (3-D model)")
-                labelled.add("roof")
-        c = b.footprint.representative_point()
-        ax.annotate(
-            f"{b.id}\n{round(b.height_m, 1):g} m",
-            (c.x, c.y),
-            ha="center",
-            va="center",
-            fontsize=7,
-            color="w" if b.planned else "k",
-        )
+        _draw_building(ax, b, labelled)
     for n, g in enumerate(shown(site.passages, lambda g: g.geometry)):
         ax.add_patch(
             _patch(
@@ -198,7 +204,48 @@ def plot_plan_map(
     if ax is None:
         _, ax = plt.subplots(figsize=(11, 8), layout="constrained")
     fig = ax.figure
-    if candidates and len(p.candidates) and not p.candidates["samples_met"].any():
+    if candidates:
+        _draw_candidates(p, ax)
+    plot_site(p.site, ax)
+    if sectors:
+        _draw_sectors(p, ax)
+    if route:
+        _draw_route(p, ax)
+    labels: list[tuple[float, float, str, dict]] = []
+    _draw_traverses(p, ax)
+    _draw_links(p, ax, labels)
+    target_labels: list[tuple[float, float, str, dict]] = []
+    draw_targets(ax, p.targets, target_labels)
+    labels += _draw_stations(p, ax, order_labels)
+    un = p.unmet
+    if len(un):
+        ax.scatter(
+            un["x"],
+            un["y"],
+            marker="x",
+            c="red",
+            s=30,
+            zorder=6,
+            label=f"unmet samples ({len(un)})",
+        )
+    title = f"{len(p.stations)} stations, {len(p.targets)} targets — {p.site.name}"
+    if len(labels) + len(target_labels) <= MAX_MAP_LABELS:
+        labels += target_labels
+    else:  # a district: its target ids would only bury the stations' (the pages have them)
+        title += " (target ids: targets.csv and each station's page)"
+    ax.set_title(title)
+    _frame_extent(ax, p)
+    survey_frame(ax, p.site.crs)
+    place_labels(ax, labels)
+    legend_outside(ax)
+    return fig
+
+
+def _draw_candidates(p: Plan, ax: Axes) -> None:
+    """The candidate positions coloured by the samples each meets (with a colour bar), or
+    grey where none meets one."""
+    fig = ax.figure
+    if len(p.candidates) and not p.candidates["samples_met"].any():
         # nothing to scale a colour bar by (it would run from -0.1 to 0.1): grey positions
         ax.scatter(
             p.candidates["x"],
@@ -210,7 +257,7 @@ def plot_plan_map(
             zorder=0,
             label="candidate position (none meets a sample as asked)",
         )
-    elif candidates and len(p.candidates):
+    elif len(p.candidates):
         c = p.candidates
         sc = ax.scatter(
             c["x"],
@@ -231,9 +278,12 @@ def plot_plan_map(
             anchor=(0.0, 0.0),
             label="samples a station here meets",
         )
-    plot_site(p.site, ax)
+
+
+def _draw_sectors(p: Plan, ax: Axes) -> None:
+    """Each station's view sector, faint."""
     st = p.stations.set_index("station_id")
-    if sectors and len(p.stations):
+    if len(p.stations):
         wedges = [
             Wedge((st.at[sid, "x"], st.at[sid, "y"]), radius, 90 - end, 90 - start)
             for sid, (start, end, radius) in view_sectors(p.stations, p.coverage, p.targets).items()
@@ -242,7 +292,11 @@ def plot_plan_map(
             PatchCollection(wedges, fc=COLOURS["sector"], ec="#d68910", alpha=0.07, lw=0.6)
         )
         ax.fill([], [], fc=COLOURS["sector"], ec="#d68910", alpha=0.3, label="scan sector")
-    if route and p.route is not None and len(p.route.legs) > 1:
+
+
+def _draw_route(p: Plan, ax: Axes) -> None:
+    """The walking route between the stations, its length in the legend."""
+    if p.route is not None and len(p.route.legs) > 1:
         for leg in p.route.legs[1:]:
             ax.plot(leg[:, 0], leg[:, 1], color=COLOURS["route"], lw=1.1, ls=(0, (4, 2)), zorder=2)
         ax.plot(
@@ -253,11 +307,12 @@ def plot_plan_map(
             ls=(0, (4, 2)),
             label=f"walking route ({p.route.table['walk_m'].sum():.0f} m)",
         )
+
+
+def _draw_stations(p: Plan, ax: Axes, order_labels: bool) -> list[tuple[float, float, str, dict]]:
+    """The stations by purpose; their labels (the visit in brackets where ``order_labels``
+    and the id does not say it)."""
     labels: list[tuple[float, float, str, dict]] = []
-    _draw_traverses(p, ax)
-    _draw_links(p, ax, labels)
-    target_labels: list[tuple[float, float, str, dict]] = []
-    draw_targets(ax, p.targets, target_labels)
     order = {}
     if order_labels and p.route is not None:
         order = dict(zip(p.route.table["station_id"], p.route.table["order"], strict=True))
@@ -282,28 +337,7 @@ def plot_plan_map(
         says_it = n is None or r.station_id == STATION_ID.format(n)
         text = r.station_id if says_it else f"{r.station_id} ({n})"
         labels.append((r.x, r.y, text, {"fontsize": 8, "weight": "bold"}))
-    un = p.unmet
-    if len(un):
-        ax.scatter(
-            un["x"],
-            un["y"],
-            marker="x",
-            c="red",
-            s=30,
-            zorder=6,
-            label=f"unmet samples ({len(un)})",
-        )
-    title = f"{len(p.stations)} stations, {len(p.targets)} targets — {p.site.name}"
-    if len(labels) + len(target_labels) <= MAX_MAP_LABELS:
-        labels += target_labels
-    else:  # a district: its target ids would only bury the stations' (the pages have them)
-        title += " (target ids: targets.csv and each station's page)"
-    ax.set_title(title)
-    _frame_extent(ax, p)
-    survey_frame(ax, p.site.crs)
-    place_labels(ax, labels)
-    legend_outside(ax)
-    return fig
+    return labels
 
 
 #: A plan map with more labels than this leaves out the targets' ids.

@@ -212,20 +212,9 @@ def plan_district(
     t0 = time.perf_counter()
     if deadline is None:
         deadline = time.monotonic() + st.time_limit_s
-    blocks = partition(site, block_m)
-    # the halo is the farthest any requirement reaches (the site-wide one, every zone's), and
-    # the strictest spacing anywhere chooses one step for all blocks
-    inputs = resolve(scanner, req, st, zone_requirements(site, req))
-    halo, st = inputs.reach_m, inputs.settings
     RANGES["workers"].check(workers, "the number of workers")
     memory_bytes(memory_limit)
-    sites = [block_site(site, b, halo) for b in blocks]
-    # each block's samples, refused here as a block's plan would refuse them (before a
-    # cluster is started for nothing); the largest blocks go first (below)
-    work = [estimate_samples(s, st.sample_spacing_m, st.sample_height_step_m) for s in sites]
-    check_sample_count(
-        max(work, default=0), st.sample_spacing_m, st.sample_height_step_m, st.max_samples
-    )
+    blocks, sites, work, halo, st = _blocks(site, scanner, req, st, block_m)
     say(0.0, f"{len(blocks)} block(s) of {block_m:g} m, halo {halo:.0f} m")
     from dask.distributed import Client
 
@@ -273,6 +262,25 @@ def plan_district(
     out.timings_s["total"] = time.perf_counter() - t0
     say(1.0, "plan ready")
     return out
+
+
+def _blocks(
+    site: Site, scanner: Scanner, req: Requirements, st: PlanSettings, block_m: float
+) -> tuple[list[Block], list[Site], list[int], float, PlanSettings]:
+    """The blocks, each block's site (its halo's buildings with it) and samples, the halo
+    [m] and the settings resolved. The halo is the farthest any requirement reaches (the
+    site-wide one, every zone's), and the strictest spacing anywhere chooses one step for
+    all blocks. A block with more samples than the settings allow is refused here, as its
+    plan would refuse it, before a cluster is started for nothing."""
+    blocks = partition(site, block_m)
+    inputs = resolve(scanner, req, st, zone_requirements(site, req))
+    halo, st = inputs.reach_m, inputs.settings
+    sites = [block_site(site, b, halo) for b in blocks]
+    work = [estimate_samples(s, st.sample_spacing_m, st.sample_height_step_m) for s in sites]
+    check_sample_count(
+        max(work, default=0), st.sample_spacing_m, st.sample_height_step_m, st.max_samples
+    )
+    return blocks, sites, work, halo, st
 
 
 def _blocks_until(site: Site, st: PlanSettings, deadline: float, closing: bool) -> float:

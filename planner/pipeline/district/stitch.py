@@ -26,6 +26,7 @@ from planner.pipeline.inputs.requirements import (
     Requirements,
 )
 from planner.pipeline.inputs.schema import METRIC_KEYS
+from planner.pipeline.network import seams
 from planner.registration_error import datum_tilt_cov
 from planner.scanner import Scanner
 from planner.site import Site
@@ -59,52 +60,18 @@ def stitch(
     raises it to the blocks' covers at shared prices where that is larger), a message per
     block, one route. With the blocks' ``frames`` (:func:`keep_frame`) their networks are
     tied into one across the seams; without, the blocks stay apart."""
-    stations, targets, coverage, facades, links, zones, cands = [], [], [], [], [], [], []
-    messages = [
-        *site.warnings,
-        *notes_summary(site.notes),
-        f"District: {len(blocks)} blocks planned on Dask, halo {reach:.0f} m.",
-    ]
-    control = {c.id for c in site.control}
-    frames = frames if frames is not None else [None] * len(blocks)
-    for b, p, frame in zip(blocks, plans, frames, strict=True):
-        sid = {s: f"{b.key}-{s}" for s in p.stations["station_id"]}
-        tid = {t: f"{b.key}-{t}" for t in p.targets["target_id"] if t not in control}
-        st_b, cov_b, tg_b, lk_b = rename_stations(sid, p.stations, p.coverage, p.targets, p.links)
-        tg_b, lk_b = rename_targets(tid, tg_b, lk_b)
-        stations.append(st_b)
-        targets.append(tg_b)
-        coverage.append(cov_b.drop(columns=[REASON_DATA], errors="ignore"))
-        facades.append(p.facades)
-        links.append(lk_b)
-        zones.append(p.zones)
-        cands.append(p.candidates)
-        net = _network_message(p, frame)
-        messages.append(
-            f"Block {b.key} ({len(b.buildings)} buildings): {len(p.stations)} stations, "
-            f"{p.solver.status}, bound {p.solver.lower_bound}"
-            + (f"; Registration: {net}." if net else "")
-        )
+    parts, messages = _renamed_blocks(site, blocks, plans, frames, reach)
+    stations, targets, coverage, facades, links, zones, cands = parts
     targets_df = _merge_control(pd.concat(targets, ignore_index=True))
     stations_df = pd.concat(stations, ignore_index=True)
     coverage_df = pd.concat(coverage, ignore_index=True)
     links_df = pd.concat(links, ignore_index=True)
-    objective = int(sum(p.solver.objective for p in plans))
     removed: list[str] = []
     if tables is not None:
-        meeting = pd.concat(
-            [
-                t.assign(station_id=f"{b.key}-" + t["station_id"].astype(str))
-                for b, t in zip(blocks, tables, strict=True)
-            ],
-            ignore_index=True,
+        removed, stations_df, coverage_df, links_df, targets_df = _drop_redundant(
+            blocks, tables, stations_df, coverage_df, links_df, targets_df
         )
-        removed = redundant_stations(stations_df, coverage_df, links_df, meeting)
         if removed:
-            stations_df, coverage_df, links_df, targets_df = _without(
-                removed, stations_df, coverage_df, links_df, targets_df, meeting
-            )
-            objective -= len(removed)
             messages.append(
                 f"{len(removed)} station(s) on block edges removed as redundant: every sample "
                 "they met is met from another station, some of a neighbouring block (those "
@@ -113,28 +80,7 @@ def stitch(
     cut = _cut_short(blocks, plans)
     if cut:
         messages.append(budget_message(st.time_limit_s, cut))
-    far = honest_bound(blocks, plans, reach)
-    statuses = {p.solver.status for p in plans}
-    solver = SolverReport(
-        method=f"district ({len(blocks)} blocks)",
-        status=statuses.pop() if len(statuses) == 1 else "mixed: " + ", ".join(sorted(statuses)),
-        objective=objective,
-        **bound_fields(objective, far, 0.0),
-        far_bound=far,
-        seconds=max(float(p.solver.seconds) for p in plans),
-        greedy_objective=sum(int(p.solver.greedy_objective or 0) for p in plans),
-        parts=sum(int(p.solver.parts) for p in plans),
-        reach_m=reach,
-        meeting_reach_m=max(capped_meeting_reach(p, reach) for p in plans),
-        candidates=sum(int(p.solver.candidates) for p in plans),
-        samples=sum(int(p.solver.samples) for p in plans),
-        pairs=sum(int(p.solver.pairs) for p in plans),
-        registration_rounds=max(int(p.solver.registration_rounds) for p in plans),
-        blocks=len(blocks),
-        block_bound_sum=float(sum(p.solver.lower_bound or 0 for p in plans)),
-        redundant_removed=len(removed),
-        cut_short=cut,
-    )
+    solver = _district_solver(blocks, plans, reach, len(removed), cut)
     coverage_df, links_df, seam_notes = _tie_seams(
         site,
         scanner,
@@ -142,7 +88,7 @@ def stitch(
         st,
         blocks,
         plans,
-        frames,
+        frames or [None] * len(blocks),
         reach,
         coverage_df,
         links_df,
@@ -175,6 +121,102 @@ def stitch(
     )
 
 
+def _renamed_blocks(
+    site: Site,
+    blocks: list[Block],
+    plans: list[Plan],
+    frames: list[KeptNetwork | None] | None,
+    reach: float,
+) -> tuple[tuple[list, ...], list[str]]:
+    """Each block's tables with its ids prefixed with the block's key (control points keep
+    theirs) — stations, targets, coverage, facades, links, zones, candidates — and the
+    messages: the site's, then one per block."""
+    stations, targets, coverage, facades, links, zones, cands = [], [], [], [], [], [], []
+    messages = [
+        *site.warnings,
+        *notes_summary(site.notes),
+        f"District: {len(blocks)} blocks planned on Dask, halo {reach:.0f} m.",
+    ]
+    control = {c.id for c in site.control}
+    frames = frames if frames is not None else [None] * len(blocks)
+    for b, p, frame in zip(blocks, plans, frames, strict=True):
+        sid = {s: f"{b.key}-{s}" for s in p.stations["station_id"]}
+        tid = {t: f"{b.key}-{t}" for t in p.targets["target_id"] if t not in control}
+        st_b, cov_b, tg_b, lk_b = rename_stations(sid, p.stations, p.coverage, p.targets, p.links)
+        tg_b, lk_b = rename_targets(tid, tg_b, lk_b)
+        stations.append(st_b)
+        targets.append(tg_b)
+        coverage.append(cov_b.drop(columns=[REASON_DATA], errors="ignore"))
+        facades.append(p.facades)
+        links.append(lk_b)
+        zones.append(p.zones)
+        cands.append(p.candidates)
+        net = _network_message(p, frame)
+        messages.append(
+            f"Block {b.key} ({len(b.buildings)} buildings): {len(p.stations)} stations, "
+            f"{p.solver.status}, bound {p.solver.lower_bound}"
+            + (f"; Registration: {net}." if net else "")
+        )
+    return (stations, targets, coverage, facades, links, zones, cands), messages
+
+
+def _drop_redundant(
+    blocks: list[Block],
+    tables: list[pd.DataFrame],
+    stations: pd.DataFrame,
+    coverage: pd.DataFrame,
+    links: pd.DataFrame,
+    targets: pd.DataFrame,
+) -> tuple[list[str], pd.DataFrame, pd.DataFrame, pd.DataFrame, pd.DataFrame]:
+    """The stations on block edges a neighbouring block makes redundant
+    (:func:`redundant_stations`, given the blocks' meeting tables), and the tables without
+    them: stations, coverage, links, targets."""
+    meeting = pd.concat(
+        [
+            t.assign(station_id=f"{b.key}-" + t["station_id"].astype(str))
+            for b, t in zip(blocks, tables, strict=True)
+        ],
+        ignore_index=True,
+    )
+    removed = redundant_stations(stations, coverage, links, meeting)
+    if removed:
+        stations, coverage, links, targets = _without(
+            removed, stations, coverage, links, targets, meeting
+        )
+    return removed, stations, coverage, links, targets
+
+
+def _district_solver(
+    blocks: list[Block], plans: list[Plan], reach: float, removed: int, cut: list[str]
+) -> SolverReport:
+    """The district's solver report: the blocks' covers summed less the stations
+    ``removed``, the honest bound of the blocks far apart (:func:`honest_bound`), the
+    blocks' work summed."""
+    objective = int(sum(p.solver.objective for p in plans)) - removed
+    far = honest_bound(blocks, plans, reach)
+    statuses = {p.solver.status for p in plans}
+    return SolverReport(
+        method=f"district ({len(blocks)} blocks)",
+        status=statuses.pop() if len(statuses) == 1 else "mixed: " + ", ".join(sorted(statuses)),
+        objective=objective,
+        **bound_fields(objective, far, 0.0),
+        far_bound=far,
+        seconds=max(float(p.solver.seconds) for p in plans),
+        greedy_objective=sum(int(p.solver.greedy_objective or 0) for p in plans),
+        parts=sum(int(p.solver.parts) for p in plans),
+        reach_m=reach,
+        meeting_reach_m=max(capped_meeting_reach(p, reach) for p in plans),
+        candidates=sum(int(p.solver.candidates) for p in plans),
+        samples=sum(int(p.solver.samples) for p in plans),
+        pairs=sum(int(p.solver.pairs) for p in plans),
+        registration_rounds=max(int(p.solver.registration_rounds) for p in plans),
+        blocks=len(blocks),
+        block_bound_sum=float(sum(p.solver.lower_bound or 0 for p in plans)),
+        redundant_removed=removed,
+        cut_short=cut,
+    )
+
+
 def _tie_seams(
     site: Site,
     scanner: Scanner,
@@ -192,29 +234,9 @@ def _tie_seams(
     """The blocks' networks tied into one across their seams
     (:mod:`planner.pipeline.network.seams`): every sample judged again with its block's frame error;
     the seams as links; what was tied and what could not be, said."""
-    from planner.pipeline.network import seams
-
     if len(blocks) < 2 or not st.computes_registration or any(k is None for k in kept):
         return coverage, links, []
-    frames, targets, datums, leaning = [], [], [], []
-    gone = set(removed)
-    for b, p, fr in zip(blocks, plans, kept, strict=True):
-        xyz, pose, tied, datum, leans = fr.xyz, fr.pose_cov, fr.tied, fr.datum, fr.leans
-        ids = [f"{b.key}-{s}" for s in p.stations["station_id"][: len(xyz)]]
-        keep = np.array([i not in gone for i in ids], dtype=bool)
-        datums.append(datum)
-        leaning.append(np.asarray(leans, dtype=bool)[keep])
-        frames.append(
-            seams.BlockFrame(
-                [i for i, k in zip(ids, keep, strict=True) if k],
-                np.asarray(xyz)[keep],
-                np.asarray(pose)[keep],
-                np.asarray(tied, dtype=bool)[keep],
-            )
-        )
-        t = p.targets.copy()
-        t["target_id"] = [f"{b.key}-{x}" for x in t["target_id"]]
-        targets.append(t)
+    frames, targets, datums, leaning = _block_frames(blocks, plans, kept, set(removed))
     ctx_of = seams.context_of(site, scanner, req, st, reach)
     found = seams.seam_links(site, ctx_of, frames, targets)
     extra, used = seams.tie_blocks(frames, found)
@@ -223,43 +245,34 @@ def _tie_seams(
     root = seams.root_block(frames)
     lean = datums[root]
     tau = scanner.initial_tilt_rms_arcsec
-    per_station, xyz = {}, {}
-    for f, e, own, leans in zip(frames, extra, datums, leaning, strict=True):
-        if e is not None:
-            e = e.copy()
-            if lean is not None:  # (a levelled scanner's frames do not lean)
-                e[leans] += datum_tilt_cov(f.xyz[leans], lean, tau)
-            if own is not None:
-                e[leans] -= datum_tilt_cov(f.xyz[leans], own, tau)
-            per_station |= dict(zip(f.ids, e, strict=True))
-        xyz |= dict(zip(f.ids, f.xyz, strict=True))
+    per_station, xyz = _frame_errors(frames, extra, datums, leaning, lean, tau)
     limits = np.concatenate([fr.limits for fr in kept])
     facade_df = pd.concat(facades, ignore_index=True)
     coverage, over = seams.add_frame_errors(coverage, facade_df, per_station, xyz, limits)
     n_lost, n_height = int(over.any(axis=1).sum()), int(over[:, 2].sum())
-    notes = []
     lost = [b.key for b, e, f in zip(blocks, extra, frames, strict=True) if e is None and f.ids]
     for b, e, f in zip(blocks, extra, frames, strict=True):
         if e is None and f.ids:
             coverage = seams.untied_blocks(coverage, set(f.ids), b.key)
-    rows = [
-        {
-            "station_a": frames[s.block_a].ids[s.a],
-            "station_b": frames[s.block_b].ids[s.b],
-            "common_targets": len(s.target_ids),
-            "targets_placed": len(s.target_ids),
-            "target_ids": ";".join(s.target_ids),
-            "link_rms_mm": s.rms_mm,
-            "dilution": np.nan,
-            "station_b_rms_mm": np.nan,
-            "kind": "targets",  # a seam: the common targets of two blocks' stations
-            "overlap_pct": np.nan,
-            "weakest_direction": weakest_direction(s.cov),
-        }
-        for s in used
-    ]
-    if rows:
-        links = pd.concat([links, pd.DataFrame(rows, columns=links.columns)], ignore_index=True)
+    links = _with_seam_links(links, frames, used)
+    notes = _seam_notes(blocks, used, lost, n_lost, n_height, root, lean is not None, tau)
+    return coverage, links, notes
+
+
+def _seam_notes(
+    blocks: list[Block],
+    used: list,
+    lost: list[str],
+    n_lost: int,
+    n_height: int,
+    root: int,
+    leaning: bool,
+    tau: float,
+) -> list[str]:
+    """What the seams tied and what they could not, and the samples met within their block
+    that the common frame takes over a limit (in height: the root block's datum's lean,
+    ``leaning``, of ``tau`` arc-seconds)."""
+    notes = []
     tied = len(blocks) - len(lost)
     worst = max((s.rms_mm for s in used), default=0.0)
     notes.append(
@@ -282,12 +295,82 @@ def _tie_seams(
                 f"; {n_height} of them in height, where the frame leans about the datum "
                 f"station of block {blocks[root].key} (its levelling, {tau:g}″ RMS, carried "
                 f"to every block): {DATUM_LEVELLING_FIX}"
-                if lean is not None and n_height
+                if leaning and n_height
                 else ""
             )
             + "."
         )
-    return coverage, links, notes
+    return notes
+
+
+def _block_frames(
+    blocks: list[Block], plans: list[Plan], kept: list[KeptNetwork], gone: set[str]
+) -> tuple[list, list[pd.DataFrame], list, list[np.ndarray]]:
+    """Each block's frame as the seams take it (its stations not ``gone``, ids prefixed),
+    its targets (ids prefixed), the datum whose tilt leans it, and which stations carry
+    that lean."""
+    frames, targets, datums, leaning = [], [], [], []
+    for b, p, fr in zip(blocks, plans, kept, strict=True):
+        xyz, pose, tied, datum, leans = fr.xyz, fr.pose_cov, fr.tied, fr.datum, fr.leans
+        ids = [f"{b.key}-{s}" for s in p.stations["station_id"][: len(xyz)]]
+        keep = np.array([i not in gone for i in ids], dtype=bool)
+        datums.append(datum)
+        leaning.append(np.asarray(leans, dtype=bool)[keep])
+        frames.append(
+            seams.BlockFrame(
+                [i for i, k in zip(ids, keep, strict=True) if k],
+                np.asarray(xyz)[keep],
+                np.asarray(pose)[keep],
+                np.asarray(tied, dtype=bool)[keep],
+            )
+        )
+        t = p.targets.copy()
+        t["target_id"] = [f"{b.key}-{x}" for x in t["target_id"]]
+        targets.append(t)
+    return frames, targets, datums, leaning
+
+
+def _frame_errors(
+    frames: list, extra: list, datums: list, leaning: list, lean: np.ndarray | None, tau: float
+) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray]]:
+    """Every station's pose covariance from its block's seams, with one datum's tilt
+    leaning the district's frame (``lean``, the root block's: a scanner without a
+    compensator) in place of each block's own; and every station's centre."""
+    per_station, xyz = {}, {}
+    for f, e, own, leans in zip(frames, extra, datums, leaning, strict=True):
+        if e is not None:
+            e = e.copy()
+            if lean is not None:  # (a levelled scanner's frames do not lean)
+                e[leans] += datum_tilt_cov(f.xyz[leans], lean, tau)
+            if own is not None:
+                e[leans] -= datum_tilt_cov(f.xyz[leans], own, tau)
+            per_station |= dict(zip(f.ids, e, strict=True))
+        xyz |= dict(zip(f.ids, f.xyz, strict=True))
+    return per_station, xyz
+
+
+def _with_seam_links(links: pd.DataFrame, frames: list, used: list) -> pd.DataFrame:
+    """The links with the seams used as links by targets: the common targets of two
+    blocks' stations, the weakest direction said."""
+    rows = [
+        {
+            "station_a": frames[s.block_a].ids[s.a],
+            "station_b": frames[s.block_b].ids[s.b],
+            "common_targets": len(s.target_ids),
+            "targets_placed": len(s.target_ids),
+            "target_ids": ";".join(s.target_ids),
+            "link_rms_mm": s.rms_mm,
+            "dilution": np.nan,
+            "station_b_rms_mm": np.nan,
+            "kind": "targets",  # a seam: the common targets of two blocks' stations
+            "overlap_pct": np.nan,
+            "weakest_direction": weakest_direction(s.cov),
+        }
+        for s in used
+    ]
+    if rows:
+        return pd.concat([links, pd.DataFrame(rows, columns=links.columns)], ignore_index=True)
+    return links
 
 
 def _cut_short(blocks: list[Block], plans: list[Plan]) -> list[str]:

@@ -115,9 +115,22 @@ def dxf_text(p: Plan) -> str:
     buildings labelled with their id and height; links, unmet samples, view sectors, route;
     the CRS, scanner and requirement on PLAN-INFO; the header's extents set (zoom extents)."""
     import ezdxf  # heavy: only when a DXF is written
-    from ezdxf import zoom
-    from ezdxf.enums import TextEntityAlignment
 
+    doc, paper = _dxf_document(ezdxf, p.settings.drawing_scale)
+    msp = doc.modelspace()
+    drawn = [_draw_feature(msp, f, paper) for f in _features(p)]  # every point placed
+    drawn += _draw_site_and_sectors(msp, p, paper)
+    _frame(msp, p, drawn, paper)
+    stream = io.StringIO()
+    with _same_bytes(ezdxf):  # … and its header dates when it is written
+        doc.write(stream)
+    return stream.getvalue()
+
+
+def _dxf_document(ezdxf: Any, drawing_scale: float) -> tuple[Any, float]:
+    """A new DXF document (metres) with the plan's layers, linetype scale and symbol blocks
+    (drawn in paper millimetres, inserted at the scale); and the metres on the ground per
+    millimetre on paper."""
     with _same_bytes(ezdxf):  # ezdxf stamps its metadata when the document is made
         doc = ezdxf.new("R2010", setup=True)
     doc.units = ezdxf.units.M
@@ -125,7 +138,7 @@ def dxf_text(p: Plan) -> str:
         layer = doc.layers.add(name, color=colour, linetype=DXF_LINETYPES.get(name, "Continuous"))
         if name in DXF_LAYERS_OFF:
             layer.off()
-    paper = p.settings.drawing_scale / 1000.0  # metres on the ground per mm on paper
+    paper = drawing_scale / 1000.0  # metres on the ground per mm on paper
     # ezdxf's DASHED is 1.27 units of dash and 0.254 of gap: 5 mm dashes on paper
     doc.header["$LTSCALE"] = paper * LINE_DASH_MM / 1.27
     for name, shape, tags in (
@@ -143,52 +156,63 @@ def dxf_text(p: Plan) -> str:
                 (0.6 * SYMBOL_MM, 0.2 * TEXT_MM - 1.2 * TEXT_MM * n),
                 dxfattribs={"height": TEXT_MM, "flags": 0 if tag == "ID" else 1},
             )
-    msp = doc.modelspace()
+    return doc, paper
+
+
+def _draw_feature(msp: Any, f: dict, paper: float) -> np.ndarray:
+    """One GeoJSON feature of the plan into the model space, on its layer: stations and
+    targets as blocks with attributes, walls as 3-D outlines, the rest as points and
+    polylines. The points it placed (for the drawing's extents)."""
     scaled = {"xscale": paper, "yscale": paper, "zscale": paper}
-    drawn: list[np.ndarray] = []  # every point placed: the drawing's extents, at no cost
-    for f in _features(p):
-        props, geom = f["properties"], f["geometry"]
-        layer = DXF_LAYERS[props["layer"]][0]
-        drawn.append(shapely.get_coordinates(shapely.geometry.shape(geom)))
-        if props["layer"] == "station":  # at the scanner's centre where heights are known
-            x, y, *z = geom["coordinates"]
-            at = (x, y, z[0] if z else 0.0)
-            ref = msp.add_blockref("STATION", at, dxfattribs={"layer": layer, **scaled})
-            ref.add_auto_attribs(
-                {
-                    "ID": props["station_id"],
-                    "HEIGHT": f"{props['instrument_height_m']:.3f}",
-                    "PURPOSE": props["purpose"],
-                }
+    props, geom = f["properties"], f["geometry"]
+    layer = DXF_LAYERS[props["layer"]][0]
+    placed = shapely.get_coordinates(shapely.geometry.shape(geom))
+    if props["layer"] == "station":  # at the scanner's centre where heights are known
+        x, y, *z = geom["coordinates"]
+        at = (x, y, z[0] if z else 0.0)
+        ref = msp.add_blockref("STATION", at, dxfattribs={"layer": layer, **scaled})
+        ref.add_auto_attribs(
+            {
+                "ID": props["station_id"],
+                "HEIGHT": f"{props['instrument_height_m']:.3f}",
+                "PURPOSE": props["purpose"],
+            }
+        )
+    elif props["layer"] == "target":
+        x, y, z = geom["coordinates"]
+        name = {"flat": "TARGET-FLAT", "control": "CONTROL"}.get(props["type"], "TARGET-SPHERE")
+        ref = msp.add_blockref(name, (x, y, z), dxfattribs={"layer": layer, **scaled})
+        ref.add_auto_attribs(
+            {
+                "ID": props["target_id"],
+                "TYPE": props["type"],
+                "SIZE_MM": "" if props.get("size_mm") is None else f"{props['size_mm']:g}",
+                "FACADE": props.get("facade_id") or "",
+                "FACING_DEG": ""
+                if props.get("facing_deg") is None
+                else f"{props['facing_deg']:.0f}",
+            }
+        )
+    elif geom["type"] == "Point":
+        msp.add_point(tuple(geom["coordinates"]), dxfattribs={"layer": layer})
+    elif props["layer"] == "wall":  # a wall of a 3-D building, at its outline in 3-D
+        for ring in _rings(geom):
+            msp.add_polyline3d([tuple(c) for c in ring], close=True, dxfattribs={"layer": layer})
+    else:
+        closed = geom["type"] in ("Polygon", "MultiPolygon")
+        for ring in _rings(geom):
+            msp.add_lwpolyline(
+                [tuple(c[:2]) for c in ring], close=closed, dxfattribs={"layer": layer}
             )
-        elif props["layer"] == "target":
-            x, y, z = geom["coordinates"]
-            name = {"flat": "TARGET-FLAT", "control": "CONTROL"}.get(props["type"], "TARGET-SPHERE")
-            ref = msp.add_blockref(name, (x, y, z), dxfattribs={"layer": layer, **scaled})
-            ref.add_auto_attribs(
-                {
-                    "ID": props["target_id"],
-                    "TYPE": props["type"],
-                    "SIZE_MM": "" if props.get("size_mm") is None else f"{props['size_mm']:g}",
-                    "FACADE": props.get("facade_id") or "",
-                    "FACING_DEG": ""
-                    if props.get("facing_deg") is None
-                    else f"{props['facing_deg']:.0f}",
-                }
-            )
-        elif geom["type"] == "Point":
-            msp.add_point(tuple(geom["coordinates"]), dxfattribs={"layer": layer})
-        elif props["layer"] == "wall":  # a wall of a 3-D building, at its outline in 3-D
-            for ring in _rings(geom):
-                msp.add_polyline3d(
-                    [tuple(c) for c in ring], close=True, dxfattribs={"layer": layer}
-                )
-        else:
-            closed = geom["type"] in ("Polygon", "MultiPolygon")
-            for ring in _rings(geom):
-                msp.add_lwpolyline(
-                    [tuple(c[:2]) for c in ring], close=closed, dxfattribs={"layer": layer}
-                )
+    return placed
+
+
+def _draw_site_and_sectors(msp: Any, p: Plan, paper: float) -> list[np.ndarray]:
+    """The buildings' labels (id and height), the site's boundary and the stations' view
+    sectors; the points they placed."""
+    from ezdxf.enums import TextEntityAlignment
+
+    drawn: list[np.ndarray] = []
     for b in p.site.buildings:
         at = b.footprint.representative_point()
         height = (
@@ -211,6 +235,16 @@ def dxf_text(p: Plan) -> str:
         pts = _sector_points(st.at[sid, "x"], st.at[sid, "y"], start, end, radius)
         msp.add_lwpolyline(pts, close=True, dxfattribs={"layer": "VIEW-SECTORS"})
         drawn.append(np.asarray(pts, dtype=float)[:, :2])
+    return drawn
+
+
+def _frame(msp: Any, p: Plan, drawn: list[np.ndarray], paper: float) -> None:
+    """The plan's information below all of it, and the header's extents (zoom extents
+    works) from the points placed, a symbol's size round them and the information's line
+    (a letter about 0.8 of its height wide), the drawing opened on them."""
+    from ezdxf import zoom
+    from ezdxf.enums import TextEntityAlignment
+
     xy = np.vstack([d[:, :2] for d in drawn if len(d)] or [np.array(_lower_left(p))[None]])
     (x0, y0), (x1, y1) = xy.min(axis=0), xy.max(axis=0)
     info, height = _info(p), TEXT_MM * paper  # the plan's information below all of it
@@ -226,10 +260,6 @@ def dxf_text(p: Plan) -> str:
     hi = (float(max(x1, x0 + 0.8 * height * len(info)) + margin), float(y1 + margin), 0.0)
     msp.dxf.extmin, msp.dxf.extmax = lo, hi  # (written to the header's $EXTMIN, $EXTMAX)
     zoom.center(msp, ((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2), (hi[0] - lo[0], hi[1] - lo[1]))
-    stream = io.StringIO()
-    with _same_bytes(ezdxf):  # … and its header dates when it is written
-        doc.write(stream)
-    return stream.getvalue()
 
 
 @contextlib.contextmanager

@@ -87,125 +87,18 @@ def wall_rings(p: Plan) -> list[list[np.ndarray]]:
 
 def geojson(p: Plan) -> dict:
     """Buildings, obstacles, no-go areas, facades, stations, links, targets and unmet samples
-    as one GeoJSON FeatureCollection (a ``layer`` property on every feature)."""
-    feats: list[dict] = []
-
-    def add(geom: dict, **props: Any) -> None:
-        feats.append({"type": "Feature", "geometry": geom, "properties": _clean(props)})
-
-    for b in p.site.buildings:
-        add(
-            geometry_json(b.footprint),
-            layer="building",
-            building_id=b.id,
-            height_m=b.height_m,
-            planned=b.planned,
-            name=b.name,
-        )
-    for o in p.site.obstacles:
-        add(
-            geometry_json(o.geometry),
-            layer="obstacle",
-            obstacle_id=o.id,
-            kind=o.kind,
-            height_m=o.height_m,
-        )
-    for a in p.site.no_go:
-        add(geometry_json(a.geometry), layer="no-go", area_id=a.id)
-    for g in p.site.passages:
-        add(
-            geometry_json(g.geometry),
-            layer="passage",
-            passage_id=g.id,
-            clear_height_m=g.clear_height_m,
-        )
-    for r in p.facades.itertuples():
-        add(
-            {"type": "LineString", "coordinates": [[r.x0, r.y0], [r.x1, r.y1]]},
-            layer="facade",
-            building_id=r.building_id,
-            facade_id=r.facade_id,
-            length_m=r.length_m,
-            samples=r.samples,
-            party_wall_samples=r.party_wall_samples,
-            met=r.met,
-            unmet=r.unmet,
-            stations=r.stations,
-        )
-    three_d = p.site.is_3d  # heights in the site's system: 3-D coordinates, ground said
-    if three_d:
-        for f, shape in enumerate(wall_rings(p)):
-            r = p.facades.iloc[f]
-            add(
-                {"type": "Polygon", "coordinates": [np.round(ring, 3).tolist() for ring in shape]},
-                layer="wall",
-                building_id=r.building_id,
-                facade_id=r.facade_id,
-                met=r.met,
-                unmet=r.unmet,
-            )
-    ground = _ground_of(p) if three_d else None
-    st = p.stations.set_index("station_id")
-    for r in p.stations.itertuples():
-        extra = {}
-        coords = [r.x, r.y]
-        if three_d:  # the scanner's centre
-            coords.append(round(r.ground_z + r.instrument_height_m, 3))
-            extra["ground_z"] = r.ground_z
-        add(
-            {"type": "Point", "coordinates": coords},
-            layer="station",
-            **_columns(r, STATION_COLUMNS, ("x", "y", "ground_z")),
-            samples_met=r.samples_met,
-            **extra,
-        )
-    tg = p.targets.set_index("target_id")
-    for r in p.links.itertuples():
-        b = st.loc[r.station_b]
-        if r.station_a == "control":  # tied to the control points it uses: a line to each
-            ends = [tg.loc[t] for t in r.target_ids.split(";") if t in tg.index]
-            geom = {
-                "type": "MultiLineString",
-                "coordinates": [[[b.x, b.y], [c.x, c.y]] for c in ends],
-            }
-        else:
-            a = st.loc[r.station_a]
-            geom = {"type": "LineString", "coordinates": [[a.x, a.y], [b.x, b.y]]}
-        add(geom, layer="link", **_columns(r, LINK_COLUMNS))
-    t_ground = ground(p.targets[["x", "y"]].to_numpy(float)) if three_d else None
-    for k, r in enumerate(p.targets.itertuples()):
-        extra = {"ground_z": float(t_ground[k])} if three_d else {}
-        add(
-            {"type": "Point", "coordinates": [r.x, r.y, r.z]},
-            layer="target",
-            **extra,
-            **_columns(r, TARGET_COLUMNS, ("x", "y", "z")),
-        )
-    if p.route is not None:
-        t = p.route.table
-        for n, leg in enumerate(p.route.legs[1:], start=1):
-            add(
-                {"type": "LineString", "coordinates": np.round(leg, 3).tolist()},
-                layer="route",
-                order=int(t["order"].iloc[n]),
-                station_a=t["station_id"].iloc[n - 1],
-                station_b=t["station_id"].iloc[n],
-                walk_m=float(t["walk_m"].iloc[n]),
-                session=int(t["session"].iloc[n]),
-                walk_note=t["walk_note"].iloc[n],
-            )
-    u_ground = ground(p.unmet[["x", "y"]].to_numpy(float)) if three_d else None
-    for k, r in enumerate(p.unmet.itertuples()):
-        extra = {"ground_z": float(u_ground[k])} if three_d else {}
-        add(
-            {"type": "Point", "coordinates": [r.x, r.y, r.z]},
-            layer="unmet",
-            **extra,
-            building_id=r.building_id,
-            facade_id=r.facade_id,
-            sample_id=r.sample_id,
-            reason=r.reason,
-        )
+    as one GeoJSON FeatureCollection (a ``layer`` property on every feature). A 3-D site's
+    points carry their height in the site's system (and their ground's)."""
+    ground = _ground_of(p) if p.site.is_3d else None
+    feats = [
+        *_site_features(p),
+        *_facade_features(p),
+        *_station_features(p),
+        *_link_features(p),
+        *_target_features(p, ground),
+        *_route_features(p),
+        *_unmet_features(p, ground),
+    ]
     out: dict[str, Any] = {
         "type": "FeatureCollection",
         "name": f"tls-planner plan: {p.site.name}",
@@ -218,3 +111,186 @@ def geojson(p: Plan) -> dict:
         out["crs"] = {"type": "name", "properties": {"name": p.site.crs}}
     out["features"] = feats
     return out
+
+
+def _feature(geom: dict, **props: Any) -> dict:
+    """A GeoJSON feature, its properties made plain (:func:`_clean`)."""
+    return {"type": "Feature", "geometry": geom, "properties": _clean(props)}
+
+
+def _site_features(p: Plan) -> list[dict]:
+    """Buildings, obstacles, no-go areas and passages."""
+    feats: list[dict] = []
+    for b in p.site.buildings:
+        feats.append(
+            _feature(
+                geometry_json(b.footprint),
+                layer="building",
+                building_id=b.id,
+                height_m=b.height_m,
+                planned=b.planned,
+                name=b.name,
+            )
+        )
+    for o in p.site.obstacles:
+        feats.append(
+            _feature(
+                geometry_json(o.geometry),
+                layer="obstacle",
+                obstacle_id=o.id,
+                kind=o.kind,
+                height_m=o.height_m,
+            )
+        )
+    for a in p.site.no_go:
+        feats.append(_feature(geometry_json(a.geometry), layer="no-go", area_id=a.id))
+    for g in p.site.passages:
+        feats.append(
+            _feature(
+                geometry_json(g.geometry),
+                layer="passage",
+                passage_id=g.id,
+                clear_height_m=g.clear_height_m,
+            )
+        )
+    return feats
+
+
+def _facade_features(p: Plan) -> list[dict]:
+    """Each facade as its ground line, and (3-D) as its wall's outline."""
+    feats: list[dict] = []
+    for r in p.facades.itertuples():
+        feats.append(
+            _feature(
+                {"type": "LineString", "coordinates": [[r.x0, r.y0], [r.x1, r.y1]]},
+                layer="facade",
+                building_id=r.building_id,
+                facade_id=r.facade_id,
+                length_m=r.length_m,
+                samples=r.samples,
+                party_wall_samples=r.party_wall_samples,
+                met=r.met,
+                unmet=r.unmet,
+                stations=r.stations,
+            )
+        )
+    three_d = p.site.is_3d  # heights in the site's system: 3-D coordinates, ground said
+    if three_d:
+        for f, shape in enumerate(wall_rings(p)):
+            r = p.facades.iloc[f]
+            feats.append(
+                _feature(
+                    {
+                        "type": "Polygon",
+                        "coordinates": [np.round(ring, 3).tolist() for ring in shape],
+                    },
+                    layer="wall",
+                    building_id=r.building_id,
+                    facade_id=r.facade_id,
+                    met=r.met,
+                    unmet=r.unmet,
+                )
+            )
+    return feats
+
+
+def _station_features(p: Plan) -> list[dict]:
+    """Each station (3-D: at its scanner's centre, with its ground)."""
+    three_d = p.site.is_3d
+    feats: list[dict] = []
+    for r in p.stations.itertuples():
+        extra = {}
+        coords = [r.x, r.y]
+        if three_d:  # the scanner's centre
+            coords.append(round(r.ground_z + r.instrument_height_m, 3))
+            extra["ground_z"] = r.ground_z
+        feats.append(
+            _feature(
+                {"type": "Point", "coordinates": coords},
+                layer="station",
+                **_columns(r, STATION_COLUMNS, ("x", "y", "ground_z")),
+                samples_met=r.samples_met,
+                **extra,
+            )
+        )
+    return feats
+
+
+def _link_features(p: Plan) -> list[dict]:
+    """Each link between two stations (a line), or to the control points it uses."""
+    st = p.stations.set_index("station_id")
+    feats: list[dict] = []
+    tg = p.targets.set_index("target_id")
+    for r in p.links.itertuples():
+        b = st.loc[r.station_b]
+        if r.station_a == "control":  # tied to the control points it uses: a line to each
+            ends = [tg.loc[t] for t in r.target_ids.split(";") if t in tg.index]
+            geom = {
+                "type": "MultiLineString",
+                "coordinates": [[[b.x, b.y], [c.x, c.y]] for c in ends],
+            }
+        else:
+            a = st.loc[r.station_a]
+            geom = {"type": "LineString", "coordinates": [[a.x, a.y], [b.x, b.y]]}
+        feats.append(_feature(geom, layer="link", **_columns(r, LINK_COLUMNS)))
+    return feats
+
+
+def _target_features(p: Plan, ground: Any) -> list[dict]:
+    """Each target at its centre (3-D: with its ground)."""
+    three_d = ground is not None
+    feats: list[dict] = []
+    t_ground = ground(p.targets[["x", "y"]].to_numpy(float)) if three_d else None
+    for k, r in enumerate(p.targets.itertuples()):
+        extra = {"ground_z": float(t_ground[k])} if three_d else {}
+        feats.append(
+            _feature(
+                {"type": "Point", "coordinates": [r.x, r.y, r.z]},
+                layer="target",
+                **extra,
+                **_columns(r, TARGET_COLUMNS, ("x", "y", "z")),
+            )
+        )
+    return feats
+
+
+def _route_features(p: Plan) -> list[dict]:
+    """The walk between consecutive stations."""
+    feats: list[dict] = []
+    if p.route is not None:
+        t = p.route.table
+        for n, leg in enumerate(p.route.legs[1:], start=1):
+            feats.append(
+                _feature(
+                    {"type": "LineString", "coordinates": np.round(leg, 3).tolist()},
+                    layer="route",
+                    order=int(t["order"].iloc[n]),
+                    station_a=t["station_id"].iloc[n - 1],
+                    station_b=t["station_id"].iloc[n],
+                    walk_m=float(t["walk_m"].iloc[n]),
+                    session=int(t["session"].iloc[n]),
+                    walk_note=t["walk_note"].iloc[n],
+                )
+            )
+    return feats
+
+
+def _unmet_features(p: Plan, ground: Any) -> list[dict]:
+    """Each sample not met, with the reason."""
+    three_d = ground is not None
+    feats: list[dict] = []
+    u_ground = ground(p.unmet[["x", "y"]].to_numpy(float)) if three_d else None
+    for k, r in enumerate(p.unmet.itertuples()):
+        extra = {"ground_z": float(u_ground[k])} if three_d else {}
+        feats.append(
+            _feature(
+                {"type": "Point", "coordinates": [r.x, r.y, r.z]},
+                layer="unmet",
+                **extra,
+                building_id=r.building_id,
+                facade_id=r.facade_id,
+                sample_id=r.sample_id,
+                reason=r.reason,
+            )
+        )
+    return feats

@@ -47,7 +47,7 @@ from planner.pipeline.evaluation.evaluate import (
     assign_stations,
     evaluate_candidates,
 )
-from planner.pipeline.field.route import field_route
+from planner.pipeline.field.route import FieldRoute, field_route
 from planner.pipeline.geometry.candidates import blocked_ground
 from planner.pipeline.geometry.facades import FacadeSet
 from planner.pipeline.geometry.zoning import ZoneTable
@@ -242,77 +242,19 @@ def assemble(
     family = class_family(wb.req, wb.zones)
     grid = cand[: wb.n_grid]
     coverage = coverage_table(ctx, ev, wb.diagnosis, assignment, ids, net, wb.zone_ids, family)
-    purpose = np.select(
-        [
-            np.isin(station_idx, hand if hand is not None else []),
-            np.isin(station_idx, best_effort if best_effort is not None else []),
-            np.isin(station_idx, r.cover),
-            np.isin(station_idx, r.added),
-        ],
-        ["hand", "best-effort", "cover", "registration"],
-        "link",
-    )
-    # a covering station no sample is assigned to any more is there for the network — if
-    # another scan is registered to it (one in an untied courtyard links nothing: it stays
-    # a covering station whose samples the registration cannot carry, and is said so)
-    links_others = np.zeros(len(station_idx), dtype=bool)
-    if net is not None:  # a link's parent, or a planned traverse's start
-        parents = [lk.parent for lk in net.links] + [t.start for t in net.ties]
-        links_others[[k for k in parents if 0 <= k < len(station_idx)]] = True
-    idle = (purpose == "cover") & (np.asarray(assignment.met_by_station) == 0)
-    purpose[idle & links_others] = "link"
-    for k, i in enumerate(station_idx.tolist()):
-        if i in kept and not np.isin(i, hand if hand is not None else []):
-            purpose[k] = kept[i][1]
-    stations = pd.DataFrame(
-        {
-            "station_id": ids,
-            "x": station_xy[:, 0],
-            "y": station_xy[:, 1],
-            "ground_z": ctx.scene.ground_z(station_xy),
-            "instrument_height_m": st.instrument_height_m,
-            "purpose": purpose,
-            "samples_met": assignment.met_by_station,
-        }
-    )
-    ties = net.ties if net is not None else []
-    setups = traverse_setups(ties, st, ctx.scene.ground_z)
-    if len(setups):
-        stations = pd.concat([stations, setups], ignore_index=True)
+    purpose = _purposes(r, station_idx, assignment.met_by_station, hand, best_effort, kept)
+    stations = _station_table(ctx, st, station_idx, station_xy, ids, purpose, assignment, net)
     tc = net.candidates if net is not None else wb.tc  # with any planned control points
     targets, links = targets_and_links(ctx, tc, net, ids, coverage)
     clock.note("coverage", time.perf_counter() - t)
     say(0.97, "visiting order and field time")
     t = time.perf_counter()
     route = field_route(wb.site, wb.scanner, st, stations, targets, coverage, links)
-    at = {sid: k for k, sid in enumerate(ids)}
-    visit = [at[sid] for sid in route.table["station_id"] if sid in at]
-    names = name_stations(
-        len(ids),
-        visit,
-        {k: kept[i][0] for k, i in enumerate(station_idx.tolist()) if i in kept},
-        wb.last_station if edited else None,
+    stations, coverage, targets, links, route, ids = _in_visiting_order(
+        wb, station_idx, kept, edited, stations, coverage, targets, links, route
     )
-    mapping = dict(zip(ids, names, strict=True))
-    stations, coverage, targets, links = rename_stations(
-        mapping, stations, coverage, targets, links
-    )
-    ids = names
-    place = {mapping[sid]: n for n, sid in enumerate(route.table["station_id"]) if sid in mapping}
-    renumbered = target_numbers(targets, place)
-    targets, links = rename_targets(renumbered, targets, links)
-    route = route.renamed(mapping, renumbered)
-    numbers = [n for n in map(_station_number, ids) if n is not None]
-    wb.last_station = max([wb.last_station, *numbers])  # (never lowered: no id given twice)
     clock.note("route", time.perf_counter() - t)
-    if net is not None:
-        messages.append(f"Registration: {net.message}.")
-        messages.extend(enclosed_messages(untied_places(ctx, net), ids))
-        messages.extend(tie_messages(ties, ids, tc, st))
-        messages.extend(registration_messages(coverage, links, st))
-    unmet = coverage[~coverage["meets"] & ~coverage["party_wall"]]
-    if len(unmet):
-        messages.extend(unmet_messages(unmet))
+    messages += _plan_messages(ctx, net, coverage, links, ids, tc, st)
     candidates = pd.DataFrame(
         {
             "x": grid[:, 0],
@@ -348,6 +290,131 @@ def assemble(
         timings_s=clock.timings(),
     )
     return keep_workbench(plan, wb)
+
+
+def _purposes(
+    r: Round,
+    station_idx: np.ndarray,
+    met_by_station: np.ndarray,
+    hand: np.ndarray | None,
+    best_effort: np.ndarray | None,
+    kept: dict[int, tuple[str, str]],
+) -> np.ndarray:
+    """Each station's purpose (:data:`~planner.pipeline.inputs.schema.STATION_PURPOSES`)."""
+    net = r.net
+    hand = hand if hand is not None else []
+    purpose = np.select(
+        [
+            np.isin(station_idx, hand),
+            np.isin(station_idx, best_effort if best_effort is not None else []),
+            np.isin(station_idx, r.cover),
+            np.isin(station_idx, r.added),
+        ],
+        ["hand", "best-effort", "cover", "registration"],
+        "link",
+    )
+    # a covering station no sample is assigned to any more is there for the network — if
+    # another scan is registered to it (one in an untied courtyard links nothing: it stays
+    # a covering station whose samples the registration cannot carry, and is said so)
+    links_others = np.zeros(len(station_idx), dtype=bool)
+    if net is not None:  # a link's parent, or a planned traverse's start
+        parents = [lk.parent for lk in net.links] + [t.start for t in net.ties]
+        links_others[[k for k in parents if 0 <= k < len(station_idx)]] = True
+    idle = (purpose == "cover") & (np.asarray(met_by_station) == 0)
+    purpose[idle & links_others] = "link"
+    for k, i in enumerate(station_idx.tolist()):
+        if i in kept and not np.isin(i, hand):
+            purpose[k] = kept[i][1]
+    return purpose
+
+
+def _station_table(
+    ctx: Context,
+    st: PlanSettings,
+    station_idx: np.ndarray,
+    station_xy: np.ndarray,
+    ids: list[str],
+    purpose: np.ndarray,
+    assignment: Assignment,
+    net: Network | None,
+) -> pd.DataFrame:
+    """The stations table (:data:`~planner.pipeline.inputs.schema.STATION_COLUMNS`, and the
+    samples each meets), with a planned traverse's set-ups."""
+    stations = pd.DataFrame(
+        {
+            "station_id": ids,
+            "x": station_xy[:, 0],
+            "y": station_xy[:, 1],
+            "ground_z": ctx.scene.ground_z(station_xy),
+            "instrument_height_m": st.instrument_height_m,
+            "purpose": purpose,
+            "samples_met": assignment.met_by_station,
+        }
+    )
+    setups = traverse_setups(net.ties if net is not None else [], st, ctx.scene.ground_z)
+    if len(setups):
+        stations = pd.concat([stations, setups], ignore_index=True)
+    return stations
+
+
+def _in_visiting_order(
+    wb: Workbench,
+    station_idx: np.ndarray,
+    kept: dict[int, tuple[str, str]],
+    edited: bool,
+    stations: pd.DataFrame,
+    coverage: pd.DataFrame,
+    targets: pd.DataFrame,
+    links: pd.DataFrame,
+    route: FieldRoute,
+) -> tuple[pd.DataFrame, pd.DataFrame, pd.DataFrame, pd.DataFrame, FieldRoute, list[str]]:
+    """Stations and targets named in the visiting order (:func:`name_stations`,
+    :func:`~planner.pipeline.engine.tables.target_numbers`) in every table and the route;
+    the workbench's highest station number raised (never lowered: no id given twice)."""
+    ids = list(stations["station_id"][: len(station_idx)])
+    at = {sid: k for k, sid in enumerate(ids)}
+    visit = [at[sid] for sid in route.table["station_id"] if sid in at]
+    names = name_stations(
+        len(ids),
+        visit,
+        {k: kept[i][0] for k, i in enumerate(station_idx.tolist()) if i in kept},
+        wb.last_station if edited else None,
+    )
+    mapping = dict(zip(ids, names, strict=True))
+    stations, coverage, targets, links = rename_stations(
+        mapping, stations, coverage, targets, links
+    )
+    ids = names
+    place = {mapping[sid]: n for n, sid in enumerate(route.table["station_id"]) if sid in mapping}
+    renumbered = target_numbers(targets, place)
+    targets, links = rename_targets(renumbered, targets, links)
+    route = route.renamed(mapping, renumbered)
+    numbers = [n for n in map(_station_number, ids) if n is not None]
+    wb.last_station = max([wb.last_station, *numbers])  # (never lowered: no id given twice)
+    return stations, coverage, targets, links, route, ids
+
+
+def _plan_messages(
+    ctx: Context,
+    net: Network | None,
+    coverage: pd.DataFrame,
+    links: pd.DataFrame,
+    ids: list[str],
+    tc: TargetCandidates,
+    st: PlanSettings,
+) -> list[str]:
+    """The network's messages (untied places, ties, the registration's share) and the unmet
+    samples'."""
+    messages: list[str] = []
+    if net is not None:
+        messages.append(f"Registration: {net.message}.")
+        messages.extend(enclosed_messages(untied_places(ctx, net), ids))
+        messages.extend(tie_messages(net.ties, ids, tc, st))
+        messages.extend(registration_messages(coverage, links, st))
+    unmet = coverage[~coverage["meets"] & ~coverage["party_wall"]]
+    if len(unmet):
+        messages.extend(unmet_messages(unmet))
+    return messages
 
 
 #: Each plan's workbench, kept beside the plan (a plain result) for as long as the plan lives.

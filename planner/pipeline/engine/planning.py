@@ -269,6 +269,48 @@ def choose_stations(
         say(0.8, f"best effort: {len(best_effort)} station(s) for what no position meets")
     r = Round(cover=cover, net=round_network(ctx, cand, seen, cover, clock))
     r.judged = judge(ctx, cand, r)
+    r, rounds = _registration_rounds(ctx, cand, seen, r, forced, ev, clock, say, cut)
+    if st.computes_registration and r.net is not None:
+        r = prune(ctx, cand, seen, r, clock, keep=forced)
+    if any(n.cut_short for n in (r.net,) if n is not None):
+        cut.append("the search for linking stations")
+    n_locked = len(forced) - len(best_effort)
+    messages = _choice_messages(wb, r, sol, cut, n_locked, len(best_effort), relaxed_by, rounds)
+    solver = _solver_report(sol, rounds, cut, fac.party_wall, ev.evaluated)
+    hand = np.setdiff1d(forced, best_effort)
+    return assemble(
+        wb,
+        r,
+        solver,
+        messages,
+        whole,
+        progress=say,
+        hand=hand,
+        best_effort=best_effort,
+        kept=kept,
+        edited=edited,
+    )
+
+
+def _registration_rounds(
+    ctx: Context,
+    cand: np.ndarray,
+    seen: SightCache,
+    r: Round,
+    forced: np.ndarray,
+    ev: CandidateEvaluation,
+    clock: Clock,
+    say: Progress,
+    cut: list[str],
+) -> tuple[Round, int]:
+    """Stations and registration chosen together (docs/science.md): while the registration
+    keeps samples short, stations are added that meet them with the registration error they
+    would have (estimated from the network) and the network is built and judged again (once,
+    first, a datum nearer the middle is tried); once none is short, the fewest stations are
+    chosen again with every candidate's estimated registration error, the network's
+    backbone kept. The best round and the number of rounds; what the clock cut, into
+    ``cut``."""
+    st, cover = ctx.settings, r.cover
     best, rounds, adds, resolved, moved = r, 0, 0, False, False
     while st.computes_registration and rounds < MAX_REGISTRATION_ROUNDS:
         if r.net is None:
@@ -311,24 +353,47 @@ def choose_stations(
         r.judged = judge(ctx, cand, r)
         if r.judged.better_than(best.judged):
             best = r
-    r = best
-    if st.computes_registration and r.net is not None:
-        r = prune(ctx, cand, seen, r, clock, keep=forced)
-    if any(n.cut_short for n in (r.net,) if n is not None):
-        cut.append("the search for linking stations")
+    return best, rounds
+
+
+def _choice_messages(
+    wb: Workbench,
+    r: Round,
+    sol: CoverSolution,
+    cut: list[str],
+    n_locked: int,
+    n_best_effort: int,
+    relaxed_by: float,
+    rounds: int,
+) -> list[str]:
+    """The plan's messages so far (the workbench's), then what the budget cut, the
+    stations locked, the best-effort ones and the stations the registration added."""
+    st = wb.settings
     messages = list(wb.messages)
     if cut:
         messages.append(budget_message(st.time_limit_s, cut))
-    n_locked = len(forced) - len(best_effort)
     if n_locked:
         messages.append(f"{n_locked} station(s) locked by hand; the others chosen around them.")
-    if len(best_effort):
+    if n_best_effort:
         messages.append(
-            f"Best effort: {len(best_effort)} station(s) added for the samples no position "
+            f"Best effort: {n_best_effort} station(s) added for the samples no position "
             f"meets, meeting them within {relaxed_by:.2f} × the "
             "limits (they stay unmet; see the best achievable values and what would meet them)."
         )
-    solver = SolverReport(
+    if r.net is not None and len(r.net.stations) != sol.objective and st.computes_registration:
+        messages.append(
+            f"Stations: {sol.objective} meet the requirement by the scanner's error alone; "
+            f"{len(r.net.stations)} with the registration error counted ({rounds} round(s) of "
+            "adding stations and choosing again)."
+        )
+    return messages
+
+
+def _solver_report(
+    sol: CoverSolution, rounds: int, cut: list[str], party_wall: np.ndarray, evaluated: np.ndarray
+) -> SolverReport:
+    """How the covering stations were chosen, and what the budget cut short."""
+    return SolverReport(
         method=sol.method,
         status=sol.status,
         objective=sol.objective,
@@ -340,27 +405,8 @@ def choose_stations(
         parts=sol.details.get("parts", 0),
         registration_rounds=rounds,
         cut_short=cut,
-        samples_total=int((~fac.party_wall).sum()),
-        samples_evaluated=int((ev.evaluated & ~fac.party_wall).sum()),
-    )
-    if r.net is not None and len(r.net.stations) != sol.objective and st.computes_registration:
-        messages.append(
-            f"Stations: {sol.objective} meet the requirement by the scanner's error alone; "
-            f"{len(r.net.stations)} with the registration error counted ({rounds} round(s) of "
-            "adding stations and choosing again)."
-        )
-    hand = np.setdiff1d(forced, best_effort)
-    return assemble(
-        wb,
-        r,
-        solver,
-        messages,
-        whole,
-        progress=say,
-        hand=hand,
-        best_effort=best_effort,
-        kept=kept,
-        edited=edited,
+        samples_total=int((~party_wall).sum()),
+        samples_evaluated=int((evaluated & ~party_wall).sum()),
     )
 
 

@@ -117,6 +117,28 @@ def _unmet_checks(ctx: Context, sample: int, best: dict[str, float], n_meet: int
     )
 
 
+def _diagnosed_reasons(
+    ctx: Context,
+    diagnosis: Diagnosis,
+    samples: np.ndarray,
+    n_ok_cand: np.ndarray,
+    reason: np.ndarray,
+) -> np.ndarray:
+    """The reasons of ``samples`` no candidate meets, from their diagnosis (into
+    ``reason``); and where an elevated station would see them (per sample, "" none)."""
+    elevated = np.full(len(reason), "", dtype=object)
+    for i in samples:
+        found = diagnosis.at(int(i))
+        if found is None:
+            reason[i] = "no station meets it (not diagnosed further: the time limit ran out)"
+            continue
+        n_view, best, roof = found
+        reason[i] = _reason(ctx, int(i), n_view, best, int(n_ok_cand[i]), roof)
+        if n_view == 0 or roof:
+            elevated[i] = f"roof of {roof}" if roof else "above the ground"
+    return elevated
+
+
 def coverage_table(
     ctx: Context,
     ev: CandidateEvaluation,
@@ -155,16 +177,8 @@ def coverage_table(
             ctx, i, picked, station[i], untied[i], n_meeting[i], k_req[i], place, datum
         )
         reason[i] = named[i].text()
-    elevated = np.full(n, "", dtype=object)
-    for i in np.flatnonzero(~meets & demanded & (n_ok_cand < k_req) & ev.evaluated):
-        found = diagnosis.at(int(i))
-        if found is None:
-            reason[i] = "no station meets it (not diagnosed further: the time limit ran out)"
-            continue
-        n_view, best, roof = found
-        reason[i] = _reason(ctx, int(i), n_view, best, int(n_ok_cand[i]), roof)
-        if n_view == 0 or roof:
-            elevated[i] = f"roof of {roof}" if roof else "above the ground"
+    hopeless = np.flatnonzero(~meets & demanded & (n_ok_cand < k_req) & ev.evaluated)
+    elevated = _diagnosed_reasons(ctx, diagnosis, hopeless, n_ok_cand, reason)
     reason[~meets & demanded & ~ev.evaluated] = "not evaluated: the time budget ran out"
     reason[fac.party_wall] = "party wall (against a neighbour): not scanned"
     named[~meets & demanded & ~ev.evaluated] = None
@@ -530,8 +544,17 @@ def targets_and_links(
             }
         )
     targets = pd.DataFrame(rows, columns=TARGET_COLUMNS)
+    return targets, _link_table(net, tc, ids, coverage, tid)
+
+
+def _link_table(
+    net: Network, tc: TargetCandidates, ids: list[str], coverage: pd.DataFrame, tid: dict[int, str]
+) -> pd.DataFrame:
+    """The per-link report (:data:`~planner.pipeline.inputs.schema.LINK_COLUMNS`): the
+    targets in common and placed (``tid``: their ids), the link's own predicted error, its
+    dilution and the registration error the child station ends with."""
     worst_at = coverage.groupby("station_id")[["reg_m_x_mm", "reg_m_y_mm", "reg_m_z_mm"]].max()
-    links = pd.DataFrame(
+    return pd.DataFrame(
         [
             {
                 "station_a": "control" if lk.parent == CONTROL else ids[lk.parent],
@@ -551,7 +574,6 @@ def targets_and_links(
         ],
         columns=LINK_COLUMNS,
     )
-    return targets, links
 
 
 def _link_kind(net: Network, lk: Link) -> dict:

@@ -468,6 +468,53 @@ class PairMetrics:
         return getattr(self, metric)
 
 
+def _pair_variances(
+    ctx: Context,
+    d: np.ndarray,
+    s: np.ndarray,
+    cos_g: np.ndarray,
+    sin_nu: np.ndarray,
+    cos_inc: np.ndarray | None,
+    own_level: bool,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, Scanner | None]:
+    """The scanner's part of each pair's variances σ_x², σ_y², σ_z² [mm²] by the settings'
+    model — eq. 2 and 4 of Voroshilov & Karachentsev, or the full 3-D propagation with its
+    optional terms (:func:`planner.accuracy3d.variances_3d`) — and the scanner whose beam
+    footprint the spacing check counts (None: not counted). The station's own error is the
+    registration's part, added after; the frame's tilt is counted here only where
+    ``own_level`` or the settings say (:meth:`~planner.pipeline.inputs.requirements
+    .PlanSettings.scan_tilt_rms_arcsec`)."""
+    sc, st = ctx.scanner, ctx.settings
+    m_s = sc.range_rms_at(s)
+    no_station = (0.0, 0.0)  # the station's own error is the registration's part, below
+    # the frame's tilt: here, or the registration's part
+    tilt = sc.initial_tilt_rms_arcsec if own_level else st.scan_tilt_rms_arcsec(sc)
+    beam = None
+    if st.model == "paper":  # eq. 2 and 4 of Voroshilov & Karachentsev
+        var_x, var_y = eq2_variances(d, cos_g * cos_g, m_s, sc.angle_rms_arcsec, no_station)
+        var_z = eq4_variance(s, sin_nu * sin_nu, m_s, sc.tilt_rms_arcsec, s, tilt)
+    else:  # the full 3-D propagation, with its optional terms
+        if st.incidence_ranging:
+            cos_theta = cos_inc
+            if cos_theta is None:
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    cos_theta = cos_g * np.where(s > 0, d / s, 1.0)
+            m_s = incidence_ranging_rms_mm(m_s, cos_theta)
+        var_x, var_y, var_z = variances_3d(
+            s,
+            cos_g,
+            sin_nu,
+            m_s,
+            sc.angle_rms_arcsec,
+            sc.tilt_rms_arcsec,
+            tilt,
+            no_station,
+        )
+        if st.beam_footprint and (sc.beam_divergence_mrad or sc.beam_exit_mm):
+            beam = sc
+    return var_x, var_y, var_z, beam
+
+
 def facade_pairs(
     ctx: Context,
     f: int,
@@ -524,33 +571,7 @@ def facade_pairs(
             return ctx.sees(f, cand_xy, smp, keep, where, zs)
 
     st = ctx.settings
-    m_s = sc.range_rms_at(s)
-    no_station = (0.0, 0.0)  # the station's own error is the registration's part, below
-    # the frame's tilt: here, or the registration's part
-    tilt = sc.initial_tilt_rms_arcsec if own_level else st.scan_tilt_rms_arcsec(sc)
-    beam = None
-    if st.model == "paper":  # eq. 2 and 4 of Voroshilov & Karachentsev
-        var_x, var_y = eq2_variances(d, cos_g * cos_g, m_s, sc.angle_rms_arcsec, no_station)
-        var_z = eq4_variance(s, sin_nu * sin_nu, m_s, sc.tilt_rms_arcsec, s, tilt)
-    else:  # the full 3-D propagation, with its optional terms
-        if st.incidence_ranging:
-            cos_theta = cos_inc
-            if cos_theta is None:
-                with np.errstate(divide="ignore", invalid="ignore"):
-                    cos_theta = cos_g * np.where(s > 0, d / s, 1.0)
-            m_s = incidence_ranging_rms_mm(m_s, cos_theta)
-        var_x, var_y, var_z = variances_3d(
-            s,
-            cos_g,
-            sin_nu,
-            m_s,
-            sc.angle_rms_arcsec,
-            sc.tilt_rms_arcsec,
-            tilt,
-            no_station,
-        )
-        if st.beam_footprint and (sc.beam_divergence_mrad or sc.beam_exit_mm):
-            beam = sc
+    var_x, var_y, var_z, beam = _pair_variances(ctx, d, s, cos_g, sin_nu, cos_inc, own_level)
     m = PairMetrics(
         distance_m=d,
         slope_distance_m=s,

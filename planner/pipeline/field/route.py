@@ -31,6 +31,7 @@ from __future__ import annotations
 import itertools
 import math
 from dataclasses import dataclass, field, replace
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -418,31 +419,61 @@ def field_route(
         return route
     xy = stations[["x", "y"]].to_numpy(float)
     ids = stations["station_id"].astype(str).tolist()
-    purposes = (
-        stations["purpose"].astype(str).tolist() if "purpose" in stations else [""] * len(ids)
+    linked: dict[str, set[str]] = {}
+    for a, b in zip(links["station_a"].astype(str), links["station_b"].astype(str), strict=True):
+        linked.setdefault(a, set()).add(b)
+        linked.setdefault(b, set()).add(a)
+    # scans registered cloud to cloud are registered on site as they come
+    route.on_site = "kind" in links and bool((links["kind"] == "cloud").any())
+    g, order, pred = _visiting_order(site, settings, xy, ids, linked, route.on_site)
+    legs, walk_m, notes = _walks(site, g, xy, order, pred)
+    visit = {ids[k]: n for n, k in enumerate(order)}
+    first_visit, last_visit, life = _target_visits(targets, visit)
+    walk = (walk_m, notes, first_visit, last_visit, _standing(list(life.values()), len(order)))
+    rows = _route_rows(
+        scanner, settings, route, stations, targets, coverage, order, linked, visit, walk
     )
+    route.table = pd.DataFrame(rows, columns=ROUTE_COLUMNS)
+    route.legs = legs
+    route.kit = _kit(settings, targets, life, [ids[k] for k in order])
+    return route
+
+
+def _visiting_order(
+    site: Site,
+    settings: PlanSettings,
+    xy: np.ndarray,
+    ids: list[str],
+    linked: dict[str, set[str]],
+    on_site: bool,
+) -> tuple[Any, list[int], np.ndarray | None]:
+    """The walking graph, the visiting order (an open path, shortest walk; scans registered
+    on site as they come each after one it links to) and, where the walks between all
+    stations were found (a site of at most :data:`EXACT_MAX_STATIONS`), their predecessors."""
     g = _walk_graph(site, xy, settings.clearance_m)
     exact = len(xy) <= EXACT_MAX_STATIONS
+    w, pred = None, None
     if exact:
         w, pred = _shortest(g, np.arange(len(xy)))
         order = _open_path_order(w[:, : len(xy)])
     else:  # a district: ordered on straight lines, each leg then walked
         order = _open_path_order(np.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1)))
-    linked: dict[str, set[str]] = {}
-    for a, b in zip(links["station_a"].astype(str), links["station_b"].astype(str), strict=True):
-        linked.setdefault(a, set()).add(b)
-        linked.setdefault(b, set()).add(a)
     at = {sid: k for k, sid in enumerate(ids)}
     neighbours = [{at[o] for o in linked.get(i, ()) if o in at} for i in ids]
-    # scans registered cloud to cloud are registered on site as they come
-    on_site = "kind" in links and bool((links["kind"] == "cloud").any())
-    route.on_site = on_site
     if on_site:
         order = _registered_order(order, neighbours, w[:, : len(xy)] if exact else None)
+    return g, order, pred
+
+
+def _walks(
+    site: Site, g: Any, xy: np.ndarray, order: list[int], pred: np.ndarray | None
+) -> tuple[list[np.ndarray], list[float], list[str]]:
+    """Each leg of the visiting order walked round the buildings: its path, its length [m]
+    and a note (a straight line where no way round was found, a no-go area crossed)."""
     legs: list[np.ndarray] = [np.empty((0, 2))]
     walk_m, notes = [0.0], [""]
     for a, b in itertools.pairwise(order):
-        if exact:
+        if pred is not None:
             row = pred[a]
         else:  # the way round is rarely more than a few times the straight line
             straight = float(np.hypot(*(xy[a] - xy[b])))
@@ -458,16 +489,16 @@ def field_route(
             notes.append("")
         walk_m.append(float(length))
         legs.append(path)
-    step = resolve_step_mm(scanner, settings.step_mm_at_10m)
-    lo, hi = scanner.vertical_fov_deg
-    dome = float(scan_points(360.0, hi - lo, step))
-    # a full dome's time: the maker's where stated, else its points over the rate
-    dome_s = preset.scan_s if preset and preset.scan_s else float(scan_time_s(dome, rate))
-    imaging_min = scanner.imaging_s / 60.0 if settings.imaging else 0.0
-    sectors = view_sectors(stations, coverage, targets)
-    visit = {ids[k]: n for n, k in enumerate(order)}
-    # a target stands from the first station that scans it to the last (then collected):
-    # the kit leap-frogs along the visiting order; a control point is a mark, not kit
+    return legs, walk_m, notes
+
+
+def _target_visits(
+    targets: pd.DataFrame, visit: dict[str, int]
+) -> tuple[dict[int, list[str]], dict[int, list[str]], dict[str, tuple[int, int]]]:
+    """The targets to set at each stop, to collect at each stop, and each target's span of
+    stops: a target stands from the first station that scans it to the last (then
+    collected), so the kit leap-frogs along the visiting order; a control point is a mark,
+    not kit."""
     first_visit: dict[int, list[str]] = {}
     last_visit: dict[int, list[str]] = {}
     life: dict[str, tuple[int, int]] = {}
@@ -480,18 +511,56 @@ def field_route(
             if kind != "control":
                 last_visit.setdefault(max(seen_by), []).append(str(tid))
                 life[str(tid)] = (min(seen_by), max(seen_by))
-    standing = _standing(list(life.values()), len(order))
+    return first_visit, last_visit, life
+
+
+def _scan_sector(
+    sector: tuple[float, float, float] | None, sector_scan: bool
+) -> tuple[float, float]:
+    """Where a station's scan starts and how wide it is [°]: its view sector with a margin
+    each side, or a full turn (no sector, one wider than 300°, a scanner that cannot)."""
+    start, end, _ = sector or (0.0, 0.0, 0.0)
+    width = min(360.0, (end - start) % 360.0 + 2 * SECTOR_MARGIN_DEG)
+    if width > 300.0 or not sector_scan:
+        return 0.0, 360.0
+    return (start - SECTOR_MARGIN_DEG) % 360.0, width
+
+
+def _route_rows(
+    scanner: Scanner,
+    settings: PlanSettings,
+    route: FieldRoute,
+    stations: pd.DataFrame,
+    targets: pd.DataFrame,
+    coverage: pd.DataFrame,
+    order: list[int],
+    linked: dict[str, set[str]],
+    visit: dict[str, int],
+    walk: tuple,
+) -> list[dict]:
+    """One row of :data:`ROUTE_COLUMNS` per stop: the walk, the targets set and collected,
+    the set-up, the scan (its sector, points and time: a full dome's time, the maker's
+    where stated, else its points over the rate), the images, the session and the time
+    elapsed."""
+    walk_m, notes, first_visit, last_visit, standing = walk
+    xy = stations[["x", "y"]].to_numpy(float)
+    ids = stations["station_id"].astype(str).tolist()
+    purposes = (
+        stations["purpose"].astype(str).tolist() if "purpose" in stations else [""] * len(ids)
+    )
+    preset = scanner.preset(settings.preset) if settings.preset else None
+    step = resolve_step_mm(scanner, settings.step_mm_at_10m)
+    lo, hi = scanner.vertical_fov_deg
+    dome = float(scan_points(360.0, hi - lo, step))
+    dome_s = preset.scan_s if preset and preset.scan_s else float(scan_time_s(dome, route.rate_hz))
+    imaging_min = scanner.imaging_s / 60.0 if settings.imaging else 0.0
+    sectors = view_sectors(stations, coverage, targets)
     spacing = coverage.groupby("station_id")["spacing_mm"].max()
     rows, session, used, elapsed = [], 1, 0.0, 0.0
     limit = settings.session_h * 60.0
     for n, k in enumerate(order):
         sid = ids[k]
-        start, end, _ = sectors.get(sid, (0.0, 0.0, 0.0))
-        width = min(360.0, (end - start) % 360.0 + 2 * SECTOR_MARGIN_DEG)
-        if width > 300.0 or not scanner.sector_scan:
-            start, width = 0.0, 360.0
-        else:
-            start = (start - SECTOR_MARGIN_DEG) % 360.0
+        start, width = _scan_sector(sectors.get(sid), scanner.sector_scan)
         points = float(scan_points(width, hi - lo, step))
         scanned = purposes[k] != "traverse"  # a total station's set-up: no scan
         points = points if scanned else 0.0
@@ -540,10 +609,7 @@ def field_route(
                 "walk_note": notes[n],
             }
         )
-    route.table = pd.DataFrame(rows, columns=ROUTE_COLUMNS)
-    route.legs = legs
-    route.kit = _kit(settings, targets, life, [ids[k] for k in order])
-    return route
+    return rows
 
 
 def _standing(spans: list[tuple[int, int]], stops: int) -> np.ndarray:

@@ -160,6 +160,48 @@ class Reduced:
         return text
 
 
+def _implied_rows(
+    a: sp.csr_matrix, demand: np.ndarray, among: np.ndarray | None, deadline: float
+) -> np.ndarray | None:
+    """The rows another row implies — cols(x) ⊆ cols(y) and demand(x) ≥ demand(y): y goes —
+    looked for among the rows ``among`` marks (None: all); None where the search was cut."""
+    size = np.diff(a.indptr)
+    pairs = subset_pairs(
+        a,
+        allowed=lambda x, y, d=demand, n=size: (
+            (d[x] >= d[y]) & ((n[x] < n[y]) | (d[x] > d[y]) | (x < y))
+        ),
+        witness="y",
+        among=among,
+        deadline=deadline,
+    )
+    return None if pairs is None else np.unique(pairs[1])
+
+
+def _dominated_columns(
+    cols: sp.csr_matrix, demand: np.ndarray, among: np.ndarray | None, deadline: float
+) -> np.ndarray | None:
+    """The columns (``cols``: candidates × samples) another dominates — rows(x) ⊆ rows(y),
+    every row of x needing one station: x goes. First the copies (the same rows as a column
+    before them: most of a large grid where few rows are left), then the subsets among the
+    columns left, looked for among those ``among`` marks (None: all); None where the search
+    was cut."""
+    single = np.asarray(cols @ (demand > 1).astype(np.int64)).ravel() == 0
+    size = np.diff(cols.indptr)
+    copy = _copies(cols) & single
+    rest = np.flatnonzero(~copy)
+    pairs = subset_pairs(
+        cols[rest],
+        allowed=lambda x, y, one=single[rest], n=size[rest]: one[x] & ((n[x] < n[y]) | (x > y)),
+        witness="x",
+        among=None if among is None else among[rest],
+        deadline=deadline,
+    )
+    if pairs is None:
+        return None
+    return np.union1d(np.flatnonzero(copy), rest[np.unique(pairs[0])])
+
+
 def reduce_cover(a: sp.csr_matrix, demand: np.ndarray, deadline: float = math.inf) -> Reduced:
     """Apply the reductions (module docstring) to a fixed point, or until ``deadline`` (a
     :func:`time.monotonic` time; every pass leaves an exact reduction of the problem).
@@ -203,20 +245,10 @@ def reduce_cover(a: sp.csr_matrix, demand: np.ndarray, deadline: float = math.in
             rows_new = cols_new = None  # demands changed: every pair is new
             continue
         # implied rows: cols(x) ⊆ cols(y) and demand(x) ≥ demand(y) → y goes
-        size = np.diff(a.indptr)
-        pairs = subset_pairs(
-            a,
-            allowed=lambda x, y, d=demand, n=size: (
-                (d[x] >= d[y]) & ((n[x] < n[y]) | (d[x] > d[y]) | (x < y))
-            ),
-            witness="y",
-            among=rows_new,
-            deadline=deadline,
-        )
-        if pairs is None:
+        drop = _implied_rows(a, demand, rows_new, deadline)
+        if drop is None:
             counts["stopped" if time.monotonic() > deadline else "skipped"] = 1
             break
-        drop = np.unique(pairs[1])
         if cols_new is not None:
             cols_new[a[drop].indices] = True
         rows_new = np.zeros(a.shape[0] - len(drop), dtype=bool)
@@ -226,23 +258,10 @@ def reduce_cover(a: sp.csr_matrix, demand: np.ndarray, deadline: float = math.in
             a, demand = a[keep], demand[keep]
         # dominated columns: rows(x) ⊆ rows(y), all rows of x needing one → x goes
         cols = a.T.tocsr()
-        single = np.asarray(cols @ (demand > 1).astype(np.int64)).ravel() == 0
-        size = np.diff(cols.indptr)
-        # first the copies (the same rows as a column before them): most of a large grid
-        # where few rows are left; then the subsets among the columns left
-        copy = _copies(cols) & single
-        rest = np.flatnonzero(~copy)
-        pairs = subset_pairs(
-            cols[rest],
-            allowed=lambda x, y, one=single[rest], n=size[rest]: one[x] & ((n[x] < n[y]) | (x > y)),
-            witness="x",
-            among=None if cols_new is None else cols_new[rest],
-            deadline=deadline,
-        )
-        if pairs is None:
+        drop = _dominated_columns(cols, demand, cols_new, deadline)
+        if drop is None:
             counts["stopped" if time.monotonic() > deadline else "skipped"] = 1
             break
-        drop = np.union1d(np.flatnonzero(copy), rest[np.unique(pairs[0])])
         rows_new[cols[drop].indices] = True
         cols_new = np.zeros(a.shape[1] - len(drop), dtype=bool)
         if len(drop):

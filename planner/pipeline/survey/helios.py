@@ -35,6 +35,7 @@ from planner.errors import InputError
 from planner.pipeline.engine.result import Plan
 from planner.pipeline.geometry.scene import Scene
 from planner.pipeline.survey.rehearsal import station_centres
+from planner.scanner import Scanner
 
 __all__ = ["FILES", "check_survey", "helios_files", "read_survey"]
 
@@ -77,16 +78,28 @@ def _xml(root: ET.Element, comment: str) -> bytes:
 def helios_files(plan: Plan, scene: Scene | None = None) -> dict[str, bytes]:
     """The four files of the survey (module text), by name."""
     scene = scene or Scene(plan.site, "rays")
-    sc, st = plan.scanner, plan.settings
     o = scene.origin
     where = f"tls-planner; local frame = site CRS minus (E {o[0]:.3f}, N {o[1]:.3f}, H {o[2]:.3f})"
+    return {
+        "helios_survey.xml": _survey_xml(plan, o, where),
+        "helios_scene.xml": _scene_xml(where),
+        "helios_scanner.xml": _scanner_xml(plan.scanner, where),
+        "helios_scene.obj": _obj(plan, scene),
+    }
+
+
+def _scene_xml(where: str) -> bytes:
+    """The scene: the OBJ beside it."""
     doc = ET.Element("document")
     sn = ET.SubElement(doc, "scene", id=_ID, name="tls-planner site")
     part = ET.SubElement(sn, "part")
     f = ET.SubElement(part, "filter", type="objloader")
     ET.SubElement(f, "param", type="string", key="filepath", value="helios_scene.obj")
-    scene_xml = _xml(doc, where)
+    return _xml(doc, where)
 
+
+def _scanner_xml(sc: Scanner, where: str) -> bytes:
+    """The scanner from its profile: accuracy, divergence, pulse rate, range, field."""
     doc = ET.Element("document")
     lo, hi = sc.vertical_fov_deg
     scanner = ET.SubElement(
@@ -110,8 +123,14 @@ def helios_files(plan: Plan, scene: Scene | None = None) -> dict[str, bytes]:
     origin = ET.SubElement(scanner, "beamOrigin", x="0", y="0", z="0")
     ET.SubElement(origin, "rot", axis="x", angle_deg="0")
     ET.SubElement(scanner, "headRotateAxis", x="0", y="0", z="1")
-    scanner_xml = _xml(doc, f"{where}; figures from the profile ({sc.source})")
+    return _xml(doc, f"{where}; figures from the profile ({sc.source})")
 
+
+def _survey_xml(plan: Plan, o: np.ndarray, where: str) -> bytes:
+    """One leg per scanning station: the tripod on the ground below the scanner's centre,
+    the scanner's vertical field, a full head turn at the preset's angular step."""
+    sc, st = plan.scanner, plan.settings
+    lo, hi = sc.vertical_fov_deg
     step_deg = np.degrees(st.scan_step_mm(sc) / 1e4)
     doc = ET.Element("document")
     survey = ET.SubElement(
@@ -148,17 +167,11 @@ def helios_files(plan: Plan, scene: Scene | None = None) -> dict[str, bytes]:
             horizontalResolution_deg=f"{step_deg:.6f}",
             verticalResolution_deg=f"{step_deg:.6f}",
         )
-    survey_xml = _xml(
+    return _xml(
         doc,
         f"{where}; run from the HELIOS++ folder (the tripod is its data/platforms.xml's, "
         f"mounting the scanner at its own height; the plan's is {st.instrument_height_m:g} m)",
     )
-    return {
-        "helios_survey.xml": survey_xml,
-        "helios_scene.xml": scene_xml,
-        "helios_scanner.xml": scanner_xml,
-        "helios_scene.obj": _obj(plan, scene),
-    }
 
 
 #: What HELIOS++'s loader reads of each element: (path, required attributes).

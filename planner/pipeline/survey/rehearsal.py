@@ -288,6 +288,72 @@ def estimate(
     }
 
 
+def _scan(
+    plan: Plan,
+    scene: Scene,
+    targets: _Targets,
+    sid: str,
+    pos: np.ndarray,
+    rot: np.ndarray,
+    rng: np.random.Generator,
+    grid: tuple,
+    mesh: tuple,
+    noise: bool,
+) -> SimulatedScan:
+    """One station's simulated scan: the grid's beams (``grid``: azimuths, elevations, each
+    beam's column and row and direction in the scanner's frame) turned by ``rot`` and cast
+    from ``pos`` against the scene, the targets and (no terrain) flat ground at 0; the
+    returns within the scanner's range with the plan's noise drawn from ``rng``. ``mesh``:
+    the scene's triangle normals, owners, kinds and the flat ground's surface number."""
+    sc, st = plan.scanner, plan.settings
+    az, el, col, row, local_dir = grid
+    normals, owner, tri_kind, ground_id = mesh
+    d = local_dir @ rot.T
+    o = np.broadcast_to(pos, d.shape)
+    dist, t_idx = scene.first_hit(o, d, sc.max_range_m)
+    if plan.site.terrain is None:  # flat ground at 0 all round (the scene has none)
+        down = (d[:, 2] < -1e-9) & (t_idx < 0)
+        dist[down] = -pos[2] / d[down, 2]
+    dist, hit_t, hit_kind, t_normal, refl = targets.hit(pos, d, dist)
+    keep = np.isfinite(dist) & (dist >= sc.min_range_m) & (dist <= sc.max_range_m)
+    on_mesh = keep & (hit_t < 0) & (t_idx >= 0)
+    ground = keep & (hit_t < 0) & (t_idx < 0)  # the flat ground
+    t_normal[ground] = (0.0, 0.0, 1.0)
+    hit_t[ground], hit_kind[ground] = ground_id, POINT_KINDS.index("terrain")
+    refl[ground] = SURFACE_REFLECTANCE
+    n = np.where(on_mesh[:, None], normals[np.maximum(t_idx, 0)], t_normal)
+    cos_t = np.abs(np.einsum("ij,ij->i", n, d))
+    surface = np.where(on_mesh, owner[np.maximum(t_idx, 0)], hit_t)
+    kind = np.where(on_mesh, tri_kind[np.maximum(t_idx, 0)], hit_kind)
+    reflectance = np.where(on_mesh, SURFACE_REFLECTANCE, refl)
+    s, a, e, c = dist[keep], az[col[keep]], el[row[keep]], cos_t[keep]
+    m_s = sc.range_rms_at(s)
+    if st.incidence_ranging:
+        m_s = incidence_ranging_rms_mm(m_s, c)
+    # the point's own noise; the scan's levelling is its frame's error (the pose)
+    var = variances_3d(
+        s, np.ones_like(s), np.sin(e), m_s, sc.angle_rms_arcsec, sc.tilt_rms_arcsec, 0.0
+    )
+    draws = rng.normal(0.0, 1.0, (3, len(s))) * noise
+    s = s + draws[0] * m_s / 1000.0
+    a = a + draws[1] * sc.angle_rms_arcsec / _RHO
+    e = e + draws[2] * sc.tilt_rms_arcsec / _RHO
+    return SimulatedScan(
+        station_id=sid,
+        position=pos.copy(),
+        rotation=rot,
+        local_xyz=s[:, None] * _unit(a, e),
+        intensity=(reflectance[keep] * c).astype(np.float32),
+        rms_mm=np.sqrt(sum(var)).astype(np.float32),
+        incidence_deg=np.degrees(np.arccos(np.clip(c, 0.0, 1.0))).astype(np.float32),
+        surface=surface[keep].astype(np.int64),
+        kind=kind[keep].astype(np.int64),
+        row=row[keep],
+        column=col[keep],
+        beams=len(d),
+    )
+
+
 def rehearse(
     plan: Plan,
     *,
@@ -327,52 +393,9 @@ def rehearse(
             continue
         say(k / max(len(ids), 1), f"simulated scan of {sid} ({k + 1} of {len(ids)})")
         rot = _rotation(heading, *tilt)
-        d = local_dir @ rot.T
-        o = np.broadcast_to(pos, d.shape)
-        dist, t_idx = scene.first_hit(o, d, sc.max_range_m)
-        if plan.site.terrain is None:  # flat ground at 0 all round (the scene has none)
-            down = (d[:, 2] < -1e-9) & (t_idx < 0)
-            dist[down] = -pos[2] / d[down, 2]
-        dist, hit_t, hit_kind, t_normal, refl = targets.hit(pos, d, dist)
-        keep = np.isfinite(dist) & (dist >= sc.min_range_m) & (dist <= sc.max_range_m)
-        on_mesh = keep & (hit_t < 0) & (t_idx >= 0)
-        ground = keep & (hit_t < 0) & (t_idx < 0)  # the flat ground
-        t_normal[ground] = (0.0, 0.0, 1.0)
-        hit_t[ground], hit_kind[ground] = len(surfaces) - 1, POINT_KINDS.index("terrain")
-        refl[ground] = SURFACE_REFLECTANCE
-        n = np.where(on_mesh[:, None], normals[np.maximum(t_idx, 0)], t_normal)
-        cos_t = np.abs(np.einsum("ij,ij->i", n, d))
-        surface = np.where(on_mesh, owner[np.maximum(t_idx, 0)], hit_t)
-        kind = np.where(on_mesh, tri_kind[np.maximum(t_idx, 0)], hit_kind)
-        reflectance = np.where(on_mesh, SURFACE_REFLECTANCE, refl)
-        s, a, e, c = dist[keep], az[col[keep]], el[row[keep]], cos_t[keep]
-        m_s = sc.range_rms_at(s)
-        if st.incidence_ranging:
-            m_s = incidence_ranging_rms_mm(m_s, c)
-        # the point's own noise; the scan's levelling is its frame's error (the pose)
-        var = variances_3d(
-            s, np.ones_like(s), np.sin(e), m_s, sc.angle_rms_arcsec, sc.tilt_rms_arcsec, 0.0
-        )
-        draws = rng.normal(0.0, 1.0, (3, len(s))) * noise
-        s = s + draws[0] * m_s / 1000.0
-        a = a + draws[1] * sc.angle_rms_arcsec / _RHO
-        e = e + draws[2] * sc.tilt_rms_arcsec / _RHO
-        scans.append(
-            SimulatedScan(
-                station_id=sid,
-                position=pos.copy(),
-                rotation=rot,
-                local_xyz=s[:, None] * _unit(a, e),
-                intensity=(reflectance[keep] * c).astype(np.float32),
-                rms_mm=np.sqrt(sum(var)).astype(np.float32),
-                incidence_deg=np.degrees(np.arccos(np.clip(c, 0.0, 1.0))).astype(np.float32),
-                surface=surface[keep].astype(np.int64),
-                kind=kind[keep].astype(np.int64),
-                row=row[keep],
-                column=col[keep],
-                beams=len(d),
-            )
-        )
+        grid = (az, el, col, row, local_dir)
+        mesh = (normals, owner, tri_kind, len(surfaces) - 1)
+        scans.append(_scan(plan, scene, targets, sid, pos, rot, rng, grid, mesh, noise))
     say(1.0, "simulated scans done")
     preset = st.scan_step_mm(sc)
     notes = []
