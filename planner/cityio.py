@@ -630,7 +630,7 @@ def read_city_model(
             "(cjio FILE subset --bbox …)"
         )
     kw = dict(lod=lod, buildings=buildings, crs=crs, limits=limits, near_m=near_m, terrain=terrain)
-    from planner.siteio import reading
+    from planner.reading import reading
 
     with reading(p.name, "CityJSON or CityGML"):
         return _read_model(p, kw)
@@ -1031,7 +1031,7 @@ def with_mesh(
         raise InputError(f"the mesh's offset is three numbers E,N,H [m]; got {offset!r}")
     if p.suffix.lower() not in MESH_SUFFIXES:
         raise InputError(f"{p.name}: a mesh is read from {', '.join(MESH_SUFFIXES)}")
-    from planner.siteio import reading
+    from planner.reading import reading
 
     with reading(p.name, "mesh"):
         return _with_mesh(site, p, off, up)

@@ -237,7 +237,7 @@ def _check_kml(head: bytes, name: str) -> None:
 def _check_kmz(p: Path) -> None:
     """A zip archive of KML: every XML member of it KML (GDAL reads them all; a link in
     one may name another), no more unpacked than a site file may be."""
-    from planner.siteio import MAX_FILE_BYTES
+    from planner.reading import MAX_FILE_BYTES
 
     if not zipfile.is_zipfile(p):
         with p.open("rb") as fh:

@@ -29,14 +29,13 @@ its UTM zone.
 
 from __future__ import annotations
 
-import contextlib
 import csv
 import io
 import json
 import math
 import os
 from collections import defaultdict
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from importlib import resources
 from pathlib import Path
@@ -50,6 +49,7 @@ from shapely.geometry.base import BaseGeometry
 
 from planner.crs import GEOJSON_DEFAULT
 from planner.errors import InputError
+from planner.reading import MAX_FILE_BYTES, reading
 from planner.site import (
     CROWN_BASE_SHARE,
     DEFAULT_CONTROL_RMS_MM,
@@ -1095,53 +1095,6 @@ def _map_gis_props(props: dict[str, Any], kind: str, layer_role: str | None) -> 
             if key in low:
                 props["id"] = props[low[key]]
                 break
-
-
-#: A site file larger than this is refused before it is read [bytes].
-MAX_FILE_BYTES = 256_000_000
-
-#: What a parser raises on data it cannot make sense of (turned into an InputError).
-_PARSE_ERRORS = (
-    csv.Error,
-    RecursionError,
-    ValueError,
-    TypeError,
-    KeyError,
-    AttributeError,
-    IndexError,
-    OverflowError,
-    GEOSException,
-    ShapelyError,
-)
-
-
-def kind_words(kind: str) -> str:
-    """A file's kind as the messages name it: "a GEOJSON site", "a CityJSON model"."""
-    if kind == "mesh":
-        return "a mesh"
-    if kind.startswith("City"):
-        return f"a {kind} model"
-    return f"a {kind.upper()} site"
-
-
-@contextlib.contextmanager
-def reading(origin: str, kind: str) -> Iterator[None]:
-    """The reader's boundary: whatever the parsers raise on malformed content becomes an
-    InputError naming the file (our own InputErrors pass unchanged)."""
-    try:
-        yield
-    except InputError:
-        raise
-    except _PARSE_ERRORS as exc:
-        what = (
-            "it is nested too deeply"
-            if isinstance(exc, RecursionError)
-            else f"{type(exc).__name__}: {str(exc).splitlines()[0][:200] if str(exc) else ''}"
-        )
-        raise InputError(
-            f"{origin}: cannot read it as {kind_words(kind)} ({what}); check the file "
-            "against the formats in the README"
-        ) from None
 
 
 def default_site(buildings: Sequence[str] | None = None, limits: SiteLimits | None = None) -> Site:

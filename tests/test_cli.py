@@ -106,7 +106,7 @@ def test_python_dash_m_and_default_job():
 def test_every_command_prints_its_help():
     """``planner CMD --help`` for every command: exit 0 and the options with their units
     (a unit such as "%" in a data class's help once made argparse raise instead)."""
-    from planner.app.cli import build_parser
+    from planner.app.arguments import build_parser
 
     commands = build_parser()._subparsers._group_actions[0].choices
     assert {"plan", "report", "serve"} <= set(commands)

@@ -137,7 +137,7 @@ def test_passages_are_read_from_a_line_with_its_width_and_clear_height(
 
 
 def test_a_gis_layer_named_gateways_holds_passages(tmp_path):
-    from test_gis_input import write
+    from test_gdalio import write
 
     path = tmp_path / "site.gpkg"
     write(path, [BLOCK.footprint], {"height": [20.0]}, layer="buildings", crs="EPSG:25832")

@@ -172,11 +172,11 @@ def test_every_table_of_the_report_fits_the_page(tmp_path, strict_plan):
 
 def test_the_report_makes_its_plan_as_plan_does(tmp_path, monkeypatch):
     """``planner report`` takes the district options and makes its plan with the one
-    function ``planner plan`` uses (:func:`planner.app.cli.make_plan`: district mode where
+    function ``planner plan`` uses (:func:`planner.app.commands.make_plan`: district mode where
     ``plan`` takes it, the documents' share of the budget) — it planned in one process
     before, and showed another plan than ``plan``'s. (District mode itself:
     test_district.py.)"""
-    import planner.app.cli as cli
+    import planner.app.commands as commands
     from planner.errors import InputError
 
     seen = []
@@ -185,7 +185,7 @@ def test_the_report_makes_its_plan_as_plan_does(tmp_path, monkeypatch):
         seen.append((args.district, args.block_m, args.workers))
         raise InputError("stop here: the plan is make_plan's")
 
-    monkeypatch.setattr(cli, "make_plan", make_plan)
+    monkeypatch.setattr(commands, "make_plan", make_plan)
     for command, out in (("report", "r.html"), ("plan", "p")):
         code, _, err = run(command, "--district", "on", "--block-m", "300", "--workers", "1",
                            "--out", str(tmp_path / out), "-q")  # fmt: skip
