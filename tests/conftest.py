@@ -132,30 +132,3 @@ def sentinel():
     yield s
     s.sock.close()
     assert not s.calls, f"the planner made {len(s.calls)} request(s) on the loopback: {s.calls}"
-
-
-#: The slowest test files (by their time in a whole run of the suite, junit's per-test
-#: times summed), slowest first. They are handed to the workers first (``--dist loadfile``
-#: hands files out in collection order): the longest jobs first, so that the workers end
-#: together instead of one finishing a slow file alone at the end.
-SLOW_FILES_FIRST = (
-    "test_dashboard_browser.py",
-    "test_safety.py",
-    "test_serve.py",
-    "test_report.py",
-    "test_district.py",
-    "test_properties.py",
-    "test_catalogue.py",
-    "test_network.py",
-    "test_rehearsal.py",
-    "test_fieldwork.py",
-    "test_budget.py",
-    "test_hostile.py",
-    "test_virtual_survey.py",
-    "test_notebooks.py",
-)
-
-
-def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
-    rank = {name: k for k, name in enumerate(SLOW_FILES_FIRST)}
-    items.sort(key=lambda item: rank.get(item.path.name, len(rank)))  # stable: the rest as was
