@@ -10,14 +10,17 @@ catalogue scanner on the default site with the 3-D and the paper's model (coarse
 ten-building block registered by targets, cloud to cloud and hybrid, a gated block, and
 pairwise registration. Compared: the stations, targets and links tables as text, the
 messages, and every number of the coverage table (exactly: a difference in the last bit is
-reported). ``save`` prints each plan's time.
+reported). ``save`` prints each plan's time and keeps the commit of the code it ran;
+``compare`` writes its verdict to the "same_plans" section of benchmarks/RESULTS.md.
 """
 
 from __future__ import annotations
 
 import pickle
+import subprocess
 import sys
 import time
+from pathlib import Path
 
 import numpy as np
 
@@ -63,8 +66,27 @@ def fingerprint(p) -> dict:
     }
 
 
+def commit() -> str:
+    """The commit of the planner package this process imports (its repository's HEAD; a
+    "+" where its files differ from it), or "?" outside a repository."""
+    import planner
+
+    where = Path(planner.__file__).resolve().parent
+
+    def git(*args: str) -> str:
+        return subprocess.run(
+            ["git", "-C", str(where), *args], capture_output=True, text=True, check=True
+        ).stdout.strip()
+
+    try:
+        head = git("rev-parse", "--short", "HEAD")
+        return head + ("+" if git("status", "--porcelain", "--", ".") else "")
+    except (OSError, subprocess.CalledProcessError):
+        return "?"
+
+
 def save(path: str) -> None:
-    out = {}
+    out: dict = {"_commit": commit()}
     for name, job in corpus().items():
         t0 = time.perf_counter()
         out[name] = fingerprint(job())
@@ -79,7 +101,8 @@ def compare(before: str, after: str) -> int:
     with open(after, "rb") as f:
         b = pickle.load(f)
     differ = 0
-    for name in a.keys() & b.keys():
+    names = sorted((a.keys() & b.keys()) - {"_commit"})
+    for name in names:
         x, y = a[name], b[name]
         what = [k for k in ("tables", "messages", "columns") if x[k] != y[k]]
         what += [k for k in ("meets", "station_id") if not np.array_equal(x[k], y[k])]
@@ -90,7 +113,21 @@ def compare(before: str, after: str) -> int:
         if what:
             differ += 1
             print(f"{name}: {', '.join(what)} differ")
-    print(f"{len(a.keys() & b.keys())} plans compared, {differ} differ")
+    verdict = f"{len(names)} plans compared, {differ} differ"
+    print(verdict)
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from _results import machine, write_section
+
+    write_section(
+        "same_plans",
+        [
+            "## The same plans before and after a change (benchmarks/same_plans.py)",
+            "",
+            machine(),
+            "",
+            f"Code {a.get('_commit', '?')} against {b.get('_commit', '?')}: {verdict}.",
+        ],
+    )
     return 1 if differ else 0
 
 
