@@ -7,7 +7,8 @@ a block is among that block's candidates, at the same grid position (the grid is
 to the CRS and the halo holds everything within the reach). Two bounds follow, and the
 plan reports the larger:
 
-* **Shared stations** (:func:`shared_prices`, :func:`block_cover`): each block's cover by
+* **Shared stations** (:func:`shared_prices`,
+:func:`~planner.pipeline.district.blocks.block_cover`): each block's cover by
   the scanner's error, with every candidate priced 1 / (the number of blocks whose samples
   it meets). A cover of the whole site, restricted to the candidates meeting one block's
   samples, covers that block; summed over the blocks, these prices count each of its
@@ -17,9 +18,9 @@ plan reports the larger:
   Lagrangean bounds", Mathematical Programming 39, 1987,
   https://doi.org/10.1007/BF02592954; tested against the optimum of random instances).
 * **Far apart**: each block says the farthest any candidate meets one of its samples (its
-  **meeting reach**, :func:`meeting_reach`, at most the reach). Two blocks farther apart
-  than the sum of their meeting reaches share no station, so the sum of the bounds of
-  blocks pairwise that far apart is a bound (the largest such sum found, greedy).
+  **meeting reach**, :func:`~planner.pipeline.district.blocks.meeting_reach`, at most the reach).
+  Two blocks farther apart than the sum of their meeting reaches share no station, so the sum of the
+  bounds of blocks pairwise that far apart is a bound (the largest such sum found, greedy).
 """
 
 from __future__ import annotations

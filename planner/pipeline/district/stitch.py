@@ -56,10 +56,11 @@ def stitch(
 ) -> Plan:
     """One plan from the blocks' plans: ids prefixed with the block key (control points keep
     theirs), the stations a neighbouring block makes redundant removed (given the blocks'
-    :func:`meeting_table`), an honest bound (the far-apart blocks'; :func:`plan_district`
-    raises it to the blocks' covers at shared prices where that is larger), a message per
-    block, one route. With the blocks' ``frames`` (:func:`keep_frame`) their networks are
-    tied into one across the seams; without, the blocks stay apart."""
+    :func:`~planner.pipeline.district.blocks.meeting_table`), an honest bound (the far-apart
+    blocks'; :func:`~planner.pipeline.district.schedule.plan_district` raises it to the blocks'
+    covers at shared prices where that is larger), a message per block, one route. With the blocks'
+    ``frames`` (:func:`~planner.pipeline.district.blocks.keep_frame`) their networks are tied into
+    one across the seams; without, the blocks stay apart."""
     parts, messages = _renamed_blocks(site, blocks, plans, frames, reach)
     stations, targets, coverage, facades, links, zones, cands = parts
     targets_df = _merge_control(pd.concat(targets, ignore_index=True))
@@ -190,8 +191,8 @@ def _district_solver(
     blocks: list[Block], plans: list[Plan], reach: float, removed: int, cut: list[str]
 ) -> SolverReport:
     """The district's solver report: the blocks' covers summed less the stations
-    ``removed``, the honest bound of the blocks far apart (:func:`honest_bound`), the
-    blocks' work summed."""
+    ``removed``, the honest bound of the blocks far apart
+    (:func:`~planner.pipeline.district.bounds.honest_bound`), the blocks' work summed."""
     objective = int(sum(p.solver.objective for p in plans)) - removed
     far = honest_bound(blocks, plans, reach)
     statuses = {p.solver.status for p in plans}

@@ -176,7 +176,7 @@ class Layout:
 
     def _sigmas(self, j: int, targets: list[int]) -> list[float]:
         """:meth:`sigma` of each of ``targets``, kept in the plan's memo; those not yet in
-        it computed together (:func:`centre_rms` of many)."""
+        it computed together (:func:`~planner.pipeline.network.targets.centre_rms` of many)."""
         keys = [("rms", self.stations[j], t) for t in targets]
         new = [n for n, key in enumerate(keys) if key not in self._memo]
         if new:
@@ -241,8 +241,9 @@ class Layout:
 
     def bound(self, i: int, j: int) -> float:
         """A lower bound [mm] of :meth:`link`'s error of j to i, cheap where the link is not
-        yet known: the error with every common target (:func:`all_targets_error`). A link
-        known, cloud to cloud, or to the control network: its own error."""
+        yet known: the error with every common target
+        (:func:`~planner.pipeline.network.links.all_targets_error`). A link known, cloud to cloud,
+        or to the control network: its own error."""
         key = (i, j)
         if key not in self._bounds:
             cached = key in self._links or (i != CONTROL and self._shared_key(i, j) in self._memo)
@@ -332,10 +333,10 @@ class Layout:
         probe: np.ndarray,
         placed: set[int],
     ) -> tuple[list[int], float]:
-        """:func:`choose_link_targets` for the link of j to i over ``common`` (``s2`` their
-        variances), kept for the plan's layouts: the choice depends on the two stations, the
-        targets offered, which of them are placed and the points it is judged at only (the
-        rest is the memo's key: :meth:`SightCache.memo_for`)."""
+        """:func:`~planner.pipeline.network.links.choose_link_targets` for the link of j to i over
+        ``common`` (``s2`` their variances), kept for the plan's layouts: the choice depends on the
+        two stations, the targets offered, which of them are placed and the points it is judged at
+        only (the rest is the memo's key: :meth:`SightCache.memo_for`)."""
         reused = np.isin(common, list(placed))
         key = (
             "choose",
@@ -399,7 +400,7 @@ class Stands:
         self.radius_m = max(sizes, default=0.0) / 2000.0
         self.tc, self.station_xyz = tc, station_xyz
         self.end = tc.xyz.copy()
-        # where target sights end (:func:`sights`)
+        # where target sights end (:func:`~planner.pipeline.network.targets.sights`)
         self.end[:, :2] += target_sight_offset(ctx, tc)[:, None] * tc.normal
         self.spheres: list[int] = []
         self.lines: set[tuple[int, int]] = set()  # (station column, target)

@@ -158,7 +158,7 @@ def _best_seam(ctx: Context, t: pd.DataFrame, fi, fj, near_i, near_j, i, j) -> S
                 datum=0,
                 levelled=ctx.scanner.is_levelled,
                 # the seam's own error: its two stations' tilts, levelled; without a
-                # compensator no datum's (the district's lean is added once, district.py)
+                # compensator no datum's (the district's lean is added once, district/stitch.py)
                 tilt_rms_arcsec=ctx.scanner.initial_tilt_rms_arcsec
                 if ctx.scanner.is_levelled
                 else 0.0,
