@@ -559,3 +559,25 @@ def test_one_datums_tilt_leans_the_whole_district(blockwise):
     assert lost.sum() > 50  # (450: the far block's heights)
     assert len(said) == 1 and f": {int(lost.sum())} sample(s)" in said[0], said
     assert f"datum station of block {key}" in said[0] and "--control" in said[0]
+
+
+def test_a_block_task_keeps_its_frame_and_lets_its_workbench_go(district):
+    """What a worker keeps of a block until the stitch: the plan, its meeting table, its
+    cover and its frame (with a limit per sample, in the coverage's order) — not the
+    workbench the plan was made from (memory: a worker plans many blocks)."""
+    import gc
+
+    from planner.pipeline.district.blocks import plan_block
+    from planner.pipeline.inputs.resolved import reach_m
+
+    site, blocks = district
+    halo = reach_m(UNLEVELLED, Requirements(), SETTINGS)
+    b = min(blocks, key=lambda b: len(b.buildings))
+    p, table, _cover, frame = plan_block(
+        block_site(site, b, halo), UNLEVELLED, Requirements(), SETTINGS, block_region(b, halo)
+    )
+    gc.collect()
+    assert workbench_of(p) is None and p.network is None
+    assert frame.limits.shape == (len(p.coverage), 3)
+    assert (frame.limits > 0).all()  # mm: every sample's limits
+    assert len(frame.xyz) == len(p.scan_stations) and len(table) > 0

@@ -30,7 +30,7 @@ import scipy.sparse as sp
 import shapely
 from shapely.geometry import box
 
-from planner.pipeline.engine.judge import workbench_of
+from planner.pipeline.engine.judge import forget_workbench, workbench_of
 from planner.pipeline.engine.result import Plan
 from planner.pipeline.geometry.facades import estimate_samples
 from planner.pipeline.inputs.requirements import (
@@ -182,6 +182,7 @@ def plan_block(
     cover = block_cover(p)
     frame = keep_frame(p)
     p.network = None
+    forget_workbench(p)  # the worker keeps the plan until the stitch, not its machinery
     p.timings_s["worker_peak_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
     return p, table, cover, frame
 

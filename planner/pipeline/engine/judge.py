@@ -72,6 +72,7 @@ __all__ = [
     "datum_round",
     "datum_station",
     "estimate_registration",
+    "forget_workbench",
     "free_positions",
     "judge",
     "keep_workbench",
@@ -432,6 +433,12 @@ def workbench_of(p: Plan) -> Workbench | None:
     """What ``p`` was made from, for what-if edits — None for a plan made elsewhere (another
     process, a district's stitch) or read back from files."""
     return _BENCHES.get(p)
+
+
+def forget_workbench(p: Plan) -> None:
+    """Let ``p``'s workbench go (a district block's, once its frame is kept: the worker
+    keeps the light plan until the stitch, not what it was made from)."""
+    _BENCHES.pop(p, None)
 
 
 def copy_plan(p: Plan) -> Plan:

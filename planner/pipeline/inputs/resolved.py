@@ -119,9 +119,9 @@ def resolve(
     scanner: Scanner,
     requirements: Requirements | None = None,
     settings: PlanSettings | None = None,
-    zone_requirements: Sequence[Requirements] = (),
+    zones: Sequence[Requirements] = (),
 ) -> Inputs:
-    """The plan's inputs resolved once (module docstring). ``zone_requirements``: the zones'
+    """The plan's inputs resolved once (module docstring). ``zones``: the zones'
     requirements (:meth:`Requirements.with_overrides` of the site-wide one); the search
     radius is the farthest any of them reaches, and the preset is chosen for the strictest
     spacing any of them asks. Settings already resolved come back the same."""
@@ -129,7 +129,7 @@ def resolve(
     st = PlanSettings() if settings is None else settings
     expect(req, Requirements, "requirements", "e.g. Requirements(max_xy_mm=4)")
     expect(st, PlanSettings, "settings", "e.g. PlanSettings(grid_m=2)")
-    every = list({id(r): r for r in [req, *zone_requirements]}.values())
+    every = list({id(r): r for r in [req, *zones]}.values())
     reach = max(reach_m(scanner, r, st) for r in every)
     spacing = [r.max_spacing_mm for r in every if r.max_spacing_mm]
     st = st.for_scanner(scanner, min(spacing, default=None), reach)
