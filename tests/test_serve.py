@@ -80,6 +80,19 @@ def _running(pid: int) -> bool:
     return state not in ("Z", "X")
 
 
+def _kill_family(proc: subprocess.Popen) -> None:
+    """A test's server gone whatever happened: it and every process it started (a failed
+    assertion must not leave the Voilà server and its kernels running)."""
+    if proc.poll() is None:
+        family = _descendants(proc.pid)
+        proc.kill()
+        for pid in family:
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+
+
 def _stops_whole(proc: subprocess.Popen, port: int, sig: int) -> None:
     """``sig`` stops the server with exit code 0, its port closed and no process of its
     family left running."""
@@ -119,8 +132,7 @@ def test_serve_is_ready_when_it_says_so_and_stops_whole_on_a_signal(sig, noteboo
             assert len(_kernels(proc.pid)) == 2
         _stops_whole(proc, port, sig)
     finally:
-        if proc.poll() is None:
-            proc.kill()
+        _kill_family(proc)
 
 
 def test_serve_refuses_strangers_and_a_taken_port_and_frees_idle_kernels(tmp_path):
@@ -161,8 +173,7 @@ def test_serve_refuses_strangers_and_a_taken_port_and_frees_idle_kernels(tmp_pat
         assert uploads  # the server's upload folder exists while it runs …
         _stops_whole(proc, port, signal.SIGHUP)
     finally:
-        if proc.poll() is None:
-            proc.kill()
+        _kill_family(proc)
     assert not any(p.exists() for p in uploads)  # … and goes with it
 
 
