@@ -79,11 +79,10 @@ def _room(module: str) -> int | None:
 def _pipeline_graph() -> dict[str, set[str]]:
     """Every pipeline module and the pipeline modules it imports (at the top, in a function or
     for annotations only: each is knowledge of the other)."""
-    names = {name for name, _ in _modules() if name.startswith("planner.pipeline.")}
+    paths = {name: path for name, path in _modules() if name.startswith("planner.pipeline.")}
     return {
-        name: {m for m in _imports(path) if m in names and m != name}
-        for name, path in _modules()
-        if name in names
+        name: {m for m in _imports(path) if m in paths and m != name}
+        for name, path in paths.items()
     }
 
 

@@ -228,8 +228,8 @@ def plan_district(
         # the workers import the planner now, before the blocks' shares of the time are
         # counted: a share is for planning, not for a worker's start (about 3 s loaded)
         client.run(_import_planner)
-        job = _BlockJobs(client, blocks, sites, work, scanner, req, st, halo)
-        job.until = _blocks_until(site, st, deadline, closing=cluster is not None)
+        until = _blocks_until(site, st, deadline, closing=cluster is not None)
+        job = _BlockJobs(client, blocks, sites, work, scanner, req, st, halo, until)
         plans, tables, xys, frames = job.run(
             say, lambda k: _worker_died(blocks[k], scheduler, memory_limit, block_m)
         )
@@ -322,8 +322,12 @@ class _BlockJobs:
     req: Requirements
     st: PlanSettings
     halo: float
-    until: float = 0.0
+    until: float  # when the blocks must be planned by (a time.monotonic time)
     covers: list = field(default_factory=list)  # each block's cover, kept on the workers
+    queue: list[int] = field(default_factory=list)  # the blocks not yet handed out
+    in_flight: dict[int, float] = field(default_factory=dict)  # block → when its share ends
+    futures: dict = field(default_factory=dict)  # each block's result → the block
+    pending: Any = None  # the results in the order they come (dask's as_completed)
 
     def run(
         self, say: Progress, died: Callable[[int], str]
@@ -335,9 +339,7 @@ class _BlockJobs:
 
         n = len(self.blocks)
         self.queue = sorted(range(n), key=lambda k: -self.work[k])
-        self.in_flight: dict[int, float] = {}  # block → when its share ends
-        self.futures: dict = {}
-        self.pending = as_completed()
+        self.in_flight, self.futures, self.pending = {}, {}, as_completed()
         self.covers = [None] * n
         slots = max(1, sum(self.client.nthreads().values()))
         while self.queue and len(self.in_flight) < slots:

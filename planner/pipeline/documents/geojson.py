@@ -11,6 +11,7 @@ from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
+import pandas as pd
 import shapely
 
 from planner.pipeline.engine.judge import workbench_of
@@ -116,6 +117,14 @@ def geojson(p: Plan) -> dict:
 def _feature(geom: dict, **props: Any) -> dict:
     """A GeoJSON feature, its properties made plain (:func:`_clean`)."""
     return {"type": "Feature", "geometry": geom, "properties": _clean(props)}
+
+
+def _grounds(points: pd.DataFrame, ground: Any) -> list[dict[str, float]]:
+    """Each point's ground height as a feature property (``ground_z``), where the plan has
+    heights (``ground``: :func:`_ground_of`); else none."""
+    if ground is None:
+        return [{}] * len(points)
+    return [{"ground_z": float(z)} for z in ground(points[["x", "y"]].to_numpy(float))]
 
 
 def _site_features(p: Plan) -> list[dict]:
@@ -238,11 +247,8 @@ def _link_features(p: Plan) -> list[dict]:
 
 def _target_features(p: Plan, ground: Any) -> list[dict]:
     """Each target at its centre (3-D: with its ground)."""
-    three_d = ground is not None
     feats: list[dict] = []
-    t_ground = ground(p.targets[["x", "y"]].to_numpy(float)) if three_d else None
-    for k, r in enumerate(p.targets.itertuples()):
-        extra = {"ground_z": float(t_ground[k])} if three_d else {}
+    for r, extra in zip(p.targets.itertuples(), _grounds(p.targets, ground), strict=True):
         feats.append(
             _feature(
                 {"type": "Point", "coordinates": [r.x, r.y, r.z]},
@@ -277,11 +283,9 @@ def _route_features(p: Plan) -> list[dict]:
 
 def _unmet_features(p: Plan, ground: Any) -> list[dict]:
     """Each sample not met, with the reason."""
-    three_d = ground is not None
     feats: list[dict] = []
-    u_ground = ground(p.unmet[["x", "y"]].to_numpy(float)) if three_d else None
-    for k, r in enumerate(p.unmet.itertuples()):
-        extra = {"ground_z": float(u_ground[k])} if three_d else {}
+    unmet = p.unmet
+    for r, extra in zip(unmet.itertuples(), _grounds(unmet, ground), strict=True):
         feats.append(
             _feature(
                 {"type": "Point", "coordinates": [r.x, r.y, r.z]},

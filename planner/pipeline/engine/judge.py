@@ -252,7 +252,7 @@ def assemble(
     t = time.perf_counter()
     route = field_route(wb.site, wb.scanner, st, stations, targets, coverage, links)
     stations, coverage, targets, links, route, ids = _in_visiting_order(
-        wb, station_idx, kept, edited, stations, coverage, targets, links, route
+        wb, station_idx, ids, kept, edited, stations, coverage, targets, links, route
     )
     clock.note("route", time.perf_counter() - t)
     messages += _plan_messages(ctx, net, coverage, links, ids, tc, st)
@@ -361,6 +361,7 @@ def _station_table(
 def _in_visiting_order(
     wb: Workbench,
     station_idx: np.ndarray,
+    ids: list[str],
     kept: dict[int, tuple[str, str]],
     edited: bool,
     stations: pd.DataFrame,
@@ -371,8 +372,8 @@ def _in_visiting_order(
 ) -> tuple[pd.DataFrame, pd.DataFrame, pd.DataFrame, pd.DataFrame, FieldRoute, list[str]]:
     """Stations and targets named in the visiting order (:func:`name_stations`,
     :func:`~planner.pipeline.engine.tables.target_numbers`) in every table and the route;
-    the workbench's highest station number raised (never lowered: no id given twice)."""
-    ids = list(stations["station_id"][: len(station_idx)])
+    the workbench's highest station number raised (never lowered: no id given twice).
+    ``ids``: the stations' ids until now, by their place in ``station_idx``."""
     at = {sid: k for k, sid in enumerate(ids)}
     visit = [at[sid] for sid in route.table["station_id"] if sid in at]
     names = name_stations(

@@ -43,7 +43,7 @@ from scipy.spatial import cKDTree
 from planner.fieldwork import scan_points, scan_time_s
 from planner.pipeline.inputs.requirements import PlanSettings
 from planner.pipeline.inputs.schema import KIT_COLUMNS, ROUTE_COLUMNS, id_key
-from planner.scanner import Scanner
+from planner.scanner import Preset, Scanner
 from planner.site import Site
 from planner.spacing import resolve_step_mm
 
@@ -431,7 +431,7 @@ def field_route(
     first_visit, last_visit, life = _target_visits(targets, visit)
     walk = (walk_m, notes, first_visit, last_visit, _standing(list(life.values()), len(order)))
     rows = _route_rows(
-        scanner, settings, route, stations, targets, coverage, order, linked, visit, walk
+        scanner, settings, preset, route, stations, targets, coverage, order, linked, visit, walk
     )
     route.table = pd.DataFrame(rows, columns=ROUTE_COLUMNS)
     route.legs = legs
@@ -529,6 +529,7 @@ def _scan_sector(
 def _route_rows(
     scanner: Scanner,
     settings: PlanSettings,
+    preset: Preset | None,
     route: FieldRoute,
     stations: pd.DataFrame,
     targets: pd.DataFrame,
@@ -548,7 +549,6 @@ def _route_rows(
     purposes = (
         stations["purpose"].astype(str).tolist() if "purpose" in stations else [""] * len(ids)
     )
-    preset = scanner.preset(settings.preset) if settings.preset else None
     step = resolve_step_mm(scanner, settings.step_mm_at_10m)
     lo, hi = scanner.vertical_fov_deg
     dome = float(scan_points(360.0, hi - lo, step))
