@@ -113,6 +113,7 @@ RANGES: dict[str, Range] = {
     "beam_divergence_mrad": Range(0.001, 100.0, "mrad"),
     "beam_exit_mm": Range(0.01, 1000.0, "mm"),
     "imaging_s": Range(0.0, 86_400.0, "s"),
+    "setup_min": Range(0.0, 1440.0, "min", open_lo=True),
     "scan_s": Range(1.0, 86_400.0, "s"),
     # targets and control points (the largest spheres and boards are 450 mm; a control
     # network's point is known to better than a decimetre, not better than 10 µm)

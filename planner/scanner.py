@@ -131,6 +131,10 @@ class Scanner:
         full dome at every station, and is timed so.
     imaging_s : float, default 0
         Time of the station's images (HDR panorama) after the scan [s], when imaging is on.
+    setup_min : float or None
+        Time to set up, level and take down the scanner at a station [min] (the catalogue
+        says where each figure comes from); None: the plan's generic set-up time
+        (:attr:`~planner.pipeline.inputs.requirements.PlanSettings.setup_min`).
     label, source, notes : str
         Display name; where the figures come from; which values are assumptions.
     """
@@ -153,6 +157,7 @@ class Scanner:
     default_preset: str | None = None
     sector_scan: bool = True
     imaging_s: float = 0.0
+    setup_min: float | None = None
     label: str = ""
     source: str = "user-defined"
     notes: str = ""
@@ -178,6 +183,7 @@ class Scanner:
             "levelling_rms_arcsec": "levelling_rms_arcsec",
             "beam_divergence_mrad": "beam_divergence_mrad",
             "beam_exit_mm": "beam_exit_mm",
+            "setup_min": "setup_min",
         }
         for name, rng in [*figures.items(), *optional.items()]:
             if name in figures or getattr(self, name) is not None:

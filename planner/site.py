@@ -953,6 +953,12 @@ class Site:
                     )
 
     # -- views ----------------------------------------------------------------------------
+    def ground_z(self, xy: np.ndarray) -> np.ndarray:
+        """Height of the ground [m] under each point ``xy`` (P, 2) in the site's height
+        system: its terrain's, 0 on flat ground. The one place this rule is written."""
+        xy = np.asarray(xy, dtype=float).reshape(-1, 2)
+        return np.zeros(len(xy)) if self.terrain is None else self.terrain.ground_z(xy)
+
     @property
     def planned(self) -> list[Building]:
         """The buildings whose facades are to be scanned."""

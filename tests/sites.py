@@ -169,3 +169,21 @@ def osm_like_export() -> dict:
         }
     )
     return {"type": "FeatureCollection", "features": feats}
+
+
+def assert_spaced(p) -> None:
+    """No two scanning stations of plan ``p`` closer than its station spacing unless its
+    summary names the pair and says why (the crew's one set-up per spot)."""
+    import numpy as np
+
+    st = p.scan_stations
+    xy = st[["x", "y"]].to_numpy(float)
+    ids = st["station_id"].astype(str).tolist()
+    line = p.spacing_summary() or ""
+    assert line in p.summary()
+    for i, j in zip(*np.triu_indices(len(st), 1), strict=True):
+        d = float(np.hypot(*(xy[i] - xy[j])))
+        if d < p.settings.station_spacing_m:
+            assert f"{ids[i]}–{ids[j]} {d:.1f} m (" in line or f"{ids[j]}–{ids[i]}" in line, (
+                f"{ids[i]} and {ids[j]} stand {d:.1f} m apart, not said: {line}"
+            )

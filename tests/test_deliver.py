@@ -199,7 +199,15 @@ def test_dxf_speaks_the_maps_symbols_at_the_drawing_scale(tmp_path, scale, defau
 def test_stakeout_file_lists_stations_and_targets(lonlat_plan):
     out, _ = lonlat_plan
     so = pd.read_csv(out / "stakeout.csv")
-    assert list(so.columns) == ["point_id", "easting", "northing", "height", "code"]
+    assert list(so.columns) == [
+        "point_id",
+        "easting",
+        "northing",
+        "height",
+        "code",
+        "ground_z",
+        "above_ground_m",
+    ]
     stations = pd.read_csv(out / "stations.csv")
     targets = pd.read_csv(out / "targets.csv")
     assert len(so) == len(stations) + len(targets)

@@ -258,6 +258,31 @@ def test_imaging_off_takes_the_images_out_of_the_field_time(default_plan):
     assert "full dome: the scanner cannot scan a sector" in on.summary()
 
 
+def test_each_scanner_sets_up_in_its_own_time(default_plan):
+    """The set-up per station is the profile's (RTC360 2 min, P50 5 min), a profile without
+    one the generic 5 min, and a time the user gives stands for every scanner."""
+    from dataclasses import replace
+
+    from planner.pipeline.inputs.requirements import GENERIC_SETUP_MIN
+
+    p = default_plan
+    blank = replace(p.settings, setup_min=None)
+    for name, want in [("leica-rtc360", 2.0), ("leica-p50", 5.0), ("leica-hds3000", 5.0)]:
+        sc = load_scanner(name)
+        st = blank.for_scanner(sc, None, 100.0)
+        assert st.setup_min == pytest.approx(want, abs=1e-9)  # min
+        t = field_route(p.site, sc, st, p.stations, p.targets, p.coverage, p.links).table
+        assert (t["setup_min"] == want).all()
+    assert load_scanner("leica-hds3000").setup_min is None
+    assert blank.station_setup_min(load_scanner("leica-hds3000")) == GENERIC_SETUP_MIN
+    mine = replace(blank, setup_min=7.5).for_scanner(load_scanner("leica-rtc360"), None, 100.0)
+    assert mine.setup_min == 7.5  # min: the user's figure stands
+    # every field profile says where its set-up time comes from
+    for name in ("leica-rtc360", "leica-p50", "leica-blk360", "faro-focus-premium"):
+        sc = load_scanner(name)
+        assert sc.setup_min is not None and "Set-up" in sc.notes
+
+
 @pytest.mark.parametrize(("name", "stated_s"), [("leica-rtc360", 120.0), ("leica-blk360", 180.0)])
 def test_a_full_dome_with_images_keeps_within_the_makers_stated_time(name, stated_s):
     """The datasheets state a full-dome scan with its HDR images at the usual setting in
@@ -302,7 +327,9 @@ def test_tape_ties_and_wall_places_in_a_crews_words():
 
     site = Site([Building("A", rect(0, 0, 20, 10), 12.0)])
     (ties,) = corner_ties(site, np.array([[E0 + 23.0, N0 - 4.0]]))
-    assert [t.corner for t in ties] == ["A SE corner", "A NE corner"]
+    # not the NE corner, the second nearest: its tape would cross the first at 25°
+    assert [t.corner for t in ties] == ["A SE corner", "A SW corner"]
+    assert ties[1].distance_m == pytest.approx(np.hypot(23.0, 4.0), abs=1e-9)  # m
     assert ties[0].distance_m == pytest.approx(5.0, abs=1e-9)  # m: 3-4-5 from (20, 0)
     assert ties[0].bearing_deg == pytest.approx(143.13, abs=0.01)  # deg, grid
     assert "5.00 m at 143° from A SE corner" == ties[0].text()

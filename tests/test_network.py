@@ -9,7 +9,7 @@ from types import SimpleNamespace
 import numpy as np
 import pandas as pd
 import pytest
-from sites import l_site
+from sites import assert_spaced, l_site
 from sites import run_cli as _cli
 
 from planner.pipeline.engine.judge import workbench_of
@@ -459,3 +459,9 @@ def test_links_made_only_when_the_tree_search_reaches_them_give_the_same_trees(
         np.testing.assert_array_equal(groups, link_groups(eager.k, every))
         splits.append(int(groups.max()))
     assert max(splits) > 0 and min(splits) == 0  # split into groups, and joined
+
+
+def test_the_blocks_stations_keep_the_crews_spacing(block_plan):
+    """Ten terraced buildings round a courtyard: no two set-ups closer than 5 m unless the
+    summary says why."""
+    assert_spaced(block_plan)

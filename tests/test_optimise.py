@@ -15,6 +15,7 @@ from scipy.optimize import linprog
 import planner.pipeline.optimise.cover as opt
 from planner.errors import PlannerError
 from planner.pipeline.optimise.reduce import reduce_cover, subset_pairs
+from planner.pipeline.optimise.spacing import close_pairs, merge_close
 
 
 def random_cover(n_rows=80, n_cols=120, density=0.05, seed=3, max_demand=1):
@@ -331,3 +332,57 @@ def test_copied_columns_go_first_and_the_optimum_stays():
         if trial % 2:
             assert red.counts["dominated columns"] > 300  # 400 columns, 12 patterns
         assert len(red.forced) + optimum(red.a, red.demand) == optimum(a, d)
+
+
+def _corner_cover():
+    """Two chosen stations 2 m apart (0 and 1), each meeting samples the other misses, a
+    candidate between them (2) meeting all of them, one far off (3) meeting the rest."""
+    a = np.array(
+        [
+            [1, 0, 1, 0],
+            [1, 0, 1, 0],
+            [0, 1, 1, 0],
+            [0, 0, 0, 1],
+        ]
+    )
+    xy = np.array([[0.0, 0.0], [2.0, 0.0], [1.0, 0.5], [40.0, 0.0]])
+    return sp.csr_matrix(a), np.ones(4, dtype=np.int64), xy
+
+
+def test_two_stations_on_one_spot_become_one_that_meets_what_both_did():
+    a, demand, xy = _corner_cover()
+    m = merge_close(a, demand, np.array([0, 1, 3]), xy, spacing_m=5.0)
+    assert m.chosen.tolist() == [2, 3] and m.merged == [(0, 1, 2)] and m.kept == []
+    served = np.asarray(a[:, m.chosen].sum(axis=1)).ravel()
+    assert (served >= demand).all()
+    # one of the pair does where it meets what the other did
+    a2 = a.tolil()
+    a2[2, 0] = 1
+    m = merge_close(sp.csr_matrix(a2), demand, np.array([0, 1, 3]), xy, spacing_m=5.0)
+    assert m.chosen.tolist() == [0, 3]  # the first of the pair kept: the plan changes least
+
+
+def test_a_pair_no_one_set_up_replaces_is_kept_and_returned():
+    a, demand, xy = _corner_cover()
+    a = a.tolil()
+    a[:, 2] = 0  # nothing between them
+    m = merge_close(sp.csr_matrix(a), demand, np.array([0, 1, 3]), xy, spacing_m=5.0)
+    assert m.chosen.tolist() == [0, 1, 3] and m.merged == [] and m.kept == [(0, 1)]
+    # a sample both must see (demand 2) cannot be met by one
+    a, demand, xy = _corner_cover()
+    demand[0] = 2
+    assert merge_close(a, demand, np.array([0, 1, 3]), xy, 5.0).kept == [(0, 1)]
+    # a station placed by hand is never moved: the other goes only if the hand one does
+    assert merge_close(a, np.ones(4, int), np.array([0, 1, 3]), xy, 5.0, keep=[0]).kept == [(0, 1)]
+    # spacing 0 merges nothing; 1.5 m leaves a pair 2 m apart alone
+    three = np.array([0, 1, 3])
+    assert merge_close(a, np.ones(4, int), three, xy, 0.0).chosen.tolist() == [0, 1, 3]
+    assert close_pairs(xy[[0, 1, 3]], 1.5) == []
+    assert close_pairs(xy, 5.0) == [(0, 2), (1, 2), (0, 1)]  # closest first
+
+
+def test_the_default_plan_keeps_the_crews_spacing(default_plan):
+    from sites import assert_spaced
+
+    assert_spaced(default_plan)
+    assert "Station spacing: no two set-ups closer than 5 m" in default_plan.summary()

@@ -12,6 +12,7 @@ import numpy as np
 import pandas as pd
 import pytest
 import shapely
+from sites import assert_spaced
 
 from planner.app.cli import main
 from planner.cityio import read_city_model, site_from_cityjson
@@ -347,3 +348,7 @@ def test_a_district_block_of_a_model_keeps_its_terrain_and_heights(town):
     ctx = context_of(site, sc, Requirements(), PlanSettings(), 60.0)(b.footprint.buffer(5))
     xy = np.array([[690_030.0, 5_336_000.0]])
     assert ctx.station_z(xy)[0] == pytest.approx(site.terrain.ground_z(xy)[0] + 1.5)
+
+
+def test_the_model_plans_stations_keep_the_crews_spacing(model_plan):
+    assert_spaced(model_plan)

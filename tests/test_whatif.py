@@ -156,6 +156,20 @@ def test_reoptimise_keeps_the_locked_station_and_covers_the_rest(default_plan):
     assert others == [f"S{k:02d}" for k in range(1, n + 1) if f"S{k:02d}" != sid]
 
 
+def test_a_station_added_by_hand_on_one_spot_is_said_not_moved(default_plan):
+    """A station added by hand 3 m from a planned one: kept where the surveyor put it, and
+    the summary names the pair closer than the crew's spacing and why it stays."""
+    from sites import assert_spaced
+
+    p = default_plan
+    xy = np.vstack([_xy(p), _xy(p)[0] + [3.0, 0.0]])
+    q = evaluate_stations(p, xy)
+    assert len(q.stations) == len(p.stations) + 1
+    assert_spaced(q)
+    line = q.spacing_summary()
+    assert "1 pair(s) closer than 5 m" in line and "3.0 m (placed by hand)" in line
+
+
 def test_a_plan_without_its_workbench_says_so(default_plan):
 
     with pytest.raises(InputError, match="plan the site again"):

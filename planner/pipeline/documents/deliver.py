@@ -372,18 +372,24 @@ def _kml_geometry(p: Plan, parent: ET.Element, geom: dict, ground_z: float | Non
 
 
 def stakeout_csv(p: Plan) -> str:
-    """Stations and targets to set out: point id, easting, northing, height and code
-    (:data:`STAKEOUT_COLUMNS`), in the site's CRS and height system (a station: its ground
-    mark, the terrain's height there — 0 on flat ground; a target: its centre)."""
+    """Stations and targets to set out (:data:`STAKEOUT_COLUMNS`), in the site's CRS and
+    height system: a station at its ground mark (the terrain's height there, 0 on flat
+    ground) with its instrument height above it, a target at its centre with the ground
+    under it (:meth:`~planner.site.Site.ground_z`) and its height above that."""
+    st = in_id_order(p.stations, "station_id")
+    tg = in_id_order(p.targets, "target_id")
+    ground = p.site.ground_z(tg[["x", "y"]].to_numpy(float))
     rows: list[dict[str, Any]] = [
         {
             "point_id": r.station_id,
             "easting": r.x,
             "northing": r.y,
-            "height": getattr(r, "ground_z", 0.0),
+            "height": r.ground_z,
             "code": "TRV" if r.purpose == "traverse" else "STN",
+            "ground_z": r.ground_z,
+            "above_ground_m": r.instrument_height_m,
         }
-        for r in in_id_order(p.stations, "station_id").itertuples()
+        for r in st.itertuples()
     ]
     rows += [
         {
@@ -394,10 +400,11 @@ def stakeout_csv(p: Plan) -> str:
             "code": {"sphere": "TGT-SPHERE", "flat": "TGT-FLAT", "control": "CTL"}.get(
                 r.type, f"TGT-{str(r.type).upper()}"
             ),
+            "ground_z": g,
+            "above_ground_m": r.z - g,
         }
-        for r in in_id_order(p.targets, "target_id").itertuples()
+        for r, g in zip(tg.itertuples(), ground, strict=True)
     ]
-    df = pd.DataFrame(rows, columns=STAKEOUT_COLUMNS).round(
-        {"easting": 3, "northing": 3, "height": 3}
-    )
-    return to_csv(df)
+    if any(list(row) != STAKEOUT_COLUMNS for row in rows):  # a field left out is a bug
+        raise ValueError(f"a stake-out row's fields differ from {STAKEOUT_COLUMNS}")
+    return to_csv(pd.DataFrame(rows, columns=STAKEOUT_COLUMNS).round(3))  # to the millimetre

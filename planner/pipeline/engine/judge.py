@@ -59,6 +59,7 @@ from planner.pipeline.network.network import Network
 from planner.pipeline.network.registration import build_network
 from planner.pipeline.network.targets import SightCache, TargetCandidates
 from planner.pipeline.optimise.cover import solve_cover
+from planner.pipeline.optimise.spacing import close_pairs
 from planner.registration_error import datum_lean_mm
 from planner.scanner import Scanner
 from planner.site import Site
@@ -572,6 +573,71 @@ def prune(
         else:
             return r
     return r
+
+
+def merge_close_stations(
+    ctx: Context,
+    cand: np.ndarray,
+    seen: SightCache,
+    r: Round,
+    clock: Clock,
+    keep: np.ndarray | None = None,
+) -> Round:
+    """One set-up per spot (:mod:`planner.pipeline.optimise.spacing`) for the network's
+    stations: each pair closer than the crew's spacing, closest first, tried as one station
+    — the first of the pair kept, or the second, or the free candidate nearest their middle
+    the spacing away from every other station — with its network built and judged; taken
+    where the network has fewer stations and no sample is lost. The ``keep`` candidates
+    (locked by hand) are never moved; a pair no trial merges stays (the plan says why)."""
+    spacing = ctx.settings.station_spacing_m
+    fixed = set(np.asarray(keep if keep is not None else [], dtype=np.int64).tolist())
+    tried: set[tuple[int, int]] = set()
+    while r.net is not None and spacing > 0 and not clock.over:
+        st = r.net.stations
+        pairs = [
+            (int(st[i]), int(st[j]))
+            for i, j in close_pairs(cand[st, :2], spacing)
+            if (int(st[i]), int(st[j])) not in tried and not {int(st[i]), int(st[j])} <= fixed
+        ]
+        if not pairs:
+            break
+        a, b = pairs[0]
+        tried.add((a, b))
+        rest = st[(st != a) & (st != b)]
+        datum = r.net.datum_station if r.net.datum_station not in (a, b) else None
+        for one in _merge_options(cand, rest, a, b, spacing, fixed):
+            trial = Round(cover=_swap(r.cover, a, b, one), added=_swap(r.added, a, b, one))
+            trial.net = round_network(ctx, cand, seen, np.append(rest, one), clock, datum)
+            if trial.net is None:
+                continue
+            trial.judged = judge(ctx, cand, trial)
+            if len(trial.net.stations) < len(st) and trial.judged.n_met >= r.judged.n_met:
+                r = trial
+                break
+    return r
+
+
+def _merge_options(
+    cand: np.ndarray, rest: np.ndarray, a: int, b: int, spacing: float, fixed: set[int]
+) -> list[int]:
+    """The candidates tried in place of the pair ``a``, ``b`` (see
+    :func:`merge_close_stations`): a fixed one alone where one is fixed."""
+    if a in fixed or b in fixed:
+        return [a if a in fixed else b]
+    mid = (cand[a, :2] + cand[b, :2]) / 2.0
+    gap = np.hypot(*(cand[:, None, :2] - cand[None, rest, :2]).transpose(2, 0, 1)).min(
+        axis=1, initial=np.inf
+    )
+    free = np.flatnonzero(gap >= spacing)
+    middle = free[np.argmin(np.hypot(*(cand[free, :2] - mid).T))] if len(free) else None
+    return [a, b] + ([int(middle)] if middle is not None and middle not in (a, b) else [])
+
+
+def _swap(idx: np.ndarray, a: int, b: int, one: int) -> np.ndarray:
+    """``idx`` with ``a`` and ``b`` replaced by ``one`` where either was in it."""
+    if not np.isin([a, b], idx).any():
+        return idx
+    return np.union1d(np.setdiff1d(idx, [a, b]), [one])
 
 
 def stations_for(

@@ -28,6 +28,7 @@ from planner.pipeline.engine.judge import (
     estimate_registration,
     free_positions,
     judge,
+    merge_close_stations,
     prune,
     round_network,
     stations_for,
@@ -59,6 +60,7 @@ from planner.pipeline.inputs.requirements import (
 from planner.pipeline.inputs.resolved import expect, resolve
 from planner.pipeline.network.targets import SightCache, target_candidates
 from planner.pipeline.optimise.cover import CoverSolution, solve_cover, spread_views
+from planner.pipeline.optimise.spacing import merge_close
 from planner.scanner import DEFAULT_SCANNER, Scanner, load_scanner
 from planner.site import Site
 from planner.sitecheck import notes_summary
@@ -272,6 +274,7 @@ def choose_stations(
     r, rounds = _registration_rounds(ctx, cand, seen, r, forced, ev, clock, say, cut)
     if st.computes_registration and r.net is not None:
         r = prune(ctx, cand, seen, r, clock, keep=forced)
+        r = merge_close_stations(ctx, cand, seen, r, clock, keep=forced)
     if any(n.cut_short for n in (r.net,) if n is not None):
         cut.append("the search for linking stations")
     n_locked = len(forced) - len(best_effort)
@@ -528,6 +531,14 @@ def _optimise(
             sol.status += f"; {len(spread) - len(sol.chosen)} added for separate views"
             sol.chosen, sol.objective = spread, len(spread)
             sol.gap = (sol.objective - sol.lower_bound) / sol.objective
+    merged = merge_close(ok, demand, sol.chosen, cand[:, :2], st.station_spacing_m, forced)
+    if merged.merged:  # one set-up per spot: never more stations, every demand still met
+        sol.status += (
+            f"; {len(merged.merged)} pair(s) closer than {st.station_spacing_m:g} m merged"
+        )
+        sol.chosen, sol.objective = merged.chosen, len(merged.chosen)
+        if sol.lower_bound is not None:
+            sol.gap = max(0.0, (sol.objective - sol.lower_bound) / max(sol.objective, 1))
     clock.note("optimise", time.perf_counter() - t)
     return sol
 

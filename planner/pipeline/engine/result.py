@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+import numpy as np
 import pandas as pd
 
 from planner.crs import name_of as crs_name
@@ -16,6 +17,7 @@ from planner.pipeline.field.route import FieldRoute
 from planner.pipeline.inputs.requirements import PlanSettings, Requirements
 from planner.pipeline.inputs.schema import FACADE_TABLE_COLUMNS, STATION_PURPOSES, ZONE_COLUMNS
 from planner.pipeline.network.network import Network
+from planner.pipeline.optimise.spacing import close_pairs
 from planner.scanner import Scanner
 from planner.site import Site
 
@@ -202,6 +204,41 @@ class Plan:
             vertical = "the network leans with the datum scan's levelling"
         return f"6 parameters per scan (shifts in x, y, z and three rotations; {vertical})"
 
+    def spacing_summary(self) -> str | None:
+        """The crew's station spacing in words (:mod:`planner.pipeline.optimise.spacing`):
+        the closest pair where none stands closer, else every closer pair and why it stays;
+        None for fewer than two scanning stations."""
+        st, spacing = self.scan_stations, self.settings.station_spacing_m
+        if len(st) < 2:
+            return None
+        xy = st[["x", "y"]].to_numpy(float)
+        ids, purpose = st["station_id"].astype(str).tolist(), st["purpose"].astype(str).tolist()
+        if spacing <= 0:
+            return "Station spacing: not kept (station_spacing_m = 0)."
+        close = close_pairs(xy, spacing)
+        if not close:
+            d = np.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1))
+            np.fill_diagonal(d, np.inf)
+            i, j = np.unravel_index(np.argmin(d), d.shape)
+            return (
+                f"Station spacing: no two set-ups closer than {spacing:g} m (the closest: "
+                f"{ids[i]}–{ids[j]}, {d[i, j]:.1f} m)."
+            )
+        words = []
+        for i, j in close:
+            d = float(np.hypot(*(xy[i] - xy[j])))
+            why = (
+                "placed by hand"
+                if "hand" in (purpose[i], purpose[j])
+                else "one set-up in their place meets fewer samples or breaks the network"
+            )
+            words.append(f"{ids[i]}–{ids[j]} {d:.1f} m ({why})")
+        return (
+            f"Station spacing: {len(close)} pair(s) closer than {spacing:g} m, kept: "
+            + "; ".join(words)
+            + "."
+        )
+
     def summary(self) -> str:
         """A few lines a surveyor reads first."""
         req, sc, s = self.requirements, self.scanner, self.solver
@@ -257,6 +294,8 @@ class Plan:
             + (" (scanner ⊕ registration)" if self.settings.computes_registration else "")
             + f": {int(cov['meets'].sum())} of {len(cov)}",
         ]
+        if (spaced := self.spacing_summary()) is not None:
+            lines.insert(4, spaced)
         if self.site.is_3d:  # heights and the scene, said where they are more than footprints
             lines.insert(3, f"Heights: {self.site.height_system}; {self.scene_description()}")
         if self.route is not None:

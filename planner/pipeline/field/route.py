@@ -159,8 +159,8 @@ class FieldRoute:
             f"{int(t['targets_to_set'].str.len().gt(0).sum())} stop(s) placing "
             f"{_count_ids(t['targets_to_set'])} targets ({_hm(t['targets_min'].sum())}) and "
             f"collecting {_count_ids(t['targets_to_collect'])} ({_hm(t['collect_min'].sum())}), "
-            "set-up "
-            f"{_hm(t['setup_min'].sum())}, scanning {_hm(t['scan_min'].sum())}{dome} at "
+            f"set-up {_hm(t['setup_min'].sum())} ({t['setup_min'].iloc[0]:g} min a station), "
+            f"scanning {_hm(t['scan_min'].sum())}{dome} at "
             f"{setting}step {t['step_mm_at_10m'].iloc[0]:g} mm at 10 m, {rate}"
             + (f", imaging {_hm(imaging)}" if imaging > 0 else "")
             + f". Visiting order: {order}."
@@ -546,9 +546,7 @@ def _route_rows(
     walk_m, notes, first_visit, last_visit, standing = walk
     xy = stations[["x", "y"]].to_numpy(float)
     ids = stations["station_id"].astype(str).tolist()
-    purposes = (
-        stations["purpose"].astype(str).tolist() if "purpose" in stations else [""] * len(ids)
-    )
+    purposes = stations.get("purpose", pd.Series([""] * len(ids))).astype(str).tolist()
     step = resolve_step_mm(scanner, settings.step_mm_at_10m)
     lo, hi = scanner.vertical_fov_deg
     dome = float(scan_points(360.0, hi - lo, step))
@@ -558,6 +556,7 @@ def _route_rows(
     spacing = coverage.groupby("station_id")["spacing_mm"].max()
     rows, session, used, elapsed = [], 1, 0.0, 0.0
     limit = settings.session_h * 60.0
+    setup_min = settings.station_setup_min(scanner)
     for n, k in enumerate(order):
         sid = ids[k]
         start, width = _scan_sector(sectors.get(sid), scanner.sector_scan)
@@ -571,7 +570,7 @@ def _route_rows(
         walk_min = walk_m[n] / settings.walk_speed_m_s / 60.0
         t_min = settings.target_setup_min * len(to_set)
         c_min = settings.target_collect_min * len(to_collect)
-        total = walk_min + t_min + settings.setup_min + scan_min + image_min + c_min
+        total = walk_min + t_min + setup_min + scan_min + image_min + c_min
         if used > 0 and used + total > limit:
             session, used = session + 1, 0.0
         used += total
@@ -591,7 +590,7 @@ def _route_rows(
                 "targets_to_collect": " ".join(to_collect),
                 "collect_min": round(c_min, 1),
                 "targets_standing": int(standing[n]),
-                "setup_min": settings.setup_min,
+                "setup_min": setup_min,
                 "sector_start_deg": round(start, 1),
                 "sector_deg": round(width, 1),
                 "preset": route.preset,

@@ -108,11 +108,9 @@ class Scene:
 
     # -- the ground ---------------------------------------------------------------------------
     def ground_z(self, xy: np.ndarray) -> np.ndarray:
-        """Height of the ground [m] under each point ``xy`` (P, 2) (0 on flat ground)."""
-        xy = np.asarray(xy, dtype=float).reshape(-1, 2)
-        if self.site.terrain is None:
-            return np.zeros(len(xy))
-        return self.site.terrain.ground_z(xy)
+        """Height of the ground [m] under each point ``xy`` (P, 2) (0 on flat ground:
+        :meth:`~planner.site.Site.ground_z`)."""
+        return self.site.ground_z(xy)
 
     def above_ground(self, xy: np.ndarray, height_m: float) -> np.ndarray:
         """Heights [m] ``height_m`` above the ground at ``xy`` (P, 2): where an instrument or

@@ -35,6 +35,8 @@ if TYPE_CHECKING:
 
 __all__ = [
     "CHECKS",
+    "DEFAULT_STATION_SPACING_M",
+    "GENERIC_SETUP_MIN",
     "Check",
     "FieldSpec",
     "PlanSettings",
@@ -411,6 +413,12 @@ REGISTRATION_PROCESSING = {
 
 #: Side of a district block [m] (:mod:`planner.pipeline.district.blocks`): a few city blocks, a
 #: task of seconds to a minute.
+#: Least distance between two set-ups [m]: from practice, two set-ups closer than about
+#: five metres are to a crew one spot scanned twice (the second a tripod's few paces away).
+DEFAULT_STATION_SPACING_M = 5.0
+#: Set-up time per station [min] of a scanner whose profile gives none: a tripod set up,
+#: levelled and taken down, as the field-time examples of this package have assumed.
+GENERIC_SETUP_MIN = 5.0
 DEFAULT_BLOCK_M = 250.0
 #: A block holding more planned buildings than this is split into quadrants (again while
 #: needed). Measured on the synthetic town (benchmarks/RESULTS.md, district section): a
@@ -466,6 +474,11 @@ class PlanSettings:
     ----------------------------------------
     grid_m : float, default 2
         Spacing of candidate stations [m], >= 0.25.
+    station_spacing_m : float, default 5
+        The least distance between two set-ups a crew keeps [m]
+        (:data:`DEFAULT_STATION_SPACING_M`): chosen stations closer are merged into one
+        where one set-up meets what both do (:mod:`planner.pipeline.optimise.spacing`),
+        else kept and the plan says why; 0 merges nothing.
     clearance_m : float, default 1
         Free space kept around buildings and obstacles for the tripod [m].
     sample_spacing_m, sample_height_step_m : float, default 2
@@ -535,10 +548,14 @@ class PlanSettings:
 
     Field work and documents
     ------------------------
-    setup_min, target_setup_min, target_collect_min : float, default 5, 2 and 1
-        Field time to set up a station, to place a target and to collect it once the last
-        station that uses it is scanned [min] (targets leap-frog along the visiting order
-        within the inventory's counts).
+    setup_min : float or None
+        Field time to set up, level and take down the scanner at a station [min]; None:
+        the scanner profile's figure (:attr:`Scanner.setup_min`, its source in the
+        catalogue), else :data:`GENERIC_SETUP_MIN`. Decided once, by :meth:`for_scanner`.
+    target_setup_min, target_collect_min : float, default 2 and 1
+        Field time to place a target and to collect it once the last station that uses it
+        is scanned [min] (targets leap-frog along the visiting order within the
+        inventory's counts).
     walk_speed_m_s : float, default 0.8
         Walking speed between stations, carrying the kit [m/s].
     session_h : float, default 4
@@ -577,6 +594,17 @@ class PlanSettings:
         open_lo=False,
         step=0.5,
         help="candidate grid spacing",
+        group="sampling",
+        hi=1000.0,
+    )
+    station_spacing_m: float = _spec(
+        DEFAULT_STATION_SPACING_M,
+        "m",
+        "station spacing",
+        open_lo=False,
+        step=0.5,
+        help="least distance between two set-ups: chosen stations closer are merged where one "
+        "set-up meets what both do, else the plan says why (0: never merged)",
         group="sampling",
         hi=1000.0,
     )
@@ -800,12 +828,14 @@ class PlanSettings:
         open_lo=False,
     )
     # -- field work and documents (SETTING_GROUPS['field'])
-    setup_min: float = _spec(
-        5.0,
+    setup_min: float | None = _spec(
+        None,
         "min",
         "set-up per station",
         step=1.0,
-        help="field time to set up, level and take down the scanner at a station",
+        optional=True,
+        help="field time to set up, level and take down the scanner at a station (empty: "
+        f"the scanner profile's figure, else {GENERIC_SETUP_MIN:g} min)",
         group="field",
         hi=1440.0,
         lo=0.01,
@@ -973,6 +1003,10 @@ class PlanSettings:
         step·D/10 m at the search radius ``reach`` [m] stays within ``max_spacing_mm`` (the
         strictest spacing required anywhere), or without one the scanner's usual setting. A
         scanner without presets plans at its profile's step."""
+        if self.setup_min is None:
+            return replace(self, setup_min=self.station_setup_min(scanner)).for_scanner(
+                scanner, max_spacing_mm, reach
+            )
         if self.step_mm_at_10m is not None:
             same = [
                 p for p in scanner.presets if abs(p.step_mm_at_10m - self.step_mm_at_10m) < 0.05
@@ -987,6 +1021,13 @@ class PlanSettings:
         if chosen is None:
             return self
         return replace(self, preset=chosen.name, step_mm_at_10m=chosen.step_mm_at_10m)
+
+    def station_setup_min(self, scanner: Scanner) -> float:
+        """The set-up time per station [min]: the setting, else the scanner profile's
+        figure, else :data:`GENERIC_SETUP_MIN`. The one place this default is decided."""
+        if self.setup_min is not None:
+            return self.setup_min
+        return scanner.setup_min if scanner.setup_min is not None else GENERIC_SETUP_MIN
 
     def registration_for(self, scanner: Scanner) -> str:
         """How the scans are registered with ``scanner``: the setting, or (``auto``) the

@@ -198,8 +198,21 @@ ROUTE_COLUMNS = [
 #: how many stand at once at most (leap-frogged along the visiting order), and where.
 KIT_COLUMNS = ["item", "type", "size_mm", "owned", "used", "most_at_once", "at_station"]
 
-#: The stake-out file a controller imports: point id, easting, northing, height, code.
-STAKEOUT_COLUMNS = ["point_id", "easting", "northing", "height", "code"]
+#: The stake-out file a controller imports: point id, easting, northing, height, code (a
+#: controller's PENZD order), then the ground's height under the point and the point's
+#: height above it. Heights in the site's height system: a station's ``height`` is its
+#: ground mark's (``ground_z``, the stations' column), ``above_ground_m`` its instrument
+#: height (the stations' ``instrument_height_m``: the scanner's centre at their sum); a
+#: target's ``height`` is its centre's, ``above_ground_m`` that above the ground under it.
+STAKEOUT_COLUMNS = [
+    "point_id",
+    "easting",
+    "northing",
+    "height",
+    "code",
+    "ground_z",
+    "above_ground_m",
+]
 
 
 #: The columns of :func:`meeting_table`.
