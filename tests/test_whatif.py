@@ -145,15 +145,59 @@ def test_reoptimise_keeps_the_locked_station_and_covers_the_rest(default_plan):
     assert hand[["x", "y"]].to_numpy()[0] == pytest.approx(pin, abs=1e-6)  # m
     assert q.meets_all
     assert "locked by hand" in q.summary()
-    # a station locked where it stands keeps its id; the others are numbered in visiting
-    # order around it
+    # ids stay: a station locked where it stands keeps its id, so does every station and
+    # target where one of p's stood, and the others take numbers p never gave
     sid = p.stations["station_id"].iloc[0]
     r = reoptimise(p, _xy(p)[:1])
     locked = r.stations[r.stations["station_id"] == sid]
     assert locked[["x", "y"]].to_numpy()[0] == pytest.approx(_xy(p)[0], abs=1e-6)  # m
-    others = [s for s in r.route.table["station_id"] if s != sid]
-    n = len(r.stations)
-    assert others == [f"S{k:02d}" for k in range(1, n + 1) if f"S{k:02d}" != sid]
+    _ids_stay(p, r)
+
+
+def _number(ident: str) -> int:
+    return int(ident[1:])
+
+
+def _ids_stay(p, q) -> None:
+    """Every station and target of ``q`` where one of ``p`` stood has its id; every other
+    has a number above all of ``p``'s."""
+    ours = q.targets[q.targets["type"] != "control"]
+    for old_t, new_t, key, cols in (
+        (p.stations, q.stations, "station_id", ["x", "y"]),
+        (p.targets, ours, "target_id", ["x", "y", "z"]),
+    ):
+        old = {
+            tuple(np.round(r, 3)): i
+            for r, i in zip(old_t[cols].to_numpy(), old_t[key], strict=True)
+        }
+        top = max(_number(i) for i in old_t[key] if i[1:].isdigit())
+        for r, i in zip(new_t[cols].to_numpy(), new_t[key], strict=True):
+            was = old.get(tuple(np.round(r, 3)))
+            if was is not None:
+                assert i == was, f"{i} stands where {was} stood"
+            else:
+                assert _number(i) > top, f"{i} is new but its number was given before"
+
+
+def test_ids_stay_through_locks_hand_stations_and_re_optimising(default_plan):
+    """Delete one station and add one by hand, lock two, re-optimise: the locked and the
+    hand-placed keep their ids and places, nothing of the plan is renumbered, a deleted id
+    is never given again."""
+    p = default_plan
+    xy = _xy(p)
+    gone = p.stations["station_id"].iloc[-1]
+    added = xy[0] + [0.0, 9.0]
+    q = evaluate_stations(p, np.vstack([xy[:-1], added]))  # one deleted, one added
+    _ids_stay(p, q)
+    assert gone not in set(q.stations["station_id"])
+    hand_id = q.stations[q.stations["purpose"] == "hand"]["station_id"].iloc[0]
+    assert _number(hand_id) > max(_number(s) for s in p.stations["station_id"])
+    r = reoptimise(q, xy[[1, 2]])
+    _ids_stay(q, r)
+    kept = r.stations.set_index("station_id")
+    for sid, pos in [(p.stations["station_id"].iloc[1], xy[1]), (hand_id, added)]:
+        assert kept.loc[sid, ["x", "y"]].to_numpy(float) == pytest.approx(pos, abs=1e-6)  # m
+    assert gone not in set(r.stations["station_id"])  # a deleted id is never given again
 
 
 def test_a_station_added_by_hand_on_one_spot_is_said_not_moved(default_plan):
@@ -306,3 +350,30 @@ def test_one_id_everywhere_in_the_files_and_targets_numbered_as_they_are_set_up(
     assert flat == [f"T{k:02d}" for k in range(1, len(flat) + 1)]
     targets = pd.read_csv(io.StringIO(files["targets.csv"]))
     assert targets["target_id"].tolist()[: len(flat)] == flat
+
+
+def test_a_re_plan_keeps_the_edits_that_can_still_stand_and_says_the_others(default_plan):
+    """The site planned again after a no-go area was drawn over a locked station: the other
+    locked station keeps its id and place, the blocked one is left out and said (its id and
+    what is in the way), and the new stations take numbers never given."""
+    from dataclasses import replace
+
+    import shapely
+
+    from planner.pipeline.engine.planning import plan
+    from planner.pipeline.engine.whatif import user_edits
+    from planner.site import Area
+
+    p = default_plan
+    xy, ids = _xy(p), list(p.stations["station_id"])
+    given, keep = user_edits(p, xy[:2])
+    assert len(keep) == 2 and given.last_station >= max(_number(s) for s in ids)
+    road = Area("road", shapely.Point(xy[0]).buffer(3.0))
+    site = replace(p.site, no_go=[*p.site.no_go, road])
+    q = plan(site, p.scanner, p.requirements, p.settings, locked=keep, given=given)
+    st = q.stations.set_index("station_id")
+    assert st.loc[ids[1], ["x", "y"]].to_numpy(float) == pytest.approx(xy[1], abs=1e-6)  # m
+    assert ids[0] not in st.index or np.hypot(*(st.loc[ids[0], ["x", "y"]] - xy[0])) < 1e-3
+    said = [m for m in q.messages if m.startswith("Not kept from the plan before")]
+    assert said == [f"Not kept from the plan before: {ids[0]} (in the no-go area road)."]
+    _ids_stay(p, q)

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import copy
 import math
-import re
 import time
 import weakref
 from dataclasses import dataclass, field, replace
@@ -22,6 +21,7 @@ import scipy.sparse as sp
 import shapely
 
 from planner.errors import InputError
+from planner.pipeline.engine.ids import GivenIds, id_number
 from planner.pipeline.engine.result import Plan, SolverReport
 from planner.pipeline.engine.tables import (
     class_family,
@@ -109,9 +109,14 @@ class Workbench:
     setup_s: float
     evaluation: CandidateEvaluation | None = None  # the last full evaluation of the grid
     diagnosis: Diagnosis | None = None  # what no candidate of that evaluation meets, and why
-    #: the highest station number given so far: a station added by hand takes the next one
-    #: (a deleted station's id is not given again)
+    #: the highest station and target numbers given so far: a station or target new to an
+    #: edited plan takes the next one (a deleted one's id is not given again)
     last_station: int = 0
+    last_target: int = 0
+
+    def given(self, p: Plan) -> GivenIds:
+        """The ids plan ``p`` (made from this workbench) gave, for a plan made from it."""
+        return GivenIds.of(p.stations, p.targets, self.last_station, self.last_target)
 
     @property
     def pool(self) -> np.ndarray:
@@ -154,12 +159,12 @@ def free_positions(
         k = bad[0]
         raise InputError(
             f"the {what} at E {xy[k, 0]:.2f}, N {xy[k, 1]:.2f} stands "
-            f"{_what_blocks(wb.site, xy[k], clear)}; move it onto free ground"
+            f"{what_blocks(wb.site, xy[k], clear)}; move it onto free ground"
         )
     return xy
 
 
-def _what_blocks(site: Site, xy: np.ndarray, clearance_m: float) -> str:
+def what_blocks(site: Site, xy: np.ndarray, clearance_m: float) -> str:
     """Why a station cannot stand at ``xy``, naming what is in the way."""
     point = shapely.Point(xy)
     names = {b.id: "building" for b in site.buildings} | {o.id: "obstacle" for o in site.obstacles}
@@ -178,11 +183,6 @@ def _what_blocks(site: Site, xy: np.ndarray, clearance_m: float) -> str:
     )
 
 
-def _station_number(station_id: str) -> int | None:
-    m = re.fullmatch(r"S(\d+)", station_id)
-    return int(m.group(1)) if m else None
-
-
 def name_stations(n: int, visit: list[int], kept: dict[int, str], after: int | None) -> list[str]:
     """The ids of ``n`` stations (positions 0 … n-1) visited in the order ``visit``: a
     station in ``kept`` (position → id) keeps its id; the others are numbered in visiting
@@ -198,7 +198,7 @@ def name_stations(n: int, visit: list[int], kept: dict[int, str], after: int | N
     >>> name_stations(3, [0, 1, 2], {0: "S10", 1: "S11"}, after=9)
     ['S10', 'S11', 'S12']
     """
-    taken = {_station_number(s) for s in kept.values()}
+    taken = {id_number(s, "S") for s in kept.values()}
     ids: list[str | None] = [kept.get(k) for k in range(n)]
     number = after or 0
     for k in visit:
@@ -221,16 +221,18 @@ def assemble(
     hand: np.ndarray | None = None,
     best_effort: np.ndarray | None = None,
     kept: dict[int, tuple[str, str]] | None = None,
-    edited: bool = False,
+    given: GivenIds | None = None,
 ) -> Plan:
     """The plan of the stations of round ``r`` (pool indices; those in ``hand`` placed by
     hand, those in ``best_effort`` for samples no position meets): coverage, targets, links,
     route, messages (the accuracy model's line, those given, then the network's and the
     unmet samples'; the list given is not changed).
 
-    Station ids follow the visiting order (:func:`name_stations`); a station in ``kept``
-    (pool index → its id and purpose) keeps both, and where the plan is ``edited`` by hand
-    a new station takes the next number never given (:attr:`Workbench.last_station`)."""
+    Station and target ids follow the visiting order (:func:`name_stations`); a station in
+    ``kept`` (pool index → its id and purpose) keeps both. A plan made from an earlier one
+    (``given``, its ids: :mod:`planner.pipeline.engine.ids`) keeps the earlier ids of the
+    stations and targets that stand where they stood, and a new one takes a number never
+    given (:attr:`Workbench.last_station`, :attr:`Workbench.last_target`)."""
     say = progress or (lambda _f, _m: None)
     ctx, st, ev, cand = wb.ctx, wb.settings, wb.evaluation, wb.pool
     net, assignment = r.net, r.judged.assignment
@@ -253,7 +255,7 @@ def assemble(
     t = time.perf_counter()
     route = field_route(wb.site, wb.scanner, st, stations, targets, coverage, links)
     stations, coverage, targets, links, route, ids = _in_visiting_order(
-        wb, station_idx, ids, kept, edited, stations, coverage, targets, links, route
+        wb, station_idx, ids, kept, given, stations, coverage, targets, links, route
     )
     clock.note("route", time.perf_counter() - t)
     messages += _plan_messages(ctx, net, coverage, links, ids, tc, st)
@@ -364,7 +366,7 @@ def _in_visiting_order(
     station_idx: np.ndarray,
     ids: list[str],
     kept: dict[int, tuple[str, str]],
-    edited: bool,
+    given: GivenIds | None,
     stations: pd.DataFrame,
     coverage: pd.DataFrame,
     targets: pd.DataFrame,
@@ -372,28 +374,38 @@ def _in_visiting_order(
     route: FieldRoute,
 ) -> tuple[pd.DataFrame, pd.DataFrame, pd.DataFrame, pd.DataFrame, FieldRoute, list[str]]:
     """Stations and targets named in the visiting order (:func:`name_stations`,
-    :func:`~planner.pipeline.engine.tables.target_numbers`) in every table and the route;
-    the workbench's highest station number raised (never lowered: no id given twice).
-    ``ids``: the stations' ids until now, by their place in ``station_idx``."""
+    :func:`~planner.pipeline.engine.tables.target_numbers`) in every table and the route,
+    those ``kept`` or standing where the ``given`` ids' stood keeping theirs; the
+    workbench's highest numbers raised (never lowered: no id given twice). ``ids``: the
+    stations' ids until now, by their place in ``station_idx``."""
     at = {sid: k for k, sid in enumerate(ids)}
     visit = [at[sid] for sid in route.table["station_id"] if sid in at]
-    names = name_stations(
-        len(ids),
-        visit,
-        {k: kept[i][0] for k, i in enumerate(station_idx.tolist()) if i in kept},
-        wb.last_station if edited else None,
-    )
+    named = {k: kept[i][0] for k, i in enumerate(station_idx.tolist()) if i in kept}
+    target_kept: dict[str, str] = {}
+    if given is not None:
+        taken = set(named.values())
+        for k, sid in enumerate(given.stations_at(wb.pool[station_idx])):
+            if sid is not None and k not in named and sid not in taken:
+                named[k] = sid
+                taken.add(sid)
+        ours = targets[targets["type"] != "control"]
+        places = given.targets_at(ours[["x", "y", "z"]].to_numpy(float))
+        target_kept = {t: g for t, g in zip(ours["target_id"], places, strict=True) if g}
+    last = (wb.last_station, wb.last_target)
+    if given is not None:
+        last = (max(last[0], given.last_station), max(last[1], given.last_target))
+    names = name_stations(len(ids), visit, named, last[0] if given is not None else None)
     mapping = dict(zip(ids, names, strict=True))
     stations, coverage, targets, links = rename_stations(
         mapping, stations, coverage, targets, links
     )
     ids = names
     place = {mapping[sid]: n for n, sid in enumerate(route.table["station_id"]) if sid in mapping}
-    renumbered = target_numbers(targets, place)
+    renumbered = target_numbers(targets, place, target_kept, last[1] if given is not None else 0)
     targets, links = rename_targets(renumbered, targets, links)
     route = route.renamed(mapping, renumbered)
-    numbers = [n for n in map(_station_number, ids) if n is not None]
-    wb.last_station = max([wb.last_station, *numbers])  # (never lowered: no id given twice)
+    wb.last_station = max([last[0], *(id_number(s, "S") or 0 for s in ids)])
+    wb.last_target = max([last[1], *(id_number(t, "T") or 0 for t in renumbered.values())])
     return stations, coverage, targets, links, route, ids
 
 

@@ -20,6 +20,7 @@ import shapely
 
 from planner.citymodel import LEVEL_ROOF_DEG, level_roof
 from planner.errors import InputError
+from planner.pipeline.engine.ids import GivenIds
 from planner.pipeline.engine.judge import (
     Round,
     Workbench,
@@ -32,6 +33,7 @@ from planner.pipeline.engine.judge import (
     prune,
     round_network,
     stations_for,
+    what_blocks,
 )
 from planner.pipeline.engine.result import Plan, SolverReport
 from planner.pipeline.engine.tables import budget_message
@@ -43,7 +45,7 @@ from planner.pipeline.evaluation.evaluate import (
     Registration,
     evaluate_candidates,
 )
-from planner.pipeline.geometry.candidates import candidate_grid
+from planner.pipeline.geometry.candidates import blocked_ground, candidate_grid
 from planner.pipeline.geometry.facades import (
     build_facades,
     check_sample_count,
@@ -101,13 +103,16 @@ def plan(
     progress: Progress | None = None,
     locked: np.ndarray | None = None,
     deadline: float | None = None,
+    given: GivenIds | None = None,
 ) -> Plan:
     """Plan the fewest stations meeting ``requirements`` around the planned buildings.
 
     Defaults: the built-in default site, the scanner of Voroshilov & Karachentsev's example
     (:data:`~planner.scanner.DEFAULT_SCANNER`), ``Requirements()`` and ``PlanSettings()``.
     ``locked`` — ``(k, 2)`` station positions [m] the surveyor fixed: they are kept, and the
-    fewest others chosen around them. Infeasible requirements do not raise: the samples no
+    fewest others chosen around them. ``given`` — the ids of an earlier plan of the site
+    (:meth:`GivenIds.of`): a station or target where one of its stood keeps that id, a new
+    one takes a number it never gave. Infeasible requirements do not raise: the samples no
     candidate can satisfy come back with ``meets`` False and the reason (see
     :attr:`Plan.unmet`). The plan keeps what it was made from
     (:func:`~planner.pipeline.engine.judge.workbench_of`) for what-if edits
@@ -137,7 +142,7 @@ def plan(
         st,
         progress or (lambda _f, _m: None),
     )
-    return choose_stations(wb, progress, locked=locked, clock=clock)
+    return choose_stations(wb, progress, locked=locked, clock=clock, given=given)
 
 
 def _prepare(
@@ -218,13 +223,14 @@ def choose_stations(
     locked: np.ndarray | None = None,
     locked_ids: list[str | None] | None = None,
     clock: Clock | None = None,
-    edited: bool = False,
+    given: GivenIds | None = None,
 ) -> Plan:
     """The fewest stations (with ``locked`` positions kept, each under its id in
     ``locked_ids`` where one is given) and their registration network, for what ``wb``
     holds, within the time budget of ``clock`` (default: the settings' from now).
-    ``edited``: the plan's ids are out (printed, scanned): a new station takes a number
-    never given (:attr:`~planner.pipeline.engine.judge.Workbench.last_station`)."""
+    ``given``: the ids of the plan this one is made from (printed, scanned): stations and
+    targets where that plan's stood keep their ids, a new one takes a number never given
+    (:mod:`planner.pipeline.engine.ids`)."""
     ctx, st = wb.ctx, wb.settings
     fac = wb.facades
     say = progress or (lambda _f, _m: None)
@@ -233,11 +239,7 @@ def choose_stations(
     # the last round's judgement and the plan's tables come after the rounds whatever the
     # clock says: the rounds end in time for them
     whole, clock = clock, clock.sooner(FINISH_S_PER_SAMPLE * len(fac.z))
-    forced = np.empty(0, dtype=np.int64)
-    if locked is not None and len(np.asarray(locked).reshape(-1, 2)):
-        forced = wb.add_positions(free_positions(wb, locked, "locked station"))
-    named = zip(forced, locked_ids, strict=True) if locked_ids is not None else []
-    kept = {int(i): (sid, "hand") for i, sid in named if sid}  # pool index → its id
+    forced, kept, not_kept = _locked(wb, locked, locked_ids, given)
     cand, seen = wb.pool, wb.seen
     # stations and registration chosen together (docs/science.md): the fewest stations by
     # the scanner's error, their network, every sample judged on the total; while the
@@ -279,6 +281,8 @@ def choose_stations(
         cut.append("the search for linking stations")
     n_locked = len(forced) - len(best_effort)
     messages = _choice_messages(wb, r, sol, cut, n_locked, len(best_effort), relaxed_by, rounds)
+    if not_kept:
+        messages.append(f"Not kept from the plan before: {'; '.join(not_kept)}.")
     solver = _solver_report(sol, rounds, cut, fac.party_wall, ev.evaluated)
     hand = np.setdiff1d(forced, best_effort)
     return assemble(
@@ -291,8 +295,46 @@ def choose_stations(
         hand=hand,
         best_effort=best_effort,
         kept=kept,
-        edited=edited,
+        given=given,
     )
+
+
+def _locked(
+    wb: Workbench,
+    locked: np.ndarray | None,
+    locked_ids: list[str | None] | None,
+    given: GivenIds | None,
+) -> tuple[np.ndarray, dict[int, tuple[str, str]], list[str]]:
+    """The pool indices of the ``locked`` positions (refused where one cannot stand, but in
+    a re-plan from an earlier plan, ``given``: there left out and said), the ids they keep
+    (pool index → id and purpose "hand") and what was left out, in words."""
+    forced = np.empty(0, dtype=np.int64)
+    not_kept: list[str] = []
+    if locked is not None and given is not None:  # a re-plan: the edits that can still stand
+        locked, locked_ids, not_kept = _still_standing(wb, locked, locked_ids, given)
+    if locked is not None and len(np.asarray(locked).reshape(-1, 2)):
+        forced = wb.add_positions(free_positions(wb, locked, "locked station"))
+    named = zip(forced, locked_ids, strict=True) if locked_ids is not None else []
+    return forced, {int(i): (sid, "hand") for i, sid in named if sid}, not_kept
+
+
+def _still_standing(
+    wb: Workbench, locked: np.ndarray, locked_ids: list[str | None] | None, given: GivenIds
+) -> tuple[np.ndarray, list[str | None] | None, list[str]]:
+    """Of the ``locked`` positions kept from an earlier plan (``given`` its ids), those a
+    station can still stand at (the site or the clearance may have changed: a zone, a
+    passage, a no-go area drawn since), their ids, and each left out with why ("S07 in the
+    no-go area street")."""
+    xy = np.asarray(locked, dtype=float).reshape(-1, 2)
+    ids = list(locked_ids) if locked_ids is not None else given.stations_at(xy)
+    blocked = blocked_ground(wb.site, wb.settings.clearance_m)
+    bad = shapely.contains_xy(blocked, xy[:, 0], xy[:, 1])
+    said = [
+        f"{ids[k] or f'the station at E {xy[k, 0]:.1f}, N {xy[k, 1]:.1f}'} "
+        f"({what_blocks(wb.site, xy[k], wb.settings.clearance_m)})"
+        for k in np.flatnonzero(bad)
+    ]
+    return xy[~bad], [i for i, b in zip(ids, bad, strict=True) if not b], said
 
 
 def _registration_rounds(

@@ -221,10 +221,18 @@ def coverage_table(
 REASON_DATA = "reason_data"
 
 
-def target_numbers(targets: pd.DataFrame, visit: dict[str, int]) -> dict[str, str]:
+def target_numbers(
+    targets: pd.DataFrame,
+    visit: dict[str, int],
+    kept: dict[str, str] | None = None,
+    after: int = 0,
+) -> dict[str, str]:
     """New ids for the targets (old id → new): T01, T02 … in the order the crew first needs
     them (the visit, ``visit``: station id → its place in the route, of the first station
-    that scans each), a control point keeping its own id."""
+    that scans each), a control point keeping its own id. A plan made from an earlier one:
+    the targets in ``kept`` (old id → the id the earlier plan gave it) keep that, and the
+    others are numbered from ``after`` + 1 (no id given twice)."""
+    kept = kept or {}
     first = [
         min((visit.get(s, len(visit)) for s in seen), default=len(visit))
         for seen in targets["station_ids"]
@@ -232,10 +240,11 @@ def target_numbers(targets: pd.DataFrame, visit: dict[str, int]) -> dict[str, st
     ours = [k for k, t in enumerate(targets["type"]) if t != "control"]
     ours.sort(key=lambda k: first[k])  # (stable: the network's order among equals)
     ids = targets["target_id"].astype(str).tolist()
-    taken = {ids[k] for k in range(len(ids)) if k not in set(ours)}  # control points' own
-    names = (f"T{n:02d}" for n in itertools.count(1))
+    mine = set(ours)
+    taken = {ids[k] for k in range(len(ids)) if k not in mine} | set(kept.values())
+    names = (f"T{n:02d}" for n in itertools.count(after + 1))
     free = (t for t in names if t not in taken)
-    return {ids[k]: next(free) for k in ours}
+    return {ids[k]: kept.get(ids[k]) or next(free) for k in ours}
 
 
 def rename_targets(

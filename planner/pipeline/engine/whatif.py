@@ -23,6 +23,7 @@ from dataclasses import replace
 import numpy as np
 
 from planner.errors import InputError
+from planner.pipeline.engine.ids import GivenIds
 from planner.pipeline.engine.judge import (
     Round,
     Workbench,
@@ -38,7 +39,7 @@ from planner.pipeline.evaluation.evaluate import Progress
 from planner.pipeline.inputs.clock import Clock
 from planner.pipeline.network.targets import TargetCandidates
 
-__all__ = ["edit_targets", "evaluate_stations", "reoptimise"]
+__all__ = ["edit_targets", "evaluate_stations", "reoptimise", "user_edits"]
 
 
 def _workbench(p: Plan) -> Workbench:
@@ -169,7 +170,8 @@ def _judged(
         gap=None if bound is None or n == 0 else max(0.0, (n - bound) / n),
     )
     messages = [*wb.messages, message]
-    return assemble(wb, r, solver, messages, clock, hand=hand, kept=kept, edited=True)
+    given = wb.given(p)
+    return assemble(wb, r, solver, messages, clock, hand=hand, kept=kept, given=given)
 
 
 def _target_index(wb: Workbench, p: Plan, target_id: str) -> int:
@@ -286,9 +288,25 @@ def edit_candidates(
 
 
 def reoptimise(p: Plan, locked_xy: np.ndarray, progress: Progress | None = None) -> Plan:
-    """A new plan keeping the stations at ``locked_xy`` (``(k, 2)`` [m]) and choosing the
-    fewest others around them, with the registration rounds of a full plan (the settings'
-    time budget)."""
+    """A new plan keeping the stations at ``locked_xy`` (``(k, 2)`` [m]) and those placed by
+    hand (:func:`user_edits`), and choosing the fewest others around them, with the
+    registration rounds of a full plan (the settings' time budget). Ids stay
+    (:mod:`planner.pipeline.engine.ids`): the kept stations keep theirs, and so does every
+    station or target the new plan has where ``p`` had one; a new one takes a number never
+    given."""
     wb = _workbench(p)
-    locked_xy = np.asarray(locked_xy, dtype=float).reshape(-1, 2)
-    return choose_stations(wb, progress, locked=locked_xy, locked_ids=_ids_at(p, locked_xy))
+    given, keep = user_edits(p, locked_xy)
+    return choose_stations(wb, progress, locked=keep, locked_ids=_ids_at(p, keep), given=given)
+
+
+def user_edits(p: Plan, locked_xy: np.ndarray | None = None) -> tuple[GivenIds, np.ndarray]:
+    """What a plan made from ``p`` keeps of the surveyor's work: the ids ``p`` gave (with the
+    numbers its workbench ever gave) and the positions ``(k, 2)`` [m] to keep — the stations
+    locked (``locked_xy``) and those placed by hand (purpose "hand"), each once."""
+    wb = workbench_of(p)
+    given = wb.given(p) if wb is not None else GivenIds.of(p.stations, p.targets)
+    scans = p.scan_stations
+    hand = scans[scans["purpose"] == "hand"][["x", "y"]].to_numpy(float)
+    locked = np.empty((0, 2)) if locked_xy is None else np.asarray(locked_xy, float)
+    keep = np.vstack([locked.reshape(-1, 2), hand])
+    return given, keep[np.sort(np.unique(np.round(keep, 3), axis=0, return_index=True)[1])]

@@ -26,7 +26,8 @@ import pandas as pd
 import shapely
 
 from planner.errors import InputError
-from planner.pipeline.engine.judge import _station_number, copy_plan, free_positions
+from planner.pipeline.engine.ids import id_number
+from planner.pipeline.engine.judge import copy_plan, free_positions
 from planner.pipeline.engine.planning import choose_stations
 from planner.pipeline.engine.result import Plan
 from planner.pipeline.engine.whatif import (
@@ -155,7 +156,6 @@ def replan(
     planned_targets = [_target_index(wb, p, t) for t in p.targets["target_id"]]
     if targets_placed is not None and len(targets_placed):
         _targets_as_placed(p, targets_placed)
-    wb.last_station = max(wb.last_station, _highest(p))
     # the scans made hold the targets that stood: the plan's (or those placed by hand where
     # the file moved them) and the control points. Only those can tie them — to each other
     # and to the extra stations (whose crew sets targets on the same marks again)
@@ -169,7 +169,8 @@ def replan(
     left = set(as_scanned.unmet["sample_id"])
     new = as_scanned
     if left:  # the fewest others around the scans made, kept only where they meet more
-        again = choose_stations(wb, progress, locked=xy, locked_ids=ids, edited=True)
+        given = wb.given(p)
+        again = choose_stations(wb, progress, locked=xy, locked_ids=ids, given=given)
         if again.scanned["meets"].sum() > before[0]:
             new = again
     for q in {id(new): new, id(as_scanned): as_scanned}.values():
@@ -310,11 +311,6 @@ def _one_setup_each(xy: np.ndarray, ids: list[str]) -> None:
         )
 
 
-def _highest(p: Plan) -> int:
-    numbers = [_station_number(str(i)) for i in p.stations["station_id"]]
-    return max((n for n in numbers if n is not None), default=0)
-
-
 def _targets_as_placed(p: Plan, placed: pd.DataFrame) -> None:
     """The workbench's target candidates as the crew placed them (the plan's targets not
     listed ruled out, those moved offered where they stood); the plan is judged after."""
@@ -345,7 +341,7 @@ def _table(new: Plan, scanned: pd.DataFrame, planned: pd.DataFrame, left: set) -
         rows.append((sid, "", "skipped", at["x"], at["y"], np.nan, 0, ""))
     known = set(scanned["station_id"].astype(str)) | set(planned.index)
     scans = new.scan_stations
-    number = [_station_number(str(i)) or 0 for i in scans["station_id"]]
+    number = [id_number(str(i), "S") or 0 for i in scans["station_id"]]
     for r in scans.iloc[np.argsort(number, kind="stable")].itertuples():
         if r.station_id not in known:
             reason = _reason(new, r, left)
