@@ -198,12 +198,15 @@ class TargetItem:
             object.__setattr__(self, "count", int(self.count))
 
 
-#: Sossa's practice: standard spheres 200 mm (sometimes 400 mm), cylindrical site objects at
-#: most ~150 mm, flat surfaces of 70 mm side.
+#: A typical kit, sized by Sossa's practice (standard spheres 200 mm, sometimes 400 mm;
+#: cylindrical site objects at most ~150 mm; flat surfaces of 70 mm side): six 200 mm
+#: spheres and two 400 mm ones on their stands (an assumption: crews own a handful, and
+#: the plan says what to bring where a job needs more standing at once), checkerboards
+#: printed as needed and cylinders found on site (no count).
 DEFAULT_INVENTORY: tuple[TargetItem, ...] = (
     TargetItem("flat-70", "flat", 70.0),
-    TargetItem("sphere-200", "sphere", 200.0),
-    TargetItem("sphere-400", "sphere", 400.0),
+    TargetItem("sphere-200", "sphere", 200.0, 6),
+    TargetItem("sphere-400", "sphere", 400.0, 2),
     TargetItem("cylinder-150", "cylinder", 150.0),
 )
 

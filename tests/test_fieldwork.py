@@ -360,9 +360,36 @@ def test_a_kit_short_of_targets_is_said_with_what_to_bring():
     where = kit.loc["sphere-200", "at_station"]
     assert t.loc[where, "targets_standing"] >= peak
     assert (
-        f"Kit: {peak} sphere-200 stand at once at {where}, the kit has 3: bring {peak - 3} more"
+        f"Kit: {peak} sphere-200 stand at once (at {where}), the kit has 3: bring {peak - 3} more"
         in p.summary()
     )
+    # leap-frogged (each collected once its links' two scans are made) never more stand
+    assert (p.route.kit["leapfrog_at_once"] <= p.route.kit["most_at_once"]).all()
+
+
+def test_the_default_kit_is_six_spheres_and_the_plan_keeps_within_it_or_says_what_to_bring(
+    default_plan,
+):
+    """The default inventory is a kit a crew owns (six 200 mm spheres, two 400 mm, printed
+    checkerboards): every item the plan uses stands within its count, or the summary and the
+    booklet's kit list say how many more to bring."""
+    from planner.app.booklet import kit_list
+    from planner.pipeline.field.route import kit_words
+    from planner.targets import DEFAULT_INVENTORY
+
+    counts = {i.name: i.count for i in DEFAULT_INVENTORY}
+    assert counts["sphere-200"] == 6 and counts["sphere-400"] == 2 and counts["flat-70"] is None
+    p = default_plan
+    for k in p.route.kit.itertuples():
+        words = kit_words(k)
+        assert words in kit_list(p)
+        if k.owned and k.most_at_once > k.owned:
+            assert f"bring {k.most_at_once - k.owned} more" in words
+            assert f"Kit: {words}." in p.summary()
+        elif k.owned:
+            assert words.endswith(f"the kit has {k.owned}") and "bring" not in words
+        else:
+            assert words.endswith("no count given")
 
 
 def test_a_station_page_says_where_everything_goes(default_plan):
@@ -400,4 +427,35 @@ def test_a_station_page_says_where_everything_goes(default_plan):
     seen = p.targets[p.targets["station_ids"].map(lambda s: sid in s)]
     assert seen["x"].between(x0, x1).all() and seen["y"].between(y0, y1).all()  # all on it
     overview = " ".join(x.get_text() for x in bk._overview(p).findobj(Text))
-    assert "Kit to pack:" in overview and "standing at once" in overview
+    assert "Kit to pack:" in overview and "stand at once" in overview
+
+
+def test_the_visiting_order_keeps_the_targets_standing_within_the_kit():
+    """Two targets, one sphere owned: visited S1 S2 S3 S4 both stand at S2 and S3; the
+    order S1 S3 S2 S4 (no longer to walk) has one standing at a time. A kit with no count
+    leaves the shortest order alone."""
+    from planner.pipeline.field.route import _kit_order
+    from planner.targets import TargetItem
+
+    ids = ["S1", "S2", "S3", "S4"]
+    d = np.ones((4, 4)) - np.eye(4)  # m: every walk the same
+    targets = pd.DataFrame(
+        {
+            "target_id": ["T1", "T2"],
+            "type": ["sphere", "sphere"],
+            "item": ["s", "s"],
+            "station_ids": [["S1", "S3"], ["S2", "S4"]],
+        }
+    )
+    one = (TargetItem("s", "sphere", 200.0, 1),)
+    order = _kit_order(np.arange(4), d, targets, ids, one, None)
+    assert [ids[k] for k in order] == ["S1", "S3", "S2", "S4"]
+    many = (TargetItem("s", "sphere", 200.0),)
+    assert _kit_order(np.arange(4), d, targets, ids, many, None).tolist() == [0, 1, 2, 3]
+    # scans registered on site: S3 links only to S4, so it may not come before S4 is scanned
+    linked = {"S1": {"S2"}, "S2": {"S1", "S4"}, "S4": {"S2", "S3"}, "S3": {"S4"}}
+    order = _kit_order(np.array([0, 1, 3, 2]), d, targets, ids, one, linked)
+    seen = {ids[order[0]]}
+    for k in order[1:]:
+        assert linked[ids[k]] & seen
+        seen.add(ids[k])

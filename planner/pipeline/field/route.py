@@ -46,8 +46,9 @@ from planner.pipeline.inputs.schema import KIT_COLUMNS, ROUTE_COLUMNS, id_key
 from planner.scanner import Preset, Scanner
 from planner.site import Site
 from planner.spacing import resolve_step_mm
+from planner.targets import TargetItem
 
-__all__ = ["FieldRoute", "field_route", "view_sectors", "walk_paths"]
+__all__ = ["FieldRoute", "field_route", "kit_words", "view_sectors", "walk_paths"]
 
 #: Distance kept from buildings and obstacles when walking [m] (at most half the clearance).
 WALK_CLEARANCE_M = 0.4
@@ -100,11 +101,7 @@ class FieldRoute:
             )
         for k in self.kit.itertuples():
             if k.owned and k.most_at_once > k.owned:
-                out.append(
-                    f"Kit: {k.most_at_once} {k.item} stand at once at {k.at_station}, the kit "
-                    f"has {k.owned}: bring {k.most_at_once - k.owned} more, or plan with fewer "
-                    "stations between a target's first and last scan."
-                )
+                out.append(f"Kit: {kit_words(k)}.")
         walks = t[t["walk_note"] != ""] if len(t) else t
         if len(walks):
             out.append(
@@ -425,7 +422,10 @@ def field_route(
         linked.setdefault(b, set()).add(a)
     # scans registered cloud to cloud are registered on site as they come
     route.on_site = "kind" in links and bool((links["kind"] == "cloud").any())
-    g, order, pred = _visiting_order(site, settings, xy, ids, linked, route.on_site)
+    g, order, pred, d = _visiting_order(site, settings, xy, ids, linked, route.on_site)
+    order = _kit_order(
+        order, d, targets, ids, settings.inventory, linked if route.on_site else None
+    )
     legs, walk_m, notes = _walks(site, g, xy, order, pred)
     visit = {ids[k]: n for n, k in enumerate(order)}
     first_visit, last_visit, life = _target_visits(targets, visit)
@@ -435,7 +435,7 @@ def field_route(
     )
     route.table = pd.DataFrame(rows, columns=ROUTE_COLUMNS)
     route.legs = legs
-    route.kit = _kit(settings, targets, life, [ids[k] for k in order])
+    route.kit = _kit(settings, targets, life, links, visit, [ids[k] for k in order])
     return route
 
 
@@ -446,23 +446,114 @@ def _visiting_order(
     ids: list[str],
     linked: dict[str, set[str]],
     on_site: bool,
-) -> tuple[Any, list[int], np.ndarray | None]:
+) -> tuple[Any, list[int], np.ndarray | None, np.ndarray]:
     """The walking graph, the visiting order (an open path, shortest walk; scans registered
-    on site as they come each after one it links to) and, where the walks between all
-    stations were found (a site of at most :data:`EXACT_MAX_STATIONS`), their predecessors."""
+    on site as they come each after one it links to), where the walks between all stations
+    were found (a site of at most :data:`EXACT_MAX_STATIONS`) their predecessors, and the
+    distances [m] the order was chosen on (walked, else straight)."""
     g = _walk_graph(site, xy, settings.clearance_m)
     exact = len(xy) <= EXACT_MAX_STATIONS
-    w, pred = None, None
+    pred = None
     if exact:
         w, pred = _shortest(g, np.arange(len(xy)))
-        order = _open_path_order(w[:, : len(xy)])
+        d = w[:, : len(xy)]
     else:  # a district: ordered on straight lines, each leg then walked
-        order = _open_path_order(np.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1)))
+        d = np.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1))
+    order = _open_path_order(d)
     at = {sid: k for k, sid in enumerate(ids)}
     neighbours = [{at[o] for o in linked.get(i, ()) if o in at} for i in ids]
     if on_site:
-        order = _registered_order(order, neighbours, w[:, : len(xy)] if exact else None)
-    return g, order, pred
+        order = _registered_order(order, neighbours, d if exact else None)
+    return g, order, pred, d
+
+
+#: A visiting order that keeps more of the job within the kit may walk this share more than
+#: the shortest found.
+KIT_WALK_SLACK = 0.25
+#: The kit-saving order is looked for up to this many stations (each pass tries every move
+#: of one station, n² orders).
+KIT_ORDER_MAX_STATIONS = 60
+
+
+def _kit_order(
+    order: np.ndarray,
+    d: np.ndarray,
+    targets: pd.DataFrame,
+    ids: list[str],
+    inventory: tuple[TargetItem, ...],
+    linked: dict[str, set[str]] | None,
+) -> np.ndarray:
+    """``order`` changed, where that helps, so that fewer targets stand at once than the
+    crew owns of each item (``inventory``' counts; an item without one is not limited):
+    one station at a time moved elsewhere in the order while that lowers the targets
+    standing beyond the kit, the walk (on ``d`` [m]) kept within :data:`KIT_WALK_SLACK` of
+    the shortest found and, where scans are registered on site (``linked``), every station
+    after one it links to. A target stands from the first station that sees it to the last
+    (every scan that sees it observes it in the registration's adjustment)."""
+    owned = {i.name: i.count for i in inventory if i.count}
+    n = len(order)
+    if not owned or n < 3 or n > KIT_ORDER_MAX_STATIONS or not np.isfinite(d).all():
+        return order
+    at = {sid: k for k, sid in enumerate(ids)}
+    limited = [
+        (str(item), [at[s] for s in sids if s in at])
+        for item, sids, kind in zip(
+            targets["item"], targets["station_ids"], targets["type"], strict=True
+        )
+        if kind != "control" and item in owned
+    ]
+    limited = [(item, ks) for item, ks in limited if ks]
+    if not limited:
+        return order
+    items = sorted({item for item, _ in limited})
+    which = np.array([items.index(item) for item, _ in limited])
+    flat = np.concatenate([ks for _, ks in limited])
+    starts = np.cumsum([0] + [len(ks) for _, ks in limited[:-1]])
+    cap = np.array([owned[i] for i in items])
+    links = None if linked is None else [{at[o] for o in linked.get(i, ()) if o in at} for i in ids]
+
+    def cost(o: np.ndarray) -> tuple[int, float]:
+        pos = np.empty(n, dtype=np.int64)
+        pos[o] = np.arange(n)
+        p = pos[flat]
+        lo, hi = np.minimum.reduceat(p, starts), np.maximum.reduceat(p, starts)
+        count = np.zeros((len(items), n + 1), dtype=np.int64)
+        np.add.at(count, (which, lo), 1)
+        np.add.at(count, (which, hi + 1), -1)
+        peak = np.cumsum(count, axis=1)[:, :n].max(axis=1)
+        return int(np.maximum(peak - cap, 0).sum()), float(d[o[:-1], o[1:]].sum())
+
+    best, (excess, walk) = np.asarray(order), cost(np.asarray(order))
+    limit = walk * (1.0 + KIT_WALK_SLACK)
+    alone = _unregistered(best, links) if links is not None else 0
+    improved = excess > 0
+    while improved:
+        improved = False
+        for i in range(n):
+            for j in range(n):
+                if i == j:
+                    continue
+                o = np.insert(np.delete(best, i), j, best[i])
+                if links is not None and _unregistered(o, links) > alone:
+                    continue
+                e, wk = cost(o)
+                if wk <= limit and (e, wk) < (excess, walk):
+                    best, excess, walk, improved = o, e, wk, True
+                    break
+            if improved or excess == 0:
+                break
+    return best
+
+
+def _unregistered(order: np.ndarray, links: list[set[int]]) -> int:
+    """How many stations of ``order`` but the first come after none they link to (the
+    first of a group of linked stations among them)."""
+    seen = {int(order[0])}
+    alone = 0
+    for k in order[1:]:
+        alone += bool(links[k]) and not links[k] & seen
+        seen.add(int(k))
+    return alone
 
 
 def _walks(
@@ -625,16 +716,27 @@ def _kit(
     settings: PlanSettings,
     targets: pd.DataFrame,
     life: dict[str, tuple[int, int]],
+    links: pd.DataFrame,
+    visit: dict[str, int],
     visited: list[str],
 ) -> pd.DataFrame:
-    """Per inventory item: owned, used by the plan, most standing at once and where."""
+    """Per inventory item (:data:`KIT_COLUMNS`): owned, used by the plan, most standing at
+    once and where (each target over its ``life``: the stops of the stations that see it),
+    and most standing at once leap-frogged (each over its links' stations' stops)."""
+    users: dict[str, set[int]] = {}
+    by_target = links["target_ids"] if "target_ids" in links else [""] * len(links)
+    for a, b, tids in zip(links["station_a"], links["station_b"], by_target, strict=True):
+        for t in str(tids).split(";"):
+            users.setdefault(t, set()).update(visit[s] for s in (a, b) if s in visit)
     items = {i.name: i for i in settings.inventory}
     rows = []
     for item, group in targets[targets["type"] != "control"].groupby("item", sort=True):
-        spans = [life[t] for t in group["target_id"].astype(str) if t in life]
-        standing = _standing(spans, len(visited))
+        tids = group["target_id"].astype(str)
+        standing = _standing([life[t] for t in tids if t in life], len(visited))
+        leap = _standing(
+            [(min(users[t]), max(users[t])) for t in tids if users.get(t)], len(visited)
+        )
         peak = int(max(standing, default=0))
-        at = visited[int(np.argmax(standing))] if peak else ""
         inv = items.get(str(item))
         rows.append(
             {
@@ -644,7 +746,34 @@ def _kit(
                 "owned": inv.count if inv is not None and inv.count else 0,
                 "used": len(group),
                 "most_at_once": peak,
-                "at_station": at,
+                "at_station": visited[int(np.argmax(standing))] if peak else "",
+                "leapfrog_at_once": int(max(leap, default=0)),
             }
         )
     return pd.DataFrame(rows, columns=KIT_COLUMNS)
+
+
+def kit_words(k: Any) -> str:
+    """One kit row (:data:`KIT_COLUMNS`, as a tuple or Series) and what it asks of the crew
+    in words: within the kit, or exactly what to bring — to keep every scan's observation of
+    the targets (the registration error as planned), or leap-frogging each target once its
+    links' scans are made (fewer observations than the plan's registration error counts)."""
+    head = f"{k.most_at_once} {k.item} stand at once (at {k.at_station})"
+    if not k.owned:
+        return f"{head}; no count given"
+    if k.most_at_once <= k.owned:
+        return f"{head}, the kit has {k.owned}"
+    leap = (
+        f"collected once its links' two scans are made, {k.leapfrog_at_once} would stand at "
+        "once"
+        + (
+            f" (bring {k.leapfrog_at_once - k.owned} more)"
+            if k.leapfrog_at_once > k.owned
+            else " (within the kit)"
+        )
+        + ", with fewer observations than the registration error counts"
+    )
+    bring = f"{head}, the kit has {k.owned}: bring {k.most_at_once - k.owned} more"
+    if k.leapfrog_at_once >= k.most_at_once:
+        return bring
+    return f"{bring} to keep every scan's sight of them (as planned); {leap}"

@@ -194,9 +194,20 @@ ROUTE_COLUMNS = [
 ]
 
 
-#: The kit: per item of the inventory, how many the crew has, how many the plan uses and
-#: how many stand at once at most (leap-frogged along the visiting order), and where.
-KIT_COLUMNS = ["item", "type", "size_mm", "owned", "used", "most_at_once", "at_station"]
+#: The kit: per item of the inventory, how many the crew has (0: no count given), how many
+#: the plan uses, how many stand at once at most and where — each from the first station
+#: that sees it to the last, every scan that sees it observing it — and how many would, each
+#: collected once its links' two scans are made (leap-frogged along the visiting order).
+KIT_COLUMNS = [
+    "item",
+    "type",
+    "size_mm",
+    "owned",
+    "used",
+    "most_at_once",
+    "at_station",
+    "leapfrog_at_once",
+]
 
 #: The stake-out file a controller imports: point id, easting, northing, height, code (a
 #: controller's PENZD order), then the ground's height under the point and the point's
