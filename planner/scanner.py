@@ -13,7 +13,7 @@ import os
 import re
 import tomllib
 from collections.abc import Mapping
-from dataclasses import asdict, dataclass, field, fields
+from dataclasses import asdict, dataclass, field, fields, replace
 from functools import cache
 from importlib import resources
 from pathlib import Path
@@ -249,6 +249,17 @@ class Scanner:
     def is_levelled(self) -> bool:
         """Whether a compensator levels the scanner (a ``levelling_rms_arcsec`` is given)."""
         return self.levelling_rms_arcsec is not None
+
+    def with_levelling(self, levelling_rms_arcsec: float) -> Scanner:
+        """This scanner levelled to ``levelling_rms_arcsec`` [″] per axis (a compensator's
+        figure the user gives: from a test of their own instrument, or a scanner whose
+        profile publishes none), said in its notes."""
+        return replace(
+            self,
+            levelling_rms_arcsec=levelling_rms_arcsec,
+            notes=f"{self.notes} Levelling {levelling_rms_arcsec:g}″ per axis given by the "
+            "user.".strip(),
+        )
 
     def preset(self, name: str | None) -> Preset | None:
         """The preset called ``name`` (None: the default preset, if any).

@@ -953,6 +953,18 @@ class Site:
                     )
 
     # -- views ----------------------------------------------------------------------------
+    @property
+    def assumed_heights(self) -> set[str]:
+        """The ids of the buildings whose height the file did not give and the site assumed
+        (a default height, or one for a building far from the planned ones): no plan builds
+        on such a height (a station on that roof)."""
+        return {
+            i
+            for n in self.notes
+            if n.kind == "no-height" and n.action in ("default", "far")
+            for i in n.ids
+        }
+
     def ground_z(self, xy: np.ndarray) -> np.ndarray:
         """Height of the ground [m] under each point ``xy`` (P, 2) in the site's height
         system: its terrain's, 0 on flat ground. The one place this rule is written."""

@@ -216,3 +216,24 @@ def test_the_registration_processing_is_chosen_on_the_command_line(tmp_path):
     assert "It assumes each scan registered on its own to the one before it" in summary
     code, _, err = run("plan", *PAPER_5MM, "--registration-processing", "chain", "--out", "x")
     assert code == 2 and "adjustment" in err and "pairwise" in err
+
+
+def test_the_scanners_levelling_is_given_on_the_command_line(tmp_path):
+    """``--levelling-rms-arcsec 3``: the default scanner (no compensator) planned levelled,
+    each scan registered with 4 parameters; a negative figure is refused (exit 2) with its
+    range and unit."""
+    code, _, err = run(
+        "plan",
+        *PAPER_5MM,
+        "--levelling-rms-arcsec",
+        "3",
+        "--out",
+        str(tmp_path / "p"),
+        "-q",
+        *FAST,
+    )
+    assert code in (0, 1), err
+    summary = (tmp_path / "p" / "summary.txt").read_text()
+    assert "Registration model: 4 parameters per scan" in summary
+    code, _, err = run("plan", "--levelling-rms-arcsec", "-1", "--out", str(tmp_path / "x"))
+    assert code == 2 and "arc-seconds" in err and not (tmp_path / "x").exists()

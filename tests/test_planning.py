@@ -176,6 +176,26 @@ def test_too_small_courtyard_is_reported_unmet_with_the_reason():
     assert unmet["facade_id"].isin(court_ids).all()  # the outer walls are met
 
 
+def test_no_station_is_proposed_on_a_roof_whose_height_was_made_up():
+    """The same wall above the annex's roof, the annex's 7 m now a height the site assumed
+    (the file gave none): the plan does not build on it — no elevated station on that roof
+    is proposed, and the reason says the height is assumed and asks for it."""
+    from dataclasses import replace
+
+    from planner.pipeline.engine.explain import suggestions
+    from planner.siteio import default_site
+    from planner.sitecheck import SiteNote
+
+    site = default_site()
+    site = replace(site, notes=[*site.notes, SiteNote("no-height", ("annex",), "default", "7 m")])
+    assert site.assumed_heights == {"annex"}
+    p = plan(site, "trimble-x7", settings=PlanSettings(registration_error=False))
+    unmet = p.unmet
+    assert set(unmet["facade_id"]) == {"main-f09"} and (unmet["elevated_station"] == "").all()
+    assert unmet["reason"].str.contains("over 'annex', whose height is assumed").all()
+    assert not any("roof of annex" in h for h in suggestions(p))
+
+
 def test_a_wall_above_a_lower_neighbours_roof_needs_an_elevated_station():
     """The default site's east wall above the annex's 7 m roof (12 m deep): the samples
     at 8.4 m are seen from the ground only over the roof's edge, steeply; with the X7, each

@@ -144,6 +144,15 @@ def _plan_arguments(pl: argparse.ArgumentParser) -> None:
         "that see three of them are tied to the site network (the datum)",
     )
     group["registration"].add_argument(
+        "--levelling-rms-arcsec",
+        metavar="ARCSEC",
+        type=argument("levelling_rms_arcsec"),
+        default=None,
+        help="the scanner's levelling (its compensator's accuracy per axis) [″], where the "
+        "profile gives none or your own test gives better: the heights far from the datum "
+        "scan lean by it",
+    )
+    group["registration"].add_argument(
         "--inventory",
         metavar="FILE",
         default=None,

@@ -204,6 +204,8 @@ def plan_inputs(args: argparse.Namespace):
         options["inventory"] = parse_inventory(_read_text(args.inventory, "inventory file"))
     req, settings = requirements_and_settings(options)
     scanner = load_scanner(args.scanner or DEFAULT_SCANNER)
+    if args.levelling_rms_arcsec is not None:
+        scanner = scanner.with_levelling(args.levelling_rms_arcsec)
     limits = SiteLimits(
         **{f.name: getattr(args, f.name) for f in fields(SiteLimits) if getattr(args, f.name)}
     )

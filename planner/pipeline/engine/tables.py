@@ -71,19 +71,20 @@ def _reason(
 ) -> str:
     """Why no station meets ``sample``, in words: each check the best candidate fails; where
     the ground cannot reach it, that it needs an elevated station (on ``roof``'s roof)."""
+    assumed = roof in ctx.site.assumed_heights
+    where = (
+        f"over {roof!r}, whose height is assumed (the file gives none): give its height to "
+        "know whether a station on the ground, or on that roof, can see it"
+        if assumed
+        else f"over the roof of {roof!r}: it needs an elevated station (e.g. on that roof)"
+    )
     if n_view == 0 and roof:
-        return (
-            f"no ground station sees it over the roof of {roof!r}: it needs an elevated "
-            "station (e.g. on that roof)"
-        )
+        return f"no ground station sees it {where}"
     if n_view == 0:
         return "no ground station sees it: it needs an elevated station (a lift or a mast)"
     why = _unmet_checks(ctx, sample, best, n_meet)
     if roof:
-        return (
-            f"{why} from the ground, seen only over the roof of {roof!r}: it needs an "
-            "elevated station (e.g. on that roof)"
-        )
+        return f"{why} from the ground, seen only {where}"
     return why
 
 
@@ -134,6 +135,8 @@ def _diagnosed_reasons(
             continue
         n_view, best, roof = found
         reason[i] = _reason(ctx, int(i), n_view, best, int(n_ok_cand[i]), roof)
+        if roof in ctx.site.assumed_heights:  # no station proposed on a height made up
+            continue
         if n_view == 0 or roof:
             elevated[i] = f"roof of {roof}" if roof else "above the ground"
     return elevated
@@ -366,8 +369,8 @@ def _short_reason(
 
 #: What keeps heights true far from the datum of a scanner without a compensator.
 DATUM_LEVELLING_FIX = (
-    "level that scan better (a scanner with a compensator: its levelling figure in the "
-    "profile, levelling_rms_arcsec) or tie the heights to control points (--control)"
+    "level that scan better (a scanner with a compensator: its levelling figure, "
+    "--levelling-rms-arcsec) or tie the heights to control points (--control)"
 )
 
 
