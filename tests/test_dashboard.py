@@ -4,6 +4,7 @@ showing exactly the plan ``plan`` makes, and a strict ``milp`` method."""
 from __future__ import annotations
 
 import json
+import time
 
 import numpy as np
 import pytest
@@ -348,3 +349,105 @@ def test_an_input_changed_while_a_plan_is_made_marks_it_out_of_date():
     done(worker)
     assert "cancelled" in ui.status.value and ui.plan is not None
     assert "Out of date" in ui.stale.value
+
+
+def test_ids_stay_through_a_hand_station_locks_re_optimising_and_a_re_plan_with_a_zone():
+    """The crew's ids stay: a station added by hand takes a number never given, two locked
+    stations and the hand one keep their ids and places through "Re-optimise around the
+    locked" and through a full re-plan after a zone is added (a passage or a setting alike:
+    the same site planned again), and no id is given to two places."""
+    from planner.app.dashboard import StationPlanner
+
+    ui = StationPlanner()
+    ui.run()
+    m = ui.map
+    xy = np.column_stack([m.stations.x, m.stations.y])
+    ids = list(m._ids)
+    added = xy[0] + [0.0, 9.0]  # m: free ground beside the first station
+    ui.evaluate_by_hand(np.vstack([xy, added]), [*ids, None])
+    by_place = dict(
+        zip(
+            map(tuple, np.round(ui.plan.stations[["x", "y"]].to_numpy(), 3)),
+            ui.plan.stations["station_id"],
+            strict=True,
+        )
+    )
+    hand = by_place[tuple(np.round(added, 3))]
+    assert int(hand[1:]) > max(int(s[1:]) for s in ids)  # a number never given
+    for k in (1, 2):  # lock two of the planned stations
+        m.locked[list(m._ids).index(ids[k])] = True
+    m._reoptimise_locked()
+    while ui._worker is not None:  # re-optimised in the background
+        time.sleep(0.05)
+    keep = {ids[1]: xy[1], ids[2]: xy[2], hand: added}
+
+    def kept_in(p):
+        st = p.stations.set_index("station_id")
+        for sid, pos in keep.items():
+            assert st.loc[sid, ["x", "y"]].to_numpy(float) == pytest.approx(pos, abs=1e-6)  # m
+        assert p.stations["station_id"].is_unique and p.targets["target_id"].is_unique
+
+    kept_in(ui.plan)
+    ui.zone_editor.facade.value = "main-f02"
+    ui.zone_editor.add_zone()
+    assert "Out of date" in ui.stale.value
+    ui.run()  # the same site planned again, with the zone
+    kept_in(ui.plan)
+    assert not ui.stale.value
+
+
+def test_the_crews_kit_is_remembered_for_the_next_session():
+    """The kit planned with is the next dashboard's (kept beside the user's profiles); a
+    kit file that no longer reads is ignored for the default kit."""
+    from planner.app.dashboard import StationPlanner
+    from planner.app.widgets import inventory_text, kit_file
+
+    ui = StationPlanner()
+    assert ui.inventory.value == inventory_text() or kit_file().is_file()
+    mine = "sphere-145, sphere, 145, 8\nflat-70, flat, 70"
+    ui.inventory.value = mine
+    ui._inputs()
+    assert StationPlanner().inventory.value == mine
+    kit_file().write_text("not, an, inventory, line, at all")
+    assert StationPlanner().inventory.value == inventory_text()
+    kit_file().unlink()
+
+
+def test_control_points_and_the_scanners_levelling_are_given_in_the_dashboard():
+    """The dashboard's control-point file and levelling figure reach the plan: the points
+    as the site's control (a bad file said, not used), the figure as the scanner's
+    compensator; the datum's levelling hint names these controls, not command-line flags."""
+    import datetime
+
+    from planner.app.dashboard import StationPlanner
+    from planner.app.wording import for_dashboard
+    from planner.pipeline.engine.tables import DATUM_LEVELLING_FIX
+
+    ui = StationPlanner()
+    text = "id,x,y,z\nC1,690995,5334990,0.2\nC2,691060,5334990,0.3\nC3,691030,5335060,0.1\n"
+
+    def choose(data: bytes) -> None:
+        ui.control_upload.value = (
+            {
+                "name": "control.csv",
+                "type": "",
+                "size": len(data),
+                "content": data,
+                "last_modified": datetime.datetime(2026, 1, 1),
+            },
+        )
+
+    choose(b"id,x,y\nC1,1,2\n")
+    assert "missing z" in ui.control_name.value
+    assert ui._inputs()[0].control == []
+    choose(text.encode())
+    assert "3 control point(s)" in ui.control_name.value
+    site, sc, _req, _st = ui._inputs()
+    assert [c.id for c in site.control] == ["C1", "C2", "C3"]
+    assert site.control[1].xyz[2] == pytest.approx(0.3)  # m
+    assert not sc.is_levelled  # the default scanner has no compensator
+    ui.levelling.value = 3.0
+    sc = ui._inputs()[1]
+    assert sc.is_levelled and sc.levelling_rms_arcsec == 3.0  # ″
+    words = for_dashboard(DATUM_LEVELLING_FIX)
+    assert "Scanner levelling" in words and "Control CSV" in words and "--" not in words

@@ -10,6 +10,7 @@ fetched from outside the machine."""
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import socket
 import subprocess
@@ -189,6 +190,111 @@ def test_no_label_is_cut_off(page, width):
     page.screenshot(path=str(ARTIFACTS / f"dashboard-map-{width}px.png"))
     page.set_viewport_size({"width": 1500, "height": 1100})
     assert cut == [], f"cut off at {width} px: {cut}"
+
+
+def _ticks(page) -> tuple[list[tuple[float, float]], list[tuple[float, float]]]:
+    """The map's grid ticks as (value [m], position [px]) for the eastings and the
+    northings, the positions from the ticks' own transforms (no text measured)."""
+    ticks = page.evaluate(
+        """() => [...document.querySelectorAll('.planner-map g.tick')].map(t => {
+            const m = /translate\\(([-0-9.e]+)[ ,]+([-0-9.e]+)\\)/.exec(
+                t.getAttribute('transform'));
+            return {v: parseFloat(t.textContent.replace(/[^0-9.-]/g, '')),
+                    x: m ? parseFloat(m[1]) : NaN, y: m ? parseFloat(m[2]) : NaN};
+        }).filter(t => isFinite(t.v) && isFinite(t.x))"""
+    )
+    east = [(t["v"], t["x"]) for t in ticks if 1e5 <= t["v"] < 1e6]  # (6 digits)
+    north = [(t["v"], t["y"]) for t in ticks if t["v"] >= 1e6]  # (7 digits)
+    return east, north
+
+
+def _m_per_px(page) -> tuple[float, float]:
+    """Metres per pixel across and up on the map as drawn: the slopes of its ticks."""
+    east, north = _ticks(page)
+    assert len(east) >= 3 and len(north) >= 3, (east, north)
+    sx = np.polyfit([v for v, _ in east], [p for _, p in east], 1)[0]
+    sy = np.polyfit([v for v, _ in north], [p for _, p in north], 1)[0]
+    return 1.0 / sx, -1.0 / sy  # (a northing grows up the screen)
+
+
+def _round(values: list[float]) -> bool:
+    """Whether the values are multiples of one round step (1, 2 or 5 × 10^k m), one step
+    apart."""
+    steps = np.diff(sorted(values))
+    step = float(steps[0])
+    mantissa = step / 10 ** np.floor(np.log10(step))
+    return (
+        np.allclose(steps, step)
+        and any(np.isclose(mantissa, m) for m in (1.0, 2.0, 5.0))
+        and all(abs(v / step - round(v / step)) < 1e-6 for v in values)
+    )
+
+
+def test_the_map_is_to_scale_with_round_grid_values(page):
+    """A metre as long across as up (within 1 %) on the default site's plan, as framed, the
+    whole site, after a zoom and at another window size; the grid's values round (multiples
+    of 1, 2 or 5 × 10^k m, the same step across and up); a scale bar and a north arrow."""
+    _open_map(page)
+    seen = {}
+    for view in ("plan", "whole site", "zoomed", "1280 px wide"):
+        if view == "whole site":
+            page.get_by_role("button", name="Whole site").click()
+        elif view == "zoomed":
+            _mode(page, "Pan / zoom")
+            box = page.locator(".planner-map").bounding_box()
+            page.mouse.move(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+            page.mouse.wheel(0, -300)
+        elif view == "1280 px wide":
+            page.set_viewport_size({"width": 1280, "height": 900})
+            _open_map(page)
+        page.wait_for_timeout(1500)  # (the view drawn, the kernel's ticks sent back)
+        mx, my = _m_per_px(page)
+        seen[view] = (mx, my)
+        assert mx == pytest.approx(my, rel=0.01), (view, mx, my)  # m/px
+        east, north = _ticks(page)
+        assert _round([v for v, _ in east]) and _round([v for v, _ in north]), (view, east, north)
+        assert np.diff([v for v, _ in east])[0] == np.diff([v for v, _ in north])[0]
+    print("m/px across, up:", {k: (round(a, 4), round(b, 4)) for k, (a, b) in seen.items()})
+    words = page.evaluate(
+        "() => [...document.querySelectorAll('.planner-map text')].map(t => t.textContent)"
+    )
+    assert "N" in words and any(t.endswith(" m") and t[:-2].isdigit() for t in words), words
+    page.locator(".planner-map").screenshot(path=str(ARTIFACTS / "dashboard-map-to-scale.png"))
+    page.set_viewport_size({"width": 1500, "height": 1100})
+    _mode(page, "Move (drag)")
+    page.get_by_role("button", name="Fit to the plan").click()
+    page.wait_for_timeout(1000)
+
+
+def test_hovering_a_station_or_target_tells_where_it_stands(page):
+    """The tooltip of a station: its id and purpose, easting and northing, the ground's
+    and the instrument's heights, and the nearest other station with its distance; of a
+    target: its id, easting, northing, height and the nearest station."""
+    _open_map(page)
+    b = _station_in_the_clear(page)
+    page.mouse.move(b["x"], b["y"])
+    tip = page.locator(".bqplot_tooltip_div:visible")
+    tip.wait_for(timeout=10_000)
+    text = tip.inner_text()
+    lines = [t.strip() for t in text.splitlines() if t.strip()]
+    east = [float(t[2:-2].replace(" ", "")) for t in lines if t.startswith("E ")]
+    north = [float(t[2:-2].replace(" ", "")) for t in lines if t.startswith("N ")]
+    assert 690_900 < east[0] < 691_200 and 5_334_900 < north[0] < 5_335_100, text  # m
+    assert "ground " in text and "instrument " in text and "above it" in text, text
+    assert "nearest station: S" in text and text.rstrip().endswith(" m"), text
+    page.screenshot(path=str(ARTIFACTS / "dashboard-map-hover.png"))
+    targets = _marks(page, 5, 10)
+    box = page.locator(".planner-map").bounding_box()
+    t = min(targets, key=lambda q: abs(q["x"] - box["x"]) + abs(q["y"] - box["y"]))
+    page.mouse.move(t["x"], t["y"])
+    page.wait_for_function(
+        "() => [...document.querySelectorAll('.bqplot_tooltip_div')]"
+        ".some(d => d.offsetParent !== null && d.innerText.includes('height '))",
+        timeout=10_000,
+    )
+    text = page.locator(".bqplot_tooltip_div:visible").inner_text()
+    assert "target" in text and "nearest station: S" in text and "E " in text, text
+    page.mouse.move(box["x"] + 5, box["y"] + box["height"] - 5)
 
 
 def _cut_off(page) -> list[str]:
@@ -428,6 +534,12 @@ def _screen_of(page):
     return lambda e, n: (float(np.polyval(ax, e)), float(np.polyval(ay, n)))
 
 
+def _from_map(page, xy: tuple[float, float]) -> tuple[float, float]:
+    """A point on screen [px] from the map's upper left corner."""
+    box = page.locator(".planner-map").bounding_box()
+    return xy[0] - box["x"], xy[1] - box["y"]
+
+
 def _stations_in(status: str) -> int:
     return int(status.split(" stations")[0].split()[-1])
 
@@ -440,6 +552,7 @@ def test_adding_deleting_and_locking_by_hand(page):
     # a click inside a building is refused, and the map says why where it was clicked
     to_screen = _screen_of(page)
     inside = to_screen(691040.0, 5335028.0)  # in the default site's main building
+    on_map = _from_map(page, inside)
     text, timeout = "", _need_browser().TimeoutError
     for _ in range(4):  # (the mode reaches the map through the kernel: a first click may
         try:  # come before it)
@@ -470,8 +583,9 @@ def test_adding_deleting_and_locking_by_hand(page):
     assert "judged again" in text, text
     assert _stations_in(text) >= len(boxes) + 1
     assert len(_station_boxes(page)) == _stations_in(text)
-    # the map kept its view: the same metre under the same pixel
-    assert _screen_of(page)(691040.0, 5335028.0) == pytest.approx(inside, abs=1.0)  # px
+    # the map kept its view: the same metre under the same pixel of the map (the page above
+    # it may have grown or shrunk with the plan's words)
+    assert _from_map(page, _screen_of(page)(691040.0, 5335028.0)) == pytest.approx(on_map, abs=1.0)
     # delete: the station clicked goes
     before = _stations_in(text)
     _mode(page, "Delete")
@@ -501,8 +615,12 @@ def test_adding_deleting_and_locking_by_hand(page):
         "() => document.querySelector('.planner-status').innerText.includes('re-optimising: done')",
         timeout=120_000,
     )
+    page.mouse.move(1, 1)  # (off the map: its hover tip goes)
     page.get_by_text("Summary", exact=True).click()
-    assert "1 placed by hand" in page.locator("details pre").first.inner_text()
+    summary = page.locator("details pre").first.inner_text()
+    # the locked station kept, and those dragged or added by hand before with it
+    hand = re.search(r"\b(\d+) placed by hand", summary)
+    assert hand and int(hand.group(1)) >= 1, [s for s in summary.splitlines() if "Station" in s]
     page.screenshot(path=str(ARTIFACTS / "dashboard-edit-by-hand.png"), full_page=True)
     # a station stands where one stood (the locked one; E, N to the millimetre)
     after = _station_rows(page).values()

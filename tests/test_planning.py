@@ -183,8 +183,8 @@ def test_no_station_is_proposed_on_a_roof_whose_height_was_made_up():
     from dataclasses import replace
 
     from planner.pipeline.engine.explain import suggestions
-    from planner.siteio import default_site
     from planner.sitecheck import SiteNote
+    from planner.siteio import default_site
 
     site = default_site()
     site = replace(site, notes=[*site.notes, SiteNote("no-height", ("annex",), "default", "7 m")])

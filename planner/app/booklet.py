@@ -32,12 +32,20 @@ from planner.app.maps import (
     place_labels,
     plot_plan_map,
     plot_site,
+    settle_layout,
     survey_frame,
+    title_on_page,
 )
 from planner.crs import name_of as crs_name
 from planner.pipeline.engine.result import Plan
-from planner.pipeline.field.route import view_sectors
-from planner.pipeline.field.setout import CornerTies, compass_word, wall_place, walls_scanned
+from planner.pipeline.field.route import kit_words, view_sectors
+from planner.pipeline.field.setout import (
+    CornerTies,
+    compass_word,
+    ties_text,
+    wall_place,
+    walls_scanned,
+)
 from planner.pipeline.inputs.schema import STATION_PURPOSES
 
 __all__ = ["booklet_pdf", "compass", "kit_list", "target_places"]
@@ -122,14 +130,14 @@ def _overview(p: Plan) -> Figure:
     fig = Figure(figsize=A4_LANDSCAPE, layout="constrained")
     grid = fig.add_gridspec(2, 1, height_ratios=[5.2, 1])
     ax = fig.add_subplot(grid[0])
-    plot_plan_map(p, ax, candidates=False, order_labels=True)
-    ax.set_title(
-        f"Field booklet — {p.site.name}: overview (in brackets a station's place in the "
-        "visiting order, where its id does not give it)"
-    )
+    plot_plan_map(p, ax, candidates=False, order_labels=True)  # (the planned area, to scale)
+    title_on_page(ax, f"Field booklet — {p.site.name}: overview")
     text = fig.add_subplot(grid[1])
     text.axis("off")
     lines = [
+        "Labels: in brackets a station's place in the visiting order, where its id does not "
+        "give it. The map shows the planned buildings, the stations and the targets; the "
+        "site's other buildings only where they stand among them.",
         f"Scanner {p.scanner.label or p.scanner.name}; required {p.requirements.describe()}; "
         f"model: {p.settings.model_description()}",
         f"Coordinates: {crs_name(p.site.crs) if p.site.crs else 'local metres (no CRS)'}; "
@@ -147,12 +155,13 @@ def _overview(p: Plan) -> Figure:
         fontsize=7.5,
         family="DejaVu Sans",
     )
+    settle_layout(fig)  # (the title and the text below it placed)
     return fig
 
 
 def kit_list(p: Plan) -> str:
-    """The targets to pack, item by item: how many the plan uses, the most standing at once
-    (they leap-frog: each collected after its last station) and how that sits with the kit."""
+    """The targets to pack, item by item: how many the plan uses and the most standing at
+    once against the kit (:func:`~planner.pipeline.field.route.kit_words`)."""
     if p.route is None or p.route.kit.empty:
         return "Kit: no targets to pack."
     words = []
@@ -160,16 +169,7 @@ def kit_list(p: Plan) -> str:
         if not k.item:  # targets no item of the inventory is big enough for
             words.append(f"{k.used} {k.type} target(s) no item of your inventory fits")
             continue
-        have = (
-            f"you have {k.owned}"
-            + (f": bring {k.most_at_once - k.owned} more" if k.most_at_once > k.owned else "")
-            if k.owned
-            else "count not given"
-        )
-        words.append(
-            f"{k.item} ({k.type} {k.size_mm:g} mm): {k.used} placed, at most "
-            f"{k.most_at_once} standing at once (at {k.at_station}; {have})"
-        )
+        words.append(f"{k.item} ({k.type} {k.size_mm:g} mm): {k.used} placed; {kit_words(k)}")
     return "Kit to pack: " + "; ".join(words) + "."
 
 
@@ -207,7 +207,7 @@ def _station_page(
     (set_out,) = ties(np.array([[st["x"], st["y"]]]))
     facts = [
         ("Easting / Northing", f"{st['x']:.3f} / {st['y']:.3f} m"),
-        ("Set out (tape)", "; ".join(t.text() for t in set_out) or "no building corner in sight"),
+        ("Set out (tape)", ties_text(set_out)),
         (
             "Instrument height, why here",
             f"{st['instrument_height_m']:.2f} m above the ground; "
@@ -361,30 +361,33 @@ def _station_map(p: Plan, sid: str, ax, sector: tuple[float, float, float]) -> N
     ax.set_xlim(cx - half, cx + half)
     ax.set_ylim(cy - half, cy + half)
     survey_frame(ax, p.site.crs)
+    ax.set_anchor("W")  # the square map at the left of its box, its legend beside it
     place_labels(ax, labels)
-    ax.legend(loc="lower left", fontsize=6.5, framealpha=0.9)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.03, 1.0), borderaxespad=0.0, fontsize=6.5)
 
 
 def target_places(p: Plan, target_ids: list[str], ties: CornerTies | None = None) -> list[str]:
     """Where each target goes, in a crew's words: a wall target by its building, wall,
-    distance from the wall's end and height; a stand by tape ties from building corners; a
-    control point as the mark it is."""
+    distance from the wall's end and height above the ground; a stand by tape ties from two
+    building corners (:func:`~planner.pipeline.field.setout.ties_text`) and its height
+    above the ground; a control point as the mark it is."""
     tg = p.targets.set_index("target_id").loc[target_ids]
     fac = p.facades.set_index("facade_id")
     on_wall = (tg["type"] == "flat") & tg["facade_id"].isin(fac.index)
     loose = tg[~on_wall & (tg["type"] != "control")]
     tied = (ties or CornerTies(p.site))(loose[["x", "y"]].to_numpy(float))
     by_target = dict(zip(loose.index, tied, strict=True))
+    # heights above the ground (the z are in the site's height system: on a terrain, 500 m)
+    high = tg["z"].to_numpy(float) - p.site.ground_z(tg[["x", "y"]].to_numpy(float))
     out = []
-    for (tid, t), wall in zip(tg.iterrows(), on_wall, strict=True):
+    for (tid, t), wall, h in zip(tg.iterrows(), on_wall, high, strict=True):
         if wall:
-            out.append(wall_place(fac.loc[t["facade_id"]], t["x"], t["y"], t["z"]))
+            out.append(wall_place(fac.loc[t["facade_id"]], t["x"], t["y"], h))
         elif t["type"] == "control":
             out.append("control point: its mark is already there")
         else:
-            near = "; ".join(x.text() for x in by_target[tid][:2]) or "see its coordinates"
             where = "on a stand" if t["type"] != "flat" else "on its wall"
-            out.append(f"{t['type']} {where}, {t['z']:.1f} m high: {near}")
+            out.append(f"{t['type']} {where}, {h:.1f} m high: {ties_text(by_target[tid])}")
     return out
 
 

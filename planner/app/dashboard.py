@@ -33,6 +33,7 @@ from planner.app.widgets import (
     download_link,
     error_html,
     inventory_box,
+    remember_kit,
     scanner_dropdown,
     show,
     upload_folder,
@@ -43,7 +44,12 @@ from planner.errors import PlannerError
 from planner.pipeline.documents.export import render
 from planner.pipeline.engine.explain import explain_unmet, suggestions
 from planner.pipeline.engine.planning import plan
-from planner.pipeline.engine.whatif import edit_targets, evaluate_stations, reoptimise
+from planner.pipeline.engine.whatif import (
+    edit_targets,
+    evaluate_stations,
+    reoptimise,
+    user_edits,
+)
 from planner.pipeline.geometry.facades import build_facades
 from planner.pipeline.inputs.requirements import (
     REGISTRATION_PROCESSING,
@@ -58,7 +64,13 @@ from planner.pipeline.inputs.requirements import (
 from planner.pipeline.inputs.resolved import resolve
 from planner.scanner import Scanner
 from planner.site import DEFAULT_NEAR_M, Passage
-from planner.siteio import DEFAULT_STOREY_HEIGHT_M, default_site, read_outlines, read_site
+from planner.siteio import (
+    DEFAULT_STOREY_HEIGHT_M,
+    default_site,
+    read_control,
+    read_outlines,
+    read_site,
+)
 from planner.targets import (
     parse_inventory,
 )
@@ -294,6 +306,7 @@ _CSS = """<style>
 .planner-root, .jp-OutputArea:has(.planner-toolbar), .jp-OutputArea-child:has(.planner-toolbar),
 .jp-OutputArea-output:has(.planner-toolbar) { overflow: visible !important; }
 .planner-stale { opacity: 0.45; }
+.bqplot_tooltip_div { pointer-events: none; }
 .planner-stale-banner { background:#fff3cd; border:1px solid #e0c36a; padding:4px 10px;
   border-radius:4px; margin-bottom:6px }
 .widget-label, .widget-label-basic { overflow: visible !important; }
@@ -318,6 +331,8 @@ class StationPlanner:
         self.inputs = [
             self.site_source,
             self.upload,
+            self.control_upload,
+            self.levelling,
             self.height,
             self.storey,
             self.crs,
@@ -359,6 +374,11 @@ class StationPlanner:
         )
         self.upload_name = w.HTML("<small>no file chosen</small>")
         self.upload_name.add_class("planner-upload-name")
+        self.control_upload = w.FileUpload(
+            accept=".csv,.txt", multiple=False, description=SITE_LABELS["--control"]
+        )
+        self.control_name = w.HTML("<small>none: the first scan is the datum</small>")
+        self._control_path: Path | None = None
         self.height = _number(0.0, 0.0, 1000.0, 0.5, SITE_LABELS["--height"])
         self.storey = _number(
             DEFAULT_STOREY_HEIGHT_M, 0.5, 20.0, 0.1, SITE_LABELS["--storey-height-m"]
@@ -385,6 +405,7 @@ class StationPlanner:
         """The scanner and its setting (preset), offered for the scanner chosen."""
         self.scanner = scanner_dropdown()
         self.preset = w.Dropdown(description="scanner setting", style=_STYLE, layout=_FULL)
+        self.levelling = _number(0.0, 0.0, 3600.0, 0.5, SITE_LABELS["--levelling-rms-arcsec"])
         self.scanner.observe(lambda _c: self._offer_presets(), "value")
         self._offer_presets()
 
@@ -584,6 +605,7 @@ class StationPlanner:
                 w.HTML(_CSS + "<h3>Site</h3>"),
                 self.site_source,
                 w.HBox([self.upload, self.upload_name]),
+                w.HBox([self.control_upload, self.control_name]),
                 self.height,
                 self.storey,
                 self.crs,
@@ -592,6 +614,7 @@ class StationPlanner:
                 w.HTML("<h3>Scanner</h3>"),
                 self.scanner,
                 self.preset,
+                self.levelling,
                 w.HTML("<h3>Requirements</h3>"),
                 self.max_x,
                 self.max_y,
@@ -657,6 +680,7 @@ class StationPlanner:
         self.plan_button.on_click(lambda _b: self.start())
         self.cancel_button.on_click(lambda _b: self.cancel())
         self.upload.observe(lambda _c: self._uploaded(), "value")
+        self.control_upload.observe(lambda _c: self._control_uploaded(), "value")
         self.quantity.observe(lambda _c: self._redraw("Coverage"), "value")
         self.tabs.observe(lambda _c: self._draw_tab(), "selected_index")
         self.report_button.on_click(lambda _b: self.make_report())
@@ -731,6 +755,27 @@ class StationPlanner:
         self._say_dropped(dropped)
         self.tabs.selected_index = MAP_TAB  # the site uploaded, drawn at once
 
+    def _control_uploaded(self) -> None:
+        """A control point file chosen: read at once (a bad file said where it is), used by
+        the next plan."""
+        files = self.control_upload.value
+        if not files:
+            return
+        f = files[0]
+        path = Path(self._tmp.name) / f"control-{Path(f['name']).name}"
+        path.write_bytes(bytes(f["content"]))
+        try:
+            points = read_control(path)
+        except PlannerError as exc:
+            self._control_path = None
+            self.control_name.value = error_html(str(exc))
+            return
+        self._control_path = path
+        self.control_name.value = (
+            f"<small class='planner-file'>{html.escape(f['name'])}: {len(points)} control "
+            "point(s), tying the stations that see three to the site's frame</small>"
+        )
+
     def _site(self, near_m: float = DEFAULT_NEAR_M, drawing: bool = False):
         """The site chosen (default or uploaded) with the passages drawn on the map, without
         the editor's zones; problems farther than ``near_m`` from the buildings to plan are
@@ -752,6 +797,8 @@ class StationPlanner:
             )
         if self.drawn_passages:
             site = replace(site, passages=[*site.passages, *self.drawn_passages])
+        if self._control_path is not None:
+            site = replace(site, control=[*site.control, *read_control(self._control_path)])
         return site
 
     def _uploaded_file(self) -> Path:
@@ -942,7 +989,10 @@ class StationPlanner:
                 "inventory": parse_inventory(self.inventory.value),
             }
         )
+        remember_kit(self.inventory.value)  # (it parsed) the crew's kit for the next session
         scanner = Scanner.from_name(self.scanner.value)
+        if self.levelling.value > 0:
+            scanner = scanner.with_levelling(self.levelling.value)
         # a problem farther than any station reaches cannot change the plan
         site = self._site(resolve(scanner, req, settings).reach_m)
         if self.zone_editor.zones:
@@ -1055,7 +1105,15 @@ class StationPlanner:
                 raise error
 
             return fail
-        return lambda progress: plan(site, sc, req, st, progress=progress)
+        before = self.plan
+        if before is None or before.site.name != site.name:  # a new site: ids from S01
+            return lambda progress: plan(site, sc, req, st, progress=progress)
+        # the same site planned again (a passage, a zone, a setting changed): the ids given
+        # stay, the stations locked or placed by hand are kept where they can still stand
+        given, keep = user_edits(before, self.map.locked_xy())
+        return lambda progress: plan(
+            site, sc, req, st, progress=progress, locked=keep if len(keep) else None, given=given
+        )
 
     def run(self) -> None:
         """Plan with the current inputs and show the result, waiting for it (the notebook's

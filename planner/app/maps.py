@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 
 import matplotlib.colors as mcolors
+import matplotlib.patheffects as patheffects
 import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
@@ -19,7 +20,8 @@ from matplotlib.figure import Figure
 from matplotlib.patches import FancyArrowPatch, PathPatch, Rectangle, Wedge
 from matplotlib.patches import Polygon as MplPolygon
 from matplotlib.path import Path as MplPath
-from matplotlib.ticker import FuncFormatter, MaxNLocator
+from matplotlib.textpath import TextToPath
+from matplotlib.ticker import FuncFormatter, Locator
 from mpl_toolkits.axes_grid1.anchored_artists import AnchoredSizeBar
 from shapely.geometry.base import BaseGeometry
 
@@ -30,12 +32,19 @@ from planner.pipeline.inputs.schema import STATION_ID, STATION_PURPOSES, SYMBOLS
 from planner.site import Building, Site
 
 __all__ = [
+    "RoundLocator",
+    "grid_label",
     "legend_outside",
     "place_labels",
+    "planned_area",
     "plot_coverage",
     "plot_plan_map",
     "plot_site",
+    "round_step",
+    "round_ticks",
+    "scale_bar_length",
     "survey_frame",
+    "title_on_page",
 ]
 
 QUANTITIES = {
@@ -95,6 +104,12 @@ COLOURS = {
 }
 
 
+#: A label on a map: cut at the map's frame (a building's at the edge), never laid out as
+#: if it stood beside the map (the constrained layout would squeeze the map's axis off the
+#: page for a label that spills over its frame).
+MAP_TEXT = {"clip_on": True, "in_layout": False}
+
+
 def _draw_building(ax: Axes, b: Building, labelled: set[str]) -> None:
     """A building's footprint (planned dark, others light), a 3-D building's roof edges and
     ridges, its id and height; a legend entry for each kind not yet ``labelled``."""
@@ -125,6 +140,7 @@ def _draw_building(ax: Axes, b: Building, labelled: set[str]) -> None:
         va="center",
         fontsize=7,
         color="w" if b.planned else "k",
+        **MAP_TEXT,
     )
 
 
@@ -196,17 +212,19 @@ def plot_plan_map(
     route: bool = True,
     order_labels: bool = False,
 ) -> Figure:
-    """The plan as a survey drawing in the site's coordinates: candidate heat map (samples
-    each position meets), stations with their view sectors, registration links, targets
-    with their ids, the walking route, unmet samples; a coordinate grid in absolute values,
-    a scale bar, a grid-north arrow and a legend of everything drawn; labels placed so that
-    they do not overlap."""
+    """The plan as a survey drawing in the site's coordinates, to scale: candidate heat map
+    (samples each position meets), stations with their view sectors, registration links,
+    targets with their ids, the walking route, unmet samples; a coordinate grid in absolute
+    values, a scale bar, a grid-north arrow and a legend of everything drawn; labels placed
+    so that they do not overlap. It frames the planned area (:func:`planned_area`): of the
+    rest of the site only what stands in it is drawn."""
     if ax is None:
         _, ax = plt.subplots(figsize=(11, 8), layout="constrained")
     fig = ax.figure
+    x0, y0, x1, y1 = _plan_extent(p)  # the planned area: the rest of the site is not drawn
     if candidates:
         _draw_candidates(p, ax)
-    plot_site(p.site, ax)
+    plot_site(p.site, ax, window=shapely.box(x0, y0, x1, y1))
     if sectors:
         _draw_sectors(p, ax)
     if route:
@@ -233,12 +251,23 @@ def plot_plan_map(
         labels += target_labels
     else:  # a district: its target ids would only bury the stations' (the pages have them)
         title += " (target ids: targets.csv and each station's page)"
-    ax.set_title(title)
-    _frame_extent(ax, p)
+    title_on_page(ax, title)
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y0, y1)
     survey_frame(ax, p.site.crs)
     place_labels(ax, labels)
     legend_outside(ax)
+    settle_layout(fig)
     return fig
+
+
+def settle_layout(fig: Figure) -> None:
+    """Lay the figure out once more with everything on it: the constrained layout's first
+    placing of a map sized by its aspect leaves room for the y axis as its labels stood
+    before (a map's coordinates were cut at the page's left edge)."""
+    engine = fig.get_layout_engine()
+    if engine is not None:
+        engine.execute(fig)
 
 
 def _draw_candidates(p: Plan, ax: Axes) -> None:
@@ -392,48 +421,144 @@ def legend_outside(ax: Axes) -> None:
         ax.legend(handles, names, loc="upper left", fontsize=6.5, framealpha=0.9)
 
 
-def _frame_extent(ax: Axes, p: Plan) -> None:
-    """The drawing's extent: the site, its stations and targets, with a margin (a scan
+#: A map's margin round what it shows: this share of its larger side, at least
+#: ``MAP_MARGIN_M``.
+MAP_MARGIN, MAP_MARGIN_M = 0.06, 3.0
+
+
+def planned_area(site: Site, *points: np.ndarray) -> tuple[float, float, float, float]:
+    """What a map of a plan frames (x0, y0, x1, y1 [m]): the buildings planned and the
+    ``points`` ((n, 2) arrays: the stations, the targets) — not the rest of the site's
+    file (a district's other buildings only block the beam)."""
+    pts = [shapely.get_coordinates(b.footprint) for b in site.planned]
+    pts += [np.asarray(q, dtype=float).reshape(-1, 2) for q in points]
+    pts = [q for q in pts if len(q)]
+    if not pts:  # (nothing planned: the whole site)
+        pts = [shapely.get_coordinates(b.footprint) for b in site.buildings]
+    allxy = np.vstack(pts)
+    (x0, y0), (x1, y1) = allxy.min(axis=0), allxy.max(axis=0)
+    return float(x0), float(y0), float(x1), float(y1)
+
+
+def _plan_extent(p: Plan) -> tuple[float, float, float, float]:
+    """The plan map's extent: :func:`planned_area` of the plan with a margin (a scan
     sector may run off the sheet)."""
-    geoms = [b.footprint for b in p.site.buildings]
-    if p.site.boundary is not None:
-        geoms.append(p.site.boundary)
-    x0, y0, x1, y1 = shapely.total_bounds(geoms)
-    for df in (p.stations, p.targets):
-        if len(df):
-            x0, x1 = min(x0, df["x"].min()), max(x1, df["x"].max())
-            y0, y1 = min(y0, df["y"].min()), max(y1, df["y"].max())
-    pad = 0.06 * max(x1 - x0, y1 - y0, 10.0)
-    ax.set_xlim(x0 - pad, x1 + pad)
-    ax.set_ylim(y0 - pad, y1 + pad)
+    xy = [df[["x", "y"]].to_numpy(dtype=float) for df in (p.stations, p.targets)]
+    x0, y0, x1, y1 = planned_area(p.site, *xy)
+    pad = max(MAP_MARGIN * max(x1 - x0, y1 - y0), MAP_MARGIN_M)
+    return x0 - pad, y0 - pad, x1 + pad, y1 + pad
 
 
-def _nice_length(span: float) -> float:
-    """A round scale-bar length, about a fifth of ``span`` (1, 2 or 5 × 10^k m)."""
+#: The mantissas of a round number on a map (its grid's step, its scale bar): 1, 2 or 5 ×
+#: 10^k m — one rule for the dashboard's map and the printed ones.
+ROUND_MANTISSAS = (1.0, 2.0, 5.0)
+
+
+def round_step(raw: float) -> float:
+    """The smallest round number (1, 2 or 5 × 10^k) at or above ``raw`` (> 0).
+
+    >>> round_step(13.0), round_step(0.3), round_step(20.0), round_step(51.0)
+    (20.0, 0.5, 20.0, 100.0)
+    """
+    raw = max(float(raw), 1e-9)
+    k = math.floor(math.log10(raw))
+    steps = [m * 10.0**e for e in (k, k + 1) for m in ROUND_MANTISSAS]
+    return float(next(v for v in steps if v >= raw * (1.0 - 1e-9)))
+
+
+def round_ticks(lo: float, hi: float, step: float) -> np.ndarray:
+    """The multiples of ``step`` from ``lo`` to ``hi`` (where a map's grid lines go).
+
+    >>> round_ticks(690954.2, 691021.0, 20.0).tolist()
+    [690960.0, 690980.0, 691000.0, 691020.0]
+    """
+    first = math.ceil(lo / step - 1e-9)
+    last = math.floor(hi / step + 1e-9)
+    digits = tick_decimals(step) + 1
+    return np.round(np.arange(first, last + 1) * step, digits)
+
+
+def tick_decimals(step: float) -> int:
+    """The decimals a grid of ``step`` needs (0 for a step of 1 m or more).
+
+    >>> tick_decimals(20.0), tick_decimals(0.5), tick_decimals(0.05)
+    (0, 1, 2)
+    """
+    return max(0, -math.floor(math.log10(step) + 1e-9))
+
+
+def scale_bar_length(span: float) -> float:
+    """A scale bar's length: the round number (1, 2 or 5 × 10^k m) nearest a fifth of
+    ``span`` (the width the map shows [m]).
+
+    >>> scale_bar_length(100.0), scale_bar_length(180.0), scale_bar_length(40.0)
+    (20.0, 50.0, 10.0)
+    """
     raw = max(span / 5.0, 1e-3)
     k = math.floor(math.log10(raw))
-    return min((m * 10.0**k for m in (1, 2, 5, 10)), key=lambda v: abs(v - raw))
+    steps = [m * 10.0**e for e in (k, k + 1) for m in ROUND_MANTISSAS]
+    return float(min(steps, key=lambda v: abs(math.log(v / raw))))
+
+
+def grid_label(value: float, step: float) -> str:
+    """A grid coordinate as a surveyor reads it: whole metres in groups of three digits
+    (more decimals where the grid's ``step`` is under a metre).
+
+    >>> grid_label(5335060.0, 20.0), grid_label(691002.5, 0.5)
+    ('5 335 060', '691 002.5')
+    """
+    return f"{value:,.{tick_decimals(step)}f}".replace(",", " ")
+
+
+#: The least distance between two grid lines on paper [in] (a 7-digit northing of
+#: ``GRID_LABEL_PT`` fits between two across).
+GRID_GAP_IN, GRID_LABEL_PT = 0.7, 8.0
+
+
+class RoundLocator(Locator):
+    """Grid lines at the multiples of a round step (:func:`round_step`) at least
+    :data:`GRID_GAP_IN` apart on paper: on a map drawn to scale, the same step across as
+    up."""
+
+    def __init__(self, gap_in: float = GRID_GAP_IN) -> None:
+        self.gap_in = gap_in
+        self.step = 1.0  # [m] (the labels' decimals follow it)
+
+    def __call__(self) -> np.ndarray:
+        lo, hi = self.axis.get_view_interval()
+        return self.tick_values(lo, hi)
+
+    def tick_values(self, vmin: float, vmax: float) -> np.ndarray:
+        """The grid's values between ``vmin`` and ``vmax``."""
+        lo, hi = sorted((float(vmin), float(vmax)))
+        ax = self.axis.axes
+        box = ax.get_position(original=False)  # (after the aspect is applied)
+        width, height = ax.figure.get_size_inches()
+        inches = box.width * width if self.axis.axis_name == "x" else box.height * height
+        self.step = round_step((hi - lo) / max(inches, 0.1) * self.gap_in)
+        return round_ticks(lo, hi, self.step)
 
 
 def survey_frame(ax: Axes, crs: str | None) -> None:
-    """What makes a plot a survey drawing: absolute coordinates on both axes (no offset),
-    a light coordinate grid, a scale bar and a grid-north arrow."""
-    fmt = FuncFormatter(lambda v, _: f"{v:,.0f}".replace(",", " "))
+    """What makes a plot a survey drawing: equal scale across and up, absolute coordinates
+    on both axes (no offset) on a grid of round steps, a scale bar and a grid-north arrow."""
+    ax.set_aspect("equal", adjustable="box")
     for axis in (ax.xaxis, ax.yaxis):
-        axis.set_major_formatter(fmt)
-        axis.set_major_locator(MaxNLocator(6, steps=[1, 2, 2.5, 5, 10]))
+        locator = RoundLocator()
+        axis.set_major_locator(locator)
+        axis.set_major_formatter(FuncFormatter(lambda v, _, k=locator: grid_label(v, k.step)))
+    ax.tick_params(labelsize=GRID_LABEL_PT)
     ax.grid(True, color="0.75", lw=0.4, ls="-", zorder=-1)
     where = f" — {crs_name(crs)}" if crs else " (local metres, no CRS)"
     ax.set_xlabel(f"Easting [m]{where}", fontsize=8)
     ax.set_ylabel("Northing [m]", fontsize=8)
     x0, x1 = ax.get_xlim()
-    length = _nice_length(x1 - x0)
-    label = f"{length:g} m"
+    length = scale_bar_length(x1 - x0)
     ax.add_artist(
         AnchoredSizeBar(
             ax.transData,
             length,
-            label,
+            f"{length:g} m",
             "lower right",
             pad=0.5,
             sep=3,
@@ -442,24 +567,54 @@ def survey_frame(ax: Axes, crs: str | None) -> None:
             fontproperties={"size": 7},
         )
     )
+    _north_arrow(ax)
+
+
+def _north_arrow(ax: Axes) -> None:
+    """An arrow to grid north (up: the map is in a projected grid, easting across) and its
+    N, inside the upper right corner, on a white ground."""
+    white = [patheffects.withStroke(linewidth=3.5, foreground="w")]
     ax.annotate(
         "",
-        xy=(0.96, 0.97),
-        xytext=(0.96, 0.87),
+        xy=(0.955, 0.925),
+        xytext=(0.955, 0.83),
         xycoords="axes fraction",
-        arrowprops=dict(arrowstyle="-|>", color="k", lw=1.5),
+        arrowprops=dict(arrowstyle="-|>", color="k", lw=1.5, mutation_scale=14),
         zorder=8,
     )
     ax.annotate(
         "N",
-        xy=(0.96, 0.985),
+        xy=(0.955, 0.93),
         xycoords="axes fraction",
         ha="center",
         va="bottom",
         fontsize=9,
         weight="bold",
         zorder=8,
+        path_effects=white,
     )
+
+
+def title_on_page(ax: Axes, text: str, share: float = 0.6) -> None:
+    """Set ``ax``'s title, broken into lines no wider than ``share`` of the page (a long
+    site name): never cut at the page's edges. (Matplotlib's own ``wrap=True`` upsets the
+    constrained layout: it lays the title out unbroken.)"""
+    ax.set_title(text)
+    prop = ax.title.get_fontproperties()
+    limit = share * ax.figure.get_figwidth() * 72.0  # [points]
+    lines: list[str] = []
+    line = ""
+    for word in text.split():
+        trial = f"{line} {word}".strip()
+        if line and _TEXT_PATH.get_text_width_height_descent(trial, prop, False)[0] > limit:
+            lines.append(line)
+            line = word
+        else:
+            line = trial
+    ax.set_title("\n".join([*lines, line]))
+
+
+_TEXT_PATH = TextToPath()
 
 
 #: Where a label may sit round its point [points]: tried in this order.
@@ -511,6 +666,7 @@ def place_labels(ax: Axes, items: list[tuple[float, float, str, dict]]) -> None:
             va="bottom",
             zorder=7,
             bbox=dict(boxstyle="square,pad=0.05", fc="w", ec="none", alpha=0.6),
+            **MAP_TEXT,
             **style,
         )
 

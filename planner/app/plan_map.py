@@ -22,19 +22,34 @@ import html
 import math
 from collections.abc import Callable, Sequence
 
+import anywidget
 import bqplot as bq
 import ipywidgets as w
 import numpy as np
 import pandas as pd
 import shapely
+import traitlets
 
-from planner.app.maps import COLOURS, QUANTITIES, quantity_label, quantity_limit
+from planner.app.maps import (
+    COLOURS,
+    MAP_MARGIN,
+    MAP_MARGIN_M,
+    QUANTITIES,
+    grid_label,
+    planned_area,
+    quantity_label,
+    quantity_limit,
+    round_step,
+    round_ticks,
+    scale_bar_length,
+    tick_decimals,
+)
 from planner.errors import PlannerError
 from planner.pipeline.engine.result import Plan
-from planner.pipeline.inputs.schema import SYMBOLS
+from planner.pipeline.inputs.schema import STATION_PURPOSES, SYMBOLS
 from planner.site import DEFAULT_PASSAGE_HEIGHT_M, DEFAULT_PASSAGE_WIDTH_M
 
-__all__ = ["COLOUR_BY", "MODES", "PlanMap", "declutter"]
+__all__ = ["COLOUR_BY", "MODES", "MapView", "PlanMap", "declutter", "station_tips", "target_tips"]
 
 #: What a click on the map does, with the hint shown while the mode is on.
 MODES = [
@@ -81,9 +96,11 @@ MODES = [
 #: coverage plot's quantities.
 COLOUR_BY = [("met / unmet", "meets"), *((quantity_label(q), q) for q in QUANTITIES)]
 
-#: The map's side on screen assumed when labels are kept apart [px] (the browser does not
-#: tell the kernel; a larger map only keeps them farther apart than needed).
+#: The map's plot area on screen assumed until the browser tells its size [px] (bqplot does
+#: not: :class:`MapView`'s probe does).
 MAP_PX = 640.0
+#: The least gap between two grid lines on screen [px] (a 7-digit northing fits between).
+TICK_GAP_PX = 90.0
 #: A label's size on screen: per character, its height and the gap kept [px].
 LABEL_CHAR_PX, LABEL_HEIGHT_PX = 7.5, 14.0
 
@@ -97,6 +114,7 @@ _CSS = """<style>
 { pointer-events: none; }
 .planner-map.planner-map-ground g.object_grp path.dot { pointer-events: none; }
 .planner-map-hint { color: #444; }
+.bqplot_tooltip_div td.tooltiptext { white-space: pre-line; text-align: left; }
 </style>"""
 
 _PAN_MODES = {"pan"}
@@ -165,6 +183,76 @@ def _short(message: str) -> str:
     return words if len(words) <= 60 else words[:57] + "…"
 
 
+def _nearest(xy: np.ndarray, others: np.ndarray, same: bool) -> tuple[np.ndarray, np.ndarray]:
+    """For each point of ``xy``, the nearest of ``others`` (its index, -1 where none) and
+    its distance [m]; ``same``: the two are one set (a point is not its own nearest)."""
+    if not len(xy) or len(others) < (2 if same else 1):
+        return np.full(len(xy), -1), np.full(len(xy), np.nan)
+    d = np.hypot(*(xy[:, None, :] - others[None, :, :]).transpose(2, 0, 1))
+    if same:
+        np.fill_diagonal(d, np.inf)
+    k = np.argmin(d, axis=1)
+    return k, d[np.arange(len(xy)), k]
+
+
+def _where(x: float, y: float) -> str:
+    """A position as a crew reads it off the map's grid: easting and northing [m] to the
+    centimetre, a line each."""
+    return f"E {grid_label(x, 0.01)} m\nN {grid_label(y, 0.01)} m"
+
+
+def station_tips(stations: pd.DataFrame) -> list[str]:
+    """Each station's words on hover (a line each): its id and why it is there, where it
+    stands (easting, northing), the ground's height there and the instrument's above it,
+    and the nearest other station with its distance.
+
+    >>> t = pd.DataFrame({"station_id": ["S01", "S02"], "x": [691000.0, 691030.0],
+    ...     "y": [5335000.0, 5335040.0], "ground_z": [101.2, 101.5],
+    ...     "instrument_height_m": [1.5, 1.6], "purpose": ["cover", "link"]})
+    >>> print(station_tips(t)[0])
+    S01 — to cover
+    E 691 000.00 m
+    N 5 335 000.00 m
+    ground 101.20 m, instrument 1.50 m above it
+    nearest station: S02, 50.0 m
+    """
+    xy = stations[["x", "y"]].to_numpy(dtype=float).reshape(-1, 2)
+    ids = [str(s) for s in stations["station_id"]]
+    near, dist = _nearest(xy, xy, same=True)
+    out = []
+    for r, k, d in zip(stations.itertuples(), near, dist, strict=True):
+        purpose = STATION_PURPOSES.get(str(r.purpose), str(r.purpose))
+        nearest = f"{ids[k]}, {d:.1f} m" if k >= 0 else "none (the only station)"
+        out.append(
+            f"{r.station_id} — {purpose}\n{_where(r.x, r.y)}\n"
+            f"ground {r.ground_z:.2f} m, instrument {r.instrument_height_m:.2f} m above it\n"
+            f"nearest station: {nearest}"
+        )
+    return out
+
+
+def target_tips(targets: pd.DataFrame, stations: pd.DataFrame) -> list[str]:
+    """Each target's words on hover: its id, kind and item, where it stands (easting,
+    northing), its height, the stations that scan it and the nearest station with its
+    distance."""
+    xy = targets[["x", "y"]].to_numpy(dtype=float).reshape(-1, 2)
+    sxy = stations[["x", "y"]].to_numpy(dtype=float).reshape(-1, 2)
+    ids = [str(s) for s in stations["station_id"]]
+    near, dist = _nearest(xy, sxy, same=False)
+    out = []
+    for r, k, d in zip(targets.itertuples(), near, dist, strict=True):
+        item = f" ({r.item})" if isinstance(getattr(r, "item", None), str) and r.item else ""
+        used = getattr(r, "station_ids", None)
+        used = ", ".join(str(u) for u in used) if isinstance(used, list | tuple) else ""
+        out.append(
+            f"{r.target_id} — {r.type} target{item}\n{_where(r.x, r.y)}\n"
+            f"centre at height {r.z:.2f} m\n"
+            + (f"scanned from {used}\n" if used else "")
+            + (f"nearest station: {ids[k]}, {d:.1f} m" if k >= 0 else "no station")
+        )
+    return out
+
+
 def _columns(scanned: pd.DataFrame, quantity: str) -> pd.DataFrame:
     """One row per facade column (the samples of one place on the wall, every height): its
     position, the worst value of ``quantity`` there (an unmet sample makes the column
@@ -201,6 +289,211 @@ def _columns(scanned: pd.DataFrame, quantity: str) -> pd.DataFrame:
     return out
 
 
+#: The browser side of :class:`_PlotSize`: every 0.3 s, the size of the plot area of the
+#: map in the same box (``.planner-map-box``) as laid out on screen, sent when it changed
+#: (none while the map is hidden: another tab).
+_PLOT_SIZE_JS = """
+function render({ model, el }) {
+  let last = "";
+  const look = () => {
+    const box = el.closest(".planner-map-box");
+    const area = box && box.querySelector(".planner-map rect.plotarea_background");
+    if (!area) return;
+    const r = area.getBoundingClientRect();
+    if (r.width < 50 || r.height < 50) return;
+    const size = [Math.round(r.width * 10) / 10, Math.round(r.height * 10) / 10];
+    if (size.join("x") === last) return;
+    last = size.join("x");
+    model.set("plot_px", size);
+    model.save_changes();
+  };
+  const timer = setInterval(look, 300);
+  look();
+  return () => clearInterval(timer);
+}
+export default { render };
+"""
+
+
+class _PlotSize(anywidget.AnyWidget):
+    """The map's plot area as the browser lays it out, ``[width, height]`` [px] (empty until
+    a page shows it): bqplot does not tell the kernel. Nothing on screen."""
+
+    _esm = _PLOT_SIZE_JS
+    plot_px = traitlets.List(traitlets.Float(), default_value=[]).tag(sync=True)
+
+
+class MapView:
+    """What the map shows, to scale: its two scales always span one number of metres per
+    pixel across and up, from the plot area's size the browser reports (a frame, a resize;
+    a pan or zoom keeps the ratio); grid lines at round steps (1, 2 or 5 × 10^k m, the
+    printed maps' rule: :func:`~planner.app.maps.round_step`); a scale bar and a grid-north
+    arrow (the map is drawn in the site's projected grid: up is grid north).
+
+    ``on_change`` is called after every change of the view (the labels kept apart anew)."""
+
+    def __init__(self, sx: bq.LinearScale, sy: bq.LinearScale, ax_x: bq.Axis, ax_y: bq.Axis):
+        self.sx, self.sy, self.axes = sx, sy, (ax_x, ax_y)
+        self.px = (MAP_PX, MAP_PX)  # the plot area [px] (until the browser tells)
+        self.box: tuple[float, float, float, float] | None = None  # framed, not panned since
+        self.on_change: Callable[[], None] = lambda: None
+        self._ours = False  # the scales are being set here (not panned or zoomed)
+        self.probe = _PlotSize(layout=w.Layout(display="none"))
+        self._marks_made()
+        self._draw_north()
+        self.probe.observe(lambda _c: self._resized(), names=["plot_px"])
+        for scale in (sx, sy):  # (a pan or zoom sets min and max at once: max is enough)
+            scale.observe(lambda _c: self._moved(), names=["max"])
+
+    def _marks_made(self) -> None:
+        """The scale bar (lower left) and the north arrow (upper right), placed in fractions
+        of the plot area: a pan or zoom does not move them."""
+        frac = {axis: bq.LinearScale(min=0.0, max=1.0, allow_padding=False) for axis in ("x", "y")}
+        nan2 = np.full((1, 2), np.nan)
+        self.bar_ground = bq.Lines(  # a white ground under the bar and its words
+            x=nan2,
+            y=nan2,
+            scales=frac,
+            fill="inside",
+            colors=["#ffffffcc"],
+            fill_colors=["white"],
+            fill_opacities=[0.8],
+            stroke_width=0,
+        )
+        self.bar = bq.Lines(x=nan2, y=nan2, scales=frac, colors=["black"], stroke_width=2)
+        self.bar_label = bq.Label(
+            x=[],
+            y=[],
+            text=[],
+            scales=frac,
+            colors=["black"],
+            default_size=12,
+            align="middle",
+            y_offset=-9,
+        )
+        self.north = bq.Lines(
+            x=nan2,
+            y=nan2,
+            scales=frac,
+            colors=["black"],
+            fill="inside",
+            fill_colors=["black", "black"],
+            stroke_width=2,
+        )
+        self.north_label = bq.Label(
+            x=[],
+            y=[],
+            text=[],
+            scales=frac,
+            colors=["black"],
+            default_size=14,
+            font_weight="bold",
+            align="middle",
+            y_offset=-6,
+        )
+        self.marks = [self.bar_ground, self.bar, self.bar_label, self.north, self.north_label]
+
+    def m_per_px(self) -> float:
+        """Metres per pixel on screen, across and up alike."""
+        if self.sx.min is None or self.sx.max is None:
+            return 0.1
+        return float(self.sx.max - self.sx.min) / self.px[0]
+
+    def frame(self, bounds: Sequence[float], least_m: float = 40.0) -> None:
+        """Show ``bounds`` (x0, y0, x1, y1 [m]) whole with a margin (the printed maps'), at
+        least ``least_m`` across: the largest scale that holds it on the plot area."""
+        x0, y0, x1, y1 = (float(v) for v in bounds)
+        pad = max(MAP_MARGIN * max(x1 - x0, y1 - y0), MAP_MARGIN_M)
+        half = max((x1 - x0) / 2 + pad, least_m / 2), max((y1 - y0) / 2 + pad, least_m / 2)
+        self.box = ((x0 + x1) / 2 - half[0], (y0 + y1) / 2 - half[1])
+        self.box += ((x0 + x1) / 2 + half[0], (y0 + y1) / 2 + half[1])
+        self._fit_box()
+
+    def _fit_box(self) -> None:
+        bx0, by0, bx1, by1 = self.box
+        w_px, h_px = self.px
+        self._show((bx0 + bx1) / 2, (by0 + by1) / 2, max((bx1 - bx0) / w_px, (by1 - by0) / h_px))
+
+    def _show(self, x: float, y: float, m_per_px: float) -> None:
+        """Centre the view on (x, y) at ``m_per_px`` across and up."""
+        half_x, half_y = m_per_px * self.px[0] / 2, m_per_px * self.px[1] / 2
+        self._ours = True
+        try:
+            with self.sx.hold_sync(), self.sy.hold_sync():
+                self.sy.min, self.sy.max = float(y - half_y), float(y + half_y)
+                self.sx.min, self.sx.max = float(x - half_x), float(x + half_x)
+        finally:
+            self._ours = False
+        self._drawn()
+
+    def _moved(self) -> None:
+        if self._ours:
+            return
+        self.box = None  # panned or zoomed in the browser: a resize keeps its scale
+        self._drawn()
+
+    def _resized(self) -> None:
+        """The plot area changed size on screen: the box framed is framed again; a view
+        panned or zoomed keeps its centre and scale (more or less of it shows)."""
+        size = self.probe.plot_px
+        if len(size) != 2 or min(size) <= 0:
+            return
+        old, self.px = self.px, (float(size[0]), float(size[1]))
+        self._draw_north()  # (its pixels, in the new fractions)
+        if self.box is not None:
+            self._fit_box()
+        elif self.sx.min is not None and self.sy.min is not None:
+            mx = (self.sx.max - self.sx.min) / old[0]
+            my = (self.sy.max - self.sy.min) / old[1]
+            cx, cy = (self.sx.min + self.sx.max) / 2, (self.sy.min + self.sy.max) / 2
+            self._show(cx, cy, math.sqrt(mx * my))
+
+    def _drawn(self) -> None:
+        """The grid and the scale bar for the view shown; then ``on_change``."""
+        if None in (self.sx.min, self.sx.max, self.sy.min, self.sy.max):
+            return
+        step = round_step(self.m_per_px() * TICK_GAP_PX)
+        for axis, scale in zip(self.axes, (self.sx, self.sy), strict=True):
+            with axis.hold_sync():
+                axis.tick_values = round_ticks(scale.min, scale.max, step)
+                axis.tick_format = f".{tick_decimals(step)}f"
+        span = float(self.sx.max - self.sx.min)
+        length = scale_bar_length(span)
+        self._draw_bar(length / span, f"{length:g} m")
+        self.on_change()
+
+    def _draw_bar(self, share: float, words: str) -> None:
+        """The scale bar, ``share`` of the plot's width, its length in ``words``."""
+        px_x, px_y = 1.0 / self.px[0], 1.0 / self.px[1]  # a pixel, in fractions
+        x0, y0 = 14 * px_x, 14 * px_y
+        x1, tick = x0 + share, 5 * px_y
+        ground = np.array([[x0 - 8 * px_x, y0 - 6 * px_y], [x1 + 8 * px_x, y0 + 26 * px_y]])
+        with self.bar_ground.hold_sync():
+            self.bar_ground.x = [ground[[0, 1, 1, 0, 0], 0]]
+            self.bar_ground.y = [ground[[0, 0, 1, 1, 0], 1]]
+        with self.bar.hold_sync():  # the bar with its two end ticks
+            self.bar.x = [[x0, x0, x1, x1]]
+            self.bar.y = [[y0 + tick, y0, y0, y0 + tick]]
+        with self.bar_label.hold_sync():
+            self.bar_label.x, self.bar_label.y = [(x0 + x1) / 2], [y0 + tick]
+            self.bar_label.text = [words]
+
+    def _draw_north(self) -> None:
+        """An arrow up (grid north) with its N, near the upper right corner (below the
+        figure's own toolbar)."""
+        px_x, px_y = 1.0 / self.px[0], 1.0 / self.px[1]
+        x, y0, y1 = 1.0 - 26 * px_x, 1.0 - 100 * px_y, 1.0 - 58 * px_y
+        head_w, head_h = 6 * px_x, 14 * px_y
+        with self.north.hold_sync():  # the shaft, then the head (a filled triangle)
+            self.north.x = [[x, x, x, x], [x - head_w, x, x + head_w, x - head_w]]
+            self.north.y = [
+                [y0, y1 - head_h, y1 - head_h, y0],
+                [y1 - head_h, y1, y1 - head_h, y1 - head_h],
+            ]
+        with self.north_label.hold_sync():
+            self.north_label.x, self.north_label.y, self.north_label.text = [x], [y1], ["N"]
+
+
 class PlanMap:
     """The site, the plan and its coverage on one interactive map, and every edit by hand.
 
@@ -221,7 +514,8 @@ class PlanMap:
         self.on_facade: Callable[[str], None] = lambda _id: None
         self.on_range_dragged: Callable[[float, float], None] = lambda _a, _b: None
         self.on_passage: Callable[[np.ndarray, np.ndarray], None] = lambda _a, _b: None
-        self.sx, self.sy = bq.LinearScale(), bq.LinearScale()
+        # (no padding: the plot area's pixels are the scales' whole range, as MapView counts)
+        self.sx, self.sy = bq.LinearScale(allow_padding=False), bq.LinearScale(allow_padding=False)
         self._site_marks()
         self._plan_marks_made()
         self._label_marks()
@@ -370,18 +664,16 @@ class PlanMap:
 
     def _figure(self) -> bq.Figure:
         """The map's figure with its axes, every mark in drawing order, and pan and zoom."""
-        axes = [
-            bq.Axis(scale=self.sx, label="E [m]", tick_format=".0f", num_ticks=5),
-            bq.Axis(
-                scale=self.sy,
-                label="N [m]",
-                orientation="vertical",
-                tick_format=".0f",
-                num_ticks=5,
-                label_offset="65px",
-            ),
-            self.colour_axis,
-        ]
+        ax_x = bq.Axis(scale=self.sx, label="E [m]", tick_format=".0f")
+        ax_y = bq.Axis(
+            scale=self.sy,
+            label="N [m]",
+            orientation="vertical",
+            tick_format=".0f",
+            label_offset="65px",
+        )
+        axes = [ax_x, ax_y, self.colour_axis]
+        self.view = MapView(self.sx, self.sy, ax_x, ax_y)
         self._plan_marks = [
             self.route,
             self.target_links,
@@ -416,13 +708,14 @@ class PlanMap:
                 self.building_labels,
                 self.labels,
                 self.notice,
+                *self.view.marks,  # the scale bar and the north arrow, over everything
             ],
             axes=axes,
             padding_x=0,
             padding_y=0,
             fig_margin={"top": 10, "bottom": 45, "left": 80, "right": 70},
-            # the map grows with the window (its plot kept square: a metre as long across
-            # as up), never below a usable size
+            # the map grows with the window, never below a usable size; a metre as long
+            # across as up whatever its shape (MapView)
             layout=w.Layout(width="100%", height="calc(100vh - 240px)", min_height="460px"),
         )
         figure.add_class("planner-map")
@@ -506,6 +799,7 @@ class PlanMap:
         self._targets: dict[str, tuple[list[str], np.ndarray]] = {
             kind: ([], np.empty((0, 2))) for kind in self.target_marks
         }
+        self._target_tips: dict[str, list[str]] = {}  # the words on hover, by kind
         self._quiet = False
 
     def _wire(self) -> None:
@@ -527,11 +821,11 @@ class PlanMap:
         self.show_links.observe(lambda _c: self._layers(), "value")
         self.show_route.observe(lambda _c: self._layers(), "value")
         self.show_candidates.observe(lambda _c: self._layers(), "value")
-        # once per view change (a pan or zoom moves both scales, and max last)
-        self.sx.observe(lambda _c: self._draw_labels(), names=["max"])
+        # after every view change: a pan, a zoom, a frame, the window resized
+        self.view.on_change = self._draw_labels
 
     def _lay_out(self) -> w.VBox:
-        return w.VBox(
+        box = w.VBox(
             [
                 w.HTML(_CSS),
                 self.mode,
@@ -551,9 +845,12 @@ class PlanMap:
                 ),
                 self.status,
                 self.figure,
+                self.view.probe,
                 self.legend,
             ]
         )
+        box.add_class("planner-map-box")  # (the probe measures the figure in it)
+        return box
 
     # -- showing a site and a plan -------------------------------------------------------------
     def _draw_site(self, site, heights_known: bool = True) -> None:
@@ -656,6 +953,7 @@ class PlanMap:
         self.samples.x, self.samples.y, self.samples.color = [], [], []
         self._xy, self._ids, self.locked, self._purposes = np.empty((0, 2)), [], [], []
         self._targets = {k: ([], np.empty((0, 2))) for k in self.target_marks}
+        self._target_tips = {}
         with self.stations.hold_sync():
             self.stations.x, self.stations.y, self.stations.names = [], [], []
         for mark in (self.route, self.target_links, self.cloud_links):
@@ -688,13 +986,14 @@ class PlanMap:
         if not (stale and self._site is not None):
             self._draw_site(p.site)
         self._draw_samples()
-        self._targets = {}
+        self._targets, self._target_tips = {}, {}
         for kind in self.target_marks:
             rows = p.targets[p.targets["type"] == kind]
             self._targets[kind] = (
                 [str(t) for t in rows["target_id"]],
                 rows[["x", "y"]].to_numpy(dtype=float).reshape(-1, 2),
             )
+            self._target_tips[kind] = target_tips(rows, p.scan_stations)
         scans = p.scan_stations  # (a traverse's set-ups are planned with the network)
         xy = scans[["x", "y"]].to_numpy(dtype=float)
         self._xy = xy
@@ -704,9 +1003,7 @@ class PlanMap:
         self._quiet = True
         with self.stations.hold_sync():
             self.stations.x, self.stations.y = xy[:, 0], xy[:, 1]
-            self.stations.names = [
-                f"{s} ({pu})" for s, pu in zip(self._ids, self._purposes, strict=True)
-            ]
+            self.stations.names = station_tips(scans)  # (id, purpose, E, N, heights, nearest)
             self.stations.colors = [COLOURS.get(pu, COLOURS["hand"]) for pu in self._purposes]
         self._draw_targets()
         self._quiet = False
@@ -788,40 +1085,29 @@ class PlanMap:
             mark.opacities = [0.3] if stale else [1.0]
 
     def fit_view(self) -> None:
-        """Frame the planned buildings, the stations and the targets."""
+        """Frame the planned buildings, the stations and the targets (the area the printed
+        maps frame: :func:`~planner.app.maps.planned_area`)."""
         pts = [self._xy, *(xy for _ids, xy in self._targets.values())]
         if self._site is not None:
-            pts += [shapely.get_coordinates(b.footprint) for b in self._site.planned]
-        self._frame_points([q for q in pts if len(q)])
+            self.view.frame(planned_area(self._site, *pts))
+        else:
+            self._frame_points(pts)
 
     def whole_view(self) -> None:
-        """Frame every building of the site."""
+        """Frame every building of the site, and the plan's stations and targets."""
         if self._site is None:
             return
         pts = [shapely.get_coordinates(b.footprint) for b in self._site.buildings]
-        self._frame_points([*pts, self._xy])
+        self._frame_points([*pts, self._xy, *(xy for _ids, xy in self._targets.values())])
 
     def _frame_points(self, pts: list[np.ndarray]) -> None:
         pts = [q for q in pts if len(q)]
-        if not pts:
-            return
-        allxy = np.vstack(pts)
-        lo, hi = allxy.min(axis=0), allxy.max(axis=0)
-        centre = (lo + hi) / 2
-        self._frame(centre[0], centre[1], float((hi - lo).max()) / 2 + 10.0)
-
-    def _frame(self, x: float, y: float, half: float) -> None:
-        """A square view round (x, y) on a figure kept square: a metre as long across as up."""
-        half = max(half, 20.0)
-        with self.sx.hold_sync(), self.sy.hold_sync():
-            self.sy.min, self.sy.max = float(y - half), float(y + half)
-            self.sx.min, self.sx.max = float(x - half), float(x + half)  # (labels redrawn)
-        self.figure.min_aspect_ratio = self.figure.max_aspect_ratio = 1.0
+        if pts:
+            allxy = np.vstack(pts)
+            self.view.frame((*allxy.min(axis=0), *allxy.max(axis=0)))
 
     def _m_per_px(self) -> float:
-        if self.sx.min is None or self.sx.max is None:
-            return 0.1
-        return float(self.sx.max - self.sx.min) / MAP_PX
+        return self.view.m_per_px()
 
     def _draw_labels(self) -> None:
         """Station ids (a lock shown) and building ids where they do not pile up — the ids
@@ -845,9 +1131,13 @@ class PlanMap:
             self.building_labels.text = [t for t, k in zip(names, both, strict=True) if k]
 
     # -- modes -----------------------------------------------------------------------------------
+    def locked_xy(self) -> np.ndarray:
+        """The positions ``(k, 2)`` [m] of the stations locked on the map."""
+        return self._xy[np.asarray(self.locked, bool)].reshape(-1, 2)
+
     def _reoptimise_locked(self) -> None:
         if not self._no_plan("re-optimised"):
-            self._reoptimise(self._xy[np.asarray(self.locked, bool)])
+            self._reoptimise(self.locked_xy())
 
     def _set_mode(self) -> None:
         mode = self.mode.value
@@ -1006,7 +1296,8 @@ class PlanMap:
             ids, xy = self._targets.get(kind, ([], np.empty((0, 2))))
             with mark.hold_sync():
                 mark.x, mark.y = xy[:, 0], xy[:, 1]
-                mark.names = list(ids)
+                tips = self._target_tips.get(kind, [])
+                mark.names = tips if len(tips) == len(ids) else list(ids)
         self._quiet = quiet
 
     def _current(self) -> np.ndarray:
@@ -1131,7 +1422,7 @@ def _legend() -> str:
     item = "<span style='margin-right:1.2em;white-space:nowrap'>{}</span>"
     parts = [
         f"<b style='color:{COLOURS['cover']}'>▲</b> station (colour: why it is there; "
-        "its id and purpose on hover)",
+        "hover: its place and nearest station)",
         "<b style='color:#8e44ad'>■</b> flat target",
         "<b style='color:#8e44ad'>●</b> sphere",
         "<b>▼</b> control point",

@@ -10,6 +10,7 @@ import html
 import io
 import os
 import tempfile
+from pathlib import Path
 from typing import Any
 
 import ipywidgets as w
@@ -17,8 +18,10 @@ import matplotlib.pyplot as plt
 
 from planner.app.serve import UPLOAD_ROOT_ENV
 from planner.app.wording import for_dashboard_html
-from planner.scanner import DEFAULT_SCANNER, catalogue, user_profiles
-from planner.targets import DEFAULT_INVENTORY
+from planner.atomic import write_text_atomic
+from planner.errors import PlannerError
+from planner.scanner import DEFAULT_SCANNER, catalogue, user_profile_dir, user_profiles
+from planner.targets import DEFAULT_INVENTORY, parse_inventory
 
 __all__ = [
     "download_link",
@@ -91,16 +94,43 @@ def scanner_dropdown() -> w.Dropdown:
     )
 
 
+def inventory_text(items=DEFAULT_INVENTORY) -> str:
+    """An inventory as the dashboard's text: one item a line, name, type, size mm and how
+    many the crew has where it counts (read back by :func:`planner.targets.parse_inventory`)."""
+    return "\n".join(
+        f"{i.name}, {i.type}, {i.size_mm:g}" + (f", {i.count}" if i.count else "") for i in items
+    )
+
+
+def kit_file() -> Path:
+    """Where the dashboard remembers the crew's kit between sessions: ``kit.txt`` beside the
+    user's scanner profiles (:func:`planner.scanner.user_profile_dir`)."""
+    return user_profile_dir() / "kit.txt"
+
+
+def remembered_kit() -> str:
+    """The kit last planned with in the dashboard (:func:`remember_kit`), else the default
+    inventory; a file that no longer reads as an inventory is ignored."""
+    try:
+        text = kit_file().read_text(encoding="utf-8")
+        parse_inventory(text)
+    except (OSError, UnicodeDecodeError, PlannerError):
+        return inventory_text()
+    return text
+
+
+def remember_kit(text: str) -> None:
+    """Keep the kit ``text`` (an inventory that parsed) for the next session; a folder that
+    cannot be written leaves it unremembered, silently (the plan does not depend on it)."""
+    try:
+        if kit_file().is_file() and kit_file().read_text(encoding="utf-8") == text:
+            return
+        write_text_atomic(kit_file(), text)
+    except (OSError, PlannerError):
+        return
+
+
 def inventory_box(description: str, style: dict, layout: w.Layout) -> w.Textarea:
     """The target inventory as text, one item a line (name, type, size mm, and how many the
-    crew has where it counts), starting from the default inventory (read by
-    :func:`planner.targets.parse_inventory`)."""
-    return w.Textarea(
-        value="\n".join(
-            f"{i.name}, {i.type}, {i.size_mm:g}" + (f", {i.count}" if i.count else "")
-            for i in DEFAULT_INVENTORY
-        ),
-        description=description,
-        style=style,
-        layout=layout,
-    )
+    crew has where it counts), starting from the kit remembered (:func:`remembered_kit`)."""
+    return w.Textarea(value=remembered_kit(), description=description, style=style, layout=layout)
