@@ -20,11 +20,20 @@ from planner.pipeline.survey.asscanned import compare_links, read_link_report, r
 from planner.pipeline.survey.pointclouds import read_poses
 
 
+def _roles(p) -> tuple[str, str, str]:
+    """The station to skip (the one meeting the most samples: something is left unmet),
+    and two to move 3 m (the first two others in id order)."""
+    busy = str(p.coverage.loc[p.coverage["meets"], "station_id"].value_counts().index[0])
+    others = sorted(s for s in p.scan_stations["station_id"] if s != busy)
+    return busy, others[0], others[1]
+
+
 def _moved(p):
+    skip, east, north = _roles(p)
     st = p.scan_stations[["station_id", "x", "y"]].copy()
-    st = st[st["station_id"] != "S05"].copy()  # skipped
-    st.loc[st["station_id"] == "S02", "x"] += 3.0  # m
-    st.loc[st["station_id"] == "S09", "y"] += 3.0
+    st = st[st["station_id"] != skip].copy()  # skipped
+    st.loc[st["station_id"] == east, "x"] += 3.0  # m
+    st.loc[st["station_id"] == north, "y"] += 3.0
     return st
 
 
@@ -35,8 +44,10 @@ def test_replan_proposes_the_fewest_extra_stations_for_what_is_left():
     scanned = _moved(p)
     r = replan(p, scanned)
     status = r.stations.set_index("station_id")["status"]
-    assert status["S05"] == "skipped" and status["S02"] == "moved" and status["S01"] == "as planned"
-    assert r.stations.set_index("station_id").loc["S02", "moved_m"] == pytest.approx(3.0)
+    skip, east, north = _roles(p)
+    assert status[skip] == "skipped" and status[east] == status[north] == "moved"
+    assert (status == "as planned").sum() == len(p.scan_stations) - 3
+    assert r.stations.set_index("station_id").loc[east, "moved_m"] == pytest.approx(3.0)
     wb = workbench_of(r.plan)  # the re-plan's (it works on a copy of the plan)
     ok = wb.evaluation.ok
     forced = wb.add_positions(scanned[["x", "y"]].to_numpy())

@@ -33,7 +33,8 @@ def rehearsal(default_plan):
 
 
 def test_every_station_is_scanned_with_walls_ground_and_targets(default_plan, rehearsal):
-    assert [s.station_id for s in rehearsal.scans] == [f"S{k:02d}" for k in range(1, 11)]
+    n = len(default_plan.scan_stations)
+    assert [s.station_id for s in rehearsal.scans] == [f"S{k:02d}" for k in range(1, n + 1)]
     kinds = np.concatenate([s.kind for s in rehearsal.scans])
     seen = {POINT_KINDS[k] for k in np.unique(kinds)}
     assert {"wall", "terrain", "sphere"} <= seen
@@ -184,10 +185,12 @@ def test_an_independent_icp_on_the_rehearsed_clouds_is_of_the_link_models_order(
 def test_a_targets_height_is_its_centres_in_the_sites_height_system(default_plan):
     p = copy_plan(default_plan)
     p.targets["z"] = p.targets["z"] + 100.0  # m: every target lifted
+    spheres = p.targets[p.targets["type"] == "sphere"]
+    busiest = pd.Series([s for ids in spheres["station_ids"] for s in ids]).value_counts()
     lifted = rehearse(
-        p, beams_per_station=200_000, seed=2, noise=False, stations=["S03", "S04", "S06"]
+        p, beams_per_station=200_000, seed=2, noise=False, stations=list(busiest.index[:3])
     )
-    assert sum((s.kind == POINT_KINDS.index("sphere")).sum() for s in lifted.scans) > 10
+    assert sum((s.kind == POINT_KINDS.index("sphere")).sum() for s in lifted.scans) > 5
     for s in lifted.scans:
         on = s.kind == POINT_KINDS.index("sphere")
         assert (s.world_xyz[on, 2] > 99.0).all()  # m: the spheres went with them

@@ -37,8 +37,9 @@ def test_the_default_plan_keeps_its_promise_in_a_virtual_survey(default_world):
 def test_registered_pair_by_pair_the_survey_breaks_the_adjustments_promise(default_world):
     """Negative control: the same plan, its scans registered link by link instead of in one
     adjustment (the targets' centres as the model has them, to keep it quick): the errors
-    add up along the chain, the survey finds the registration half as large again as
-    promised, and samples above their limits."""
+    add up along the chain, the survey finds the registration larger than promised (median
+    over 1.1 times, the 95th percentile over 1.3 times on some axis), and samples above
+    their limits."""
     res = survey(
         default_world,
         trials=300,
@@ -48,7 +49,7 @@ def test_registered_pair_by_pair_the_survey_breaks_the_adjustments_promise(defau
         noise_trials=10_000,
     )
     out = report(res)
-    assert max(out["reg_median"]) > 1.3 and max(out["p95"]) > 1.2, out
+    assert max(out["reg_median"]) > 1.1 and max(out["reg_p95"]) > 1.3, out
     assert out["false_meets_any"] > 0, out
 
 

@@ -336,15 +336,18 @@ def _table(new: Plan, scanned: pd.DataFrame, planned: pd.DataFrame, left: set) -
         else:
             d, status = np.nan, "added on site"
         rows.append((sid, r.scan_name, status, r.x, r.y, d, int(met.get(sid, 0)), ""))
-    for sid in planned.index.difference(scanned["station_id"].astype(str)):
+    scans = new.scan_stations
+    again = set(scans["station_id"].astype(str))  # a skipped station the re-plan keeps: extra
+    for sid in planned.index.difference(scanned["station_id"].astype(str)).difference(again):
         at = planned.loc[sid]
         rows.append((sid, "", "skipped", at["x"], at["y"], np.nan, 0, ""))
-    known = set(scanned["station_id"].astype(str)) | set(planned.index)
-    scans = new.scan_stations
+    known = set(scanned["station_id"].astype(str))
     number = [id_number(str(i), "S") or 0 for i in scans["station_id"]]
     for r in scans.iloc[np.argsort(number, kind="stable")].itertuples():
         if r.station_id not in known:
             reason = _reason(new, r, left)
+            if r.station_id in planned.index:  # where the plan had it (the ids stay)
+                reason += " (skipped: scan it where the plan has it)"
             rows.append((r.station_id, "", "extra", r.x, r.y, np.nan, int(r.samples_met), reason))
     return pd.DataFrame(rows, columns=AS_SCANNED_COLUMNS)
 
