@@ -587,6 +587,15 @@ def prune(
     return r
 
 
+#: Merging stations closer than the crew's spacing (each pair tried with its network built
+#: and judged) takes at most this share of the time left, and at most this share of the time
+#: the plan has taken so far (at least :data:`MIN_MERGE_S`): a plan of many close pairs
+#: (best-effort stations for what no position meets) would otherwise spend its budget here.
+MERGE_SHARE = 0.25
+MERGE_OF_ELAPSED = 0.5
+MIN_MERGE_S = 1.0
+
+
 def merge_close_stations(
     ctx: Context,
     cand: np.ndarray,
@@ -594,30 +603,38 @@ def merge_close_stations(
     r: Round,
     clock: Clock,
     keep: np.ndarray | None = None,
-) -> Round:
+) -> tuple[Round, int]:
     """One set-up per spot (:mod:`planner.pipeline.optimise.spacing`) for the network's
     stations: each pair closer than the crew's spacing, closest first, tried as one station
     — the first of the pair kept, or the second, or the free candidate nearest their middle
     the spacing away from every other station — with its network built and judged; taken
     where the network has fewer stations and no sample is lost. The ``keep`` candidates
-    (locked by hand) are never moved; a pair no trial merges stays (the plan says why)."""
+    (locked by hand) are never moved; a pair no trial merges stays (the plan says why).
+    Within :data:`MERGE_SHARE` of the time left and :data:`MERGE_OF_ELAPSED` of the time
+    taken so far; the round and how many close pairs the time left untried."""
     spacing = ctx.settings.station_spacing_m
     fixed = set(np.asarray(keep if keep is not None else [], dtype=np.int64).tolist())
+    elapsed = time.perf_counter() - clock.started
+    stop = min(
+        clock.share(MERGE_SHARE), time.monotonic() + max(MIN_MERGE_S, MERGE_OF_ELAPSED * elapsed)
+    )
     tried: set[tuple[int, int]] = set()
-    while r.net is not None and spacing > 0 and not clock.over:
+    while r.net is not None and spacing > 0:
         st = r.net.stations
         pairs = [
             (int(st[i]), int(st[j]))
             for i, j in close_pairs(cand[st, :2], spacing)
             if (int(st[i]), int(st[j])) not in tried and not {int(st[i]), int(st[j])} <= fixed
         ]
-        if not pairs:
-            break
+        if not pairs or time.monotonic() > stop:
+            return r, len(pairs)
         a, b = pairs[0]
         tried.add((a, b))
         rest = st[(st != a) & (st != b)]
         datum = r.net.datum_station if r.net.datum_station not in (a, b) else None
         for one in _merge_options(cand, rest, a, b, spacing, fixed):
+            if time.monotonic() > stop:
+                break
             trial = Round(cover=_swap(r.cover, a, b, one), added=_swap(r.added, a, b, one))
             trial.net = round_network(ctx, cand, seen, np.append(rest, one), clock, datum)
             if trial.net is None:
@@ -626,7 +643,7 @@ def merge_close_stations(
             if len(trial.net.stations) < len(st) and trial.judged.n_met >= r.judged.n_met:
                 r = trial
                 break
-    return r
+    return r, 0
 
 
 def _merge_options(

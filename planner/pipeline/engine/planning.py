@@ -274,9 +274,10 @@ def choose_stations(
     r = Round(cover=cover, net=round_network(ctx, cand, seen, cover, clock))
     r.judged = judge(ctx, cand, r)
     r, rounds = _registration_rounds(ctx, cand, seen, r, forced, ev, clock, say, cut)
+    untried = 0
     if st.computes_registration and r.net is not None:
         r = prune(ctx, cand, seen, r, clock, keep=forced)
-        r = merge_close_stations(ctx, cand, seen, r, clock, keep=forced)
+        r, untried = merge_close_stations(ctx, cand, seen, r, clock, keep=forced)
     if any(n.cut_short for n in (r.net,) if n is not None):
         cut.append("the search for linking stations")
     n_locked = len(forced) - len(best_effort)
@@ -284,6 +285,7 @@ def choose_stations(
     if not_kept:
         messages.append(f"Not kept from the plan before: {'; '.join(not_kept)}.")
     solver = _solver_report(sol, rounds, cut, fac.party_wall, ev.evaluated)
+    solver.spacing_untried = untried
     hand = np.setdiff1d(forced, best_effort)
     return assemble(
         wb,

@@ -55,10 +55,14 @@ class SolverReport:
     shared_bound: float | None = None
     block_bound_sum: float | None = None
     redundant_removed: int = 0
+    #: pairs of stations closer than the crew's spacing the merging's time left untried
+    spacing_untried: int = 0
 
 
 #: The summary lists this many zones at most (zones.csv holds them all).
 LISTED_ZONES = 20
+#: The summary names at most this many pairs of stations closer than the crew's spacing.
+LISTED_PAIRS = 12
 
 
 @dataclass(kw_only=True, eq=False)
@@ -206,7 +210,7 @@ class Plan:
 
     def spacing_summary(self) -> str | None:
         """The crew's station spacing in words (:mod:`planner.pipeline.optimise.spacing`):
-        the closest pair where none stands closer, else every closer pair and why it stays;
+        the closest pair where none stands closer, else the closer pairs by why they stay;
         None for fewer than two scanning stations."""
         st, spacing = self.scan_stations, self.settings.station_spacing_m
         if len(st) < 2:
@@ -224,19 +228,31 @@ class Plan:
                 f"Station spacing: no two set-ups closer than {spacing:g} m (the closest: "
                 f"{ids[i]}–{ids[j]}, {d[i, j]:.1f} m)."
             )
-        words = []
+        untried = self.solver.spacing_untried
+        other = "one set-up in their place meets fewer samples or breaks the network" + (
+            f", or ({untried} pair(s)) the time for merging ran out" if untried else ""
+        )
+        why: dict[str, list[str]] = {}
         for i, j in close:
-            d = float(np.hypot(*(xy[i] - xy[j])))
-            why = (
-                "placed by hand"
-                if "hand" in (purpose[i], purpose[j])
-                else "one set-up in their place meets fewer samples or breaks the network"
+            pair = {purpose[i], purpose[j]}
+            reason = (
+                STATION_PURPOSES["hand"]
+                if "hand" in pair
+                else STATION_PURPOSES["best-effort"]
+                if "best-effort" in pair
+                else other
             )
-            words.append(f"{ids[i]}–{ids[j]} {d:.1f} m ({why})")
-        return (
-            f"Station spacing: {len(close)} pair(s) closer than {spacing:g} m, kept: "
-            + "; ".join(words)
-            + "."
+            why.setdefault(reason, []).append(
+                f"{ids[i]}–{ids[j]} {float(np.hypot(*(xy[i] - xy[j]))):.1f} m"
+            )
+        parts = [
+            ", ".join(p[:LISTED_PAIRS])
+            + (f" and {len(p) - LISTED_PAIRS} more" if len(p) > LISTED_PAIRS else "")
+            + f" ({reason})"
+            for reason, p in why.items()
+        ]
+        return f"Station spacing: {len(close)} pair(s) closer than {spacing:g} m, kept: " + (
+            "; ".join(parts) + "."
         )
 
     def summary(self) -> str:
