@@ -451,3 +451,27 @@ def test_control_points_and_the_scanners_levelling_are_given_in_the_dashboard():
     assert sc.is_levelled and sc.levelling_rms_arcsec == 3.0  # ″
     words = for_dashboard(DATUM_LEVELLING_FIX)
     assert "Scanner levelling" in words and "Control CSV" in words and "--" not in words
+
+
+def test_ids_start_at_s01_until_a_plan_is_handed_out_or_edited():
+    """Planned again with another scanner before anything went out: ids from S01 again;
+    once the plan's files are made (downloads, report, booklet), the next plan of the same
+    site keeps them and numbers its new stations after them."""
+    from planner.app.dashboard import StationPlanner
+
+    ui = StationPlanner()
+    ui.run()
+    ui.scanner.value = "leica-rtc360"
+    ui.run()
+    ids = sorted(ui.plan.stations["station_id"])
+    assert ids[0] == "S01" and len(ids) == len(set(ids))
+    ui._plan_files()  # the files made: the ids are out
+    out = ui.plan.stations.set_index("station_id")[["x", "y"]]
+    ui.scanner.value = "leica-p50"
+    ui.run()
+    new = ui.plan.stations.set_index("station_id")[["x", "y"]]
+    for sid, (x, y) in new.iterrows():
+        if sid in out.index:
+            assert out.loc[sid].to_numpy() == pytest.approx([x, y], abs=1e-3)  # m: where it was
+        else:
+            assert int(sid[1:]) > max(int(s[1:]) for s in out.index)

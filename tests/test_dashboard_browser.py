@@ -603,7 +603,7 @@ def test_adding_deleting_and_locking_by_hand(page):
     left = _marks(page, 5, 10)
     assert all(abs(q["x"] - t["x"]) + abs(q["y"] - t["y"]) > 2 for q in left)  # px
     # lock one station, re-optimise the rest around it
-    before_rows = list(_station_rows(page).values())
+    before_rows = _station_rows(page)
     _open_map(page)
     page.wait_for_timeout(500)
     _mode(page, "Lock / unlock")
@@ -622,11 +622,18 @@ def test_adding_deleting_and_locking_by_hand(page):
     hand = re.search(r"\b(\d+) placed by hand", summary)
     assert hand and int(hand.group(1)) >= 1, [s for s in summary.splitlines() if "Station" in s]
     page.screenshot(path=str(ARTIFACTS / "dashboard-edit-by-hand.png"), full_page=True)
-    # a station stands where one stood (the locked one; E, N to the millimetre)
-    after = _station_rows(page).values()
+    # a station stands where one stood (the locked one; E, N to the millimetre), and every
+    # station standing where one stood keeps its id; the new ones take numbers never given
+    after = _station_rows(page)
     assert any(
-        abs(e - e0) < 0.001 and abs(n - n0) < 0.001 for e, n in after for e0, n0 in before_rows
+        abs(e - e0) < 0.001 and abs(n - n0) < 0.001
+        for e, n in after.values()
+        for e0, n0 in before_rows.values()
     )  # m
+    top = max(int(s[1:]) for s in before_rows)
+    for sid, (e, n) in after.items():
+        was = [s for s, (e0, n0) in before_rows.items() if abs(e - e0) + abs(n - n0) < 0.002]
+        assert was == [sid] if was else int(sid[1:]) > top, (sid, was)
 
 
 def _station_rows(page) -> dict[str, tuple[float, float]]:

@@ -661,6 +661,7 @@ class StationPlanner:
     def _reset_state(self) -> None:
         """No plan on screen, nothing running."""
         self.plan = None
+        self._handed_out = ""  # the site whose plan's ids went out in a file (none yet)
         self._files: dict[str, bytes] = {}  # the downloads of the plan on screen
         self._unshown: set[str] = set()  # tabs not yet drawn for the plan on screen
         self._hints = ""  # what would meet the unmet samples, in the page's words
@@ -1106,11 +1107,16 @@ class StationPlanner:
 
             return fail
         before = self.plan
-        if before is None or before.site.name != site.name:  # a new site: ids from S01
+        if before is None or before.site.name != site.name:  # another site: ids from S01
             return lambda progress: plan(site, sc, req, st, progress=progress)
-        # the same site planned again (a passage, a zone, a setting changed): the ids given
-        # stay, the stations locked or placed by hand are kept where they can still stand
-        given, keep = user_edits(before, self.map.locked_xy())
+        locked = self.map.locked_xy()
+        edited = len(locked) or (before.stations["purpose"] == "hand").any()
+        if not edited and self._handed_out != site.name:  # nothing out or edited: from S01
+            return lambda progress: plan(site, sc, req, st, progress=progress)
+        # the same site planned again (a passage, a zone, a setting changed) after its ids
+        # went out in a file or the surveyor edited the plan: the ids given stay, and the
+        # stations locked or placed by hand are kept where they can still stand
+        given, keep = user_edits(before, locked)
         return lambda progress: plan(
             site, sc, req, st, progress=progress, locked=keep if len(keep) else None, given=given
         )
@@ -1343,6 +1349,7 @@ class StationPlanner:
         the booklet once they are made."""
         if self.plan is not None and not self._files:
             self._files = {name: text.encode() for name, text in render(self.plan).items()}
+            self._handed_out = self.plan.site.name  # its ids are out: a re-plan keeps them
         return self._files
 
     def _offer_downloads(self) -> None:
