@@ -133,8 +133,9 @@ class Scanner:
         Time of the station's images (HDR panorama) after the scan [s], when imaging is on.
     setup_min : float or None
         Time to set up, level and take down the scanner at a station [min] (the catalogue
-        says where each figure comes from); None: the plan's generic set-up time
-        (:attr:`~planner.pipeline.inputs.requirements.PlanSettings.setup_min`).
+        says where each figure comes from), used where the plan's settings give none
+        (:meth:`~planner.pipeline.inputs.requirements.PlanSettings.station_setup_min`);
+        None: the generic :data:`~planner.pipeline.inputs.requirements.GENERIC_SETUP_MIN`.
     label, source, notes : str
         Display name; where the figures come from; which values are assumptions.
     """

@@ -394,6 +394,13 @@ def test_ids_stay_through_a_hand_station_locks_re_optimising_and_a_re_plan_with_
     ui.run()  # the same site planned again, with the zone
     kept_in(ui.plan)
     assert not ui.stale.value
+    kit = ui.inventory.value
+    ui.inventory.value = "not an inventory"
+    ui.run()  # an error on the way: no plan on screen
+    assert ui.plan is None
+    ui.inventory.value = kit
+    ui.run()  # the edits and ids are still the site's
+    kept_in(ui.plan)
 
 
 def test_the_crews_kit_is_remembered_for_the_next_session():
@@ -402,15 +409,18 @@ def test_the_crews_kit_is_remembered_for_the_next_session():
     from planner.app.dashboard import StationPlanner
     from planner.app.widgets import inventory_text, kit_file
 
+    kit_file().unlink(missing_ok=True)
     ui = StationPlanner()
-    assert ui.inventory.value == inventory_text() or kit_file().is_file()
+    assert ui.inventory.value == inventory_text()  # nothing remembered: the default kit
     mine = "sphere-145, sphere, 145, 8\nflat-70, flat, 70"
-    ui.inventory.value = mine
-    ui._inputs()
-    assert StationPlanner().inventory.value == mine
-    kit_file().write_text("not, an, inventory, line, at all")
-    assert StationPlanner().inventory.value == inventory_text()
-    kit_file().unlink()
+    try:
+        ui.inventory.value = mine
+        ui._inputs()
+        assert StationPlanner().inventory.value == mine
+        kit_file().write_text("not, an, inventory, line, at all")
+        assert StationPlanner().inventory.value == inventory_text()
+    finally:
+        kit_file().unlink(missing_ok=True)
 
 
 def test_control_points_and_the_scanners_levelling_are_given_in_the_dashboard():

@@ -4,6 +4,7 @@ error judged, and what the plan says when registration is what fails."""
 
 from __future__ import annotations
 
+from dataclasses import replace
 from types import SimpleNamespace
 
 import numpy as np
@@ -148,6 +149,16 @@ def test_redundant_stations_see_each_sample_from_different_directions():
         az = np.degrees(np.arctan2(d[:, 1], d[:, 0]))
         gaps = np.abs((az[:, None] - az[None, :] + 180) % 360 - 180)
         assert gaps.max() >= 30.0 - 1e-9, (i, az)
+    assert_spaced(p)  # the separate views kept with one set-up per spot
+    # the views are spread after the merging: registration off (no network merge after),
+    # every met sample still has two stations 30 degrees apart
+    q = plan(site, p.scanner, req, replace(st, registration_error=False))
+    assert_spaced(q)
+    xq = q.stations[["x", "y"]].to_numpy()
+    okq = evaluate_stations(ctx, xq)["ok"]
+    for i in np.flatnonzero(q.coverage["meets"].to_numpy()):
+        az = np.degrees(np.arctan2(*(xq[okq[i]] - sample_xy[i]).T[::-1]))
+        assert np.abs((az[:, None] - az[None, :] + 180) % 360 - 180).max() >= 30.0 - 1e-9
 
 
 def test_a_sample_the_registration_estimate_leaves_is_still_covered_by_the_scanner():

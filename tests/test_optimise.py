@@ -386,3 +386,14 @@ def test_the_default_plan_keeps_the_crews_spacing(default_plan):
 
     assert_spaced(default_plan)
     assert "Station spacing: no two set-ups closer than 5 m" in default_plan.summary()
+    assert default_plan.solver.spacing_untried == 0
+    # negative control: with no spacing kept, the same site's plan has two set-ups 4 m
+    # apart (the registration rounds put them there) and one station more, no sample more
+    from dataclasses import replace
+
+    from planner.pipeline.engine.planning import plan
+
+    loose = plan(settings=replace(default_plan.settings, station_spacing_m=0.0))
+    xy = loose.stations[["x", "y"]].to_numpy()
+    assert close_pairs(xy, 5.0) and len(loose.stations) == len(default_plan.stations) + 1
+    assert loose.scanned["meets"].sum() == default_plan.scanned["meets"].sum()

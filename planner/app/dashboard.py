@@ -661,7 +661,8 @@ class StationPlanner:
     def _reset_state(self) -> None:
         """No plan on screen, nothing running."""
         self.plan = None
-        self._handed_out = ""  # the site whose plan's ids went out in a file (none yet)
+        self._handed_out: set[str] = set()  # the sites whose plan's ids went out in a file
+        self._kept: dict[str, tuple] = {}  # per site: what its next plan keeps (_remember)
         self._files: dict[str, bytes] = {}  # the downloads of the plan on screen
         self._unshown: set[str] = set()  # tabs not yet drawn for the plan on screen
         self._hints = ""  # what would meet the unmet samples, in the page's words
@@ -1106,20 +1107,32 @@ class StationPlanner:
                 raise error
 
             return fail
-        before = self.plan
-        if before is None or before.site.name != site.name:  # another site: ids from S01
+        if self.plan is not None:
+            self._remember(self.plan)
+        kept = self._kept.get(site.name)
+        if kept is None or not (kept[2] or site.name in self._handed_out):  # from S01
             return lambda progress: plan(site, sc, req, st, progress=progress)
-        locked = self.map.locked_xy()
-        edited = len(locked) or (before.stations["purpose"] == "hand").any()
-        if not edited and self._handed_out != site.name:  # nothing out or edited: from S01
-            return lambda progress: plan(site, sc, req, st, progress=progress)
-        # the same site planned again (a passage, a zone, a setting changed) after its ids
-        # went out in a file or the surveyor edited the plan: the ids given stay, and the
-        # stations locked or placed by hand are kept where they can still stand
-        given, keep = user_edits(before, locked)
+        # the site planned again (a passage, a zone, a setting changed; after an error, too)
+        # once its ids went out in a file or the surveyor edited its plan: the ids given
+        # stay, and the stations locked or placed by hand are kept where they can still stand
+        given, keep, _edited = kept
         return lambda progress: plan(
             site, sc, req, st, progress=progress, locked=keep if len(keep) else None, given=given
         )
+
+    def _remember(self, p) -> None:
+        """Keep what a plan of ``p``'s site made next keeps of it (per site, by its name):
+        its ids and the stations locked on the map or placed by hand, and whether the
+        surveyor edited it (moved, added, deleted or locked stations)."""
+        locked = self.map.locked_xy()
+        edited = bool(
+            len(locked)
+            or (p.stations["purpose"] == "hand").any()
+            or p.solver.method == "hand placement"
+        )
+        was = self._kept.get(p.site.name)
+        given, keep = user_edits(p, locked)
+        self._kept[p.site.name] = (given, keep, edited or (was is not None and was[2]))
 
     def run(self) -> None:
         """Plan with the current inputs and show the result, waiting for it (the notebook's
@@ -1349,7 +1362,7 @@ class StationPlanner:
         the booklet once they are made."""
         if self.plan is not None and not self._files:
             self._files = {name: text.encode() for name, text in render(self.plan).items()}
-            self._handed_out = self.plan.site.name  # its ids are out: a re-plan keeps them
+            self._handed_out.add(self.plan.site.name)  # its ids are out: a re-plan keeps them
         return self._files
 
     def _offer_downloads(self) -> None:

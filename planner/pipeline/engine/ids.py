@@ -56,9 +56,10 @@ class GivenIds:
         last_station: int = 0,
         last_target: int = 0,
     ) -> GivenIds:
-        """The ids of a plan's ``stations`` and ``targets`` tables (control points keep
-        their own ids anyway, and are left out); ``last_station``, ``last_target``: the
-        highest numbers given before them."""
+        """The ids of a plan's scanning ``stations`` (a traverse's set-ups are planned again
+        with the network, under their own ids) and ``targets`` (control points keep their
+        own ids anyway, and are left out); ``last_station``, ``last_target``: the highest
+        numbers given before them."""
         ours = targets[targets["type"] != "control"] if "type" in targets else targets
         s_ids = tuple(stations["station_id"].astype(str))
         t_ids = tuple(ours["target_id"].astype(str))

@@ -59,7 +59,7 @@ from planner.pipeline.network.network import Network
 from planner.pipeline.network.registration import build_network
 from planner.pipeline.network.targets import SightCache, TargetCandidates
 from planner.pipeline.optimise.cover import solve_cover
-from planner.pipeline.optimise.spacing import close_pairs
+from planner.pipeline.optimise.spacing import close_pairs, merge_options
 from planner.registration_error import datum_lean_mm
 from planner.scanner import Scanner
 from planner.site import Site
@@ -116,7 +116,7 @@ class Workbench:
 
     def given(self, p: Plan) -> GivenIds:
         """The ids plan ``p`` (made from this workbench) gave, for a plan made from it."""
-        return GivenIds.of(p.stations, p.targets, self.last_station, self.last_target)
+        return GivenIds.of(p.scan_stations, p.targets, self.last_station, self.last_target)
 
     @property
     def pool(self) -> np.ndarray:
@@ -470,6 +470,7 @@ class Judged:
     n_met: int
     n_stations: int
     short_by_registration: np.ndarray  # (N,) met by the scanner's error alone, not the total
+    met: np.ndarray | None = None  # (N,) the samples met (None: none judged)
 
     def better_than(self, other: Judged) -> bool:
         """More samples met; as many with fewer stations."""
@@ -594,6 +595,8 @@ def prune(
 MERGE_SHARE = 0.25
 MERGE_OF_ELAPSED = 0.5
 MIN_MERGE_S = 1.0
+#: A close pair is tried as each of its two stations and the best one candidate between.
+MERGE_TRIALS = 3
 
 
 def merge_close_stations(
@@ -608,7 +611,8 @@ def merge_close_stations(
     stations: each pair closer than the crew's spacing, closest first, tried as one station
     — the first of the pair kept, or the second, or the free candidate nearest their middle
     the spacing away from every other station — with its network built and judged; taken
-    where the network has fewer stations and no sample is lost. The ``keep`` candidates
+    where the network has fewer stations, every sample met before is met and no more
+    groups need planned control (a traverse, GNSS) to be tied. The ``keep`` candidates
     (locked by hand) are never moved; a pair no trial merges stays (the plan says why).
     Within :data:`MERGE_SHARE` of the time left and :data:`MERGE_OF_ELAPSED` of the time
     taken so far; the round and how many close pairs the time left untried."""
@@ -632,7 +636,7 @@ def merge_close_stations(
         tried.add((a, b))
         rest = st[(st != a) & (st != b)]
         datum = r.net.datum_station if r.net.datum_station not in (a, b) else None
-        for one in _merge_options(cand, rest, a, b, spacing, fixed):
+        for one in merge_options(cand[:, :2], rest, a, b, spacing, fixed)[:MERGE_TRIALS]:
             if time.monotonic() > stop:
                 break
             trial = Round(cover=_swap(r.cover, a, b, one), added=_swap(r.added, a, b, one))
@@ -640,26 +644,15 @@ def merge_close_stations(
             if trial.net is None:
                 continue
             trial.judged = judge(ctx, cand, trial)
-            if len(trial.net.stations) < len(st) and trial.judged.n_met >= r.judged.n_met:
+            kept = r.judged.met is None or not (r.judged.met & ~trial.judged.met).any()
+            if (
+                len(trial.net.stations) < len(st)
+                and kept
+                and len(trial.net.ties) <= len(r.net.ties)
+            ):
                 r = trial
                 break
     return r, 0
-
-
-def _merge_options(
-    cand: np.ndarray, rest: np.ndarray, a: int, b: int, spacing: float, fixed: set[int]
-) -> list[int]:
-    """The candidates tried in place of the pair ``a``, ``b`` (see
-    :func:`merge_close_stations`): a fixed one alone where one is fixed."""
-    if a in fixed or b in fixed:
-        return [a if a in fixed else b]
-    mid = (cand[a, :2] + cand[b, :2]) / 2.0
-    gap = np.hypot(*(cand[:, None, :2] - cand[None, rest, :2]).transpose(2, 0, 1)).min(
-        axis=1, initial=np.inf
-    )
-    free = np.flatnonzero(gap >= spacing)
-    middle = free[np.argmin(np.hypot(*(cand[free, :2] - mid).T))] if len(free) else None
-    return [a, b] + ([int(middle)] if middle is not None and middle not in (a, b) else [])
 
 
 def _swap(idx: np.ndarray, a: int, b: int, one: int) -> np.ndarray:
@@ -813,7 +806,7 @@ def judge(ctx: Context, cand: np.ndarray, r: Round) -> Judged:
     for c in "xyz":
         v = a.metrics[f"scanner_m_{c}_mm"]
         scanner_ok &= np.isfinite(v) & (v <= ctx.limits[f"m_{c}"] * (1 + 1e-9))
-    return Judged(a, int(met.sum()), len(station_xy), demanded & ~met & scanner_ok)
+    return Judged(a, int(met.sum()), len(station_xy), demanded & ~met & scanner_ok, met)
 
 
 def tightest_mm(ctx: Context) -> float:

@@ -569,12 +569,8 @@ def _optimise(
         if sol.lower_bound is not None:  # the bound of the others plus the forced ones
             sol.lower_bound = float(sol.lower_bound) + len(np.unique(forced))
             sol.gap = max(0.0, (sol.objective - sol.lower_bound) / max(sol.objective, 1))
-    if (ctx.stations_needed > 1).any():
-        spread = spread_views(ok, demand, sol.chosen, cand, fac.xy, req.min_view_angle_deg)
-        if len(spread) > len(sol.chosen):  # the bound still holds; the gap is the spread's
-            sol.status += f"; {len(spread) - len(sol.chosen)} added for separate views"
-            sol.chosen, sol.objective = spread, len(spread)
-            sol.gap = (sol.objective - sol.lower_bound) / sol.objective
+    # one set-up per spot, before the views are spread (merging counts the stations that
+    # meet a sample, not the directions they see it from)
     merged = merge_close(ok, demand, sol.chosen, cand[:, :2], st.station_spacing_m, forced)
     if merged.merged:  # one set-up per spot: never more stations, every demand still met
         sol.status += (
@@ -583,6 +579,12 @@ def _optimise(
         sol.chosen, sol.objective = merged.chosen, len(merged.chosen)
         if sol.lower_bound is not None:
             sol.gap = max(0.0, (sol.objective - sol.lower_bound) / max(sol.objective, 1))
+    if (ctx.stations_needed > 1).any():
+        spread = spread_views(ok, demand, sol.chosen, cand, fac.xy, req.min_view_angle_deg)
+        if len(spread) > len(sol.chosen):  # the bound still holds; the gap is the spread's
+            sol.status += f"; {len(spread) - len(sol.chosen)} added for separate views"
+            sol.chosen, sol.objective = spread, len(spread)
+            sol.gap = (sol.objective - sol.lower_bound) / sol.objective
     clock.note("optimise", time.perf_counter() - t)
     return sol
 

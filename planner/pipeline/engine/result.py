@@ -229,8 +229,11 @@ class Plan:
                 f"{ids[i]}–{ids[j]}, {d[i, j]:.1f} m)."
             )
         untried = self.solver.spacing_untried
-        other = "one set-up in their place meets fewer samples or breaks the network" + (
-            f", or ({untried} pair(s)) the time for merging ran out" if untried else ""
+        other = (
+            "a district's blocks are merged each on its own, not across their seams"
+            if self.solver.blocks
+            else "one set-up in their place meets fewer samples or breaks the network"
+            + (f", or ({untried} pair(s)) the time for merging ran out" if untried else "")
         )
         why: dict[str, list[str]] = {}
         for i, j in close:

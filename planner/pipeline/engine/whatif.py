@@ -304,7 +304,7 @@ def user_edits(p: Plan, locked_xy: np.ndarray | None = None) -> tuple[GivenIds, 
     numbers its workbench ever gave) and the positions ``(k, 2)`` [m] to keep — the stations
     locked (``locked_xy``) and those placed by hand (purpose "hand"), each once."""
     wb = workbench_of(p)
-    given = wb.given(p) if wb is not None else GivenIds.of(p.stations, p.targets)
+    given = wb.given(p) if wb is not None else GivenIds.of(p.scan_stations, p.targets)
     scans = p.scan_stations
     hand = scans[scans["purpose"] == "hand"][["x", "y"]].to_numpy(float)
     locked = np.empty((0, 2)) if locked_xy is None else np.asarray(locked_xy, float)

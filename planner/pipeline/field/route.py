@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import time
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -470,9 +471,13 @@ def _visiting_order(
 #: A visiting order that keeps more of the job within the kit may walk this share more than
 #: the shortest found.
 KIT_WALK_SLACK = 0.25
-#: The kit-saving order is looked for up to this many stations (each pass tries every move
-#: of one station, n² orders).
+#: The kit-saving order is looked for up to this many stations (each pass tries the moves
+#: of one station, up to n² orders), in at most this many passes (each lowers the targets
+#: standing beyond the kit by one at least).
 KIT_ORDER_MAX_STATIONS = 60
+KIT_ORDER_PASSES = 20
+#: ... and for at most this long [s] (an edit by hand is judged again with its route).
+KIT_ORDER_S = 0.3
 
 
 def _kit_order(
@@ -486,9 +491,11 @@ def _kit_order(
     """``order`` changed, where that helps, so that fewer targets stand at once than the
     crew owns of each item (``inventory``' counts; an item without one is not limited):
     one station at a time moved elsewhere in the order while that lowers the targets
-    standing beyond the kit, the walk (on ``d`` [m]) kept within :data:`KIT_WALK_SLACK` of
-    the shortest found and, where scans are registered on site (``linked``), every station
-    after one it links to. A target stands from the first station that sees it to the last
+    standing beyond the kit (:data:`KIT_ORDER_PASSES` moves, :data:`KIT_ORDER_S` at
+    most), the walk (on ``d``
+    [m]) kept within :data:`KIT_WALK_SLACK` of the shortest found and, where scans are
+    registered on site (``linked``), every station that came after one it links to still
+    doing so. A target stands from the first station that sees it to the last
     (every scan that sees it observes it in the registration's adjustment)."""
     owned = {i.name: i.count for i in inventory if i.count}
     n = len(order)
@@ -525,33 +532,33 @@ def _kit_order(
 
     best, (excess, walk) = np.asarray(order), cost(np.asarray(order))
     limit = walk * (1.0 + KIT_WALK_SLACK)
-    alone = _unregistered(best, links) if links is not None else 0
-    improved = excess > 0
-    while improved:
-        improved = False
-        for i in range(n):
-            for j in range(n):
-                if i == j:
-                    continue
-                o = np.insert(np.delete(best, i), j, best[i])
-                if links is not None and _unregistered(o, links) > alone:
-                    continue
-                e, wk = cost(o)
-                if wk <= limit and (e, wk) < (excess, walk):
-                    best, excess, walk, improved = o, e, wk, True
-                    break
-            if improved or excess == 0:
+    alone = _unregistered(best, links) if links is not None else set()
+    stop = time.monotonic() + KIT_ORDER_S
+    for _ in range(KIT_ORDER_PASSES):  # each pass: the first move that lowers the excess
+        if excess == 0 or time.monotonic() > stop:
+            break
+        moves = ((i, j) for i in range(n) for j in range(n) if i != j)
+        for i, j in moves:
+            o = np.insert(np.delete(best, i), j, best[i])
+            if links is not None and not _unregistered(o, links) <= alone:
+                continue
+            e, wk = cost(o)
+            if e < excess and wk <= limit:
+                best, excess, walk = o, e, wk
                 break
+        else:
+            break  # no move lowers it
     return best
 
 
-def _unregistered(order: np.ndarray, links: list[set[int]]) -> int:
-    """How many stations of ``order`` but the first come after none they link to (the
+def _unregistered(order: np.ndarray, links: list[set[int]]) -> set[int]:
+    """The stations of ``order`` but the first that come after none they link to (the
     first of a group of linked stations among them)."""
     seen = {int(order[0])}
-    alone = 0
+    alone = set()
     for k in order[1:]:
-        alone += bool(links[k]) and not links[k] & seen
+        if links[k] and not links[k] & seen:
+            alone.add(int(k))
         seen.add(int(k))
     return alone
 

@@ -22,7 +22,7 @@ import numpy as np
 import scipy.sparse as sp
 from scipy.spatial import cKDTree
 
-__all__ = ["Merged", "close_pairs", "merge_close"]
+__all__ = ["Merged", "close_pairs", "merge_close", "merge_options"]
 
 
 @dataclass
@@ -127,17 +127,36 @@ def _one_for_two(
     if need.max(initial=0) > 1:  # a sample the two must both see: no one candidate can
         return None
     rows = np.flatnonzero(need)
-    if a in fixed or b in fixed:
-        options = np.array([a if a in fixed else b])
-    else:
-        mid = (xy[a] + xy[b]) / 2.0
-        near = np.array(tree.query_ball_point(mid, spacing_m), dtype=np.int64)
-        order = np.argsort(np.hypot(*(xy[near] - mid).T), kind="stable")
-        options = np.concatenate([[a, b], near[order]])
+    options = np.array(merge_options(xy, rest, a, b, spacing_m, fixed, tree), dtype=np.int64)
     if len(rows):
         counts = np.asarray(okr[rows][:, options].sum(axis=0)).ravel()
         options = options[counts == len(rows)]
+    return int(options[0]) if len(options) else None
+
+
+def merge_options(
+    xy: np.ndarray,
+    rest: np.ndarray,
+    a: int,
+    b: int,
+    spacing_m: float,
+    fixed: set[int],
+    tree: cKDTree | None = None,
+) -> list[int]:
+    """The candidates (indices into ``xy``) that may stand for the pair ``a``, ``b``: the
+    fixed one alone where one is fixed (locked, placed by hand); else ``a``, ``b`` and the
+    candidates within ``spacing_m`` of their middle, nearest first — each at least
+    ``spacing_m`` from every other station (``rest``). The one rule of both merges."""
+    if a in fixed or b in fixed:
+        options = np.array([a if a in fixed else b], dtype=np.int64)
+    else:
+        mid = (xy[a] + xy[b]) / 2.0
+        tree = cKDTree(xy) if tree is None else tree
+        near = np.array(tree.query_ball_point(mid, spacing_m), dtype=np.int64)
+        near = near[(near != a) & (near != b)]
+        order = np.argsort(np.hypot(*(xy[near] - mid).T), kind="stable")
+        options = np.concatenate([[a, b], near[order]]).astype(np.int64)
     if len(rest) and len(options):
         gap = np.hypot(*(xy[options][:, None, :] - xy[rest][None, :, :]).transpose(2, 0, 1))
         options = options[gap.min(axis=1) >= spacing_m]
-    return int(options[0]) if len(options) else None
+    return options.tolist()
