@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-__all__ = ["SAME_PLACE_M", "GivenIds", "id_number"]
+__all__ = ["SAME_PLACE_M", "GivenIds", "id_number", "ids_at"]
 
 #: Two positions closer than this [m] are one place (a station or a target that has not
 #: moved: positions are kept to the millimetre).
@@ -75,17 +75,22 @@ class GivenIds:
     def stations_at(self, xy: np.ndarray) -> list[str | None]:
         """The id of the earlier station at each position ``xy`` (k, 2) [m], None where none
         stood (each id once, the first position keeping it)."""
-        return _at(self.station_xy, self.station_ids, np.asarray(xy, float).reshape(-1, 2))
+        return ids_at(self.station_xy, self.station_ids, xy)
 
     def targets_at(self, xyz: np.ndarray) -> list[str | None]:
         """The id of the earlier target at each position ``xyz`` (t, 3) [m], None where none
         stood (each id once)."""
-        return _at(self.target_xyz, self.target_ids, np.asarray(xyz, float).reshape(-1, 3))
+        return ids_at(self.target_xyz, self.target_ids, xyz)
 
 
-def _at(known: np.ndarray, ids: tuple[str, ...], points: np.ndarray) -> list[str | None]:
-    """The id of the ``known`` position at each of ``points`` (within :data:`SAME_PLACE_M`),
-    each id given once."""
+def ids_at(
+    known: np.ndarray, ids: tuple[str, ...] | list[str], points: np.ndarray
+) -> list[str | None]:
+    """The id of the ``known`` position ((k, d) [m], one per id) at each of ``points`` (within
+    :data:`SAME_PLACE_M`; the first of ``ids`` standing there that no earlier point took),
+    None where none stands: each id given once. The one rule of "the same place"."""
+    known = np.asarray(known, dtype=float)
+    points = np.asarray(points, dtype=float).reshape(-1, known.shape[1])
     out: list[str | None] = []
     used: set[str] = set()
     for p in points:

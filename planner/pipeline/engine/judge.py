@@ -143,18 +143,24 @@ class Workbench:
         return idx
 
 
+def blocked_at(wb: Workbench, xy: np.ndarray, clearance_m: float | None = None) -> np.ndarray:
+    """Where a station cannot stand, per position of ``xy`` (k, 2) [m]: inside a building,
+    obstacle or no-go area, or within the clearance (the settings', or ``clearance_m``)."""
+    clear = wb.settings.clearance_m if clearance_m is None else clearance_m
+    xy = np.asarray(xy, dtype=float).reshape(-1, 2)
+    return shapely.contains_xy(blocked_ground(wb.site, clear), xy[:, 0], xy[:, 1])
+
+
 def free_positions(
     wb: Workbench, xy: np.ndarray, what: str, clearance_m: float | None = None
 ) -> np.ndarray:
-    """``xy`` [m] as a ``(k, 2)`` array, refused (InputError) where a station cannot stand:
-    inside a building, obstacle or no-go area, or within the clearance of one (the
-    settings', or ``clearance_m``)."""
+    """``xy`` [m] as a ``(k, 2)`` array, refused (InputError) where a station cannot stand
+    (:func:`blocked_at`), saying what is in the way."""
     xy = np.asarray(xy, dtype=float).reshape(-1, 2)
     if not np.isfinite(xy).all():
         raise InputError(f"a {what} has no coordinates (x, y must be numbers)")
     clear = wb.settings.clearance_m if clearance_m is None else clearance_m
-    blocked = blocked_ground(wb.site, clear)
-    bad = np.flatnonzero(shapely.contains_xy(blocked, xy[:, 0], xy[:, 1]))
+    bad = np.flatnonzero(blocked_at(wb, xy, clear))
     if len(bad):
         k = bad[0]
         raise InputError(

@@ -25,6 +25,7 @@ from planner.pipeline.engine.judge import (
     Round,
     Workbench,
     assemble,
+    blocked_at,
     datum_round,
     estimate_registration,
     free_positions,
@@ -45,7 +46,7 @@ from planner.pipeline.evaluation.evaluate import (
     Registration,
     evaluate_candidates,
 )
-from planner.pipeline.geometry.candidates import blocked_ground, candidate_grid
+from planner.pipeline.geometry.candidates import candidate_grid
 from planner.pipeline.geometry.facades import (
     build_facades,
     check_sample_count,
@@ -329,8 +330,7 @@ def _still_standing(
     no-go area street")."""
     xy = np.asarray(locked, dtype=float).reshape(-1, 2)
     ids = list(locked_ids) if locked_ids is not None else given.stations_at(xy)
-    blocked = blocked_ground(wb.site, wb.settings.clearance_m)
-    bad = shapely.contains_xy(blocked, xy[:, 0], xy[:, 1])
+    bad = blocked_at(wb, xy)
     said = [
         f"{ids[k] or f'the station at E {xy[k, 0]:.1f}, N {xy[k, 1]:.1f}'} "
         f"({what_blocks(wb.site, xy[k], wb.settings.clearance_m)})"

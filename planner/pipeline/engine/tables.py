@@ -67,11 +67,17 @@ def budget_message(time_limit_s: float, cut: list[str]) -> str:
 
 
 def _reason(
-    ctx: Context, sample: int, n_view: int, best: dict[str, float], n_meet: int, roof: str = ""
+    ctx: Context,
+    sample: int,
+    n_view: int,
+    best: dict[str, float],
+    n_meet: int,
+    roof: str = "",
+    assumed: bool = False,
 ) -> str:
     """Why no station meets ``sample``, in words: each check the best candidate fails; where
-    the ground cannot reach it, that it needs an elevated station (on ``roof``'s roof)."""
-    assumed = roof in ctx.site.assumed_heights
+    the ground cannot reach it, that it needs an elevated station (on ``roof``'s roof), or,
+    where that roof's height is ``assumed`` (the file gave none), that its height decides."""
     where = (
         f"over {roof!r}, whose height is assumed (the file gives none): give its height to "
         "know whether a station on the ground, or on that roof, can see it"
@@ -128,14 +134,16 @@ def _diagnosed_reasons(
     """The reasons of ``samples`` no candidate meets, from their diagnosis (into
     ``reason``); and where an elevated station would see them (per sample, "" none)."""
     elevated = np.full(len(reason), "", dtype=object)
+    assumed = ctx.site.assumed_heights
     for i in samples:
         found = diagnosis.at(int(i))
         if found is None:
             reason[i] = "no station meets it (not diagnosed further: the time limit ran out)"
             continue
         n_view, best, roof = found
-        reason[i] = _reason(ctx, int(i), n_view, best, int(n_ok_cand[i]), roof)
-        if roof in ctx.site.assumed_heights:  # no station proposed on a height made up
+        made_up = roof in assumed
+        reason[i] = _reason(ctx, int(i), n_view, best, int(n_ok_cand[i]), roof, made_up)
+        if made_up:  # no station proposed on a height made up
             continue
         if n_view == 0 or roof:
             elevated[i] = f"roof of {roof}" if roof else "above the ground"

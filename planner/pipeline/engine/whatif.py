@@ -23,7 +23,7 @@ from dataclasses import replace
 import numpy as np
 
 from planner.errors import InputError
-from planner.pipeline.engine.ids import GivenIds
+from planner.pipeline.engine.ids import GivenIds, ids_at
 from planner.pipeline.engine.judge import (
     Round,
     Workbench,
@@ -134,13 +134,7 @@ def _ids_at(p: Plan, xy: np.ndarray) -> list[str | None]:
     """The id of the plan's station at each position (to the millimetre; each id once, a
     scanning station before a traverse set-up on the same spot), None where it has none."""
     order = p.stations.sort_values("purpose", key=lambda s: s.eq("traverse"), kind="stable")
-    at = order[["x", "y"]].to_numpy(dtype=float)
-    names = order["station_id"].astype(str).tolist()
-    out: list[str | None] = []
-    for q in np.asarray(xy, dtype=float).reshape(-1, 2):
-        near = [names[k] for k in np.flatnonzero(np.abs(at - q).max(axis=1) < 1e-3)]
-        out.append(next((n for n in near if n not in out), None))  # each id once
-    return out
+    return ids_at(order[["x", "y"]].to_numpy(float), order["station_id"].astype(str).tolist(), xy)
 
 
 def _judged(

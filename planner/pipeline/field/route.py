@@ -523,11 +523,8 @@ def _kit_order(
         pos = np.empty(n, dtype=np.int64)
         pos[o] = np.arange(n)
         p = pos[flat]
-        lo, hi = np.minimum.reduceat(p, starts), np.maximum.reduceat(p, starts)
-        count = np.zeros((len(items), n + 1), dtype=np.int64)
-        np.add.at(count, (which, lo), 1)
-        np.add.at(count, (which, hi + 1), -1)
-        peak = np.cumsum(count, axis=1)[:, :n].max(axis=1)
+        spans = np.column_stack([np.minimum.reduceat(p, starts), np.maximum.reduceat(p, starts)])
+        peak = np.array([_standing(spans[which == k], n).max() for k in range(len(items))])
         return int(np.maximum(peak - cap, 0).sum()), float(d[o[:-1], o[1:]].sum())
 
     best, (excess, walk) = np.asarray(order), cost(np.asarray(order))
@@ -709,13 +706,13 @@ def _route_rows(
     return rows
 
 
-def _standing(spans: list[tuple[int, int]], stops: int) -> np.ndarray:
+def _standing(spans: Any, stops: int) -> np.ndarray:
     """How many targets stand at each of ``stops`` stops, each standing from its first
-    stop to its last (``spans``, both counted)."""
+    stop to its last (``spans``, (first, last) pairs, both counted)."""
+    spans = np.asarray(spans, dtype=np.int64).reshape(-1, 2)
     count = np.zeros(stops + 1, dtype=np.int64)
-    for a, b in spans:
-        count[a] += 1
-        count[b + 1] -= 1
+    np.add.at(count, spans[:, 0], 1)
+    np.add.at(count, spans[:, 1] + 1, -1)
     return np.cumsum(count)[:stops]
 
 
