@@ -50,9 +50,11 @@ from planner._array import as_float_array, check_range, like_input
 from planner.accuracy import MM_PER_M_PER_ARCSEC, station_rms_pair
 from planner.errors import InputError
 from planner.scanner import Scanner
+from planner.signal import DEFAULT_RANGING_EXPONENT, MIN_COS_INCIDENCE, signal_ranging_rms_mm
 
 __all__ = [
     "INCIDENCE_NOISE_EXPONENT",
+    "MIN_COS_INCIDENCE",
     "footprint_mm",
     "incidence_ranging_rms_mm",
     "max_distance_3d_m",
@@ -61,14 +63,12 @@ __all__ = [
     "variances_3d",
 ]
 
-#: Exponent k of the ranging noise's growth with incidence, m_S(θ) = m_S / cos^k θ. The
-#: power a diffusely reflecting (Lambertian) surface returns falls with cos θ (Soudarissanane
-#: et al. 2009, 2011), and the ranging noise of a time-of-flight measurement grows with the
-#: inverse square root of the returned signal (the intensity-based model of Wujanz et al.
-#: 2017), hence k = 1/2.
-INCIDENCE_NOISE_EXPONENT = 0.5
-#: Below this cos θ (θ ≈ 84°) the incidence term is held: the surface is not scanned usefully.
-MIN_COS_INCIDENCE = 0.1
+#: Exponent k of the ranging noise's growth with incidence, m_S(θ) = m_S / cos^k θ: the
+#: returned signal's ranging exponent (:data:`planner.signal.DEFAULT_RANGING_EXPONENT`) — the
+#: power a diffusely reflecting surface returns falls with cos θ (Soudarissanane et al. 2009,
+#: 2011), and the ranging noise grows with the inverse square root of the returned signal
+#: (the intensity-based model of Wujanz et al. 2017), hence k = 1/2.
+INCIDENCE_NOISE_EXPONENT = DEFAULT_RANGING_EXPONENT
 
 
 def variances_3d(
@@ -115,9 +115,9 @@ def incidence_ranging_rms_mm(
     >>> incidence_ranging_rms_mm(2.0, [1.0, 0.5, 0.0]).round(3).tolist()
     [2.0, 2.828, 6.325]
     """
-    m_s = np.asarray(range_rms_mm, dtype=float)
     cos_t = np.clip(np.asarray(cos_incidence, dtype=float), MIN_COS_INCIDENCE, 1.0)
-    return like_input(m_s / cos_t**exponent, range_rms_mm, cos_incidence)
+    m_s = signal_ranging_rms_mm(np.asarray(range_rms_mm, dtype=float), cos_t, exponent)
+    return like_input(np.asarray(m_s), range_rms_mm, cos_incidence)
 
 
 def footprint_mm(

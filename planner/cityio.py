@@ -42,6 +42,7 @@ from shapely.geometry import MultiPolygon, Polygon
 
 from planner.citymodel import SEMANTIC_KINDS, Surface, kind_by_normal
 from planner.errors import InputError
+from planner.materials import MATERIAL_KEYS, material_named
 from planner.mesh import crown_triangles
 from planner.site import (
     CROWN_BASE_SHARE,
@@ -574,6 +575,10 @@ def _gml_attributes(el: ET.Element) -> dict[str, Any]:
                 out[n] = float(c.text)
             except ValueError:
                 pass
+        elif n in ("stringAttribute", "genericAttribute") and c.get("name") in MATERIAL_KEYS:
+            value = next((v.text for v in c if _local(v.tag) == "value" and v.text), None)
+            if value:
+                out[c.get("name")] = value.strip()
     return out
 
 
@@ -684,9 +689,11 @@ def _assemble(
     missing_lod: list[str] = []
     obstacles: list[Obstacle] = []
     names: dict[str, str] = {}
+    materials: dict[str, str] = {}
     for o in model.objects:
         if o.type in BUILDING_TYPES and o.parent is None:
             names[o.id] = o.name
+            materials[o.id] = material_named(o.attributes)
         top = owner.get(o.id)
         if top is not None:
             chosen, matched = family_lod[top]
@@ -730,6 +737,8 @@ def _assemble(
         b = _building(bid, names.get(bid, ""), surfaces, origin)
         if b is None:
             continue
+        if materials.get(bid):
+            b = replace(b, material=materials[bid])
         if b.height_m < MIN_PLANNED_HEIGHT_M:  # a shed, a garage: not scanned, but a building
             if b.height_m < (limits or SiteLimits()).min_building_height_m:
                 obstacles.append(

@@ -115,6 +115,8 @@ RANGES: dict[str, Range] = {
     "imaging_s": Range(0.0, 86_400.0, "s"),
     "setup_min": Range(0.0, 1440.0, "min", open_lo=True),
     "scan_s": Range(1.0, 86_400.0, "s"),
+    "reflectance": Range(0.0, 1.0, "fraction of 1", open_lo=True),  # a surface's, 0–1
+    "ranging_exponent": Range(0.0, 3.0, ""),  # k of m_S ∝ q^(−k); 0: no signal dependence
     # targets and control points (the largest spheres and boards are 450 mm; a control
     # network's point is known to better than a decimetre, not better than 10 µm)
     "target_size_mm": Range(1.0, 2000.0, "mm"),

@@ -26,6 +26,15 @@ from planner._array import as_float_array
 from planner.atomic import write_text_atomic
 from planner.errors import InputError
 from planner.ranges import RANGES, check_number
+from planner.signal import (
+    DEFAULT_RANGE_EXPONENT,
+    DEFAULT_RANGING_EXPONENT,
+    DEFAULT_REFERENCE_REFLECTANCE,
+    reach_exponent,
+    relative_signal,
+    signal_ranging_rms_mm,
+    signal_reach_m,
+)
 
 __all__ = [
     "DEFAULT_SCANNER",
@@ -136,6 +145,20 @@ class Scanner:
         says where each figure comes from), used where the plan's settings give none
         (:meth:`~planner.pipeline.inputs.requirements.PlanSettings.station_setup_min`);
         None: the generic :data:`~planner.pipeline.inputs.requirements.GENERIC_SETUP_MIN`.
+    reference_reflectance : float or None
+        The reflectance [0–1] the ranging figures ``a + b·D`` are stated on (None:
+        :data:`planner.signal.DEFAULT_REFERENCE_REFLECTANCE`); a darker surface or a
+        slanting beam returns less signal and ranges noisier (:mod:`planner.signal`).
+    ranging_exponent : float or None
+        k of the ranging noise's growth as the signal falls, ``m_S ∝ q^(−k)`` (a lab
+        calibration at several reflectances fits it, :mod:`planner.calibration`); None:
+        :data:`planner.signal.DEFAULT_RANGING_EXPONENT`.
+    range_reflectance : float or None
+        The reflectance [0–1] ``max_range_m`` is stated on (None: the reference one).
+    dark_range_m, dark_reflectance : float or None
+        A second reach the datasheet states, on a darker surface [m, 0–1]: with the first
+        it gives the reach's fall with the signal (:func:`planner.signal.reach_exponent`);
+        None: the range equation's ½.
     label, source, notes : str
         Display name; where the figures come from; which values are assumptions.
     """
@@ -159,6 +182,11 @@ class Scanner:
     sector_scan: bool = True
     imaging_s: float = 0.0
     setup_min: float | None = None
+    reference_reflectance: float | None = None
+    ranging_exponent: float | None = None
+    range_reflectance: float | None = None
+    dark_range_m: float | None = None
+    dark_reflectance: float | None = None
     label: str = ""
     source: str = "user-defined"
     notes: str = ""
@@ -185,6 +213,11 @@ class Scanner:
             "beam_divergence_mrad": "beam_divergence_mrad",
             "beam_exit_mm": "beam_exit_mm",
             "setup_min": "setup_min",
+            "reference_reflectance": "reflectance",
+            "ranging_exponent": "ranging_exponent",
+            "range_reflectance": "reflectance",
+            "dark_range_m": "max_range_m",
+            "dark_reflectance": "reflectance",
         }
         for name, rng in [*figures.items(), *optional.items()]:
             if name in figures or getattr(self, name) is not None:
@@ -222,6 +255,20 @@ class Scanner:
             raise InputError(
                 f"{who}: default_preset {self.default_preset!r} is not one of its presets "
                 f"({', '.join(names) or 'none'})"
+            )
+        if (self.dark_range_m is None) != (self.dark_reflectance is None):
+            raise InputError(
+                f"{who}: dark_range_m and dark_reflectance go together (the datasheet's reach "
+                "on a darker surface and that surface's reflectance); give both or neither"
+            )
+        if self.dark_reflectance is not None and not (
+            self.dark_reflectance < self.reach_reflectance and self.dark_range_m < self.max_range_m
+        ):
+            raise InputError(
+                f"{who}: the dark reach ({self.dark_range_m:g} m at "
+                f"{self.dark_reflectance:.0%}) must be shorter than max_range_m "
+                f"({self.max_range_m:g} m) and on a darker surface than "
+                f"{self.reach_reflectance:.0%}"
             )
         if not isinstance(self.sector_scan, bool):
             raise InputError(f"{who}: sector_scan must be true or false")
@@ -302,9 +349,62 @@ class Scanner:
         return min(self.presets, key=lambda p: p.step_mm_at_10m)
 
     def range_rms_at(self, distance_m: ArrayLike) -> np.ndarray:
-        """Ranging RMS ``m_S = a + b·D`` [mm] at ``distance_m`` [m] (b in ppm = mm/km)."""
+        """Ranging RMS ``m_S = a + b·D`` [mm] at ``distance_m`` [m] (b in ppm = mm/km), on
+        the reference surface square to the beam."""
         d = as_float_array(distance_m, "distance_m")
         return self.range_rms_mm + self.range_ppm * 1e-3 * d
+
+    # -- the returned signal (planner.signal) ---------------------------------------------
+    @property
+    def ref_reflectance(self) -> float:
+        """The reflectance the ranging figures hold on (the profile's, else the default)."""
+        r = self.reference_reflectance
+        return DEFAULT_REFERENCE_REFLECTANCE if r is None else r
+
+    @property
+    def noise_exponent(self) -> float:
+        """k of ``m_S ∝ q^(−k)`` (the profile's, else the default)."""
+        k = self.ranging_exponent
+        return DEFAULT_RANGING_EXPONENT if k is None else k
+
+    @property
+    def reach_reflectance(self) -> float:
+        """The reflectance ``max_range_m`` is stated on."""
+        r = self.range_reflectance
+        return self.ref_reflectance if r is None else r
+
+    @property
+    def reach_exponent(self) -> float:
+        """p of ``R_max ∝ q^p``: from the two reaches the profile states, else ½."""
+        if self.dark_range_m is None or self.dark_reflectance is None:
+            return DEFAULT_RANGE_EXPONENT
+        return reach_exponent(
+            self.max_range_m, self.reach_reflectance, self.dark_range_m, self.dark_reflectance
+        )
+
+    def range_rms_on(
+        self, distance_m: ArrayLike, reflectance: ArrayLike, cos_incidence: ArrayLike = 1.0
+    ) -> np.ndarray:
+        """Ranging RMS [mm] at ``distance_m`` on a surface of ``reflectance`` (NaN: the
+        reference surface) seen at incidence θ (:func:`planner.signal.signal_ranging_rms_mm`).
+
+        >>> sc = Scanner(name="x", range_rms_mm=1.0, angle_rms_arcsec=10)
+        >>> sc.range_rms_on([10.0, 10.0], [0.8, 0.2]).tolist()
+        [1.0, 2.0]
+        """
+        q = relative_signal(reflectance, cos_incidence, self.ref_reflectance)
+        return signal_ranging_rms_mm(self.range_rms_at(distance_m), q, self.noise_exponent)
+
+    def max_range_on(self, reflectance: ArrayLike, cos_incidence: ArrayLike = 1.0) -> np.ndarray:
+        """The reach [m] on a surface of ``reflectance`` (NaN: the reference surface) seen at
+        incidence θ (:func:`planner.signal.signal_reach_m`), never beyond ``max_range_m``.
+
+        >>> sc = Scanner(name="x", range_rms_mm=1.0, angle_rms_arcsec=10, max_range_m=120.0)
+        >>> sc.max_range_on([0.8, 0.2, float("nan")]).tolist()
+        [120.0, 60.0, 120.0]
+        """
+        q = relative_signal(reflectance, cos_incidence, self.reach_reflectance)
+        return np.asarray(signal_reach_m(self.max_range_m, q, self.reach_exponent), dtype=float)
 
     # -- construction ---------------------------------------------------------------------
     @classmethod

@@ -107,7 +107,8 @@ class Building:
     ``base_z`` is the height of its ground [m] in the site's height system (None: the
     lowest ground under it — 0 on flat ground); ``surfaces`` its 3-D surfaces where a city
     model gives them (then the facades are its walls as they are, and the footprint its
-    ground outline), else it is the footprint extruded to ``height_m``.
+    ground outline), else it is the footprint extruded to ``height_m``. ``material``: what
+    its walls are made of, as its source names it (:mod:`planner.materials`; "" unknown).
     """
 
     id: str
@@ -117,6 +118,7 @@ class Building:
     name: str = ""
     base_z: float | None = None
     surfaces: tuple[Surface, ...] = field(default=(), compare=False, repr=False)
+    material: str = ""
 
     @property
     def is_3d(self) -> bool:

@@ -49,6 +49,7 @@ from shapely.geometry.base import BaseGeometry
 
 from planner.crs import GEOJSON_DEFAULT
 from planner.errors import InputError
+from planner.materials import material_named
 from planner.reading import MAX_FILE_BYTES, reading
 from planner.site import (
     CROWN_BASE_SHARE,
@@ -272,6 +273,7 @@ def site_from_features(
                         height if height is not None else FAR_HEIGHT_M,
                         planned=_truthy(f.props.get("plan", True)),
                         name=str(f.props.get("name", "")),
+                        material=material_named(f.props),
                     )
                 )
             else:

@@ -62,6 +62,7 @@ PLACE_KEYS = (
     "elevation_wkt",
     "sample_spacing_m",
     "sample_height_step_m",
+    "material",
 )
 #: Short forms accepted in tables, site properties and on the command line.
 ALIASES = {
@@ -102,6 +103,10 @@ class Zone:
         Its values are checked by the requirement's own rules when the zone is applied.
     sample_spacing_m, sample_height_step_m : float, optional
         Finer samples inside the zone [m].
+    material : str, optional
+        What the surface inside is made of (a name or alias of the material table,
+        :mod:`planner.materials`; checked when the zone is applied): a glass shopfront, a
+        slate-hung storey.
     """
 
     id: str
@@ -113,6 +118,7 @@ class Zone:
     requirement: dict[str, Any] = field(default_factory=dict)
     sample_spacing_m: float | None = None
     sample_height_step_m: float | None = None
+    material: str | None = None
 
     def __post_init__(self) -> None:
         who = f"zone {self.id!r}"
@@ -153,10 +159,14 @@ class Zone:
         unknown = [k for k in self.requirement if k not in ZONE_KEYS]
         if unknown:
             raise InputError(f"{who}: {_unknown(unknown[0])}")
-        if not self.requirement and self.sample_spacing_m is None:
+        if self.material is not None and (
+            not isinstance(self.material, str) or not self.material.strip()
+        ):
+            raise InputError(f"{who}: material must be a name, e.g. material=glass")
+        if not self.requirement and self.sample_spacing_m is None and self.material is None:
             raise InputError(
-                f"{who} sets no requirement and no sample spacing; give e.g. max_xy_mm=2 or "
-                "sample_spacing_m=0.5"
+                f"{who} sets no requirement, no sample spacing and no material; give e.g. "
+                "max_xy_mm=2, sample_spacing_m=0.5 or material=glass"
             )
 
     @property
@@ -270,6 +280,7 @@ def zone_from_row(row: Mapping[str, Any], default_id: str) -> Zone:
         height_m=_range(data.get("z_from_m"), data.get("z_to_m"), "height", who),
         elevation=elevation,
         requirement=requirement,
+        material=str(data["material"]) if "material" in data else None,
         **spacing,
     )
 

@@ -4,8 +4,8 @@ It shares no code with the planner's cloud-link model (``planner.cloud_registrat
 the parent's normals and local planes come from its own points (PCA of the 12 nearest;
 neighbourhoods that are not planar are left out), each child point is matched to its
 nearest parent point within a distance, the residual taken to that point's local plane,
-correspondences beyond 4 robust standard deviations dropped, and the 6 parameters (shift
-[mm], rotation [rad] about the child's centre) found by Gauss–Newton.
+correspondences beyond 4 robust standard deviations (0.1 mm at least) dropped, and the 6
+parameters (shift [mm], rotation [rad] about the child's centre) found by Gauss–Newton.
 
 :func:`link_errors` registers a rehearsed pair of scans trial after trial (each with its
 own noise) and returns the estimated poses' errors; :func:`patches_of` keeps of each scan
@@ -23,6 +23,7 @@ from planner.pipeline.survey.rehearsal import POINT_KINDS, rehearse
 NEIGHBOURS = 12
 PLANAR = 0.02  # smallest eigenvalue over the sum: a planar neighbourhood
 MATCH_M = 0.15
+TRIM_FLOOR_M = 1e-4
 
 
 def _skew(w: np.ndarray) -> np.ndarray:
@@ -45,7 +46,8 @@ def icp(parent: np.ndarray, child: np.ndarray, centre: np.ndarray, iters: int = 
         ok[ok] = planar[j[ok]]
         n, m = normal[j[ok]], moved[ok]
         res = np.einsum("ij,ij->i", m - plane_at[j[ok]], n)
-        keep = np.abs(res) <= 4 * 1.4826 * np.median(np.abs(res)) + 1e-9
+        # trimmed beyond 4 robust σ, never below TRIM_FLOOR_M (noise-free clouds: rounding)
+        keep = np.abs(res) <= max(4 * 1.4826 * np.median(np.abs(res)), TRIM_FLOOR_M)
         a = np.hstack([n, np.cross(m - centre, n)])[keep]
         pose += np.linalg.lstsq(a, -res[keep], rcond=None)[0]
     return np.concatenate([pose[:3] * 1000.0, pose[3:]])

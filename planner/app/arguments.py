@@ -291,6 +291,7 @@ def _setting_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
 
 def _model_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
     """The optimiser, the accuracy model and the registration."""
+    from planner.materials import CONDITIONS
     from planner.pipeline.inputs.requirements import (
         METHODS,
         MODELS,
@@ -307,6 +308,28 @@ def _model_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
         default=None,
         help="accuracy model: 3d, the full 3-D propagation (default), or paper, eq. 2 and 4 "
         "of Voroshilov & Karachentsev",
+    )
+    group["model"].add_argument(
+        "--surface-condition",
+        choices=CONDITIONS,
+        default=None,
+        help="the survey day: dry (default), or wet after rain (porous walls darker: noisier "
+        "ranging, shorter reach)",
+    )
+    group["model"].add_argument(
+        "--materials",
+        default=None,
+        metavar="FILE",
+        help="your own facade materials added to the shipped table (TOML, [[material]] tables "
+        "with name, reflectance, wet_reflectance, roughness_mm, returns; 'planner materials' "
+        "lists the table)",
+    )
+    group["model"].add_argument(
+        "--default-material",
+        default=None,
+        metavar="NAME",
+        help="the material of walls no site, model or zone names (default: the scanner "
+        "datasheet's reference surface, the figures as published)",
     )
     group["registration"].add_argument(
         "--registration",

@@ -202,6 +202,10 @@ def plan_inputs(args: argparse.Namespace):
     options = dict(vars(args))
     if args.inventory:
         options["inventory"] = parse_inventory(_read_text(args.inventory, "inventory file"))
+    if args.materials:
+        from planner.materials import read_material_file
+
+        options["materials"] = tuple(read_material_file(args.materials))
     req, settings = requirements_and_settings(options)
     scanner = load_scanner(args.scanner or DEFAULT_SCANNER)
     if args.levelling_rms_arcsec is not None:
@@ -276,7 +280,7 @@ def _read_text(path: str, what: str) -> str:
 
 #: The options that name a file the command reads.
 INPUT_OPTIONS = (
-    "site", "zones", "control", "inventory", "scanner", "terrain", "mesh", "model",
+    "site", "zones", "control", "inventory", "materials", "scanner", "terrain", "mesh", "model",
     "reference", "scan", "file",
 )  # fmt: skip
 

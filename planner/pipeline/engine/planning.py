@@ -160,7 +160,9 @@ def _prepare(
     fac = build_facades(
         site, st.sample_spacing_m, st.sample_height_step_m, scene=scene, roofs=st.demand_roofs
     )
-    fac, sample_req, zones = apply_zones(site, fac, req, scene)
+    fac, sample_req, zones = apply_zones(
+        site, fac, req, scene, st.material_table, st.default_material
+    )
     if st.demand_roofs:
         level = [s for b in site.planned for s in b.surfaces if level_roof(s)]
         if level:

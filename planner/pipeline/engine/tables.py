@@ -213,6 +213,7 @@ def coverage_table(
         "reason": reason,
         "elevated_station": elevated,
         "zone": ctx_zone_ids,
+        "material": ctx.material if len(ctx.material) == n else np.full(n, "", dtype=object),
         # beside the file's columns: how many stations meet it, whether on a party wall,
         # the reason as data
         "stations_meeting": n_meeting,

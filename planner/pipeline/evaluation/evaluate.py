@@ -23,7 +23,8 @@ import numpy as np
 import scipy.sparse as sp
 
 from planner.accuracy import eq2_variances, eq4_variance
-from planner.accuracy3d import footprint_mm, incidence_ranging_rms_mm, variances_3d
+from planner.accuracy3d import footprint_mm, variances_3d
+from planner.materials import reflectances
 from planner.pipeline.geometry.candidates import GroundRegions
 from planner.pipeline.geometry.facades import MERGE_OFFSET_M, SIGHT_OFFSET_M, FacadeSet
 from planner.pipeline.geometry.scene import Scene
@@ -101,6 +102,10 @@ class Context:
     step_mm_at_10m: float
     limits: dict[str, np.ndarray]  # per check key: (N,) limit of every sample (±inf: none)
     stations_needed: np.ndarray  # (N,) stations (separate views) each sample needs
+    #: (N,) each sample's material (:mod:`planner.materials`; "" none known) and its
+    #: reflectance on the survey day (NaN: the scanner datasheet's reference surface)
+    material: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=object))
+    reflectance: np.ndarray = field(default_factory=lambda: np.zeros(0))
     #: clear heights of the candidate chunks evaluated on every sample of a facade, kept for
     #: the plan's next evaluation of all candidates (:meth:`clear_heights`); one store, with
     #: its count, shared by a context copied with other limits (the best-effort relaxation)
@@ -156,6 +161,10 @@ class Context:
             step_mm_at_10m=settings.scan_step_mm(scanner),
             limits=sample_req.limits,
             stations_needed=sample_req.stations,
+            material=sample_req.material,
+            reflectance=reflectances(
+                sample_req.material, settings.material_table, settings.surface_condition
+            ),
         )
 
     @property
@@ -474,18 +483,21 @@ def _pair_variances(
     s: np.ndarray,
     cos_g: np.ndarray,
     sin_nu: np.ndarray,
-    cos_inc: np.ndarray | None,
+    cos_theta: np.ndarray,
+    reflectance: np.ndarray,
     own_level: bool,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, Scanner | None]:
     """The scanner's part of each pair's variances σ_x², σ_y², σ_z² [mm²] by the settings'
     model — eq. 2 and 4 of Voroshilov & Karachentsev, or the full 3-D propagation with its
     optional terms (:func:`planner.accuracy3d.variances_3d`) — and the scanner whose beam
-    footprint the spacing check counts (None: not counted). The station's own error is the
-    registration's part, added after; the frame's tilt is counted here only where
-    ``own_level`` or the settings say (:meth:`~planner.pipeline.inputs.requirements
-    .PlanSettings.scan_tilt_rms_arcsec`)."""
+    footprint the spacing check counts (None: not counted). The ranging RMS is the
+    returned signal's (:meth:`Scanner.range_rms_on`): on the sample's ``reflectance`` (NaN:
+    the datasheet's reference surface), at the 3-D incidence ``cos_theta`` where the 3-D
+    model counts it. The station's own error is the registration's part, added after; the
+    frame's tilt is counted here only where ``own_level`` or the settings say
+    (:meth:`~planner.pipeline.inputs.requirements.PlanSettings.scan_tilt_rms_arcsec`)."""
     sc, st = ctx.scanner, ctx.settings
-    m_s = sc.range_rms_at(s)
+    m_s = sc.range_rms_on(s, reflectance, cos_theta if st.incidence_ranging else 1.0)
     no_station = (0.0, 0.0)  # the station's own error is the registration's part, below
     # the frame's tilt: here, or the registration's part
     tilt = sc.initial_tilt_rms_arcsec if own_level else st.scan_tilt_rms_arcsec(sc)
@@ -494,12 +506,6 @@ def _pair_variances(
         var_x, var_y = eq2_variances(d, cos_g * cos_g, m_s, sc.angle_rms_arcsec, no_station)
         var_z = eq4_variance(s, sin_nu * sin_nu, m_s, sc.tilt_rms_arcsec, s, tilt)
     else:  # the full 3-D propagation, with its optional terms
-        if st.incidence_ranging:
-            cos_theta = cos_inc
-            if cos_theta is None:
-                with np.errstate(divide="ignore", invalid="ignore"):
-                    cos_theta = cos_g * np.where(s > 0, d / s, 1.0)
-            m_s = incidence_ranging_rms_mm(m_s, cos_theta)
         var_x, var_y, var_z = variances_3d(
             s,
             cos_g,
@@ -554,11 +560,16 @@ def facade_pairs(
         front = towards > 0
         with np.errstate(divide="ignore", invalid="ignore"):
             cos_inc = np.where(s > 0, towards / s, 1.0)
+    with np.errstate(divide="ignore", invalid="ignore"):  # the 3-D incidence
+        cos_theta = cos_inc if cos_inc is not None else cos_g * np.where(s > 0, d / s, 1.0)
+    rho = ctx.reflectance[smp][None, :] if len(ctx.reflectance) else np.nan
+    # the reach on this surface at this incidence (the returned signal, planner.signal)
+    reach = sc.max_range_on(rho, cos_theta if ctx.settings.incidence_ranging else 1.0)
     lo, up = np.sin(np.radians(sc.vertical_fov_deg))
     view = (
         front
         & (s >= sc.min_range_m)
-        & (s <= sc.max_range_m)
+        & (s <= reach)
         & (sin_nu >= lo - 1e-12)
         & (sin_nu <= up + 1e-12)
     )
@@ -571,7 +582,7 @@ def facade_pairs(
             return ctx.sees(f, cand_xy, smp, keep, where, zs)
 
     st = ctx.settings
-    var_x, var_y, var_z, beam = _pair_variances(ctx, d, s, cos_g, sin_nu, cos_inc, own_level)
+    var_x, var_y, var_z, beam = _pair_variances(ctx, d, s, cos_g, sin_nu, cos_theta, rho, own_level)
     m = PairMetrics(
         distance_m=d,
         slope_distance_m=s,

@@ -24,6 +24,7 @@ __all__ = [
     "check_sample_count",
     "estimate_samples",
     "in_opening",
+    "keep_samples",
     "lower_roof_in_front",
     "on_facade",
     "party_wall_mask",
@@ -297,7 +298,7 @@ def build_facades(
             )
     wall, party = sample_flags(site, fac, fac.facade, fac.xy, fac.z, scene)
     fac.party_wall = party
-    return fac if wall.all() else _subset(fac, wall)
+    return fac if wall.all() else keep_samples(fac, wall)
 
 
 def _footprint_facades(
@@ -626,7 +627,7 @@ def sample_flags(
     return wall, party
 
 
-def _subset(fac: FacadeSet, keep: np.ndarray) -> FacadeSet:
+def keep_samples(fac: FacadeSet, keep: np.ndarray) -> FacadeSet:
     """``fac`` with only the samples ``keep`` (N,) bool (facades and columns kept)."""
     return replace(
         fac,

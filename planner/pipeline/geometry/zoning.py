@@ -8,6 +8,10 @@ zone overriding a coarser one where they overlap), and returns the per-sample li
 every check of :data:`~planner.pipeline.inputs.requirements.CHECKS` and the stations each sample
 needs: the zone's requirement inside a zone (the strictest where zones overlap), the
 site-wide one elsewhere.
+
+It also decides every sample's material (:func:`sample_materials`: the most specific zone
+naming one, else its building's, else the plan's default) and leaves out the samples on a
+material that returns no point (glass, a mirror), saying where.
 """
 
 from __future__ import annotations
@@ -19,7 +23,8 @@ import numpy as np
 import shapely
 
 from planner.errors import InputError
-from planner.pipeline.geometry.facades import FacadeSet, sample_flags
+from planner.materials import MaterialTable, material_table
+from planner.pipeline.geometry.facades import FacadeSet, keep_samples, sample_flags
 from planner.pipeline.inputs.requirements import CHECKS, Requirements
 from planner.pipeline.inputs.resolved import zone_requirement
 from planner.site import Site
@@ -44,6 +49,12 @@ class SampleRequirements:
     limits: dict[str, np.ndarray]
     stations: np.ndarray
     zone_ids: np.ndarray
+    #: (N,) each sample's material (a name of the material table; "" none known)
+    material: np.ndarray | None = None
+
+    def __post_init__(self) -> None:
+        if self.material is None:
+            self.material = np.full(len(self.stations), "", dtype=object)
 
     @classmethod
     def uniform(cls, req: Requirements, n: int) -> SampleRequirements:
@@ -53,6 +64,15 @@ class SampleRequirements:
             limit = c.limit_of(req)
             limits[c.key] = np.full(n, c.no_limit() if limit is None else float(limit))
         return cls(limits, np.full(n, req.stations_per_sample), np.full(n, "", dtype=object))
+
+    def subset(self, keep: np.ndarray) -> SampleRequirements:
+        """The requirements of the samples ``keep`` (N,) bool."""
+        return SampleRequirements(
+            {k: v[keep] for k, v in self.limits.items()},
+            self.stations[keep],
+            self.zone_ids[keep],
+            self.material[keep],
+        )
 
 
 @dataclass
@@ -71,11 +91,19 @@ def along_m(fac: FacadeSet, samples: np.ndarray | None = None) -> np.ndarray:
 
 
 def apply_zones(
-    site: Site, fac: FacadeSet, req: Requirements, scene: Scene | None = None
+    site: Site,
+    fac: FacadeSet,
+    req: Requirements,
+    scene: Scene | None = None,
+    materials: MaterialTable | None = None,
+    default_material: str | None = None,
 ) -> tuple[FacadeSet, SampleRequirements, ZoneTable]:
-    """The facades with finer samples where zones ask for them, every sample's requirement,
-    and the zones as applied (module docstring). Heights in zones are above the building's
-    base; ``scene`` tells the new samples of a 3-D building's walls that are party walls."""
+    """The facades with finer samples where zones ask for them, every sample's requirement
+    and material, and the zones as applied (module docstring); the samples on a material
+    that returns no point are left out. Heights in zones are above the building's base;
+    ``scene`` tells the new samples of a 3-D building's walls that are party walls;
+    ``materials`` the table (default the shipped one), ``default_material`` the material of
+    walls no source names (None: the datasheet's reference surface)."""
     messages: list[str] = []
     zones, facades = [], []
     for z in site.zones:
@@ -142,7 +170,92 @@ def apply_zones(
         out.stations[again] = np.maximum(out.stations[again], zr.stations_per_sample)
         covered[idx] = True
     out.zone_ids[:] = _joined_ids([z.id for z in zones], members, n)
+    table = material_table() if materials is None else materials
+    out.material = sample_materials(site, fac, zones, members, table, default_material, messages)
+    fac, out, members = _without_silent(fac, out, members, table, messages)
     return fac, out, ZoneTable(zones, reqs, members, messages)
+
+
+def _without_silent(
+    fac: FacadeSet,
+    out: SampleRequirements,
+    members: list[np.ndarray],
+    table: MaterialTable,
+    messages: list[str],
+) -> tuple[FacadeSet, SampleRequirements, list[np.ndarray]]:
+    """The samples, their requirements and the zones' members without the samples on a
+    material that returns no point (said in ``messages``)."""
+    silent = np.array([not table[m].returns if m else False for m in out.material], dtype=bool)
+    if not silent.any():
+        return fac, out, members
+    messages.append(_silent_words(fac, out.material, silent, table))
+    new = np.cumsum(~silent) - 1
+    members = [new[m[~silent[m]]] for m in members]
+    return keep_samples(fac, ~silent), out.subset(~silent), members
+
+
+#: The plan's message names this many facades whose samples return no point, at most.
+LISTED_SILENT = 8
+
+
+def sample_materials(
+    site: Site,
+    fac: FacadeSet,
+    zones: list[Zone],
+    members: list[np.ndarray],
+    table: MaterialTable,
+    default: str | None = None,
+    messages: list[str] | None = None,
+) -> np.ndarray:
+    """(N,) each sample's material, a name of ``table`` ("" none known): the most specific
+    zone naming one (part of a facade, then a facade, then a building; the later of two
+    alike), else its building's (a name the table does not know is said in ``messages``
+    and taken as unknown), else ``default``. A zone's or the default's unknown name is an
+    InputError (the user typed it)."""
+    base = "" if default is None else table.find(default, "the default material").name
+    own: dict[str, str] = {}
+    unknown: dict[str, list[str]] = {}
+    for b in site.planned:
+        if not b.material:
+            continue
+        try:
+            own[b.id] = table.find(b.material, f"building {b.id}").name
+        except InputError:
+            unknown.setdefault(b.material, []).append(b.id)
+    out = np.array([own.get(str(b), base) for b in fac.building_id[fac.facade]], dtype=object)
+    rank = [(0 if z.building_id else 2 if z.is_part else 1, i) for i, z in enumerate(zones)]
+    for _, i in sorted(rank):
+        z = zones[i]
+        if z.material is not None:
+            out[members[i]] = table.find(z.material, f"zone {z.id!r}").name
+    if unknown and messages is not None:
+        said = "; ".join(
+            f"{m!r} ({', '.join(ids[:3])}{' …' if len(ids) > 3 else ''})"
+            for m, ids in unknown.items()
+        )
+        messages.append(
+            f"Materials the table does not know: {said} — planned as "
+            f"{'the default ' + base if base else 'the scanner datasheet’s reference surface'}; "
+            "add a row with --materials FILE"
+        )
+    return out
+
+
+def _silent_words(
+    fac: FacadeSet, material: np.ndarray, silent: np.ndarray, table: MaterialTable
+) -> str:
+    """The samples left out because their surface returns no point, in words."""
+    f = fac.facade_id[fac.facade[silent]]
+    names, counts = np.unique(f, return_counts=True)
+    order = np.argsort(-counts, kind="stable")[:LISTED_SILENT]
+    kinds = sorted({table[m].label for m in material[silent]})
+    more = len(names) - len(order)
+    return (
+        f"Not demanded: {int(silent.sum())} samples on {' and '.join(kinds)}, which returns no "
+        f"usable point ({', '.join(f'{names[k]} {counts[k]}' for k in order)}"
+        + (f", … {more} more facades" if more > 0 else "")
+        + "); scan their frames and reveals at the spacing you need, or name another material"
+    )
 
 
 def _joined_ids(ids: list[str], members: list[np.ndarray], n: int) -> np.ndarray:

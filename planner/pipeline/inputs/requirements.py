@@ -27,6 +27,7 @@ from planner.accuracy import station_rms_pair
 from planner.classes import class_limits, parse_class
 from planner.cloud_registration import DEFAULT_CLOUD_FLOOR_MM, DEFAULT_MIN_OVERLAP_PCT
 from planner.errors import InputError
+from planner.materials import CONDITIONS, Material, MaterialTable, material_table
 from planner.ranges import Range, check_number
 from planner.targets import DEFAULT_INVENTORY, TargetItem, as_inventory
 
@@ -508,6 +509,14 @@ class PlanSettings:
     incidence_noise, beam_footprint : bool, default True
         The 3-D model's optional terms: ranging noise growing with the 3-D incidence, and
         the beam's footprint bounding the detail a scan resolves (in the spacing check).
+    surface_condition : "dry" or "wet", default "dry"
+        The survey day: wet porous materials return a weaker signal (noisier ranging, a
+        shorter reach; :mod:`planner.materials`, :mod:`planner.signal`).
+    materials : tuple of Material, default ()
+        The user's rows added to the material table (``--materials FILE``).
+    default_material : str or None, default None
+        The material of walls no source names; None: the scanner datasheet's reference
+        surface (the figures as published).
 
     Registration and targets
     ------------------------
@@ -670,6 +679,9 @@ class PlanSettings:
     model: str = field(default="3d", metadata={"group": "model"})
     incidence_noise: bool = field(default=True, metadata={"group": "model"})
     beam_footprint: bool = field(default=True, metadata={"group": "model"})
+    surface_condition: str = field(default="dry", metadata={"group": "model"})
+    materials: tuple[Material, ...] = field(default=(), metadata={"group": "model"})
+    default_material: str | None = field(default=None, metadata={"group": "model"})
     # -- registration and targets (SETTING_GROUPS['registration'])
     registration: str = field(default="auto", metadata={"group": "registration"})
     registration_processing: str = field(default="adjustment", metadata={"group": "registration"})
@@ -960,6 +972,16 @@ class PlanSettings:
             )
         if self.preset is not None and (not isinstance(self.preset, str) or not self.preset):
             raise InputError(f"preset must be a setting's name; got {self.preset!r}")
+        if self.surface_condition not in CONDITIONS:
+            raise InputError(
+                f"surface condition must be one of {', '.join(CONDITIONS)}; "
+                f"got {self.surface_condition!r}"
+            )
+        object.__setattr__(self, "materials", tuple(self.materials))
+        if not all(isinstance(m, Material) for m in self.materials):
+            raise InputError("materials must be planner.materials.Material rows")
+        if self.default_material is not None:
+            self.material_table.find(self.default_material, "the default material")
         if self.sight_engine not in SIGHT_ENGINES:
             raise InputError(
                 f"sight engine must be one of {', '.join(SIGHT_ENGINES)}; got {self.sight_engine!r}"
@@ -973,6 +995,11 @@ class PlanSettings:
         ):
             if not isinstance(getattr(self, name), bool):
                 raise InputError(f"{name} must be True or False; got {getattr(self, name)!r}")
+
+    @property
+    def material_table(self) -> MaterialTable:
+        """The material table the plan uses: the shipped one with the user's rows."""
+        return material_table(self.materials)
 
     def model_description(self) -> str:
         """Which model makes the accuracy figures, in words (every output states it)."""

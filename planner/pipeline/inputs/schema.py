@@ -98,6 +98,7 @@ COVERAGE_COLUMNS = [
     "reason",
     "elevated_station",
     "zone",
+    "material",
 ]
 
 

@@ -37,7 +37,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from planner.accuracy3d import incidence_ranging_rms_mm, variances_3d
+from planner.accuracy3d import variances_3d
 from planner.errors import InputError
 from planner.mesh import triangle_normals
 from planner.pipeline.engine.result import Plan
@@ -307,7 +307,7 @@ def _scan(
     the scene's triangle normals, owners, kinds and the flat ground's surface number."""
     sc, st = plan.scanner, plan.settings
     az, el, col, row, local_dir = grid
-    normals, owner, tri_kind, ground_id = mesh
+    normals, owner, tri_kind, ground_id, owner_rho, silent_tri = mesh
     d = local_dir @ rot.T
     o = np.broadcast_to(pos, d.shape)
     dist, t_idx = scene.first_hit(o, d, sc.max_range_m)
@@ -316,20 +316,28 @@ def _scan(
         dist[down] = -pos[2] / d[down, 2]
     dist, hit_t, hit_kind, t_normal, refl = targets.hit(pos, d, dist)
     keep = np.isfinite(dist) & (dist >= sc.min_range_m) & (dist <= sc.max_range_m)
-    on_mesh = keep & (hit_t < 0) & (t_idx >= 0)
+    tri = np.maximum(t_idx, 0)
     ground = keep & (hit_t < 0) & (t_idx < 0)  # the flat ground
     t_normal[ground] = (0.0, 0.0, 1.0)
     hit_t[ground], hit_kind[ground] = ground_id, POINT_KINDS.index("terrain")
     refl[ground] = SURFACE_REFLECTANCE
-    n = np.where(on_mesh[:, None], normals[np.maximum(t_idx, 0)], t_normal)
+    on_mesh = (hit_t < 0) & (t_idx >= 0)
+    n = np.where(on_mesh[:, None], normals[tri], t_normal)
     cos_t = np.abs(np.einsum("ij,ij->i", n, d))
-    surface = np.where(on_mesh, owner[np.maximum(t_idx, 0)], hit_t)
-    kind = np.where(on_mesh, tri_kind[np.maximum(t_idx, 0)], hit_kind)
-    reflectance = np.where(on_mesh, SURFACE_REFLECTANCE, refl)
+    # the surface's reflectance (a target's paint; NaN: the datasheet's reference surface):
+    # glass returns nothing, a dark wall ranges noisier and not as far (planner.signal)
+    rho = np.where(on_mesh, owner_rho[owner[tri]], np.where((hit_t >= 0) & ~ground, refl, np.nan))
+    signal_cos = cos_t if st.incidence_ranging else 1.0
+    with np.errstate(invalid="ignore"):
+        keep &= ~(on_mesh & silent_tri[tri]) & (dist <= sc.max_range_on(rho, signal_cos))
+    on_mesh &= keep
+    surface = np.where(on_mesh, owner[tri], hit_t)
+    kind = np.where(on_mesh, tri_kind[tri], hit_kind)
+    reflectance = np.where(
+        np.isnan(rho), np.where(on_mesh | ground, SURFACE_REFLECTANCE, refl), rho
+    )
     s, a, e, c = dist[keep], az[col[keep]], el[row[keep]], cos_t[keep]
-    m_s = sc.range_rms_at(s)
-    if st.incidence_ranging:
-        m_s = incidence_ranging_rms_mm(m_s, c)
+    m_s = sc.range_rms_on(s, rho[keep], c if st.incidence_ranging else 1.0)
     # the point's own noise; the scan's levelling is its frame's error (the pose)
     var = variances_3d(
         s, np.ones_like(s), np.sin(e), m_s, sc.angle_rms_arcsec, sc.tilt_rms_arcsec, 0.0
@@ -354,6 +362,26 @@ def _scan(
     )
 
 
+def _owner_materials(plan: Plan, owner_ids: list[str]) -> tuple[np.ndarray, np.ndarray]:
+    """Each scene owner's reflectance on the survey day (NaN: no material known) and whether
+    it returns no point, from its building's material, else the plan's default
+    (:mod:`planner.materials`; a zone's material is not drawn in the rehearsal)."""
+    st = plan.settings
+    table = st.material_table
+    own = {b.id: b.material for b in plan.site.buildings}
+    rho, silent = np.full(len(owner_ids), np.nan), np.zeros(len(owner_ids), dtype=bool)
+    for k, oid in enumerate(owner_ids):
+        name = own.get(str(oid)) or (st.default_material if str(oid) in own else None)
+        if not name:
+            continue
+        try:
+            m = table.find(name)
+        except InputError:  # said by the plan; the reference surface here as there
+            continue
+        rho[k], silent[k] = m.reflectance_in(st.surface_condition), not m.returns
+    return rho, silent
+
+
 def rehearse(
     plan: Plan,
     *,
@@ -376,6 +404,8 @@ def rehearse(
     if plan.site.terrain is None:
         surfaces.append("ground")
     targets = _Targets.of(plan, len(owner_ids))
+    owner_rho, silent_owner = _owner_materials(plan, owner_ids)
+    silent_tri = silent_owner[owner] | (tri_kind == TRIANGLE_KINDS.index("window"))
     step = grid_step_mm_at_10m(plan, beams_per_station)
     az, el = _grid(step / 1e4, sc.vertical_fov_deg)
     col, row = np.meshgrid(np.arange(len(az)), np.arange(len(el)))
@@ -394,7 +424,7 @@ def rehearse(
         say(k / max(len(ids), 1), f"simulated scan of {sid} ({k + 1} of {len(ids)})")
         rot = _rotation(heading, *tilt)
         grid = (az, el, col, row, local_dir)
-        mesh = (normals, owner, tri_kind, len(surfaces) - 1)
+        mesh = (normals, owner, tri_kind, len(surfaces) - 1, owner_rho, silent_tri)
         scans.append(_scan(plan, scene, targets, sid, pos, rot, rng, grid, mesh, noise))
     say(1.0, "simulated scans done")
     preset = st.scan_step_mm(sc)
