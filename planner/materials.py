@@ -250,3 +250,30 @@ def reflectances(names: np.ndarray, table: MaterialTable, condition: str = "dry"
     for name in set(names.tolist()) - {""}:
         out[names == name] = table[name].reflectance_in(condition)
     return out
+
+
+def walls_words(
+    names: np.ndarray, table: MaterialTable, condition: str, reference_reflectance: float
+) -> str:
+    """What the planned walls are made of, in words: each material's share of the samples
+    and its reflectance on the survey day; the samples with none known are the scanner
+    datasheet's reference surface.
+
+    >>> w = walls_words(np.array(["brick", "", ""], dtype=object), material_table(), "wet", 0.8)
+    >>> w[:48], w[-33:]
+    ('Walls (wet day): no material known on 2 samples ', '80%); red brick 24% on 1 samples.')
+    """
+    names = np.asarray(names, dtype=object)
+    kinds, counts = np.unique(names.astype(str), return_counts=True)
+    order = np.argsort(-counts, kind="stable")
+    parts = []
+    for k in order:
+        if kinds[k] == "":
+            parts.append(
+                f"no material known on {counts[k]} samples (the scanner datasheet’s reference "
+                f"surface, {reference_reflectance:.0%})"
+            )
+        else:
+            m = table[kinds[k]]
+            parts.append(f"{m.label} {m.reflectance_in(condition):.0%} on {counts[k]} samples")
+    return f"Walls ({condition} day): {'; '.join(parts)}."

@@ -32,7 +32,8 @@ def _surfaces(site: Site, station_xy: np.ndarray):
 def test_a_straight_street_leaves_the_shift_along_it_free_and_a_corner_fixes_it():
     """Two stations 20 m apart in front of a 120 m terrace (its south wall and the street):
     the link overlaps well but is free east-west; two stations at its end that both see the
-    end wall too are fixed."""
+    end wall too are fixed — the terrace's far wall, seen from its end at a grazing incidence,
+    is beyond the scanner's reach at that incidence (planner.signal) and adds nothing."""
     site = Site([Building("row", rect(0, 0, 120, 12), 15.0)])
     ctx, surf = _surfaces(site, [[40, -8], [60, -8], [125, -6], [132, -12]])
     along = clouds.cloud_link(ctx, surf, 0, 1)
@@ -41,7 +42,7 @@ def test_a_straight_street_leaves_the_shift_along_it_free_and_a_corner_fixes_it(
     corner = clouds.cloud_link(ctx, surf, 2, 3)
     assert corner.fixed
     sd = np.sqrt(np.diag(corner.cov))
-    assert sd[:3] == pytest.approx([0.21, 0.16, 0.08], abs=0.02)  # mm
+    assert sd[:3] == pytest.approx([0.28, 0.34, 0.08], abs=0.02)  # mm
 
 
 def test_the_overlap_counts_surface_not_points():

@@ -521,6 +521,7 @@ def test_every_meets_row_really_meets_the_requirements(rich_plan):
         "reason",
         "elevated_station",
         "zone",
+        "material",
     ]
     assert (csv.loc[csv["meets"], "m_x_mm"] <= 4.0 + 0.0005).all()
     # the totals are the scanner's and the registration's parts added in quadrature

@@ -21,6 +21,7 @@ import scipy.sparse as sp
 import shapely
 
 from planner.errors import InputError
+from planner.materials import walls_words
 from planner.pipeline.engine.ids import GivenIds, id_number
 from planner.pipeline.engine.result import Plan, SolverReport
 from planner.pipeline.engine.tables import (
@@ -280,6 +281,11 @@ def assemble(
         pairs=wb.pairs,
     )
     messages.insert(0, f"Accuracy model: {st.model_description()}.")
+    ctx = wb.ctx
+    walls = walls_words(
+        ctx.material, st.material_table, st.surface_condition, wb.scanner.ref_reflectance
+    )
+    messages.insert(1, walls)
     say(1.0, "plan ready")
     plan = Plan(
         site=wb.site,

@@ -20,6 +20,7 @@ import shapely
 
 from planner.citymodel import LEVEL_ROOF_DEG, level_roof
 from planner.errors import InputError
+from planner.pipeline.engine.conditions import condition_words
 from planner.pipeline.engine.ids import GivenIds
 from planner.pipeline.engine.judge import (
     Round,
@@ -290,7 +291,7 @@ def choose_stations(
     solver = _solver_report(sol, rounds, cut, fac.party_wall, ev.evaluated)
     solver.spacing_untried = untried
     hand = np.setdiff1d(forced, best_effort)
-    return assemble(
+    p = assemble(
         wb,
         r,
         solver,
@@ -302,6 +303,16 @@ def choose_stations(
         kept=kept,
         given=given,
     )
+    return _with_the_day(p)
+
+
+def _with_the_day(p: Plan) -> Plan:
+    """The plan, saying what the other survey day (dry or wet) would cost
+    (:func:`~planner.pipeline.engine.conditions.condition_words`)."""
+    day = condition_words(p)
+    if day:
+        p.messages.append(day)
+    return p
 
 
 def _locked(

@@ -39,7 +39,12 @@ from planner.pipeline.evaluation.evaluate import Progress
 from planner.pipeline.inputs.clock import Clock
 from planner.pipeline.network.targets import TargetCandidates
 
-__all__ = ["edit_targets", "evaluate_stations", "reoptimise", "user_edits"]
+__all__ = [
+    "edit_targets",
+    "evaluate_stations",
+    "reoptimise",
+    "user_edits",
+]
 
 
 def _workbench(p: Plan) -> Workbench:
