@@ -46,6 +46,26 @@ so the relative tilt ``Δζ`` is an error of the link and biases the 4 estimated
 by ``−J₄₄⁻¹ J₄τ Δζ`` (the same treatment as the target registrations of
 :mod:`planner.registration_error`).
 
+**Relief.** A real wall is not a plane: the reveals of its windows and doors, its sills,
+lintels, balconies and downpipes have surfaces whose normals run along it, and it is on
+these that point-to-plane ICP fixes the shift along a wall two scans share (a plain wall
+and the ground leave that shift free). Where the model has them (an LoD3 model's reveals are
+walls of their own) they are patches like any other. Otherwise the planner uses a stated
+**parametric facade** (:func:`relief_areas`): windows of :data:`WINDOW_WIDTH_M` ×
+:data:`WINDOW_HEIGHT_M` over a share of the wall (``window_share``, default
+:data:`DEFAULT_WINDOW_SHARE`: European housing stock has window-to-wall ratios of about
+15–35 %), set :data:`DEFAULT_REVEAL_DEPTH_M` behind its face. Each facade patch then carries
+three relief patches: the two jambs (normals ±along the wall) and the head (normal down).
+A scan sees a jamb only from the side it faces, to the depth the opening's width lets it
+see (:func:`reveal_visible`), less its edge with the wall, where an ICP's local planes
+straddle two faces (:func:`edge_free_share`); so two scans share a jamb only where both
+stand on the same side of it — a pair in front of one long wall is tied along it by the windows beyond both,
+not by those between them. Sills (normal up) are seen only from above and are left out;
+a plain wall (``window_share=0``, a curtain wall, a blank gable) gets no relief. The relief
+adds no overlap (registration software counts overlap on the wall's own surface). A relief
+patch's plane carries a floor of its own (the reveal is only a few point spacings deep; its
+local planes tilt), measured against an independent ICP in ``tests/test_relief.py``.
+
 **Overlap.** Registration software reports a link's overlap as the share of a scan that
 lies on surfaces the other scan also holds, counted on clouds thinned to an even spacing —
 by surface area, not by raw points (which crowd near the scanner); :func:`overlap_pct`
@@ -63,6 +83,11 @@ from planner.units import RHO_ARCSEC
 __all__ = [
     "DEFAULT_CLOUD_FLOOR_MM",
     "DEFAULT_MIN_OVERLAP_PCT",
+    "DEFAULT_REVEAL_DEPTH_M",
+    "DEFAULT_WINDOW_SHARE",
+    "WINDOW_HEIGHT_M",
+    "WINDOW_WIDTH_M",
+    "edge_free_share",
     "link_covariance",
     "link_information",
     "link_strength",
@@ -70,6 +95,8 @@ __all__ = [
     "patch_points",
     "patch_variance_mm2",
     "plane_rows",
+    "relief_areas",
+    "reveal_visible",
     "weakest_direction",
 ]
 
@@ -78,6 +105,18 @@ DEFAULT_CLOUD_FLOOR_MM = 1.0
 #: The overlap registration software asks of a cloud-to-cloud link [%] (Autodesk ReCap's
 #: registration report: balance above 20 %).
 DEFAULT_MIN_OVERLAP_PCT = 20.0
+#: The parametric facade (module docstring): the share of a wall in openings, how deep they
+#: sit [m], and an opening's size [m]. The share is an assumption of a typical residential
+#: or office facade (window-to-wall ratios of 15–35 %; Goia, "Search for the optimal
+#: window-to-wall ratio in office buildings in different European climates", Solar Energy
+#: 132, 467–492, 2016, https://doi.org/10.1016/j.solener.2016.03.031, finds 30–45 % best for
+#: offices); the depth that of a window set in a masonry wall's reveal.
+DEFAULT_WINDOW_SHARE = 0.25
+DEFAULT_REVEAL_DEPTH_M = 0.15
+WINDOW_WIDTH_M = 1.2
+WINDOW_HEIGHT_M = 1.5
+#: Point spacings from an edge within which an ICP's local plane straddles two faces.
+EDGE_SPACINGS = 2.0
 #: Lever at which a rotation's error is compared with a shift's [m] (weakest direction).
 LEVER_M = 10.0
 
@@ -99,6 +138,46 @@ def plane_rows(point_xyz: np.ndarray, normal_xyz: np.ndarray, centre_xyz: np.nda
     n = np.asarray(normal_xyz, dtype=float)
     r = (np.asarray(point_xyz, dtype=float) - np.asarray(centre_xyz, dtype=float)) * 1000.0
     return np.concatenate([n, np.cross(r, n)], axis=-1)
+
+
+def relief_areas(area_m2: float, window_share: float, reveal_depth_m: float) -> tuple[float, float]:
+    """The relief of a facade patch of ``area_m2`` on the parametric facade (module
+    docstring): the area of its jambs facing each way along the wall, and of its heads [m²].
+    A share s of the wall in openings of w × h, d deep, gives s/(w·h) openings per m², each
+    with two jambs of h·d and a head of w·d.
+
+    Examples
+    --------
+    >>> [round(a, 4) for a in relief_areas(4.0, 0.25, 0.15)]  # a 2 m × 2 m patch
+    [0.125, 0.1]
+    """
+    openings = area_m2 * window_share / (WINDOW_WIDTH_M * WINDOW_HEIGHT_M)
+    return openings * WINDOW_HEIGHT_M * reveal_depth_m, openings * WINDOW_WIDTH_M * reveal_depth_m
+
+
+def reveal_visible(tan_side: np.ndarray, reveal_depth_m: float, width_m: float) -> np.ndarray:
+    """The share of a jamb a scan sees into an opening of ``width_m`` set ``reveal_depth_m``
+    deep, from a direction ``tan_side`` (tan of its angle from the wall's normal, towards
+    the jamb's side): ``min(1, w / (d·tan))`` — the near edge hides the rest at grazing
+    angles.
+
+    >>> reveal_visible(np.array([0.5, 8.0, 16.0]), 0.15, 1.2).tolist()
+    [1.0, 1.0, 0.5]
+    """
+    with np.errstate(divide="ignore"):
+        return np.minimum(1.0, width_m / (reveal_depth_m * np.abs(tan_side)))
+
+
+def edge_free_share(spacing_mm: np.ndarray, depth_m: float) -> np.ndarray:
+    """The share of a reveal's depth ``depth_m`` whose points an ICP can use: a point's
+    normal comes from its nearest neighbours (about ten, within some
+    :data:`EDGE_SPACINGS` point spacings ``spacing_mm``; Rusinkiewicz & Levoy 2001), so the
+    points that close to the reveal's edge with the wall lie on no one plane.
+
+    >>> edge_free_share(np.array([10.0, 50.0, 80.0]), 0.15).round(3).tolist()
+    [0.867, 0.333, 0.0]
+    """
+    return np.clip(1.0 - EDGE_SPACINGS * np.asarray(spacing_mm) / (depth_m * 1000.0), 0.0, 1.0)
 
 
 def patch_points(

@@ -25,7 +25,12 @@ import numpy as np
 
 from planner.accuracy import station_rms_pair
 from planner.classes import class_limits, parse_class
-from planner.cloud_registration import DEFAULT_CLOUD_FLOOR_MM, DEFAULT_MIN_OVERLAP_PCT
+from planner.cloud_registration import (
+    DEFAULT_CLOUD_FLOOR_MM,
+    DEFAULT_MIN_OVERLAP_PCT,
+    DEFAULT_REVEAL_DEPTH_M,
+    DEFAULT_WINDOW_SHARE,
+)
 from planner.errors import InputError
 from planner.materials import CONDITIONS, Material, MaterialTable, material_table
 from planner.ranges import Range, check_number
@@ -548,6 +553,10 @@ class PlanSettings:
         Spacing of candidate target positions along facades and on free ground [m].
     max_target_incidence_deg : float, default 45
         Beyond this incidence a flat target is not used.
+    window_share, reveal_depth_m : float, default 0.25 and 0.15
+        The walls' relief as cloud-to-cloud registration sees it: the share of a wall in
+        windows and doors and how deep they sit (:mod:`planner.cloud_registration`, the
+        parametric facade); ``window_share=0`` plans the walls plain.
     min_overlap_pct, cloud_floor_mm : float, default 20 and 1
         A cloud link needs this overlap (as registration software counts it); what a patch's
         plane fit does not see.
@@ -804,6 +813,28 @@ class PlanSettings:
         help="the overlap a cloud-to-cloud link needs, as registration software counts it "
         "(Autodesk ReCap asks more than 20 %)",
         group="registration",
+    )
+    window_share: float = _spec(
+        DEFAULT_WINDOW_SHARE,
+        "",
+        "window share of the walls",
+        open_lo=False,
+        step=0.05,
+        help="share of a wall's area in windows and doors, whose reveals give cloud-to-cloud "
+        "registration surfaces along the wall; 0: plain walls (a curtain wall, a blank "
+        "gable)",
+        group="registration",
+        hi=0.9,
+    )
+    reveal_depth_m: float = _spec(
+        DEFAULT_REVEAL_DEPTH_M,
+        "m",
+        "window reveal depth",
+        open_lo=False,
+        step=0.05,
+        help="how far windows and doors sit behind the wall's face",
+        group="registration",
+        hi=2.0,
     )
     cloud_floor_mm: float = _spec(
         DEFAULT_CLOUD_FLOOR_MM,

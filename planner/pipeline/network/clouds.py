@@ -26,6 +26,9 @@ import shapely
 from planner.accuracy3d import incidence_ranging_rms_mm
 from planner.cloud_registration import (
     MAX_LINK_CONDITION,
+    WINDOW_HEIGHT_M,
+    WINDOW_WIDTH_M,
+    edge_free_share,
     link_covariance,
     link_information,
     link_strength,
@@ -33,6 +36,8 @@ from planner.cloud_registration import (
     patch_points,
     patch_variance_mm2,
     plane_rows,
+    relief_areas,
+    reveal_visible,
     weakest_direction,
 )
 from planner.pipeline.evaluation.evaluate import Context, evaluate_stations
@@ -41,6 +46,14 @@ from planner.units import RHO_ARCSEC
 
 __all__ = ["CloudLink", "SurfaceCache", "Surfaces", "cloud_link", "overlap_matrix", "surfaces"]
 
+#: A relief patch with fewer points than this is not a plane to a scan.
+MIN_RELIEF_POINTS = 3.0
+#: What a relief patch's plane adds to the cloud floor [mm]: an ICP's local planes on a
+#: reveal only a few point spacings deep are tilted by the noise across so few points, and
+#: bias the shift along the wall. An independent point-to-plane ICP on simulated scans of a
+#: wall with 150 mm reveals (tests/test_relief.py) found that bias 0.3–1.0 mm per link,
+#: with the sampling and the ICP's neighbourhoods; 3 mm per patch gives the upper part of it.
+RELIEF_FLOOR_MM = 3.0
 #: Ground cells [m] and how far from a station its ground counts [m].
 GROUND_CELL_M = 2.0
 GROUND_REACH_M = 25.0
@@ -106,6 +119,24 @@ class SurfaceCache:
             np.full(len(fac.z), ctx.settings.sample_spacing_m * ctx.settings.sample_height_step_m)
         ]
         self._n = len(fac.z)
+        # the parametric facade's relief (planner.cloud_registration): three patches per
+        # facade sample, its two jambs and its head, numbered after the samples
+        st = ctx.settings
+        jamb, head = relief_areas(
+            st.sample_spacing_m * st.sample_height_step_m, st.window_share, st.reveal_depth_m
+        )
+        self._relief_area = np.array([jamb, jamb, head])
+        if jamb > 0:
+            n = len(fac.z)
+            wall = np.column_stack([fac.normal[fac.facade], np.zeros(n)])
+            along = np.column_stack([-wall[:, 1], wall[:, 0], np.zeros(n)])
+            down = np.tile([0.0, 0.0, -1.0], (n, 1))
+            self._relief_normal = np.stack([along, -along, down], axis=1)  # (N, 3, 3)
+            inside = self._xyz[0] - 0.5 * st.reveal_depth_m * wall
+            self._xyz.append(np.repeat(inside, 3, axis=0))
+            self._normal.append(self._relief_normal.reshape(-1, 3))
+            self._area.append(np.zeros(3 * n))  # relief adds no overlap
+            self._n += 3 * n
         # the ground cells met so far (:data:`_CELL_KEY`), sorted, and their patch indices
         self._cell_keys = np.empty(0, dtype=np.int64)
         self._cell_ids = np.empty(0, dtype=np.int64)
@@ -254,14 +285,69 @@ class SurfaceCache:
                 GROUND_CELL_M**2, sin_e, point_spacing_mm(s, step_mm_at_10m=ctx.step_mm_at_10m)
             )
             g_ids = self._ground_ids(g_xy)
-            self._axes[c] = int(np.bitwise_or.reduce(1 << np.unique(self._axis[f_ids]), initial=0))
+            r_ids, r_pts, r_var = self._relief(f_ids, np.array([*sxy, station_z[j]]))
+            walls = np.unique(self._axis[f_ids])
+            if len(r_ids):  # a wall's reveals run along it: its square class too
+                on = (r_ids - len(ctx.facades.z)) // 3  # the samples whose reveals it sees
+                walls = np.union1d(walls, (self._axis[on] + 2) % 4)
+            self._axes[c] = int(np.bitwise_or.reduce(1 << walls, initial=0))
             self.columns[c] = (
-                np.concatenate([f_ids, g_ids]),
-                np.concatenate([f_points[f_ids, j], g_pts]),
+                np.concatenate([f_ids, r_ids, g_ids]),
+                np.concatenate([f_points[f_ids, j], r_pts, g_pts]),
                 np.concatenate(
-                    [f_var[f_ids, j], patch_variance_mm2(np.sqrt(sigma2), g_pts, st.cloud_floor_mm)]
+                    [
+                        f_var[f_ids, j],
+                        r_var,
+                        patch_variance_mm2(np.sqrt(sigma2), g_pts, st.cloud_floor_mm),
+                    ]
                 ),
             )
+
+    def _relief(
+        self, f_ids: np.ndarray, station: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The relief patches (ids, points, variance along their normals [mm²]) a station at
+        ``station`` (3,) sees on the facade samples ``f_ids`` it sees: a jamb from the side it
+        faces and to the depth the opening lets it see, the head from below
+        (:mod:`planner.cloud_registration`)."""
+        if not self._relief_area[0] or not len(f_ids):
+            empty = np.empty(0)
+            return empty.astype(np.int64), empty, empty
+        ctx, sc, st = self.ctx, self.ctx.scanner, self.ctx.settings
+        fac = ctx.facades
+        v = station - self._xyz_of(f_ids)  # (K, 3) towards the scanner [m]
+        s = np.linalg.norm(v, axis=1)
+        normals = self._relief_normal[f_ids]  # (K, 3, 3)
+        cos = np.einsum("kd,krd->kr", v, normals) / s[:, None]
+        front = np.maximum(np.einsum("kd,kd->k", v[:, :2], fac.normal[fac.facade[f_ids]]), 1e-9)
+        seen = np.column_stack(
+            [
+                reveal_visible(np.abs(cos[:, 0]) * s / front, st.reveal_depth_m, WINDOW_WIDTH_M),
+                reveal_visible(np.abs(cos[:, 1]) * s / front, st.reveal_depth_m, WINDOW_WIDTH_M),
+                reveal_visible(np.abs(cos[:, 2]) * s / front, st.reveal_depth_m, WINDOW_HEIGHT_M),
+            ]
+        )
+        spacing = point_spacing_mm(s, step_mm_at_10m=ctx.step_mm_at_10m)
+        cos_c = np.clip(cos, 0.0, 1.0)
+        # an ICP's local planes need a neighbourhood on one face: the points within
+        # EDGE_SPACINGS of the reveal's edge with the wall give none (across the reveal's
+        # depth the points lie spacing / cos θ apart)
+        usable = edge_free_share(spacing[:, None], st.reveal_depth_m)
+        pts = self._relief_area * seen * usable * cos_c * 1e6 / np.square(spacing)[:, None]
+        rho = ctx.reflectance[f_ids] if len(ctx.reflectance) else np.nan
+        m_s = sc.range_rms_on(s[:, None], np.reshape(rho, (-1, 1)), np.maximum(cos_c, 1e-3))
+        lateral = s * 1000.0 * sc.angle_rms_arcsec / RHO_ARCSEC  # mm across the beam
+        sigma2 = np.square(m_s * cos_c) + np.square(lateral[:, None]) * (1.0 - cos_c**2)
+        ok = pts >= MIN_RELIEF_POINTS
+        ids = len(fac.z) + 3 * f_ids[:, None] + np.arange(3)
+        floor = np.hypot(st.cloud_floor_mm, RELIEF_FLOOR_MM)
+        var = patch_variance_mm2(np.sqrt(sigma2[ok]), pts[ok], floor)
+        return ids[ok], pts[ok], var
+
+    def _xyz_of(self, f_ids: np.ndarray) -> np.ndarray:
+        """Centres of facade samples ``f_ids`` (3-D) [m]."""
+        fac = self.ctx.facades
+        return np.column_stack([fac.xy[f_ids], fac.z[f_ids]])
 
     def _cells_near(self, sxy: np.ndarray) -> np.ndarray:
         """Centres of the grid's ground cells within reach of ``sxy`` outside buildings."""
