@@ -59,9 +59,9 @@ three relief patches: the two jambs (normals ±along the wall) and the head (nor
 A scan sees a jamb only from the side it faces, to the depth the opening's width lets it
 see (:func:`reveal_visible`), less its edge with the wall, where an ICP's local planes
 straddle two faces (:func:`edge_free_share`); so two scans share a jamb only where both
-stand on the same side of it — a pair in front of one long wall is tied along it by the windows beyond both,
-not by those between them. Sills (normal up) are seen only from above and are left out;
-a plain wall (``window_share=0``, a curtain wall, a blank gable) gets no relief. The relief
+stand on the same side of it — a pair in front of one long wall is tied along it by the
+windows beyond both, not by those between them. Sills (normal up) are seen only from
+above and are left out; a plain wall (``window_share=0``, a curtain wall, a blank gable) gets no relief. The relief
 adds no overlap (registration software counts overlap on the wall's own surface). A relief
 patch's plane carries a floor of its own (the reveal is only a few point spacings deep; its
 local planes tilt), measured against an independent ICP in ``tests/test_relief.py``.

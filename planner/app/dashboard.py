@@ -41,6 +41,7 @@ from planner.app.widgets import (
 from planner.app.wording import SITE_LABELS, for_dashboard
 from planner.classes import class_limits, parse_class
 from planner.errors import PlannerError
+from planner.materials import material_table
 from planner.pipeline.documents.export import render
 from planner.pipeline.engine.explain import explain_unmet, suggestions
 from planner.pipeline.engine.planning import plan
@@ -455,6 +456,21 @@ class StationPlanner:
         self.inventory = inventory_box(
             SITE_LABELS["--inventory"], _STYLE, w.Layout(width="98%", height="8em")
         )
+        self.surface_condition = w.Dropdown(
+            options=[("dry", "dry"), ("wet (after rain: porous walls darker)", "wet")],
+            value=PlanSettings().surface_condition,
+            description=SITE_LABELS["--surface-condition"],
+            style=_STYLE,
+            layout=_FULL,
+        )
+        self.default_material = w.Dropdown(
+            options=[("as the scanner's datasheet (reference surface)", "")]
+            + [(f"{m.label} ({m.reflectance:.0%})", m.name) for m in material_table().values()],
+            value="",
+            description=SITE_LABELS["--default-material"],
+            style=_STYLE,
+            layout=_FULL,
+        )
         # the settings in their groups (one order for the page and the command line's help)
         extra = {
             "registration_error": self.registration_error,
@@ -462,6 +478,8 @@ class StationPlanner:
             "demand_roofs": self.demand_roofs,
             "sight_engine": self.sight_engine,
             "inventory": self.inventory,
+            "surface_condition": self.surface_condition,
+            "default_material": self.default_material,
         }
         sections: list[w.Widget] = [w.HTML("<b>Requirements</b>")]
         sections += [self.more[n] for n in rq if n in self.more]
@@ -989,6 +1007,8 @@ class StationPlanner:
                 "demand_roofs": self.demand_roofs.value,
                 "sight_engine": self.sight_engine.value,
                 "inventory": parse_inventory(self.inventory.value),
+                "surface_condition": self.surface_condition.value,
+                "default_material": self.default_material.value or None,
             }
         )
         remember_kit(self.inventory.value)  # (it parsed) the crew's kit for the next session

@@ -38,6 +38,8 @@ SITE_LABELS = {
     "--imaging": "count the images (HDR) in the field time",
     "--demand-roofs": "demand the roofs too (3-D models; an elevated station)",
     "--sight-engine": "sight lines",
+    "--surface-condition": "survey day",
+    "--default-material": "walls made of",
     "--control": "Control CSV",
     "--levelling-rms-arcsec": "Scanner levelling [″] (0: the profile's)",
     "--zone": "Zones",
