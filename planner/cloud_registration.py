@@ -49,22 +49,23 @@ by ``−J₄₄⁻¹ J₄τ Δζ`` (the same treatment as the target registratio
 **Relief.** A real wall is not a plane: the reveals of its windows and doors, its sills,
 lintels, balconies and downpipes have surfaces whose normals run along it, and it is on
 these that point-to-plane ICP fixes the shift along a wall two scans share (a plain wall
-and the ground leave that shift free). Where the model has them (an LoD3 model's reveals are
-walls of their own) they are patches like any other. Otherwise the planner uses a stated
-**parametric facade** (:func:`relief_areas`): windows of :data:`WINDOW_WIDTH_M` ×
+and the ground leave that shift free). Where the model has them (an LoD3 model's reveals
+are walls of their own) they are patches like any other. Otherwise the planner uses a
+stated **parametric facade** (:func:`relief_areas`): windows of :data:`WINDOW_WIDTH_M` ×
 :data:`WINDOW_HEIGHT_M` over a share of the wall (``window_share``, default
 :data:`DEFAULT_WINDOW_SHARE`: European housing stock has window-to-wall ratios of about
-15–35 %), set :data:`DEFAULT_REVEAL_DEPTH_M` behind its face. Each facade patch then carries
-three relief patches: the two jambs (normals ±along the wall) and the head (normal down).
-A scan sees a jamb only from the side it faces, to the depth the opening's width lets it
-see (:func:`reveal_visible`), less its edge with the wall, where an ICP's local planes
-straddle two faces (:func:`edge_free_share`); so two scans share a jamb only where both
-stand on the same side of it — a pair in front of one long wall is tied along it by the
-windows beyond both, not by those between them. Sills (normal up) are seen only from
-above and are left out; a plain wall (``window_share=0``, a curtain wall, a blank gable) gets no relief. The relief
-adds no overlap (registration software counts overlap on the wall's own surface). A relief
-patch's plane carries a floor of its own (the reveal is only a few point spacings deep; its
-local planes tilt), measured against an independent ICP in ``tests/test_relief.py``.
+15–35 %), set :data:`DEFAULT_REVEAL_DEPTH_M` behind its face. Each facade patch then
+carries three relief patches: the two jambs (normals ±along the wall) and the head
+(normal down). A scan sees a jamb only from the side it faces, to the depth the
+opening's width lets it see (:func:`reveal_visible`), less its edge with the wall, where
+an ICP's local planes straddle two faces (:func:`edge_free_share`); so two scans share a
+jamb only where both stand on the same side of it — a pair in front of one long wall is
+tied along it by the windows beyond both, not by those between them. Sills (normal up)
+are seen only from above and are left out; a plain wall (``window_share=0``, a curtain
+wall, a blank gable) gets no relief. The relief adds no overlap (registration software
+counts overlap on the wall's own surface). A relief patch's plane carries a floor of its
+own (the reveal is only a few point spacings deep; its local planes tilt), measured
+against an independent ICP in ``tests/test_relief.py``.
 
 **Overlap.** Registration software reports a link's overlap as the share of a scan that
 lies on surfaces the other scan also holds, counted on clouds thinned to an even spacing —
