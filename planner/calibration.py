@@ -14,6 +14,11 @@
 * :func:`axis_errors` — collimation c (effect c / cos α) and trunnion-axis tilt i (effect
   i·tan α) from horizontal directions at several vertical angles α (Liu & Zhang, eq. 5–6);
   the model itself is :func:`axis_error_effect`.
+* :func:`signal_calibration` — the ranging noise's growth as the returned signal falls,
+  ``m_S = m_0·q^(−k)`` with ``q = ρ cos θ / ρ_ref`` (Wujanz et al. 2017, 2018;
+  :mod:`planner.signal`), from the residuals of planes of known reflectance scanned at
+  several incidences (Schmitz et al. 2019: plane-fit residuals along the normal are the
+  ranging noise times cos θ at a lab's short distances).
 * :func:`profile_from_calibration` — a :class:`~planner.scanner.Scanner` built from these,
   with the calibration recorded in it.
 
@@ -34,7 +39,9 @@ from numpy.typing import ArrayLike
 
 from planner._array import as_float_array
 from planner.errors import InputError
+from planner.ranges import RANGES
 from planner.scanner import DEFAULT_SCANNER, Scanner, check_profile_name
+from planner.signal import DEFAULT_REFERENCE_REFLECTANCE, MIN_SIGNAL, relative_signal
 from planner.units import RHO_ARCSEC
 
 __all__ = [
@@ -42,6 +49,7 @@ __all__ = [
     "BaselineResult",
     "HelmertResult",
     "LabTest",
+    "SignalResult",
     "SixSegmentResult",
     "axis_error_effect",
     "axis_errors",
@@ -50,9 +58,11 @@ __all__ = [
     "lab_test",
     "profile_from_calibration",
     "read_points",
+    "signal_calibration",
     "simulate_axes",
     "simulate_baseline",
     "simulate_lab",
+    "simulate_signal",
     "six_segment_constant",
 ]
 
@@ -677,6 +687,87 @@ def axis_errors(data: pd.DataFrame | str | Path, *, orientation: bool = True) ->
     )
 
 
+@dataclass
+class SignalResult:
+    """The ranging noise by returned signal, ``m_S = m_0·q^(−k)`` (:mod:`planner.signal`):
+    ``m0_mm`` on the reference reflectance square to the beam, the exponent k, their
+    standard errors, and each plane's residual against the fit."""
+
+    m0_mm: float
+    m0_se_mm: float
+    k: float
+    k_se: float
+    reference_reflectance: float
+    residuals: pd.DataFrame
+
+    def lines(self) -> list[str]:
+        """The result in words (the command line prints these)."""
+        return [
+            f"Ranging noise by returned signal from {len(self.residuals)} planes: "
+            f"m_S = m_0 · q^(−k), q = ρ cos θ / {self.reference_reflectance:g}",
+            f"  m_0 = {self.m0_mm:.3f} mm ± {self.m0_se_mm:.3f} mm (the reference surface "
+            "square to the beam)",
+            f"  k = {self.k:.3f} ± {self.k_se:.3f} (0.5: shot-noise limited; 0: no dependence)",
+            "  fit residual RMS: "
+            f"{float(np.sqrt(np.mean(self.residuals['misfit_pct'] ** 2))):.1f} %",
+        ]
+
+
+#: A signal calibration's planes must span at least this factor of signal (ρ cos θ).
+MIN_SIGNAL_SPAN = 2.0
+
+
+def signal_calibration(
+    data: pd.DataFrame | str | Path,
+    reference_reflectance: float = DEFAULT_REFERENCE_REFLECTANCE,
+) -> SignalResult:
+    """The ranging noise's law of the returned signal from planes of known reflectance.
+
+    ``data``: one row per scanned plane — ``reflectance`` [0–1] (a calibrated plate, e.g.
+    Spectralon 10 / 50 / 99 %), ``incidence_deg`` (the beam's angle to the plane's normal)
+    and ``residual_rms_mm`` (the RMS of the plane fit's residuals along its normal). At a
+    lab's short distances the angular noise's share is negligible, so a residual RMS is the
+    ranging RMS times cos θ (Schmitz et al. 2019) and ``log(res / cos θ) = log m_0 − k·log q``
+    is fitted by least squares.
+    """
+    origin = None if isinstance(data, pd.DataFrame) else Path(data).name
+    cols = ["reflectance", "incidence_deg", "residual_rms_mm"]
+    df = _numbers(_table(data, cols, origin), cols, origin or "the table")
+    rho, inc, res = (df[c].to_numpy(float) for c in cols)
+    if ((rho <= 0) | (rho > 1)).any():
+        raise InputError("reflectance must be > 0 and <= 1 (a fraction: 0.5 for 50 %)")
+    if ((inc < 0) | (inc >= 84)).any():
+        raise InputError("incidence_deg must be from 0 to below 84 [deg]")
+    if (res <= 0).any():
+        raise InputError("residual_rms_mm must be > 0 [mm]")
+    cos_t = np.cos(np.radians(inc))
+    q = relative_signal(rho, cos_t, reference_reflectance)
+    if q.max() / q.min() < MIN_SIGNAL_SPAN or len(df) < 3:
+        raise InputError(
+            "the fit needs at least 3 planes whose signal (reflectance × cos incidence) spans "
+            f"a factor of {MIN_SIGNAL_SPAN:g}; scan plates of different reflectance (e.g. 10, "
+            "50, 99 %) or one plate at several angles"
+        )
+    if (q <= MIN_SIGNAL).any():
+        raise InputError("a plane returns less than 1 % of the reference's signal; leave it out")
+    a = np.column_stack([np.ones_like(q), -np.log(q)])
+    y = np.log(res / cos_t)
+    x, *_ = np.linalg.lstsq(a, y, rcond=None)
+    v = y - a @ x
+    dof = max(len(y) - 2, 1)
+    cov = (v @ v / dof) * np.linalg.inv(a.T @ a)
+    m0 = float(np.exp(x[0]))
+    out = df.assign(predicted_mm=np.exp(a @ x) * cos_t, misfit_pct=100.0 * (np.exp(v) - 1.0))
+    return SignalResult(
+        m0_mm=m0,
+        m0_se_mm=m0 * float(np.sqrt(cov[0, 0])),
+        k=float(x[1]),
+        k_se=float(np.sqrt(cov[1, 1])),
+        reference_reflectance=reference_reflectance,
+        residuals=out,
+    )
+
+
 # -- the profile ----------------------------------------------------------------------------
 def profile_from_calibration(
     name: str,
@@ -685,13 +776,16 @@ def profile_from_calibration(
     lab: LabTest | None = None,
     baseline: BaselineResult | None = None,
     axes: AxisResult | None = None,
+    signal: SignalResult | None = None,
     range_from: str | None = None,
     angles_from: str | None = None,
     include_scale: bool = False,
 ) -> tuple[Scanner, list[str]]:
     """A scanner profile from calibration results, and the notes to show the user.
 
-    ``range_from``: "lab" (m_r of distances) or "baseline" (residual RMS after k and R);
+    ``range_from``: "lab" (m_r of distances), "baseline" (residual RMS after k and R) or
+    "signal" (m_0 of :func:`signal_calibration`); a ``signal`` result also sets the
+    profile's ranging exponent and reference reflectance;
     ``angles_from``: "lab" (m_r of φ and θ) or "axes" (residual RMS of the directions after
     c and i, horizontal only). Figures not chosen come from ``base`` (default:
     :data:`~planner.scanner.DEFAULT_SCANNER`, the Leica class of Voroshilov & Karachentsev).
@@ -723,8 +817,14 @@ def profile_from_calibration(
             f"R = {baseline.scale_ppm:+.1f} ppm"
             + ("" if include_scale else " (the profile assumes you do)")
         )
+    elif range_from == "signal":
+        if signal is None:
+            raise InputError("range_from='signal' needs a signal calibration")
+        fig["range_rms_mm"], fig["range_ppm"] = signal.m0_mm, 0.0
     elif range_from is not None:
-        raise InputError(f"range_from must be 'lab', 'baseline' or None; got {range_from!r}")
+        raise InputError(
+            f"range_from must be 'lab', 'baseline', 'signal' or None; got {range_from!r}"
+        )
     if angles_from == "lab":
         if lab is None:
             raise InputError("angles_from='lab' needs a lab test")
@@ -764,6 +864,19 @@ def profile_from_calibration(
             "i_se_deg": round(axes.i_se_deg, 6),
             "residual_rms_arcsec": round(axes.residual_rms_arcsec, 3),
         }
+    if signal is not None:
+        record["signal"] = {
+            "m0_mm": round(signal.m0_mm, 4),
+            "k": round(signal.k, 4),
+            "k_se": round(signal.k_se, 4),
+            "reference_reflectance": signal.reference_reflectance,
+            "planes": len(signal.residuals),
+        }
+        if not 0.0 <= signal.k <= RANGES["ranging_exponent"].hi:
+            raise InputError(
+                f"the signal calibration gives k = {signal.k:.3f}, outside 0 to "
+                f"{RANGES['ranging_exponent'].hi:g}; check the planes' reflectances and residuals"
+            )
     record["range_from"] = range_from or "base profile"
     record["angles_from"] = angles_from or "base profile"
     for key, unit, limit in (
@@ -787,6 +900,14 @@ def profile_from_calibration(
         max_range_m=base.max_range_m,
         vertical_fov_deg=base.vertical_fov_deg,
         measurement_rate_hz=base.measurement_rate_hz,
+        # m_0 is stated on the calibration's reference; the base's m_S on the base's
+        reference_reflectance=(
+            signal.reference_reflectance if range_from == "signal" else base.reference_reflectance
+        ),
+        ranging_exponent=signal.k if signal is not None else base.ranging_exponent,
+        range_reflectance=base.range_reflectance,
+        dark_range_m=base.dark_range_m,
+        dark_reflectance=base.dark_reflectance,
         label=f"{name} (own calibration)",
         source=f"own calibration (tls-planner): ranging from {record['range_from']}, angles from "
         f"{record['angles_from']}; other figures from {base.name}",
@@ -898,3 +1019,27 @@ def simulate_axes(
             "reference_deg": reference,
         }
     )
+
+
+def simulate_signal(
+    m0_mm: float = 1.0,
+    k: float = 0.5,
+    reflectances: Sequence[float] = (0.1, 0.5, 0.99),
+    incidences_deg: Sequence[float] = (0.0, 30.0, 50.0, 65.0),
+    points: int = 2000,
+    reference_reflectance: float = DEFAULT_REFERENCE_REFLECTANCE,
+    seed: int = 6,
+) -> pd.DataFrame:
+    """Planes of calibrated reflectance scanned at several incidences, each ``points`` points
+    whose offsets along the normal have the RMS ``m_0·q^(−k)·cos θ``; the RMS of each plane's
+    offsets is its ``residual_rms_mm`` (the columns :func:`signal_calibration` reads)."""
+    rng = np.random.default_rng(seed)
+    rows = []
+    for rho in reflectances:
+        for inc in incidences_deg:
+            cos_t = math.cos(math.radians(inc))
+            q = float(relative_signal(rho, cos_t, reference_reflectance))
+            sigma = m0_mm * q**-k * cos_t
+            res = float(np.sqrt(np.mean(rng.normal(0.0, sigma, points) ** 2)))
+            rows.append({"reflectance": rho, "incidence_deg": inc, "residual_rms_mm": res})
+    return pd.DataFrame(rows)

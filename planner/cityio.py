@@ -566,7 +566,8 @@ def _gml_name(el: ET.Element) -> str:
 
 
 def _gml_attributes(el: ET.Element) -> dict[str, Any]:
-    """The simple attributes a tree needs (height, crown diameter)."""
+    """The simple attributes the planner reads: a tree's height and crown, a building's wall
+    material (CityGML 2.0 generic attributes named as :data:`MATERIAL_KEYS`)."""
     out: dict[str, Any] = {}
     for c in el:
         n = _local(c.tag)

@@ -97,6 +97,7 @@ __all__ = [
     "patch_variance_mm2",
     "plane_rows",
     "relief_areas",
+    "relief_words",
     "reveal_visible",
     "weakest_direction",
 ]
@@ -156,6 +157,22 @@ def relief_areas(area_m2: float, window_share: float, reveal_depth_m: float) -> 
     return openings * WINDOW_HEIGHT_M * reveal_depth_m, openings * WINDOW_WIDTH_M * reveal_depth_m
 
 
+def relief_words(window_share: float, reveal_depth_m: float) -> str:
+    """The relief the cloud links count, in words (every cloud or hybrid plan says it).
+
+    >>> relief_words(0.25, 0.15)[:60]
+    'Cloud links count the walls’ relief as a parametric facade: '
+    """
+    if window_share <= 0 or reveal_depth_m <= 0:
+        return "Cloud links count the walls as plain planes (no relief: --window-share 0)."
+    return (
+        "Cloud links count the walls’ relief as a parametric facade: openings of "
+        f"{WINDOW_WIDTH_M:g} × {WINDOW_HEIGHT_M:g} m on {window_share:.0%} of the wall, "
+        f"{reveal_depth_m * 1000:.0f} mm deep (--window-share, --reveal-depth-m; 0 for plain "
+        "walls: a curtain wall, a blank gable)."
+    )
+
+
 def reveal_visible(tan_side: np.ndarray, reveal_depth_m: float, width_m: float) -> np.ndarray:
     """The share of a jamb a scan sees into an opening of ``width_m`` set ``reveal_depth_m``
     deep, from a direction ``tan_side`` (tan of its angle from the wall's normal, towards
@@ -198,7 +215,9 @@ def patch_points(
 
 
 def patch_variance_mm2(
-    normal_rms_mm: np.ndarray, n_points: np.ndarray, floor_mm: float = DEFAULT_CLOUD_FLOOR_MM
+    normal_rms_mm: np.ndarray,
+    n_points: np.ndarray,
+    floor_mm: float | np.ndarray = DEFAULT_CLOUD_FLOOR_MM,
 ) -> np.ndarray:
     """Variance [mm²] of a patch's position along its normal in one scan: ``σ²/n + floor²``.
 

@@ -42,6 +42,7 @@ __all__ = [
     "material_table",
     "read_material_file",
     "reflectances",
+    "roughness_mm",
 ]
 
 #: Attributes naming a building's wall material, in the order they are asked: OpenStreetMap's
@@ -95,6 +96,11 @@ class Material:
             "roughness_mm",
             check_number(self.roughness_mm, f"{who}: roughness_mm", RANGES["rms_mm"]),
         )
+        if self.wet_reflectance > self.reflectance:
+            raise InputError(
+                f"{who}: wet_reflectance ({self.wet_reflectance:g}) must not exceed reflectance "
+                f"({self.reflectance:g}): water darkens a surface, it does not brighten it"
+            )
         if not isinstance(self.returns, bool):
             raise InputError(f"{who}: returns must be true or false")
         if isinstance(self.aliases, str) or not all(isinstance(a, str) for a in self.aliases):
@@ -123,9 +129,9 @@ class MaterialTable(Mapping[str, Material]):
         for m in materials:
             self._by_name[m.name] = m  # a later row (the user's) replaces an earlier one
         self._by_key: dict[str, str] = {}
-        for m in self._by_name.values():  # aliases first, so that a name always wins
+        for m in self._by_name.values():  # aliases first (a later row's win), then names
             for a in m.aliases:
-                self._by_key.setdefault(_key(a), m.name)
+                self._by_key[_key(a)] = m.name
         for m in self._by_name.values():
             self._by_key[_key(m.name)] = m.name
 
@@ -264,6 +270,8 @@ def walls_words(
     ('Walls (wet day): no material known on 2 samples ', '80%); red brick 24% on 1 samples.')
     """
     names = np.asarray(names, dtype=object)
+    if not len(names):
+        return f"Walls ({condition} day): no sample left to demand."
     kinds, counts = np.unique(names.astype(str), return_counts=True)
     order = np.argsort(-counts, kind="stable")
     parts = []
@@ -277,3 +285,16 @@ def walls_words(
             m = table[kinds[k]]
             parts.append(f"{m.label} {m.reflectance_in(condition):.0%} on {counts[k]} samples")
     return f"Walls ({condition} day): {'; '.join(parts)}."
+
+
+def roughness_mm(names: np.ndarray, table: MaterialTable) -> np.ndarray:
+    """(N,) each named surface's roughness [mm] (0 where none is known).
+
+    >>> roughness_mm(np.array(["brick", ""], dtype=object), material_table()).tolist()
+    [1.0, 0.0]
+    """
+    names = np.asarray(names, dtype=object)
+    out = np.zeros(len(names))
+    for name in set(names.tolist()) - {""}:
+        out[names == name] = table[name].roughness_mm
+    return out

@@ -403,7 +403,9 @@ class Scanner:
         >>> sc.max_range_on([0.8, 0.2, float("nan")]).tolist()
         [120.0, 60.0, 120.0]
         """
-        q = relative_signal(reflectance, cos_incidence, self.reach_reflectance)
+        rho = np.asarray(reflectance, dtype=float)
+        rho = np.where(np.isnan(rho), self.ref_reflectance, rho)  # NaN: the reference surface
+        q = relative_signal(rho, cos_incidence, self.reach_reflectance)
         return np.asarray(signal_reach_m(self.max_range_m, q, self.reach_exponent), dtype=float)
 
     # -- construction ---------------------------------------------------------------------

@@ -8,7 +8,7 @@ by the simulators of planner.calibration; deterministic (fixed seeds).
 
 from pathlib import Path
 
-from planner.calibration import simulate_axes, simulate_baseline, simulate_lab
+from planner.calibration import simulate_axes, simulate_baseline, simulate_lab, simulate_signal
 
 OUT = Path(__file__).resolve().parent.parent / "planner" / "data" / "calibration"
 
@@ -27,4 +27,5 @@ simulate_axes(
     noise_arcsec=2.0,
     alphas_deg=[-35, -25, -15, -5, 5, 15, 25, 35, 45, 55, 65, 70],
 ).round(6).to_csv(OUT / "axes.csv", index=False)
+simulate_signal(m0_mm=0.8, k=0.55, points=1500).round(4).to_csv(OUT / "signal.csv", index=False)
 print(f"wrote {OUT}")

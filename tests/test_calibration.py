@@ -295,3 +295,36 @@ def test_bad_baseline_and_axes_input(tmp_path):
     with pytest.raises(InputError, match="does not exist"):
         baseline_calibration(tmp_path / "nope.csv")
     assert RHO_ARCSEC > 0
+
+
+def test_signal_calibration_recovers_the_exponent_and_a_constant_noise_gives_none(tmp_path):
+    """Planes of 10, 50 and 99 % at four incidences (the shipped example, k = 0.55, m_0 =
+    0.8 mm): the fit recovers both within a few standard errors; planes scanned with one
+    noise whatever the signal give k ≈ 0 (negative control: the fit can tell)."""
+    from planner.app.calibration_plots import example_path
+    from planner.calibration import signal_calibration, simulate_signal
+
+    example = example_path("signal.csv")
+    r = signal_calibration(example)
+    assert r.k == pytest.approx(0.55, abs=4 * r.k_se + 0.01)
+    assert r.m0_mm == pytest.approx(0.8, abs=0.03)  # mm
+    flat = signal_calibration(simulate_signal(m0_mm=1.0, k=0.0, seed=11))
+    assert abs(flat.k) < 0.03
+    with pytest.raises(InputError, match="spans a factor"):
+        signal_calibration(simulate_signal(reflectances=(0.8,), incidences_deg=(0.0, 10.0)))
+    code, _, err = run(
+        "calibrate", "signal", str(example), "--range-from", "signal",
+        "--profile-out", str(tmp_path / "mine.toml"),
+    )  # fmt: skip
+    assert code == 0, err
+    sc = Scanner.from_file(tmp_path / "mine.toml")
+    assert sc.ranging_exponent == pytest.approx(r.k, abs=1e-3)
+    assert sc.range_rms_mm == pytest.approx(r.m0_mm, abs=1e-3)  # mm
+    # the profile plans with it: dark brick ranges (0.8 / 0.15)^k noisier than the reference
+    assert float(sc.range_rms_on(10.0, 0.15)) == pytest.approx(
+        r.m0_mm * (0.8 / 0.15) ** r.k, rel=1e-6
+    )
+    bad = tmp_path / "bad.csv"
+    bad.write_text("reflectance,incidence_deg,residual_rms_mm\n50,0,1.0\n", encoding="utf-8")
+    code, _, err = run("calibrate", "signal", str(bad))
+    assert code == 2 and "fraction" in err

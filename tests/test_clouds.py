@@ -22,8 +22,9 @@ from planner.site import Building, Site
 SCANNER = Scanner.from_name("leica-4mm-60urad")
 
 
-def _surfaces(site: Site, station_xy: np.ndarray):
-    st = PlanSettings(registration="cloud")
+def _surfaces(site: Site, station_xy: np.ndarray, window_share: float = 0.0):
+    """The patches the stations see (plain walls unless ``window_share`` is given)."""
+    st = PlanSettings(registration="cloud", window_share=window_share)
     fac = build_facades(site, st.sample_spacing_m, st.sample_height_step_m)
     ctx = Context.build(site, fac, SCANNER, Requirements(), st, 120.0)
     return ctx, clouds.surfaces(ctx, np.asarray(station_xy, dtype=float) + np.array([E0, N0]))
@@ -43,6 +44,11 @@ def test_a_straight_street_leaves_the_shift_along_it_free_and_a_corner_fixes_it(
     assert corner.fixed
     sd = np.sqrt(np.diag(corner.cov))
     assert sd[:3] == pytest.approx([0.28, 0.34, 0.08], abs=0.02)  # mm
+    # with windows (the parametric facade) the reveals beyond both stations tie the pair
+    # along the street
+    ctx, surf = _surfaces(site, [[40, -8], [60, -8]], window_share=0.25)
+    along = clouds.cloud_link(ctx, surf, 0, 1)
+    assert along.fixed and np.sqrt(along.cov[0, 0]) < 1.0  # mm east-west
 
 
 def test_the_overlap_counts_surface_not_points():
@@ -74,7 +80,9 @@ def test_the_overlap_counts_surface_not_points():
 
 @pytest.fixture(scope="module")
 def modes():
-    return {m: plan(settings=PlanSettings(registration=m)) for m in ("targets", "cloud", "hybrid")}
+    out = {m: plan(settings=PlanSettings(registration=m)) for m in ("targets", "cloud", "hybrid")}
+    out["plain"] = plan(settings=PlanSettings(registration="cloud", window_share=0.0))
+    return out
 
 
 def test_hybrid_meets_the_default_site_with_fewer_targets(modes):
@@ -90,16 +98,23 @@ def test_hybrid_meets_the_default_site_with_fewer_targets(modes):
     assert any(m.startswith("Registration: hybrid") for m in h.messages)
 
 
-def test_cloud_alone_says_which_stations_it_cannot_tie_and_why(modes):
-    """The default building's walls are straight: most pairs of stations share one wall and
-    the ground, which leave the shift along the wall free; the plan says so and how to fix
-    it (no targets are placed)."""
-    c = modes["cloud"]
+def test_cloud_alone_on_plain_walls_says_which_stations_it_cannot_tie_and_why(modes):
+    """Planned as plain planes (--window-share 0), the default building's walls are
+    straight: most pairs of stations share one wall and the ground, which leave the shift
+    along the wall free; the plan says so and how to fix it (no targets are placed). With
+    the parametric facade's reveals the same site is one network meeting every sample, and
+    the plan says what it assumed of the walls."""
+    c = modes["plain"]
     assert len(c.targets) == 0
     assert (c.links["kind"] == "cloud").all()
     msg = next(m for m in c.messages if m.startswith("Registration: cloud to cloud"))
     assert "leave a direction free" in msg and "--registration hybrid" in msg
     assert not c.meets_all
+    assert any("Cloud links count the walls as plain planes" in m for m in c.messages)
+    r = modes["cloud"]
+    assert r.meets_all and len(r.targets) == 0
+    assert any("form one registration network" in m for m in r.messages)
+    assert any("openings of 1.2 × 1.5 m on 25% of the wall, 150 mm deep" in m for m in r.messages)
 
 
 def test_each_cloud_link_is_judged_by_its_own_error(modes):

@@ -234,3 +234,43 @@ def test_a_material_row_refuses_what_cannot_be():
         Material("x", 0.3, 0.2, returns="no")
     with pytest.raises(InputError, match="wet_reflectance"):
         Material("x", 0.3, 0.0)
+
+
+def test_the_most_specific_zone_names_the_material_and_no_material_is_the_reference():
+    from planner.materials import material_table as table
+    from planner.pipeline.geometry.facades import build_facades
+    from planner.pipeline.geometry.zoning import apply_zones
+    from planner.pipeline.inputs.requirements import Requirements
+
+    site = square_site(30.0, 12.0)
+    site = replace(
+        site,
+        buildings=[replace(site.buildings[0], material="brick")],
+        zones=[  # a plinth on the whole building, under a facade in sandstone
+            parse_zone("building=sq,z=0-3,material=granite", "plinth"),
+            parse_zone("facade=sq-f01,material=sandstone", "face"),
+        ],
+    )
+    fac = build_facades(site, 2.0, 2.0)
+    fac, req, _ = apply_zones(site, fac, Requirements(), None, table())
+    on = fac.facade_id[fac.facade] == "sq-f01"
+    low = fac.z - fac.base_z[fac.facade] <= 3.0
+    assert set(req.material[on & low]) == {"granite"}  # the part of a facade wins
+    assert set(req.material[on & ~low]) == {"sandstone"}
+    assert set(req.material[~on & ~low]) == {"brick"}
+    # a wall of no material is the reference surface, whatever surface the reach is stated on
+    hds = Scanner.from_name("leica-hds3000")  # 134 m at 18 %
+    assert float(hds.max_range_on(float("nan"))) == pytest.approx(134.0)  # m
+    assert float(hds.max_range_on(0.1)) == pytest.approx(134.0 * (0.1 / 0.18) ** 0.5)  # m
+
+
+def test_a_calibrated_profile_keeps_its_bases_reach():
+    from planner.calibration import profile_from_calibration, signal_calibration, simulate_signal
+
+    r = signal_calibration(simulate_signal(reference_reflectance=0.9), 0.9)
+    base = Scanner.from_name("leica-hds3000")
+    kept, _ = profile_from_calibration("mine", base=base, signal=r)
+    assert kept.range_reflectance == 0.18 and kept.reference_reflectance is None
+    assert kept.ranging_exponent == pytest.approx(0.5, abs=0.02)
+    own, _ = profile_from_calibration("mine", base=base, signal=r, range_from="signal")
+    assert own.reference_reflectance == 0.9 and own.range_rms_mm == pytest.approx(1.0, abs=0.02)

@@ -18,6 +18,7 @@ from planner.app.commands import (
     cmd_calibrate_axes,
     cmd_calibrate_baseline,
     cmd_calibrate_lab,
+    cmd_calibrate_signal,
     cmd_figures,
     cmd_rehearse,
     cmd_replan,
@@ -321,8 +322,8 @@ def _model_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
         default=None,
         metavar="FILE",
         help="your own facade materials added to the shipped table (TOML, [[material]] tables "
-        "with name, reflectance, wet_reflectance, roughness_mm, returns; 'planner materials' "
-        "lists the table)",
+        "with name, reflectance, wet_reflectance, roughness_mm, returns, aliases: the format "
+        "of planner/data/materials.toml)",
     )
     group["model"].add_argument(
         "--default-material",
@@ -705,6 +706,7 @@ def _calibrate_command(sub: argparse._SubParsersAction) -> None:
     _calibrate_lab_command(csub)
     _calibrate_baseline_command(csub)
     _calibrate_axes_command(csub)
+    _calibrate_signal_command(csub)
 
 
 def _profile_options(p: argparse.ArgumentParser) -> None:
@@ -787,6 +789,33 @@ def _calibrate_axes_command(csub: argparse._SubParsersAction) -> None:
     )
     _profile_options(ax)
     ax.set_defaults(func=cmd_calibrate_axes)
+
+
+def _calibrate_signal_command(csub: argparse._SubParsersAction) -> None:
+    sg = csub.add_parser(
+        "signal", help="the ranging noise by returned signal, from planes of known reflectance"
+    )
+    sg.add_argument(
+        "file",
+        metavar="FILE.csv",
+        help="one plane per row: reflectance (0-1), incidence_deg, residual_rms_mm (the plane "
+        "fit's residual RMS along its normal)",
+    )
+    sg.add_argument(
+        "--reference-reflectance",
+        type=argument("reflectance"),
+        default=None,
+        help="the reflectance m_0 is stated on (default 0.8, as datasheets state theirs)",
+    )
+    sg.add_argument(
+        "--range-from",
+        choices=["signal", "none"],
+        default="none",
+        help="carry m_0 into the profile as its ranging RMS, or keep the base's (default): "
+        "the exponent and reference reflectance are carried either way",
+    )
+    _profile_options(sg)
+    sg.set_defaults(func=cmd_calibrate_signal)
 
 
 def _audit_command(sub: argparse._SubParsersAction) -> None:

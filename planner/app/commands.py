@@ -686,6 +686,19 @@ def cmd_calibrate_axes(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def cmd_calibrate_signal(args: argparse.Namespace) -> int:
+    _profile_name(args)  # a bad name stops here, before any work
+    from planner.calibration import signal_calibration
+    from planner.signal import DEFAULT_REFERENCE_REFLECTANCE
+
+    r = signal_calibration(args.file, args.reference_reflectance or DEFAULT_REFERENCE_REFLECTANCE)
+    print(*r.lines(), sep="\n")
+    _print_table(r.residuals.set_index(["reflectance", "incidence_deg"]), 3)
+    range_from = None if args.range_from == "none" else args.range_from
+    _write_profile(args, signal=r, range_from=range_from)
+    return EXIT_OK
+
+
 def cmd_serve(args: argparse.Namespace) -> int:
     from planner.app.notebooks import notebook_path
     from planner.app.serve import serve

@@ -351,6 +351,8 @@ class StationPlanner:
             self.model,
             self.registration,
             self.processing,
+            self.surface_condition,
+            self.default_material,
             self.grid,
             self.registration_error,
             self.imaging,
@@ -464,7 +466,7 @@ class StationPlanner:
             layout=_FULL,
         )
         self.default_material = w.Dropdown(
-            options=[("as the scanner's datasheet (reference surface)", "")]
+            options=[("the datasheet's reference surface", "")]
             + [(f"{m.label} ({m.reflectance:.0%})", m.name) for m in material_table().values()],
             value="",
             description=SITE_LABELS["--default-material"],

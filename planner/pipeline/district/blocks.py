@@ -290,6 +290,7 @@ def meeting_table(p: Plan, region: shapely.Geometry | None = None) -> pd.DataFra
     can only be blocked by buildings the block's site holds."""
     from planner.pipeline.evaluation.evaluate import Context, meeting_pairs
     from planner.pipeline.geometry.facades import build_facades
+    from planner.pipeline.geometry.zoning import apply_zones
 
     wb, st = workbench_of(p), p.settings
     xy = p.stations[["x", "y"]].to_numpy(dtype=float)
@@ -307,8 +308,12 @@ def meeting_table(p: Plan, region: shapely.Geometry | None = None) -> pd.DataFra
     if any(b.planned for b in halo):
         around = replace(wb.site, buildings=halo, passages=wb.site.passages_through(halo), zones=[])
         fac = build_facades(around, st.sample_spacing_m, st.sample_height_step_m)
+        # their walls' materials (glass not demanded), as the block's own are
+        fac, smp_req, _ = apply_zones(
+            around, fac, p.requirements, None, st.material_table, st.default_material
+        )
         contexts.append(
-            (Context.build(around, fac, p.scanner, p.requirements, st, wb.reach), False)
+            (Context.build(around, fac, p.scanner, p.requirements, st, wb.reach, smp_req), False)
         )
     parts = []
     for c, own in contexts:

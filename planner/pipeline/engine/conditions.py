@@ -45,8 +45,12 @@ def condition_words(p: Plan) -> str | None:
     then, now = found
     if other == "wet":
         lost = now - then
+        ctx = workbench_of(p).ctx
+        wet = reflectances(ctx.material, p.settings.material_table, "wet")
+        known = np.isfinite(wet) & (ctx.reflectance > 0)
+        darker = 1.0 - float(np.median(wet[known] / ctx.reflectance[known]))
         return (
-            f"Survey day: dry. With wet walls (porous materials about 40 % darker) the same "
+            f"Survey day: dry. With wet walls (their materials {darker:.0%} darker) the same "
             f"stations meet {then} of the {now} samples met dry"
             + (f": {lost} would need a nearer station." if lost > 0 else ": none lost.")
             + " Plan with --surface-condition wet to survey after rain."

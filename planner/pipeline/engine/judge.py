@@ -20,6 +20,7 @@ import pandas as pd
 import scipy.sparse as sp
 import shapely
 
+from planner.cloud_registration import relief_words
 from planner.errors import InputError
 from planner.materials import walls_words
 from planner.pipeline.engine.ids import GivenIds, id_number
@@ -281,11 +282,7 @@ def assemble(
         pairs=wb.pairs,
     )
     messages.insert(0, f"Accuracy model: {st.model_description()}.")
-    ctx = wb.ctx
-    walls = walls_words(
-        ctx.material, st.material_table, st.surface_condition, wb.scanner.ref_reflectance
-    )
-    messages.insert(1, walls)
+    messages.insert(1, _walls_message(wb))
     say(1.0, "plan ready")
     plan = Plan(
         site=wb.site,
@@ -306,6 +303,18 @@ def assemble(
         timings_s=clock.timings(),
     )
     return keep_workbench(plan, wb)
+
+
+def _walls_message(wb: Workbench) -> str:
+    """What the plan took the walls to be: their materials on the survey day and, where
+    scans are registered cloud to cloud, their relief."""
+    st = wb.settings
+    walls = walls_words(
+        wb.ctx.material, st.material_table, st.surface_condition, wb.scanner.ref_reflectance
+    )
+    if st.registration_for(wb.scanner) != "targets" and st.computes_registration:
+        walls += " " + relief_words(st.window_share, st.reveal_depth_m)
+    return walls
 
 
 def _purposes(

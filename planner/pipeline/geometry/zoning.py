@@ -223,7 +223,7 @@ def sample_materials(
         except InputError:
             unknown.setdefault(b.material, []).append(b.id)
     out = np.array([own.get(str(b), base) for b in fac.building_id[fac.facade]], dtype=object)
-    rank = [(0 if z.building_id else 2 if z.is_part else 1, i) for i, z in enumerate(zones)]
+    rank = [(2 if z.is_part else 0 if z.building_id else 1, i) for i, z in enumerate(zones)]
     for _, i in sorted(rank):
         z = zones[i]
         if z.material is not None:
@@ -251,8 +251,9 @@ def _silent_words(
     kinds = sorted({table[m].label for m in material[silent]})
     more = len(names) - len(order)
     return (
-        f"Not demanded: {int(silent.sum())} samples on {' and '.join(kinds)}, which returns no "
-        f"usable point ({', '.join(f'{names[k]} {counts[k]}' for k in order)}"
+        f"Not demanded: {int(silent.sum())} samples on {' and '.join(kinds)}, which "
+        f"{'return' if len(kinds) > 1 else 'returns'} no usable point "
+        f"({', '.join(f'{names[k]} {counts[k]}' for k in order)}"
         + (f", … {more} more facades" if more > 0 else "")
         + "); scan their frames and reveals at the spacing you need, or name another material"
     )

@@ -23,7 +23,6 @@ import numpy as np
 import scipy.sparse as sp
 import shapely
 
-from planner.accuracy3d import incidence_ranging_rms_mm
 from planner.cloud_registration import (
     MAX_LINK_CONDITION,
     WINDOW_HEIGHT_M,
@@ -40,6 +39,7 @@ from planner.cloud_registration import (
     reveal_visible,
     weakest_direction,
 )
+from planner.materials import roughness_mm
 from planner.pipeline.evaluation.evaluate import Context, evaluate_stations
 from planner.spacing import point_spacing_mm
 from planner.units import RHO_ARCSEC
@@ -275,9 +275,8 @@ class SurfaceCache:
             open_ = ctx.scene.seen(src, np.column_stack([g_xy, g_z + lift]), groups=box)
             g_xy, s, height = g_xy[open_], s[open_], height[open_]
             sin_e = height / s
-            m_s = sc.range_rms_at(s)
-            if st.incidence_ranging:  # the beam meets the ground at θ = 90° − elevation
-                m_s = incidence_ranging_rms_mm(m_s, sin_e)
+            # the beam meets the ground at θ = 90° − elevation
+            m_s = sc.range_rms_on(s, np.nan, sin_e if st.incidence_ranging else 1.0)
             sigma2 = (m_s * sin_e) ** 2 + (
                 s * 1000.0 * sc.tilt_rms_arcsec / RHO_ARCSEC * np.sqrt(1.0 - sin_e**2)
             ) ** 2
@@ -335,9 +334,12 @@ class SurfaceCache:
         usable = edge_free_share(spacing[:, None], st.reveal_depth_m)
         pts = self._relief_area * seen * usable * cos_c * 1e6 / np.square(spacing)[:, None]
         rho = ctx.reflectance[f_ids] if len(ctx.reflectance) else np.nan
-        m_s = sc.range_rms_on(s[:, None], np.reshape(rho, (-1, 1)), np.maximum(cos_c, 1e-3))
-        lateral = s * 1000.0 * sc.angle_rms_arcsec / RHO_ARCSEC  # mm across the beam
-        sigma2 = np.square(m_s * cos_c) + np.square(lateral[:, None]) * (1.0 - cos_c**2)
+        signal_cos = np.maximum(cos_c, 1e-3) if st.incidence_ranging else 1.0
+        m_s = sc.range_rms_on(s[:, None], np.reshape(rho, (-1, 1)), signal_cos)
+        # across the beam: the horizontal angle on a jamb, the vertical one on a head
+        angles = np.array([sc.angle_rms_arcsec, sc.angle_rms_arcsec, sc.tilt_rms_arcsec])
+        lateral = s[:, None] * 1000.0 * angles / RHO_ARCSEC  # mm
+        sigma2 = np.square(m_s * cos_c) + np.square(lateral) * (1.0 - cos_c**2)
         ok = pts >= MIN_RELIEF_POINTS
         ids = len(fac.z) + 3 * f_ids[:, None] + np.arange(3)
         floor = np.hypot(st.cloud_floor_mm, RELIEF_FLOOR_MM)
@@ -417,8 +419,10 @@ def _facade_patches(ctx: Context, station_xy: np.ndarray) -> tuple[np.ndarray, n
     area = st.sample_spacing_m * st.sample_height_step_m
     spacing = point_spacing_mm(slope, step_mm_at_10m=ctx.step_mm_at_10m)
     points = np.where(view, patch_points(area, cos_inc, spacing), 0.0)
+    # the floor: what a plane fit does not see, and the wall's own roughness (its material)
+    floor = np.hypot(st.cloud_floor_mm, roughness_mm(ctx.material, st.material_table))[:, None]
     var = patch_variance_mm2(
-        np.nan_to_num(dense["scanner_m_y_mm"], nan=1.0), np.maximum(points, 1.0), st.cloud_floor_mm
+        np.nan_to_num(dense["scanner_m_y_mm"], nan=1.0), np.maximum(points, 1.0), floor
     )
     return points, np.where(points > 0, var, np.inf)
 

@@ -26,6 +26,7 @@ import shapely
 
 from planner.pipeline.evaluation.evaluate import Context
 from planner.pipeline.geometry.facades import build_facades
+from planner.pipeline.geometry.zoning import apply_zones
 from planner.pipeline.network.targets import TargetCandidates, centre_rms, sights
 from planner.registration_error import (
     Link,
@@ -327,6 +328,10 @@ def context_of(site: Site, scanner, req, settings, reach: float):
             height_datum=site.height_datum,
         )
         fac = build_facades(sub, 10.0, 10.0)
-        return Context.build(sub, fac, scanner, req, settings, reach)
+        fac, smp_req, _ = apply_zones(
+            replace(sub, zones=[]), fac, req, None, settings.material_table,
+            settings.default_material,
+        )  # fmt: skip
+        return Context.build(sub, fac, scanner, req, settings, reach, smp_req)
 
     return make

@@ -7,9 +7,12 @@ the plan's targets as geometry (a sphere of its diameter on its stand height; a
 checkerboard of its size on its wall, four quadrants white and black), out to the
 scanner's range. Each return is measured with the planner's error model:
 
-* the slope distance with the ranging RMS ``a + b·S``, grown as ``1/√cos θ`` with the
-  incidence θ where the plan's model has that term
-  (:func:`planner.accuracy3d.incidence_ranging_rms_mm`);
+* the slope distance with the ranging RMS of the returned signal (:mod:`planner.signal`):
+  ``a + b·S`` on the datasheet's reference surface, grown as ``q^(−k)`` with the surface's
+  reflectance (its building's material, :mod:`planner.materials`) and the incidence θ
+  where the plan's model has that term, and no return beyond the reach on that surface;
+  glass (a curtain wall, an LoD3 model's windows) returns nothing; a target's black
+  quadrants range as the reference (as its centre's model assumes);
 * the horizontal direction with ``m_β`` and the vertical angle with ``m_ν``;
 * each scan's vertical axis tilted by its levelling residual (σ per axis: the compensator's
   figure, else ``m_ν``, the model's assumption) and turned to a random heading, so that the
@@ -22,8 +25,9 @@ scan: its pose carries it) — its incidence, the surface it hit and what kind o
 that is. The intensity is the surface's reflectance
 times ``cos θ`` (Lambert's law with the range corrected, as scanners' software reports
 it; Kaasalainen et al. 2011, under :data:`SURFACE_REFLECTANCE`): the targets' white
-(:data:`WHITE`) and black (:data:`BLACK`) quadrants stand out against the walls'
-:data:`SURFACE_REFLECTANCE`, as registration software needs to find them.
+(:data:`WHITE`) and black (:data:`BLACK`) quadrants stand out against the walls' material
+(:data:`SURFACE_REFLECTANCE` where none is known), as registration software needs to find
+them.
 
 This is the planner's own simulation (beyond the papers), for looking at and registering in
 the crew's software; its noise is the plan's model, so it rehearses the plan, it does not
@@ -326,16 +330,16 @@ def _scan(
     cos_t = np.abs(np.einsum("ij,ij->i", n, d))
     # the surface's reflectance (a target's paint; NaN: the datasheet's reference surface):
     # glass returns nothing, a dark wall ranges noisier and not as far (planner.signal)
-    rho = np.where(on_mesh, owner_rho[owner[tri]], np.where((hit_t >= 0) & ~ground, refl, np.nan))
+    target = (hit_t >= 0) & ~ground
+    rho = np.where(on_mesh, owner_rho[owner[tri]], np.nan)
+    rho[target] = np.maximum(refl[target], sc.ref_reflectance)  # black ranges as the reference
     signal_cos = cos_t if st.incidence_ranging else 1.0
     with np.errstate(invalid="ignore"):
         keep &= ~(on_mesh & silent_tri[tri]) & (dist <= sc.max_range_on(rho, signal_cos))
     on_mesh &= keep
     surface = np.where(on_mesh, owner[tri], hit_t)
     kind = np.where(on_mesh, tri_kind[tri], hit_kind)
-    reflectance = np.where(
-        np.isnan(rho), np.where(on_mesh | ground, SURFACE_REFLECTANCE, refl), rho
-    )
+    reflectance = np.where(target, refl, np.where(np.isnan(rho), SURFACE_REFLECTANCE, rho))
     s, a, e, c = dist[keep], az[col[keep]], el[row[keep]], cos_t[keep]
     m_s = sc.range_rms_on(s, rho[keep], c if st.incidence_ranging else 1.0)
     # the point's own noise; the scan's levelling is its frame's error (the pose)
