@@ -55,4 +55,5 @@ def condition_words(p: Plan) -> str | None:
             + (f": {lost} would need a nearer station." if lost > 0 else ": none lost.")
             + " Plan with --surface-condition wet to survey after rain."
         )
-    return f"Survey day: wet. On a dry day the same stations meet {then} samples ({then - now:+d})."
+    more = f"{then - now} more than wet" if then > now else "as many as wet"
+    return f"Survey day: wet. On a dry day the same stations meet {then} samples ({more})."

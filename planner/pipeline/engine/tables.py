@@ -150,6 +150,23 @@ def _diagnosed_reasons(
     return elevated
 
 
+def _dark_wall_words(ctx: Context, idx: np.ndarray, reason: np.ndarray) -> None:
+    """Add to the reasons of samples ``idx`` (no position meets them) what their wall's
+    material costs, where it returns less than the datasheet's reference surface."""
+    if not len(idx) or not len(ctx.reflectance):
+        return
+    st, sc = ctx.settings, ctx.scanner
+    rho = ctx.reflectance[idx]
+    dark = np.isfinite(rho) & (rho < sc.ref_reflectance)
+    for i in idx[dark]:
+        m = st.material_table[ctx.material[i]]
+        factor = float(sc.range_rms_on(10.0, ctx.reflectance[i]) / sc.range_rms_at(10.0))
+        reason[i] += (
+            f"; the wall is {m.label} ({ctx.reflectance[i]:.0%} on a {st.surface_condition} "
+            f"day): ranging {factor:.1f}× the datasheet's"
+        )
+
+
 def coverage_table(
     ctx: Context,
     ev: CandidateEvaluation,
@@ -190,6 +207,7 @@ def coverage_table(
         reason[i] = named[i].text()
     hopeless = np.flatnonzero(~meets & demanded & (n_ok_cand < k_req) & ev.evaluated)
     elevated = _diagnosed_reasons(ctx, diagnosis, hopeless, n_ok_cand, reason)
+    _dark_wall_words(ctx, hopeless, reason)
     reason[~meets & demanded & ~ev.evaluated] = "not evaluated: the time budget ran out"
     reason[fac.party_wall] = "party wall (against a neighbour): not scanned"
     named[~meets & demanded & ~ev.evaluated] = None
