@@ -169,7 +169,8 @@ def relief_words(window_share: float, reveal_depth_m: float) -> str:
         "Cloud links count the walls’ relief as a parametric facade: openings of "
         f"{WINDOW_WIDTH_M:g} × {WINDOW_HEIGHT_M:g} m on {window_share:.0%} of the wall, "
         f"{reveal_depth_m * 1000:.0f} mm deep (--window-share, --reveal-depth-m; 0 for plain "
-        "walls: a curtain wall, a blank gable)."
+        "walls: a curtain wall, a blank gable), except on buildings whose model draws its "
+        "openings (LoD3)."
     )
 
 

@@ -160,3 +160,33 @@ def test_an_icp_on_a_wall_with_reveals_fixes_the_shift_along_it_as_the_model_say
     child = _scan(STATIONS[1], np.empty((0, 4)), rng, DEFAULT_REVEAL_DEPTH_M)
     ends = [icp(parent, child + k * start, centre, iters=15)[0] + k * 8.0 for k in (1, -1)]
     assert abs(ends[0] - ends[1]) > 5.0  # mm
+
+
+def test_a_model_that_draws_its_openings_gets_no_parametric_relief():
+    """A building whose city model has window surfaces (LoD3) has its reveals as walls of
+    its own: the parametric facade's jambs are not added to its samples (the others keep
+    theirs)."""
+    from planner.cityio import site_from_cityjson
+    from planner.citymodel import Surface
+    from planner.synthetic3d import lod2_town
+
+    site = site_from_cityjson(lod2_town(2, seed=1))
+    first = site.planned[0]
+    wall = next(s for s in first.surfaces if s.kind == "wall")
+    window = Surface("window", (wall.rings[0][:3] + 0.0,))
+    site = replace_building(site, first.id, surfaces=(*first.surfaces, window))
+    st = PlanSettings(registration="cloud")
+    fac = build_facades(site, st.sample_spacing_m, st.sample_height_step_m)
+    ctx = Context.build(site, fac, SCANNER, Requirements(), st, 60.0)
+    cache = clouds.SurfaceCache(ctx)
+    own = fac.building_id[fac.facade] == first.id
+    assert own.any() and (~own).any()
+    assert not cache._parametric[own].any() and cache._parametric[~own].all()
+
+
+def replace_building(site, bid, **changes):
+    from dataclasses import replace
+
+    return replace(
+        site, buildings=[replace(b, **changes) if b.id == bid else b for b in site.buildings]
+    )

@@ -46,6 +46,8 @@ from planner.units import RHO_ARCSEC
 
 __all__ = ["CloudLink", "SurfaceCache", "Surfaces", "cloud_link", "overlap_matrix", "surfaces"]
 
+#: The surface kinds of a city model's openings (their reveals are the model's own walls).
+OPENINGS = ("window", "door")
 #: A relief patch with fewer points than this is not a plane to a scan.
 MIN_RELIEF_POINTS = 3.0
 #: What a relief patch's plane adds to the cloud floor [mm]: an ICP's local planes on a
@@ -126,6 +128,10 @@ class SurfaceCache:
             st.sample_spacing_m * st.sample_height_step_m, st.window_share, st.reveal_depth_m
         )
         self._relief_area = np.array([jamb, jamb, head])
+        # a city model that draws its openings (LoD3: windows, doors) has its reveals as
+        # walls of their own: no parametric relief on its buildings
+        drawn = [b.id for b in ctx.site.planned if any(s.kind in OPENINGS for s in b.surfaces)]
+        self._parametric = ~np.isin(fac.building_id[fac.facade], drawn)
         if jamb > 0:
             n = len(fac.z)
             wall = np.column_stack([fac.normal[fac.facade], np.zeros(n)])
@@ -309,6 +315,7 @@ class SurfaceCache:
         ``station`` (3,) sees on the facade samples ``f_ids`` it sees: a jamb from the side it
         faces and to the depth the opening lets it see, the head from below
         (:mod:`planner.cloud_registration`)."""
+        f_ids = f_ids[self._parametric[f_ids]]
         if not self._relief_area[0] or not len(f_ids):
             empty = np.empty(0)
             return empty.astype(np.int64), empty, empty
