@@ -258,7 +258,7 @@ class SurfaceCache:
         ctx, sc, st = self.ctx, self.ctx.scanner, self.ctx.settings
         station_xy = cand_xy[new]
         station_z = ctx.station_z(station_xy)
-        f_points, f_var = _facade_patches(ctx, station_xy)
+        f_points, f_var = _facade_patches(ctx, station_xy, self._parametric)
         for j, (c, sxy) in enumerate(zip(new, station_xy, strict=True)):
             f_ids = np.flatnonzero(f_points[:, j] > 0)
             g_xy = self._cells_near(sxy)
@@ -415,7 +415,9 @@ def _sorted_union(ids: list[np.ndarray]) -> np.ndarray:
     return joined[first]
 
 
-def _facade_patches(ctx: Context, station_xy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _facade_patches(
+    ctx: Context, station_xy: np.ndarray, parametric: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
     """(N, K) scan points on every facade patch from each station (0: not seen) and the
     variance of the patch's position across its wall [mm²] (infinite where not seen)."""
     st = ctx.settings
@@ -426,6 +428,8 @@ def _facade_patches(ctx: Context, station_xy: np.ndarray) -> tuple[np.ndarray, n
     area = st.sample_spacing_m * st.sample_height_step_m
     spacing = point_spacing_mm(slope, step_mm_at_10m=ctx.step_mm_at_10m)
     points = np.where(view, patch_points(area, cos_inc, spacing), 0.0)
+    # the parametric facade's openings return nothing from their glass
+    points *= np.where(parametric, 1.0 - st.window_share, 1.0)[:, None]
     # the floor: what a plane fit does not see, and the wall's own roughness (its material)
     floor = np.hypot(st.cloud_floor_mm, roughness_mm(ctx.material, st.material_table))[:, None]
     var = patch_variance_mm2(

@@ -13,6 +13,11 @@ scanner's range. Each return is measured with the planner's error model:
   where the plan's model has that term, and no return beyond the reach on that surface;
   glass (a curtain wall, an LoD3 model's windows) returns nothing; a target's black
   quadrants range as the reference (as its centre's model assumes);
+* the walls of footprint buildings carry the plan's parametric facade (its window share and
+  reveal depth, :mod:`planner.cloud_registration`): one opening per bay and storey, a beam
+  into it returning from the first jamb, head or sill it meets, or not at all (the glass) —
+  the surfaces cloud-to-cloud registration ties scans along a wall with; a city model's
+  walls are drawn as the model has them;
 * the horizontal direction with ``m_β`` and the vertical angle with ``m_ν``;
 * each scan's vertical axis tilted by its levelling residual (σ per axis: the compensator's
   figure, else ``m_ν``, the model's assumption) and turned to a random heading, so that the
@@ -42,6 +47,7 @@ import numpy as np
 import pandas as pd
 
 from planner.accuracy3d import variances_3d
+from planner.cloud_registration import WINDOW_HEIGHT_M, WINDOW_WIDTH_M
 from planner.errors import InputError
 from planner.mesh import triangle_normals
 from planner.pipeline.engine.result import Plan
@@ -58,6 +64,10 @@ __all__ = [
     "station_centres",
 ]
 
+#: The parametric facade's storey and sill [m]: openings sit one per bay (its width from the
+#: window share) and storey, the sill this far above the storey's floor.
+STOREY_M = 3.0
+SILL_M = 0.9
 #: Beams cast per station unless asked otherwise: the preset's step is thinned to this
 #: (a full-dome scan at 6 mm at 10 m is 40 million beams; the rehearsal is for looking and
 #: registering, not for the final density) — said with the clouds.
@@ -292,6 +302,91 @@ def estimate(
     }
 
 
+@dataclass(frozen=True)
+class _Reveals:
+    """The parametric facade's openings (:mod:`planner.cloud_registration`) cut into the
+    scene's walls of footprint buildings: a beam meeting a wall inside an opening goes on
+    into its reveal and returns from the first jamb, head or sill it meets, or not at all
+    (the glass at its back). Per wall triangle: its outward normal and along-wall axis
+    (horizontal), the openings' first column and row and their counts (a wall of a building
+    whose model draws its openings, or none planned, has none)."""
+
+    along: np.ndarray  # (T, 3)
+    start_u: np.ndarray  # (T,) the first bay's start along the wall [m]
+    bays: np.ndarray  # (T,) int
+    base_z: np.ndarray  # (T,) the wall's foot [m]
+    storeys: np.ndarray  # (T,) int
+    bay_m: float
+    depth_m: float
+
+    @classmethod
+    def of(cls, plan: Plan, tri: np.ndarray, normals: np.ndarray, owner: np.ndarray,
+           kind: np.ndarray, owner_ids: list[str]) -> _Reveals:  # fmt: skip
+        st = plan.settings
+        n = len(tri)
+        along = np.column_stack([-normals[:, 1], normals[:, 0], np.zeros(n)])
+        norm = np.linalg.norm(along, axis=1, keepdims=True)
+        along = np.divide(along, norm, out=np.zeros_like(along), where=norm > 1e-9)
+        footprint = {b.id for b in plan.site.buildings if not b.is_3d}
+        walls = (kind == TRIANGLE_KINDS.index("wall")) & (np.abs(normals[:, 2]) < 0.05)
+        walls &= np.isin(np.asarray(owner_ids, dtype=object)[owner], list(footprint))
+        u = np.einsum("tvd,td->tv", tri, along)
+        length, height = u.max(axis=1) - u.min(axis=1), np.ptp(tri[:, :, 2], axis=1)
+        bay = WINDOW_WIDTH_M * WINDOW_HEIGHT_M / max(st.window_share, 1e-9) / STOREY_M
+        on = walls & (st.window_share > 0) & (st.reveal_depth_m > 0)
+        bays = np.where(on, np.floor(length / bay), 0).astype(np.int64)
+        storeys = np.where(on, np.floor(height / STOREY_M), 0).astype(np.int64)
+        start = u.min(axis=1) + (length - bays * bay) / 2.0
+        return cls(along, start, bays, tri[:, :, 2].min(axis=1), storeys, bay, st.reveal_depth_m)
+
+    def enter(
+        self, pos: np.ndarray, d: np.ndarray, dist: np.ndarray, tri_idx: np.ndarray,
+        normals: np.ndarray,
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:  # fmt: skip
+        """The beams from ``pos`` along ``d`` that hit wall triangles ``tri_idx`` at
+        ``dist``, taken into the openings: the new distances, which beams hit a reveal and
+        its normal there, and which beams were lost in the glass."""
+        dist = dist.copy()
+        hit_reveal = np.zeros(len(d), dtype=bool)
+        normal = np.zeros((len(d), 3))
+        glass = np.zeros(len(d), dtype=bool)
+        i = np.flatnonzero((tri_idx >= 0) & np.isfinite(dist))
+        i = i[self.bays[tri_idx[i]] > 0]
+        if not len(i):
+            return dist, hit_reveal, normal, glass
+        ti = tri_idx[i]
+        p = pos + dist[i, None] * d[i]
+        ax = self.along[ti]
+        u = np.einsum("kd,kd->k", p, ax) - self.start_u[ti]
+        h = p[:, 2] - self.base_z[ti]
+        k, s = np.floor(u / self.bay_m), np.floor(h / STOREY_M)
+        x0 = k * self.bay_m + (self.bay_m - WINDOW_WIDTH_M) / 2.0
+        z0 = s * STOREY_M + SILL_M
+        inside = (k >= 0) & (k < self.bays[ti]) & (s >= 0) & (s < self.storeys[ti])
+        inside &= (u > x0) & (u < x0 + WINDOW_WIDTH_M) & (h > z0) & (h < z0 + WINDOW_HEIGHT_M)
+        i, ti, u, h, x0, z0, ax = (a[inside] for a in (i, ti, u, h, x0, z0, ax))
+        if not len(i):
+            return dist, hit_reveal, normal, glass
+        di = d[i]
+        inward = -np.einsum("kd,kd->k", di, normals[ti])  # > 0: the beam goes into the wall
+        du, dz = np.einsum("kd,kd->k", di, ax), di[:, 2]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            back = self.depth_m / inward
+            tu = np.where(du > 0, (x0 + WINDOW_WIDTH_M - u) / du, (x0 - u) / du)
+            tz = np.where(dz > 0, (z0 + WINDOW_HEIGHT_M - h) / dz, (z0 - h) / dz)
+        tu, tz = np.where(tu > 0, tu, np.inf), np.where(tz > 0, tz, np.inf)
+        first = np.minimum(tu, tz)
+        wall = first < back
+        dist[i[wall]] += first[wall]
+        glass[i[~wall]] = True
+        jamb = wall & (tu <= tz)
+        normal[i[jamb]] = -np.sign(du[jamb])[:, None] * ax[jamb]
+        other = wall & ~jamb
+        normal[i[other], 2] = -np.sign(dz[other])
+        hit_reveal[i[wall]] = True
+        return dist, hit_reveal, normal, glass
+
+
 def _scan(
     plan: Plan,
     scene: Scene,
@@ -311,7 +406,7 @@ def _scan(
     the scene's triangle normals, owners, kinds and the flat ground's surface number."""
     sc, st = plan.scanner, plan.settings
     az, el, col, row, local_dir = grid
-    normals, owner, tri_kind, ground_id, owner_rho, silent_tri = mesh
+    normals, owner, tri_kind, ground_id, owner_rho, silent_tri, reveals = mesh
     d = local_dir @ rot.T
     o = np.broadcast_to(pos, d.shape)
     dist, t_idx = scene.first_hit(o, d, sc.max_range_m)
@@ -319,7 +414,10 @@ def _scan(
         down = (d[:, 2] < -1e-9) & (t_idx < 0)
         dist[down] = -pos[2] / d[down, 2]
     dist, hit_t, hit_kind, t_normal, refl = targets.hit(pos, d, dist)
-    keep = np.isfinite(dist) & (dist >= sc.min_range_m) & (dist <= sc.max_range_m)
+    # into the walls' openings (the parametric facade): a reveal, or the glass
+    wall_hit = np.where((hit_t < 0) & (t_idx >= 0), t_idx, -1)
+    dist, in_reveal, reveal_normal, in_glass = reveals.enter(pos, d, dist, wall_hit, normals)
+    keep = np.isfinite(dist) & (dist >= sc.min_range_m) & (dist <= sc.max_range_m) & ~in_glass
     tri = np.maximum(t_idx, 0)
     ground = keep & (hit_t < 0) & (t_idx < 0)  # the flat ground
     t_normal[ground] = (0.0, 0.0, 1.0)
@@ -327,6 +425,7 @@ def _scan(
     refl[ground] = SURFACE_REFLECTANCE
     on_mesh = (hit_t < 0) & (t_idx >= 0)
     n = np.where(on_mesh[:, None], normals[tri], t_normal)
+    n[in_reveal] = reveal_normal[in_reveal]
     cos_t = np.abs(np.einsum("ij,ij->i", n, d))
     # the surface's reflectance (a target's paint; NaN: the datasheet's reference surface):
     # glass returns nothing, a dark wall ranges noisier and not as far (planner.signal)
@@ -410,6 +509,7 @@ def rehearse(
     targets = _Targets.of(plan, len(owner_ids))
     owner_rho, silent_owner = _owner_materials(plan, owner_ids)
     silent_tri = silent_owner[owner] | (tri_kind == TRIANGLE_KINDS.index("window"))
+    reveals = _Reveals.of(plan, tri, normals, owner, tri_kind, owner_ids)
     step = grid_step_mm_at_10m(plan, beams_per_station)
     az, el = _grid(step / 1e4, sc.vertical_fov_deg)
     col, row = np.meshgrid(np.arange(len(az)), np.arange(len(el)))
@@ -428,7 +528,7 @@ def rehearse(
         say(k / max(len(ids), 1), f"simulated scan of {sid} ({k + 1} of {len(ids)})")
         rot = _rotation(heading, *tilt)
         grid = (az, el, col, row, local_dir)
-        mesh = (normals, owner, tri_kind, len(surfaces) - 1, owner_rho, silent_tri)
+        mesh = (normals, owner, tri_kind, len(surfaces) - 1, owner_rho, silent_tri, reveals)
         scans.append(_scan(plan, scene, targets, sid, pos, rot, rng, grid, mesh, noise))
     say(1.0, "simulated scans done")
     preset = st.scan_step_mm(sc)
