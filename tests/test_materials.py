@@ -167,6 +167,9 @@ def test_glass_is_not_demanded_and_said_and_a_zone_names_a_materials_part():
     plinth = cov[cov["facade_id"] == "sq-f01"]
     assert set(plinth["material"]) == {"granite", ""}
     assert (plinth.loc[plinth["material"] == "granite", "z"] <= 3.0 + 1e-9).all()  # m
+    facades = p.facades.set_index("facade_id")
+    assert facades.loc["sq-f01", "materials"] == "granite"  # facades.csv and plan.geojson
+    assert facades.loc["sq-f02", "materials"] == ""
     said = [m for m in p.messages if m.startswith("Not demanded")]
     assert said and "glass" in said[0] and "sq-f00" in said[0]
 

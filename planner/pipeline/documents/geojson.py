@@ -181,6 +181,7 @@ def _facade_features(p: Plan) -> list[dict]:
                 met=r.met,
                 unmet=r.unmet,
                 stations=r.stations,
+                materials=getattr(r, "materials", ""),
             )
         )
     three_d = p.site.is_3d  # heights in the site's system: 3-D coordinates, ground said

@@ -516,6 +516,8 @@ def facade_summary(fac: FacadeSet, cov: pd.DataFrame) -> pd.DataFrame:
         out[col] = stats[col].to_numpy(dtype=float)
     out["stations"] = stats["stations"].fillna("").to_numpy(dtype=object)
     out["zones"] = out["facade_id"].map(zones_on).fillna("").to_numpy(dtype=object)
+    materials_on = allby["material"].agg(lambda s: ";".join(sorted({v for v in s if v})))
+    out["materials"] = out["facade_id"].map(materials_on).fillna("").to_numpy(dtype=object)
     return out
 
 
