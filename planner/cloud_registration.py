@@ -86,8 +86,11 @@ __all__ = [
     "DEFAULT_MIN_OVERLAP_PCT",
     "DEFAULT_REVEAL_DEPTH_M",
     "DEFAULT_WINDOW_SHARE",
+    "SILL_M",
+    "STOREY_M",
     "WINDOW_HEIGHT_M",
     "WINDOW_WIDTH_M",
+    "bay_width_m",
     "edge_free_share",
     "link_covariance",
     "link_information",
@@ -117,6 +120,21 @@ DEFAULT_WINDOW_SHARE = 0.25
 DEFAULT_REVEAL_DEPTH_M = 0.15
 WINDOW_WIDTH_M = 1.2
 WINDOW_HEIGHT_M = 1.5
+#: The openings' layout where one is drawn (the rehearsal's walls): one per bay and storey,
+#: the sill this far above the storey's floor [m].
+STOREY_M = 3.0
+SILL_M = 0.9
+
+
+def bay_width_m(window_share: float) -> float:
+    """The bay [m] that gives one opening per bay and storey ``window_share`` of the wall.
+
+    >>> bay_width_m(0.25)
+    2.4
+    """
+    return WINDOW_WIDTH_M * WINDOW_HEIGHT_M / window_share / STOREY_M
+
+
 #: Point spacings from an edge within which an ICP's local plane straddles two faces.
 EDGE_SPACINGS = 2.0
 #: Lever at which a rotation's error is compared with a shift's [m] (weakest direction).
@@ -174,7 +192,9 @@ def relief_words(window_share: float, reveal_depth_m: float) -> str:
     )
 
 
-def reveal_visible(tan_side: np.ndarray, reveal_depth_m: float, width_m: float) -> np.ndarray:
+def reveal_visible(
+    tan_side: np.ndarray, reveal_depth_m: float, width_m: float | np.ndarray
+) -> np.ndarray:
     """The share of a jamb a scan sees into an opening of ``width_m`` set ``reveal_depth_m``
     deep, from a direction ``tan_side`` (tan of its angle from the wall's normal, towards
     the jamb's side): ``min(1, w / (d·tan))`` — the near edge hides the rest at grazing

@@ -21,28 +21,33 @@ from __future__ import annotations
 import difflib
 import re
 import tomllib
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass
 from functools import cache
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from planner.errors import InputError
 from planner.ranges import RANGES, check_number
 
+if TYPE_CHECKING:
+    from planner.site import Building
+
 __all__ = [
     "CONDITIONS",
     "MATERIAL_KEYS",
     "Material",
     "MaterialTable",
+    "building_materials",
     "material_named",
     "material_table",
     "read_material_file",
     "reflectances",
     "roughness_mm",
+    "silent",
 ]
 
 #: Attributes naming a building's wall material, in the order they are asked: OpenStreetMap's
@@ -243,6 +248,18 @@ def material_named(attributes: dict[str, Any]) -> str:
     return ""
 
 
+def _per_material(
+    names: np.ndarray, table: MaterialTable, value: Callable[[Material], Any], missing: Any
+) -> np.ndarray:
+    """(N,) ``value`` of each surface's material (names of ``table``), ``missing`` where the
+    name is "" (none known): one look-up per material, not per surface."""
+    names = np.asarray(names, dtype=object)
+    out = np.full(len(names), missing)
+    for name in set(names.tolist()) - {""}:
+        out[names == name] = value(table[name])
+    return out
+
+
 def reflectances(names: np.ndarray, table: MaterialTable, condition: str = "dry") -> np.ndarray:
     """(N,) the reflectance of each surface named in ``names`` (names of ``table``) on a
     survey day of ``condition``; NaN where the name is "" (no material known: the
@@ -251,11 +268,37 @@ def reflectances(names: np.ndarray, table: MaterialTable, condition: str = "dry"
     >>> reflectances(np.array(["brick", ""], dtype=object), material_table(), "wet").tolist()
     [0.24, nan]
     """
-    names = np.asarray(names, dtype=object)
-    out = np.full(len(names), np.nan)
-    for name in set(names.tolist()) - {""}:
-        out[names == name] = table[name].reflectance_in(condition)
-    return out
+    return _per_material(names, table, lambda m: m.reflectance_in(condition), np.nan)
+
+
+def silent(names: np.ndarray, table: MaterialTable) -> np.ndarray:
+    """(N,) whether each named surface returns no point (glass, a mirror); False where no
+    material is known.
+
+    >>> silent(np.array(["glass", "brick", ""], dtype=object), material_table()).tolist()
+    [True, False, False]
+    """
+    return _per_material(names, table, lambda m: not m.returns, False)
+
+
+def building_materials(
+    buildings: Iterable[Building], table: MaterialTable, default: str | None = None
+) -> tuple[dict[str, str], dict[str, list[str]]]:
+    """Each building's wall material, a name of ``table``: its own where the table knows it,
+    else ``default`` ("" for none: the datasheet's reference surface); and the names the
+    table does not know, with their buildings (to be said). The default's unknown name is an
+    InputError (the user typed it)."""
+    base = "" if default is None else table.find(default, "the default material").name
+    own: dict[str, str] = {}
+    unknown: dict[str, list[str]] = {}
+    for b in buildings:
+        own[b.id] = base
+        if b.material:
+            try:
+                own[b.id] = table.find(b.material, f"building {b.id}").name
+            except InputError:
+                unknown.setdefault(b.material, []).append(b.id)
+    return own, unknown
 
 
 def walls_words(
@@ -293,8 +336,4 @@ def roughness_mm(names: np.ndarray, table: MaterialTable) -> np.ndarray:
     >>> roughness_mm(np.array(["brick", ""], dtype=object), material_table()).tolist()
     [1.0, 0.0]
     """
-    names = np.asarray(names, dtype=object)
-    out = np.zeros(len(names))
-    for name in set(names.tolist()) - {""}:
-        out[names == name] = table[name].roughness_mm
-    return out
+    return _per_material(names, table, lambda m: m.roughness_mm, 0.0)

@@ -158,12 +158,13 @@ def _dark_wall_words(ctx: Context, idx: np.ndarray, reason: np.ndarray) -> None:
     st, sc = ctx.settings, ctx.scanner
     rho = ctx.reflectance[idx]
     dark = np.isfinite(rho) & (rho < sc.ref_reflectance)
-    for i in idx[dark]:
+    idx, rho = idx[dark], rho[dark]
+    factor = sc.range_rms_on(10.0, rho) / sc.range_rms_at(10.0)  # at any distance the same
+    for i, r, f in zip(idx, rho, factor, strict=True):
         m = st.material_table[ctx.material[i]]
-        factor = float(sc.range_rms_on(10.0, ctx.reflectance[i]) / sc.range_rms_at(10.0))
         reason[i] += (
-            f"; the wall is {m.label} ({ctx.reflectance[i]:.0%} on a {st.surface_condition} "
-            f"day): ranging {factor:.1f}× the datasheet's"
+            f"; the wall is {m.label} ({r:.0%} on a {st.surface_condition} day): ranging "
+            f"{f:.1f}× the datasheet's"
         )
 
 

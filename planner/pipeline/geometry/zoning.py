@@ -23,7 +23,8 @@ import numpy as np
 import shapely
 
 from planner.errors import InputError
-from planner.materials import MaterialTable, material_table
+from planner.materials import MaterialTable, building_materials, material_table
+from planner.materials import silent as no_return
 from planner.pipeline.geometry.facades import FacadeSet, keep_samples, sample_flags
 from planner.pipeline.inputs.requirements import CHECKS, Requirements
 from planner.pipeline.inputs.resolved import zone_requirement
@@ -185,7 +186,7 @@ def _without_silent(
 ) -> tuple[FacadeSet, SampleRequirements, list[np.ndarray]]:
     """The samples, their requirements and the zones' members without the samples on a
     material that returns no point (said in ``messages``)."""
-    silent = np.array([not table[m].returns if m else False for m in out.material], dtype=bool)
+    silent = no_return(out.material, table)
     if not silent.any():
         return fac, out, members
     messages.append(_silent_words(fac, out.material, silent, table))
@@ -212,16 +213,8 @@ def sample_materials(
     alike), else its building's (a name the table does not know is said in ``messages``
     and taken as unknown), else ``default``. A zone's or the default's unknown name is an
     InputError (the user typed it)."""
-    base = "" if default is None else table.find(default, "the default material").name
-    own: dict[str, str] = {}
-    unknown: dict[str, list[str]] = {}
-    for b in site.planned:
-        if not b.material:
-            continue
-        try:
-            own[b.id] = table.find(b.material, f"building {b.id}").name
-        except InputError:
-            unknown.setdefault(b.material, []).append(b.id)
+    own, unknown = building_materials(site.planned, table, default)
+    base = "" if default is None else table.find(default).name
     out = np.array([own.get(str(b), base) for b in fac.building_id[fac.facade]], dtype=object)
     rank = [(2 if z.is_part else 0 if z.building_id else 1, i) for i, z in enumerate(zones)]
     for _, i in sorted(rank):

@@ -326,18 +326,13 @@ class SurfaceCache:
         normals = self._relief_normal[f_ids]  # (K, 3, 3)
         cos = np.einsum("kd,krd->kr", v, normals) / s[:, None]
         front = np.maximum(np.einsum("kd,kd->k", v[:, :2], fac.normal[fac.facade[f_ids]]), 1e-9)
-        seen = np.column_stack(
-            [
-                reveal_visible(np.abs(cos[:, 0]) * s / front, st.reveal_depth_m, WINDOW_WIDTH_M),
-                reveal_visible(np.abs(cos[:, 1]) * s / front, st.reveal_depth_m, WINDOW_WIDTH_M),
-                reveal_visible(np.abs(cos[:, 2]) * s / front, st.reveal_depth_m, WINDOW_HEIGHT_M),
-            ]
-        )
+        # the openings' width hides a jamb, their height a head, at grazing angles
+        widths = np.array([WINDOW_WIDTH_M, WINDOW_WIDTH_M, WINDOW_HEIGHT_M])
+        seen = reveal_visible(np.abs(cos) * (s / front)[:, None], st.reveal_depth_m, widths)
         spacing = point_spacing_mm(s, step_mm_at_10m=ctx.step_mm_at_10m)
         cos_c = np.clip(cos, 0.0, 1.0)
         # an ICP's local planes need a neighbourhood on one face: the points within
-        # EDGE_SPACINGS of the reveal's edge with the wall give none (across the reveal's
-        # depth the points lie spacing / cos θ apart)
+        # EDGE_SPACINGS point spacings of the reveal's edge with the wall give none
         usable = edge_free_share(spacing[:, None], st.reveal_depth_m)
         pts = self._relief_area * seen * usable * cos_c * 1e6 / np.square(spacing)[:, None]
         rho = ctx.reflectance[f_ids] if len(ctx.reflectance) else np.nan

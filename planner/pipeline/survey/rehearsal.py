@@ -47,8 +47,15 @@ import numpy as np
 import pandas as pd
 
 from planner.accuracy3d import variances_3d
-from planner.cloud_registration import WINDOW_HEIGHT_M, WINDOW_WIDTH_M
+from planner.cloud_registration import (
+    SILL_M,
+    STOREY_M,
+    WINDOW_HEIGHT_M,
+    WINDOW_WIDTH_M,
+    bay_width_m,
+)
 from planner.errors import InputError
+from planner.materials import building_materials, reflectances, silent
 from planner.mesh import triangle_normals
 from planner.pipeline.engine.result import Plan
 from planner.pipeline.evaluation.evaluate import Progress
@@ -64,10 +71,6 @@ __all__ = [
     "station_centres",
 ]
 
-#: The parametric facade's storey and sill [m]: openings sit one per bay (its width from the
-#: window share) and storey, the sill this far above the storey's floor.
-STOREY_M = 3.0
-SILL_M = 0.9
 #: Beams cast per station unless asked otherwise: the preset's step is thinned to this
 #: (a full-dome scan at 6 mm at 10 m is 40 million beams; the rehearsal is for looking and
 #: registering, not for the final density) — said with the clouds.
@@ -332,7 +335,7 @@ class _Reveals:
         walls &= np.isin(np.asarray(owner_ids, dtype=object)[owner], list(footprint))
         u = np.einsum("tvd,td->tv", tri, along)
         length, height = u.max(axis=1) - u.min(axis=1), np.ptp(tri[:, :, 2], axis=1)
-        bay = WINDOW_WIDTH_M * WINDOW_HEIGHT_M / max(st.window_share, 1e-9) / STOREY_M
+        bay = bay_width_m(max(st.window_share, 1e-9))
         on = walls & (st.window_share > 0) & (st.reveal_depth_m > 0)
         bays = np.where(on, np.floor(length / bay), 0).astype(np.int64)
         storeys = np.where(on, np.floor(height / STOREY_M), 0).astype(np.int64)
@@ -467,22 +470,14 @@ def _scan(
 
 def _owner_materials(plan: Plan, owner_ids: list[str]) -> tuple[np.ndarray, np.ndarray]:
     """Each scene owner's reflectance on the survey day (NaN: no material known) and whether
-    it returns no point, from its building's material, else the plan's default
-    (:mod:`planner.materials`; a zone's material is not drawn in the rehearsal)."""
+    it returns no point: a building's material as the plan takes it
+    (:func:`planner.materials.building_materials`: its own, else the plan's default; a
+    zone's material is not drawn in the rehearsal); an obstacle's none."""
     st = plan.settings
+    own, _ = building_materials(plan.site.buildings, st.material_table, st.default_material)
+    names = np.array([own.get(str(oid), "") for oid in owner_ids], dtype=object)
     table = st.material_table
-    own = {b.id: b.material for b in plan.site.buildings}
-    rho, silent = np.full(len(owner_ids), np.nan), np.zeros(len(owner_ids), dtype=bool)
-    for k, oid in enumerate(owner_ids):
-        name = own.get(str(oid)) or (st.default_material if str(oid) in own else None)
-        if not name:
-            continue
-        try:
-            m = table.find(name)
-        except InputError:  # said by the plan; the reference surface here as there
-            continue
-        rho[k], silent[k] = m.reflectance_in(st.surface_condition), not m.returns
-    return rho, silent
+    return reflectances(names, table, st.surface_condition), silent(names, table)
 
 
 def rehearse(
