@@ -352,6 +352,7 @@ def adjust(
     levelled: bool = False,
     tilt_rms_arcsec: float = 0.0,
     planes: tuple[np.ndarray, np.ndarray, dict[tuple[int, int], float]] | None = None,
+    tilt_readings_rms_arcsec: float | None = None,
 ) -> np.ndarray:
     """Pose covariance (K, 6, 6) of every station after one simultaneous least-squares
     adjustment of all the target observations: what registration software does with every
@@ -383,17 +384,29 @@ def adjust(
     ``target_rms_mm`` must tie every station in ``tied`` (the pairwise links that
     :func:`propagate` follows do). Checked by a Monte Carlo of rigid registrations in
     ``tests/test_registration_error.py``.
+
+    ``tilt_readings_rms_arcsec`` (6 parameters only): every scan's recorded tilt is an
+    observation of its rotation about x and y, ``ω_j,xy = ζ_j`` with that RMS per axis, the
+    datum's too — whose tilt is then an unknown of the adjustment, not a fixed lean: the
+    network's vertical is held by all the readings (their combined error), not by the
+    datum's alone. The readings' noise enters N like any observation's, so the covariance is
+    N⁻¹. Checked by the virtual survey in ``tests/test_tilt_readings.py``.
     """
     k = len(station_xyz)
     control_rms_mm = control_rms_mm or {}
+    readings = tilt_readings_rms_arcsec is not None and not levelled
     par = [0, 1, 2, 5] if levelled else [0, 1, 2, 3, 4, 5]  # the pose parameters estimated
-    n_par = len(par)
-    stations = [j for j in range(k) if tied[j] and j != datum]
-    s_col = {j: n * n_par for n, j in enumerate(stations)}
+    # each station's estimated parameters: the datum's tilt alone when the readings hold it
+    s_par = {j: par for j in range(k) if tied[j] and j != datum}
+    if readings and datum is not None and tied[datum]:
+        s_par[datum] = [3, 4]
+    s_col, n_pose = {}, 0
+    for j in sorted(s_par):
+        s_col[j], n_pose = n_pose, n_pose + len(s_par[j])
     obs = [(j, t, r) for (j, t), r in target_rms_mm.items() if tied[j]]
     targets = sorted({t for _, t, _ in obs} | set(control_rms_mm))
-    t_col = {t: len(stations) * n_par + 3 * n for n, t in enumerate(targets)}
-    n_unk = len(stations) * n_par + 3 * len(targets)
+    t_col = {t: n_pose + 3 * n for n, t in enumerate(targets)}
+    n_unk = n_pose + 3 * len(targets)
     n_mat = np.zeros((n_unk, n_unk))
     tilt_rhs = np.zeros((n_unk, 2 * k))  # GᵀW A_tilt: each station's tilt in the estimate
     for j, t, rms in obs:
@@ -403,22 +416,28 @@ def adjust(
         tc = t_col[t]
         n_mat[tc : tc + 3, tc : tc + 3] += w * np.eye(3)
         if j in s_col:
-            a = a_full[:, par]
-            sc = s_col[j]
-            n_mat[sc : sc + n_par, sc : sc + n_par] += w * a.T @ a
-            n_mat[sc : sc + n_par, tc : tc + 3] -= w * a.T
-            n_mat[tc : tc + 3, sc : sc + n_par] -= w * a
+            a = a_full[:, s_par[j]]
+            sc, ec = s_col[j], s_col[j] + a.shape[1]
+            n_mat[sc:ec, sc:ec] += w * a.T @ a
+            n_mat[sc:ec, tc : tc + 3] -= w * a.T
+            n_mat[tc : tc + 3, sc:ec] -= w * a
         if levelled:  # the row x_t − A q_j carries A_tilt ζ_j on its right-hand side
             a_tilt = a_full[:, 3:5]
             tilt_rhs[tc : tc + 3, 2 * j : 2 * j + 2] += w * a_tilt
             if j in s_col:
                 sc = s_col[j]
-                tilt_rhs[sc : sc + n_par, 2 * j : 2 * j + 2] -= w * a_full[:, par].T @ a_tilt
+                tilt_rhs[sc : sc + len(par), 2 * j : 2 * j + 2] -= w * a_full[:, par].T @ a_tilt
     for t, rms in control_rms_mm.items():
         tc = t_col[t]
         n_mat[tc : tc + 3, tc : tc + 3] += np.eye(3) / rms**2
+    if readings:  # every scan's reading of its own tilt
+        w_tilt = (RHO_ARCSEC / tilt_readings_rms_arcsec) ** 2
+        for j, pj in s_par.items():
+            for r, p in enumerate(pj):
+                if p in (3, 4):
+                    n_mat[s_col[j] + r, s_col[j] + r] += w_tilt
     if planes is not None and n_unk:
-        _eliminate_planes(n_mat, tilt_rhs, planes, station_xyz, tied, s_col, par, levelled)
+        _eliminate_planes(n_mat, tilt_rhs, planes, station_xyz, tied, s_col, s_par, levelled)
     pose_cov = np.zeros((k, 6, 6))
     tau2 = (tilt_rms_arcsec / RHO_ARCSEC) ** 2
     if n_unk:
@@ -434,9 +453,8 @@ def adjust(
             continue
         # the pose error: estimated parameters and, levelled, the tilt ζ_j itself
         lin = np.zeros((6, n_unk))
-        if j in s_col:
-            for r, p in enumerate(par):
-                lin[p, s_col[j] + r] = 1.0
+        for r, p in enumerate(s_par.get(j, [])):
+            lin[p, s_col[j] + r] = 1.0
         c = lin @ cov_q @ lin.T
         if levelled:
             cross = lin @ m[:, 2 * j : 2 * j + 2] * tau2  # Cov(estimate, ζ_j)
@@ -444,7 +462,7 @@ def adjust(
             c[3:5, :] += cross.T
             c[3:5, 3:5] += tau2 * np.eye(2)
         pose_cov[j] = c
-    if not levelled and datum is not None:
+    if not levelled and not readings and datum is not None:
         pose_cov[tied] += datum_tilt_cov(station_xyz[tied], station_xyz[datum], tilt_rms_arcsec)
     return pose_cov
 
@@ -490,9 +508,10 @@ def datum_tilt_cov(
     return tau2 * jac @ np.swapaxes(jac, 1, 2)
 
 
-def _eliminate_planes(n_mat, tilt_rhs, planes, station_xyz, tied, s_col, par, levelled) -> None:
+def _eliminate_planes(n_mat, tilt_rhs, planes, station_xyz, tied, s_col, s_par, levelled) -> None:
     """Add the patches' observations to the poses' normal equations (and, levelled, to the
-    tilts' right-hand side), their offsets eliminated: :func:`adjust`. In place."""
+    tilts' right-hand side), their offsets eliminated: :func:`adjust` (``s_col``, ``s_par``:
+    each estimated station's first column and its parameters). In place."""
     xyz, normal, var = planes
     obs = [(j, p, v) for (j, p), v in var.items() if tied[j] and np.isfinite(v)]
     if not obs:
@@ -505,21 +524,23 @@ def _eliminate_planes(n_mat, tilt_rhs, planes, station_xyz, tied, s_col, par, le
         return
     lever = (xyz[pp] - station_xyz[jj]) * 1000.0
     a = np.concatenate([normal[pp], np.cross(lever, normal[pp])], axis=1)  # (O, 6)
-    a_par = a[:, par]
-    n_par = len(par)
     npp = np.bincount(pp, weights=w, minlength=len(xyz))
     d_inv = sparse.diags(np.where(npp > 0, 1.0 / np.where(npp > 0, npp, 1.0), 0.0))
-    est = np.array([j in s_col for j in jj])
-    cols = np.array([s_col.get(j, 0) for j in jj])
-    rows_b = (cols[est, None] + np.arange(n_par)).ravel()
+    rows, cols, vals = [], [], []
+    for j in np.unique(jj[np.isin(jj, list(s_col))]):  # the poses' own terms, and B
+        sel = jj == j
+        a_j = a[sel][:, s_par[int(j)]]
+        sc, n_j = s_col[int(j)], a_j.shape[1]
+        n_mat[sc : sc + n_j, sc : sc + n_j] += (a_j * w[sel, None]).T @ a_j
+        rows.append(np.broadcast_to(sc + np.arange(n_j), a_j.shape).ravel())
+        cols.append(np.repeat(pp[sel], n_j))
+        vals.append((-w[sel, None] * a_j).ravel())
+    if not rows:
+        return
     b = sparse.csr_matrix(
-        ((-w[est, None] * a_par[est]).ravel(), (rows_b, np.repeat(pp[est], n_par))),
+        (np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
         shape=(n_mat.shape[0], len(xyz)),
     )
-    for j in np.unique(jj[est]):  # the poses' own terms
-        sel = jj == j
-        sc = s_col[int(j)]
-        n_mat[sc : sc + n_par, sc : sc + n_par] += (a_par[sel] * w[sel, None]).T @ a_par[sel]
     n_mat -= (b @ d_inv @ b.T).toarray()
     if levelled:
         k = tilt_rhs.shape[1] // 2
@@ -529,10 +550,11 @@ def _eliminate_planes(n_mat, tilt_rhs, planes, station_xyz, tied, s_col, par, le
             shape=(len(xyz), 2 * k),
         )
         tilt_rhs -= np.asarray((b @ d_inv @ t_p).todense())
-        for j in np.unique(jj[est]):
+        for j in np.unique(jj[np.isin(jj, list(s_col))]):
             sel = jj == j
+            a_j = a[sel][:, s_par[int(j)]]
             sc = s_col[int(j)]
-            tilt_rhs[sc : sc + n_par, 2 * j : 2 * j + 2] -= (a_par[sel] * w[sel, None]).T @ a_tilt[
+            tilt_rhs[sc : sc + a_j.shape[1], 2 * j : 2 * j + 2] -= (a_j * w[sel, None]).T @ a_tilt[
                 sel
             ]
 

@@ -121,6 +121,12 @@ class Scanner:
         model as the tilt of the vertical axis, and registration fixes the two tilts (4
         parameters instead of 6). None: no compensator; eq. 4 uses ``m_ν0 = m_ν`` as the
         paper's Table 2 does, and so does the 3-D model for the tilt.
+    tilt_sensor_rms_arcsec : float or None
+        Accuracy of the tilt the scanner records with every scan (its inclinometer or IMU,
+        per axis) [″], for a scanner without a compensator that levels it. Registration
+        software that uses the readings holds the network's vertical by all of them, not by
+        the first scan's (:meth:`PlanSettings.tilt_model
+        <planner.pipeline.inputs.requirements.PlanSettings.tilt_model>`). None: no reading.
     beam_divergence_mrad : float or None
         Full-angle beam divergence [mrad] (the beam's growth with distance).
     beam_exit_mm : float or None
@@ -174,6 +180,7 @@ class Scanner:
     vertical_fov_deg: tuple[float, float] = (-45.0, 90.0)
     measurement_rate_hz: float | None = None
     levelling_rms_arcsec: float | None = None
+    tilt_sensor_rms_arcsec: float | None = None
     beam_divergence_mrad: float | None = None
     beam_exit_mm: float | None = None
     registration: str | None = None
@@ -210,6 +217,7 @@ class Scanner:
             "vertical_angle_rms_arcsec": "angle_rms_arcsec",
             "measurement_rate_hz": "measurement_rate_hz",
             "levelling_rms_arcsec": "levelling_rms_arcsec",
+            "tilt_sensor_rms_arcsec": "levelling_rms_arcsec",
             "beam_divergence_mrad": "beam_divergence_mrad",
             "beam_exit_mm": "beam_exit_mm",
             "setup_min": "setup_min",
@@ -292,6 +300,16 @@ class Scanner:
         ``m_ν`` as the paper's Table 2 assumes. The one place this default is decided."""
         v = self.levelling_rms_arcsec
         return self.tilt_rms_arcsec if v is None else v
+
+    @property
+    def datum_tilt_rms_arcsec(self) -> float:
+        """How well the vertical of one scan is known, without a compensator [″]: its
+        recorded tilt where the scanner records one (:attr:`tilt_sensor_rms_arcsec`), else
+        ``m_ν0`` (:attr:`initial_tilt_rms_arcsec`) — the datum scan's lean when the
+        network's vertical is the datum's
+        (:func:`planner.registration_error.datum_tilt_cov`)."""
+        v = self.tilt_sensor_rms_arcsec
+        return self.initial_tilt_rms_arcsec if v is None or self.is_levelled else v
 
     @property
     def is_levelled(self) -> bool:

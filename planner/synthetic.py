@@ -25,7 +25,7 @@ from shapely.geometry import Polygon, box
 
 from planner.site import Building, Passage, Site
 
-__all__ = ["GATEWAYS", "TOWN_CRS", "densified", "town", "town_geojson"]
+__all__ = ["GATEWAYS", "TOWN_CRS", "densified", "scattered", "town", "town_geojson"]
 
 #: How a block's courtyard opens to the street: ``open`` — a gap between the buildings
 #: (the footprints show it); ``passage`` — a gateway through a building's ground floor, as
@@ -115,6 +115,48 @@ def town(
                     passages.append(Passage(f"g{block:03d}-{g}", gate, GATEWAY_HEIGHT_M))
         block += 1
     return Site(buildings, name=f"town-{n_buildings}-seed{seed}", passages=passages)
+
+
+def scattered(
+    n_buildings: int = 49,
+    n_groups: int = 12,
+    seed: int = 0,
+    *,
+    spread_m: float = 3000.0,
+    apart_m: float = 300.0,
+    lot_m: float = 40.0,
+    storeys: tuple[int, int] = (2, 6),
+) -> Site:
+    """One client's ``n_buildings`` free-standing buildings across a town, in ``n_groups``
+    groups (a school's buildings, a yard, a lone house) at least ``apart_m`` apart inside a
+    square of ``spread_m`` [m]: every group holds at least one building, the rest are shared
+    out at random. A group's buildings stand on lots of ``lot_m`` in a row-by-row square,
+    each 10–30 m by 8–20 m, turned by up to 20°, ``storeys`` × 3.2 m high plus up to a
+    metre.
+    """
+    if n_groups < 1 or n_buildings < n_groups:
+        raise ValueError("n_groups must be at least 1 and at most n_buildings")
+    rng = np.random.default_rng(seed)
+    centres: list[np.ndarray] = []
+    while len(centres) < n_groups:  # dart throwing: groups at least apart_m apart
+        c = rng.uniform(0.0, spread_m, size=2)
+        if all(np.hypot(*(c - o)) >= apart_m + 2 * lot_m for o in centres):
+            centres.append(c)
+    sizes = np.ones(n_groups, dtype=int)
+    np.add.at(sizes, rng.integers(0, n_groups, n_buildings - n_groups), 1)
+    buildings: list[Building] = []
+    for g, (centre, size) in enumerate(zip(centres, sizes, strict=True)):
+        side = int(np.ceil(np.sqrt(size)))
+        for k in range(size):
+            row, col = divmod(k, side)
+            x = ORIGIN_EN[0] + centre[0] + (col - (side - 1) / 2) * lot_m
+            y = ORIGIN_EN[1] + centre[1] + (row - (side - 1) / 2) * lot_m
+            w, d = rng.uniform(10.0, 30.0), rng.uniform(8.0, 20.0)
+            fp = rotate(box(x - w / 2, y - d / 2, x + w / 2, y + d / 2), rng.uniform(-20, 20))
+            height = int(rng.integers(storeys[0], storeys[1] + 1)) * 3.2 + rng.uniform(0, 1)
+            fp = shapely.set_precision(fp, 0.01)
+            buildings.append(Building(f"g{g:02d}-{k:02d}", fp, round(float(height), 2)))
+    return Site(buildings, name=f"scattered-{n_buildings}-seed{seed}")
 
 
 #: Slivers narrower than this (left by the gateway) are not buildings [m].

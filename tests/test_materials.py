@@ -14,7 +14,7 @@ from sites import run_cli, square_site
 from planner import plan
 from planner.errors import InputError
 from planner.materials import Material, material_table, read_material_file, reflectances
-from planner.pipeline.inputs.requirements import PlanSettings
+from planner.pipeline.inputs.requirements import PlanSettings, Requirements
 from planner.scanner import Scanner
 from planner.signal import reach_exponent, relative_signal, signal_ranging_rms_mm
 from planner.zones import parse_zone
@@ -125,7 +125,10 @@ def test_plane_fit_residuals_of_simulated_returns_agree_with_the_signal_model(
 
 
 def _plan(site, **kw):
-    return plan(site, RTC, settings=PlanSettings(**kw))
+    """An RTC360 plan held to 50 mm in height: this file is about ranging, and the IMU's
+    180″ tilt readings lean an untied network by tens of millimetres over a site
+    (tests/test_tilt_readings.py)."""
+    return plan(site, RTC, Requirements(max_z_mm=50.0), settings=PlanSettings(**kw))
 
 
 def test_a_dark_or_wet_wall_ranges_noisier_and_the_plan_says_what_rain_costs():

@@ -298,6 +298,7 @@ def _model_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
         MODELS,
         REGISTRATION_MODES,
         REGISTRATION_PROCESSING,
+        TILT_READINGS,
     )
 
     group["solver"].add_argument(
@@ -347,6 +348,15 @@ def _model_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
         help="what the promised registration error assumes of the registration software: "
         + "; or ".join(f"{k}, {v}" for k, v in REGISTRATION_PROCESSING.items())
         + " (default adjustment)",
+    )
+    group["registration"].add_argument(
+        "--tilt-readings",
+        choices=TILT_READINGS,
+        default=None,
+        help="for a scanner that records its tilt with every scan and has no compensator "
+        "(its profile's tilt_sensor_rms_arcsec), which readings hold the network's vertical: "
+        + "; or ".join(f"{k}, {v}" for k, v in TILT_READINGS.items())
+        + " (default every-scan, with the adjustment)",
     )
 
 

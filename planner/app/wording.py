@@ -31,6 +31,7 @@ SITE_LABELS = {
     "--model": "accuracy model",
     "--registration": "registration",
     "--registration-processing": "registration processing",
+    "--tilt-readings": "tilt readings",
     "--registration-error": "count the registration error",
     "--no-registration-error": "count the registration error",
     "--inventory": "targets you own (name, type, size mm, count)",

@@ -217,11 +217,11 @@ def keep_frame(p: Plan) -> KeptNetwork:
     xyz = net.station_xyz.copy() if k else np.empty((0, 3))
     pose = net.error.pose_cov.copy() if k and net.error is not None else np.zeros((k, 6, 6))
     tied = net.tied.copy() if k else np.zeros(0, dtype=bool)
-    datum = net.leaning_datum(p.scanner) if k else None
-    leans = net.leans(p.scanner) if k else np.zeros(0, dtype=bool)
+    datum = net.leaning_datum() if k else None
+    leans = net.leans() if k else np.zeros(0, dtype=bool)
     if datum is not None:
         datum = datum.copy()
-        pose[leans] -= datum_tilt_cov(xyz[leans], datum, p.scanner.initial_tilt_rms_arcsec)
+        pose[leans] -= datum_tilt_cov(xyz[leans], datum, p.scanner.datum_tilt_rms_arcsec)
     limits = workbench_of(p).ctx.limits
     lim = np.column_stack([limits[f"m_{c}"] for c in "xyz"]).astype(float)
     return KeptNetwork(xyz, pose, tied, datum, leans, net.message if net else "", lim)

@@ -245,7 +245,7 @@ def _tie_seams(
     # block's own (a scanner without a compensator)
     root = seams.root_block(frames)
     lean = datums[root]
-    tau = scanner.initial_tilt_rms_arcsec
+    tau = scanner.datum_tilt_rms_arcsec
     per_station, xyz = _frame_errors(frames, extra, datums, leaning, lean, tau)
     limits = np.concatenate([fr.limits for fr in kept])
     facade_df = pd.concat(facades, ignore_index=True)

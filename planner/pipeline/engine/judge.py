@@ -716,11 +716,11 @@ def datum_station(ctx: Context, cand: np.ndarray, r: Round) -> int | None:
     registration error kept — if fewer than now; else None. The network's layout then
     chooses its datum with the new station among the others."""
     net = r.net
-    lean_at = net.leaning_datum(ctx.scanner) if net is not None else None
+    lean_at = net.leaning_datum() if net is not None else None
     if lean_at is None:
         return None
     a = r.judged.assignment
-    tau = ctx.scanner.initial_tilt_rms_arcsec
+    tau = ctx.scanner.datum_tilt_rms_arcsec
     xy = ctx.facades.xy
     has = (a.station >= 0) & ~ctx.facades.party_wall & np.isfinite(a.metrics["m_z_mm"])
     if not has.any():

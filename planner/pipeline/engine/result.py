@@ -202,7 +202,9 @@ class Plan:
         net = self.network
         if net is None:  # a district's blocks: each block's own network
             vertical = "each frame leans with its datum scan's levelling unless control holds it"
-        elif net.leaning_datum(self.scanner) is None:
+        elif net.tilt_model == "readings":
+            vertical = "every scan's recorded tilt holds the vertical, adjusted together"
+        elif net.leaning_datum() is None:
             vertical = "control points hold the vertical"
         else:
             vertical = "the network leans with the datum scan's levelling"

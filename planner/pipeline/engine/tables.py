@@ -197,7 +197,7 @@ def coverage_table(
     if net is not None and net.error is not None and len(ids) > 1:
         has = assignment.station >= 0
         untied[has] = ~net.error.tied[assignment.station[has]]
-    lean_at = net.leaning_datum(ctx.scanner) if net is not None else None
+    lean_at = net.leaning_datum() if net is not None else None
     datum = None if lean_at is None else (ids[net.datum], lean_at[:2])
     named = np.full(n, None, dtype=object)  # the reasons naming stations, as data
     for i in np.flatnonzero(candidates_meet):
@@ -378,7 +378,7 @@ def _short_reason(
         )
         if datum is not None and c == "z":
             far = float(np.hypot(*(ctx.facades.xy[i] - datum[1])))
-            m_nu0 = ctx.scanner.initial_tilt_rms_arcsec
+            m_nu0 = ctx.scanner.datum_tilt_rms_arcsec
             lean = float(datum_lean_mm(far, m_nu0))
             if lean >= 0.5 * reg:
                 text += (

@@ -415,6 +415,14 @@ REGISTRATION_PROCESSING = {
     "pairwise": "each scan registered on its own to the one before it along the plan's links "
     "(pair by pair)",
 }
+#: Which scans' recorded tilts hold the network's vertical (a scanner without a compensator
+#: that records its tilt, :attr:`~planner.scanner.Scanner.tilt_sensor_rms_arcsec`), in words.
+TILT_READINGS = {
+    "every-scan": "every scan's recorded tilt an observation of the adjustment (as registration "
+    "software that uses the scanner's inclination does)",
+    "datum": "the first (datum) scan's tilt alone; every other scan's tilt taken out by its "
+    "registration",
+}
 
 
 #: Side of a district block [m] (:mod:`planner.pipeline.district.blocks`): a few city blocks, a
@@ -535,6 +543,11 @@ class PlanSettings:
         surfaces adjusted together (a registration program's network or bundle adjustment),
         or each scan registered on its own to the one before it along the plan's links
         (errors add up along the chain; the plan then judges, and adds stations, by that).
+    tilt_readings : "every-scan" or "datum", default "every-scan"
+        Which recorded tilts hold the network's vertical, for a scanner that records one
+        with every scan and has no compensator (:meth:`tilt_model`): all of them, as
+        registration software that uses the inclination does in its adjustment, or the
+        datum scan's alone (software that ignores the readings, or pairwise processing).
     registration_error : bool, default True
         Judge every sample by the scanner's error plus the registration's, propagated from
         the targets (:mod:`planner.registration_error`). A ``station_rms_mm`` given
@@ -694,6 +707,7 @@ class PlanSettings:
     # -- registration and targets (SETTING_GROUPS['registration'])
     registration: str = field(default="auto", metadata={"group": "registration"})
     registration_processing: str = field(default="adjustment", metadata={"group": "registration"})
+    tilt_readings: str = field(default="every-scan", metadata={"group": "registration"})
     registration_error: bool = field(default=True, metadata={"group": "registration"})
     station_rms_mm: float | tuple[float, float] = _spec(
         0.0,
@@ -1001,6 +1015,11 @@ class PlanSettings:
                 "registration processing must be one of "
                 f"{', '.join(REGISTRATION_PROCESSING)}; got {self.registration_processing!r}"
             )
+        if self.tilt_readings not in TILT_READINGS:
+            raise InputError(
+                f"tilt readings must be one of {', '.join(TILT_READINGS)}; "
+                f"got {self.tilt_readings!r}"
+            )
         if self.preset is not None and (not isinstance(self.preset, str) or not self.preset):
             raise InputError(f"preset must be a setting's name; got {self.preset!r}")
         if self.surface_condition not in CONDITIONS:
@@ -1110,6 +1129,30 @@ class PlanSettings:
         """Whether the ranging noise grows with the incidence (the 3-D model's term), for
         facade points and target points alike."""
         return self.model == "3d" and self.incidence_noise
+
+    def tilt_model(self, scanner: Scanner) -> str:
+        """How the network's vertical is held — the one place this is decided:
+
+        - ``"compensator"``: a levelled scanner; every scan's compensator fixes its own tilt
+          (4-parameter registrations, each scan's residual tilt independent);
+        - ``"readings"``: the scanner records its tilt with every scan
+          (:attr:`~planner.scanner.Scanner.tilt_sensor_rms_arcsec`), the software uses the
+          readings (``tilt_readings`` every-scan) and adjusts every scan together: each
+          reading is an observation, so the network leans by their combined error
+          (:func:`planner.registration_error.adjust`);
+        - ``"datum"``: 6-parameter registrations take out every scan's tilt but the datum
+          scan's, whose vertical the whole network keeps
+          (:func:`planner.registration_error.datum_tilt_cov`, σ
+          :attr:`~planner.scanner.Scanner.datum_tilt_rms_arcsec`)."""
+        if scanner.is_levelled:
+            return "compensator"
+        if (
+            scanner.tilt_sensor_rms_arcsec is not None
+            and self.tilt_readings == "every-scan"
+            and self.registration_processing == "adjustment"
+        ):
+            return "readings"
+        return "datum"
 
     def scan_tilt_rms_arcsec(self, scanner: Scanner) -> float:
         """The tilt of the scanner's vertical axis counted in every point's scanner part

@@ -156,11 +156,11 @@ class Layout:
         stations keep their own tilt, or for the control network):
         :func:`~planner.registration_error.datum_tilt_cov`."""
         sc = self.ctx.scanner
-        if root == CONTROL or sc.is_levelled:
+        if root == CONTROL or self.ctx.settings.tilt_model(sc) != "datum":
             return np.zeros(self.k)
         xy, starts = self._probe_xy
         far = np.maximum.reduceat(np.hypot(*(xy - self.station_xyz[root, :2]).T), starts)
-        return np.square(datum_lean_mm(far, sc.initial_tilt_rms_arcsec))
+        return np.square(datum_lean_mm(far, sc.datum_tilt_rms_arcsec))
 
     @cached_property
     def _probe_xy(self) -> tuple[np.ndarray, np.ndarray]:

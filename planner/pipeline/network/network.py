@@ -17,7 +17,6 @@ from planner.registration_error import (
     NetworkError,
     transport_pose_cov,
 )
-from planner.scanner import Scanner
 
 __all__ = [
     "MODE_WORDS",
@@ -59,6 +58,9 @@ class Network:
     weakest: dict = field(default_factory=dict)
     #: (K, K) overlap of the stations' scans [%] (None: targets only)
     overlap: np.ndarray | None = None
+    #: how the network's vertical is held
+    #: (:meth:`~planner.pipeline.inputs.requirements.PlanSettings.tilt_model`)
+    tilt_model: str = "datum"
 
     @property
     def tied(self) -> np.ndarray:
@@ -77,19 +79,20 @@ class Network:
             tied=self.error.tied | (len(self.stations) == 1),
         )
 
-    def leaning_datum(self, scanner: Scanner) -> np.ndarray | None:
-        """Where the datum whose tilt leans the whole network stands (x, y, z): a scanner
-        without a compensator registered to a station datum
+    def leaning_datum(self) -> np.ndarray | None:
+        """Where the datum whose tilt leans the whole network stands (x, y, z): 6-parameter
+        registrations to a station datum whose vertical the network keeps
         (:func:`~planner.registration_error.datum_tilt_cov`); None where a compensator
-        levels every scan or control points fix the vertical."""
-        if scanner.is_levelled or self.datum is None or self.error is None:
+        levels every scan, every scan's tilt reading holds the vertical, or control points
+        fix it."""
+        if self.tilt_model != "datum" or self.datum is None or self.error is None:
             return None
         return self.station_xyz[self.datum]
 
-    def leans(self, scanner: Scanner) -> np.ndarray:
+    def leans(self) -> np.ndarray:
         """(K,) the stations whose pose carries the datum's lean: tied to the datum (also
         through a traverse from a tied station), not by planned GNSS control of their own."""
-        if self.leaning_datum(scanner) is None:
+        if self.leaning_datum() is None:
             return np.zeros(len(self.stations), dtype=bool)
         out = self.tied.copy()
         for tie in self.ties:

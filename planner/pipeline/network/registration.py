@@ -120,6 +120,7 @@ def build_network(
             if lk.info is not None
         },
         overlap=lay.overlap,
+        tilt_model=ctx.settings.tilt_model(ctx.scanner),
     )
 
 
@@ -260,7 +261,7 @@ def _network_error(
         datum=datum,
         control_rms_mm=control_rms,
         levelled=levelled,
-        tilt_rms_arcsec=ctx.scanner.initial_tilt_rms_arcsec,
+        tilt_rms_arcsec=ctx.scanner.datum_tilt_rms_arcsec,
     )
     if error is not None and ctx.settings.registration_processing == "adjustment":
         # the registration as it is computed: every target each scan sees, adjusted together
@@ -273,8 +274,11 @@ def _network_error(
             datum=datum,
             control_rms_mm={t: r for t, r in control_rms.items() if t in users},
             levelled=levelled,
-            tilt_rms_arcsec=ctx.scanner.initial_tilt_rms_arcsec,
+            tilt_rms_arcsec=ctx.scanner.datum_tilt_rms_arcsec,
             planes=_planes(lay.surf),
+            tilt_readings_rms_arcsec=ctx.scanner.tilt_sensor_rms_arcsec
+            if ctx.settings.tilt_model(ctx.scanner) == "readings"
+            else None,
         )
     return error
 
