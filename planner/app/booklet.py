@@ -332,8 +332,8 @@ def _station_map(p: Plan, sid: str, ax, sector: tuple[float, float, float]) -> N
     if p.route is not None:
         order = list(p.route.table["station_id"])
         k = order.index(sid)
-        if k > 0:
-            leg = p.route.legs[k]
+        leg = p.route.legs[k]
+        if k > 0 and len(leg) >= 2:
             ax.plot(leg[:, 0], leg[:, 1], color=COLOURS["route"], ls=(0, (4, 2)), lw=1.2)
             ax.plot(
                 [], [], color=COLOURS["route"], ls=(0, (4, 2)), label=f"walk from {order[k - 1]}"

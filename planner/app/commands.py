@@ -14,7 +14,7 @@ import os
 import sys
 import time
 from collections.abc import Callable
-from dataclasses import fields
+from dataclasses import fields, replace
 from pathlib import Path
 
 import pandas as pd
@@ -364,6 +364,8 @@ def make_plan(args: argparse.Namespace, progress: Callable[[float, str], None]):
     ``--time-limit-s`` left (:data:`DOCUMENT_SHARE`, or the files' estimated time), counted
     from the command's start. Returns the plan, the command's deadline and the pace it had
     (:func:`~planner.pipeline.inputs.clock.pace`)."""
+    from planner.pipeline.district.blocks import block_site
+    from planner.pipeline.district.groups import job_groups, jobs_budget_s, jobs_plan, jobs_words
     from planner.pipeline.district.schedule import memory_bytes
     from planner.pipeline.engine.planning import plan
     from planner.pipeline.geometry.facades import estimate_samples
@@ -372,6 +374,26 @@ def make_plan(args: argparse.Namespace, progress: Callable[[float, str], None]):
     started = getattr(args, "started", None) or time.monotonic()
     memory_bytes(args.worker_memory)  # checked even where the plan needs no cluster
     site, scanner, req, settings = plan_inputs(args)
+    groups, halo = job_groups(site, scanner, req, settings)
+    if len(groups) > 1:  # jobs far apart: the budget scales with them unless given
+        given = getattr(args, "time_limit_s", None) is not None
+        need = jobs_budget_s(
+            [
+                estimate_samples(
+                    block_site(site, g, halo),
+                    settings.sample_spacing_m,
+                    settings.sample_height_step_m,
+                )
+                for g in groups
+            ]
+        )
+        if not given:
+            settings = replace(
+                settings, time_limit_s=max(settings.time_limit_s, need / (1 - DOCUMENT_SHARE))
+            )
+        words = jobs_words(site, groups, settings.time_limit_s if given else need, given)
+        if not args.quiet:
+            print(words, file=sys.stderr, flush=True)
     deadline = started + settings.time_limit_s
     rows = estimate_samples(site, settings.sample_spacing_m, settings.sample_height_step_m)
     # the files' time as measured on an idle machine, stretched by the pace this command
@@ -380,7 +402,39 @@ def make_plan(args: argparse.Namespace, progress: Callable[[float, str], None]):
     files_s = SAVE_S_PER_ROW * rows + SAVE_S_PER_ZONE * len(site.zones)
     reserve = max(DOCUMENT_SHARE * settings.time_limit_s, slow * SAVE_MARGIN * files_s)
     planned_by = deadline - reserve
-    if _district(args, site, settings):
+
+    def one_job(s, until: float, say) -> object:  # one group's plan, as one site's would be
+        if _district(args, s, settings):
+            from planner.pipeline.district.schedule import plan_district
+
+            return plan_district(
+                s,
+                scanner,
+                req,
+                settings,
+                block_m=args.block_m,
+                scheduler=args.scheduler,
+                workers=args.workers,
+                memory_limit=args.worker_memory,
+                progress=say,
+                deadline=until,
+            )
+        return plan(s, scanner, req, settings, progress=say, deadline=until)
+
+    if len(groups) > 1:
+        result = jobs_plan(
+            site,
+            scanner,
+            req,
+            settings,
+            groups,
+            halo,
+            one_job,
+            deadline=planned_by,
+            progress=progress,
+        )
+        result.messages.insert(1, words + ".")
+    elif _district(args, site, settings):
         from planner.pipeline.district.schedule import plan_district
 
         result = plan_district(

@@ -326,7 +326,7 @@ def _draw_sectors(p: Plan, ax: Axes) -> None:
 def _draw_route(p: Plan, ax: Axes) -> None:
     """The walking route between the stations, its length in the legend."""
     if p.route is not None and len(p.route.legs) > 1:
-        for leg in p.route.legs[1:]:
+        for leg in (g for g in p.route.legs[1:] if len(g) >= 2):
             ax.plot(leg[:, 0], leg[:, 1], color=COLOURS["route"], lw=1.1, ls=(0, (4, 2)), zorder=2)
         ax.plot(
             [],

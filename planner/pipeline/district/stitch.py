@@ -6,6 +6,8 @@ blocks' networks tied across their seams where their frames were kept
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pandas as pd
 
@@ -53,6 +55,8 @@ def stitch(
     reach: float,
     tables: list[pd.DataFrame] | None = None,
     frames: list[KeptNetwork | None] | None = None,
+    *,
+    jobs: bool = False,
 ) -> Plan:
     """One plan from the blocks' plans: ids prefixed with the block key (control points keep
     theirs), the stations a neighbouring block makes redundant removed (given the blocks'
@@ -60,8 +64,10 @@ def stitch(
     blocks'; :func:`~planner.pipeline.district.schedule.plan_district` raises it to the blocks'
     covers at shared prices where that is larger), a message per block, one route. With the blocks'
     ``frames`` (:func:`~planner.pipeline.district.blocks.keep_frame`) their networks are tied into
-    one across the seams; without, the blocks stay apart."""
-    parts, messages = _renamed_blocks(site, blocks, plans, frames, reach)
+    one across the seams; without, the blocks stay apart. ``jobs``: the blocks are groups of
+    buildings far apart planned as separate jobs (:mod:`planner.pipeline.district.groups`),
+    each with its own route."""
+    parts, messages = _renamed_blocks(site, blocks, plans, frames, reach, jobs)
     stations, targets, coverage, facades, links, zones, cands = parts
     targets_df = _merge_control(pd.concat(targets, ignore_index=True))
     stations_df = pd.concat(stations, ignore_index=True)
@@ -81,7 +87,7 @@ def stitch(
     cut = _cut_short(blocks, plans)
     if cut:
         messages.append(budget_message(st.time_limit_s, cut))
-    solver = _district_solver(blocks, plans, reach, len(removed), cut)
+    solver = _district_solver(blocks, plans, reach, len(removed), cut, jobs)
     coverage_df, links_df, seam_notes = _tie_seams(
         site,
         scanner,
@@ -97,7 +103,14 @@ def stitch(
         removed,
     )
     messages += seam_notes
-    route = field_route(site, scanner, st, stations_df, targets_df, coverage_df, links_df)
+    if jobs:
+        renamed = {
+            b.key: {s: f"{b.key}-{s}" for s in p.stations["station_id"]}
+            for b, p in zip(blocks, plans, strict=True)
+        }
+        route = _joined_route(blocks, plans, renamed)
+    else:
+        route = field_route(site, scanner, st, stations_df, targets_df, coverage_df, links_df)
     messages.insert(0, f"Accuracy model: {st.model_description()}.")
     return Plan(
         site=site,
@@ -128,6 +141,7 @@ def _renamed_blocks(
     plans: list[Plan],
     frames: list[KeptNetwork | None] | None,
     reach: float,
+    jobs: bool = False,
 ) -> tuple[tuple[list, ...], list[str]]:
     """Each block's tables with its ids prefixed with the block's key (control points keep
     theirs) — stations, targets, coverage, facades, links, zones, candidates — and the
@@ -136,8 +150,14 @@ def _renamed_blocks(
     messages = [
         *site.warnings,
         *notes_summary(site.notes),
-        f"District: {len(blocks)} blocks planned on Dask, halo {reach:.0f} m.",
+        f"Jobs: {len(blocks)} groups of buildings far apart, each planned as its own job with "
+        "its own registration network, datum and route; the travel between them is the "
+        "crew's, and tying them into one frame needs control points of one system "
+        "(--control, e.g. by GNSS)."
+        if jobs
+        else f"District: {len(blocks)} blocks planned on Dask, halo {reach:.0f} m.",
     ]
+    word = "Group" if jobs else "Block"
     control = {c.id for c in site.control}
     frames = frames if frames is not None else [None] * len(blocks)
     for b, p, frame in zip(blocks, plans, frames, strict=True):
@@ -154,7 +174,8 @@ def _renamed_blocks(
         cands.append(p.candidates)
         net = _network_message(p, frame)
         messages.append(
-            f"Block {b.key} ({len(b.buildings)} buildings): {len(p.stations)} stations, "
+            f"{word} {b.key} ({len(b.buildings)} buildings): {len(p.stations)} stations, "
+            f"{int(p.scanned['meets'].sum())} of {len(p.scanned)} samples met, "
             f"{p.solver.status}, bound {p.solver.lower_bound}"
             + (f"; Registration: {net}." if net else "")
         )
@@ -188,7 +209,12 @@ def _drop_redundant(
 
 
 def _district_solver(
-    blocks: list[Block], plans: list[Plan], reach: float, removed: int, cut: list[str]
+    blocks: list[Block],
+    plans: list[Plan],
+    reach: float,
+    removed: int,
+    cut: list[str],
+    jobs: bool = False,
 ) -> SolverReport:
     """The district's solver report: the blocks' covers summed less the stations
     ``removed``, the honest bound of the blocks far apart
@@ -197,7 +223,7 @@ def _district_solver(
     far = honest_bound(blocks, plans, reach)
     statuses = {p.solver.status for p in plans}
     return SolverReport(
-        method=f"district ({len(blocks)} blocks)",
+        method=f"jobs ({len(blocks)} groups)" if jobs else f"district ({len(blocks)} blocks)",
         status=statuses.pop() if len(statuses) == 1 else "mixed: " + ", ".join(sorted(statuses)),
         objective=objective,
         **bound_fields(objective, far, 0.0),
@@ -486,3 +512,33 @@ def _merge_control(t: pd.DataFrame) -> pd.DataFrame:
     )
     merged = merged.reset_index()[t.columns]
     return pd.concat([t[t["type"] != "control"], merged], ignore_index=True)
+
+
+def _joined_route(groups: list[Block], plans: list[Plan], stations: dict[str, dict[str, str]]):
+    """One route of the jobs' own routes, one after another (ids renamed by ``stations``,
+    group key → old id → new id): each job's walks its own, the travel between groups the
+    crew's (the first station of a job has no walk)."""
+    routes = [p.route.renamed(stations[g.key]) for g, p in zip(groups, plans, strict=True)]
+    tables = []
+    for n, r in enumerate(routes):
+        if not len(r.table):
+            continue
+        t = r.table.copy()
+        if n and tables:  # the travel from the job before is the crew's
+            t.loc[t.index[0], "walk_note"] = "each a job's first: the travel to it is the crew's"
+        tables.append(t)
+    table = pd.concat(tables, ignore_index=True) if tables else routes[0].table
+    if len(table):
+        table["order"] = np.arange(1, len(table) + 1)
+    kits = [r.kit for r in routes if len(r.kit)]
+    kit = routes[0].kit
+    if kits:  # the kit travels from job to job: the most any one job needs of each item
+        both = pd.concat(kits, ignore_index=True)
+        kit = both.loc[both.groupby("item")["most_at_once"].idxmax()].reset_index(drop=True)
+    return replace(
+        routes[0],
+        table=table,
+        legs=[leg for r in routes for leg in r.legs],
+        kit=kit,
+        on_site=any(r.on_site for r in routes),
+    )

@@ -267,6 +267,8 @@ def _route_features(p: Plan) -> list[dict]:
     if p.route is not None:
         t = p.route.table
         for n, leg in enumerate(p.route.legs[1:], start=1):
+            if len(leg) < 2:  # a job's first station: the crew's travel, not a walk
+                continue
             feats.append(
                 _feature(
                     {"type": "LineString", "coordinates": np.round(leg, 3).tolist()},

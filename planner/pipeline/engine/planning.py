@@ -120,6 +120,10 @@ def plan(
     (:func:`~planner.pipeline.engine.judge.workbench_of`) for what-if edits
     (:mod:`planner.pipeline.engine.whatif`).
 
+    Planned buildings in groups far apart (:mod:`planner.pipeline.district.groups`) are
+    planned as separate jobs, each with its own network, datum and route, and joined into
+    one plan (not where ``locked`` or ``given`` is passed: those plan one job).
+
     The plan ends by ``deadline`` (a :func:`time.monotonic` time; default: now plus the
     settings' ``time_limit_s``): when it comes, the best plan so far is made, and its
     messages say what the budget cut short (``solver.cut_short``).
@@ -137,13 +141,28 @@ def plan(
         )
     st = settings or PlanSettings()
     clock = Clock.budget(st.time_limit_s, deadline=deadline, started=t0)
-    wb = _prepare(
+    site, sc, req = (
         site or default_site(),
         load_scanner(scanner or DEFAULT_SCANNER),
         requirements or Requirements(),
-        st,
-        progress or (lambda _f, _m: None),
     )
+    if locked is None and given is None:  # buildings far apart: one job per group
+        from planner.pipeline.district.groups import job_groups, jobs_plan
+
+        groups, halo = job_groups(site, sc, req, st)
+        if len(groups) > 1:
+            return jobs_plan(
+                site,
+                sc,
+                req,
+                st,
+                groups,
+                halo,
+                lambda s, until, say: plan(s, sc, req, st, progress=say, deadline=until),
+                deadline=clock.deadline,
+                progress=progress,
+            )
+    wb = _prepare(site, sc, req, st, progress or (lambda _f, _m: None))
     return choose_stations(wb, progress, locked=locked, clock=clock, given=given)
 
 

@@ -610,6 +610,12 @@ class PlanSettings:
         Time budget of the whole plan: reading, evaluation (at most 60 %), optimiser (at
         most half of what is left when it starts), registration rounds and documents share
         it; when it runs out, the best plan found so far is kept and says what was cut.
+        A site of several jobs (``job_gap_m``) planned from the command line without one
+        takes the jobs' estimated time (:func:`planner.pipeline.district.groups.jobs_budget_s`).
+    job_gap_m : float or None, default None
+        Planned buildings farther apart than this [m] (not joined through others) are
+        separate jobs (:mod:`planner.pipeline.district.groups`): each its own network,
+        datum and route. None: the search radius; 0: one job.
     max_samples, max_pairs : float, default 1 000 000 and 10⁹
         The work the planner accepts before it starts: facade samples, and candidate ×
         sample evaluations (about 20 million a second). Beyond them the plan is refused with
@@ -983,6 +989,20 @@ class PlanSettings:
         help="refuse a site that needs more facade samples than this (raise it explicitly)",
         group="solver",
         hi=1000000000.0,
+    )
+    job_gap_m: float | None = _spec(
+        None,
+        "m",
+        "gap between jobs",
+        lo=0.0,
+        open_lo=False,
+        optional=True,
+        step=10.0,
+        help="planned buildings farther apart than this are separate jobs, each with its own "
+        "network, datum and route (default: the search radius, the farthest a station "
+        "serves; 0: one job)",
+        group="solver",
+        hi=1000000.0,
     )
     max_pairs: float = _spec(
         1e9,
