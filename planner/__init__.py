@@ -61,7 +61,7 @@ _EXPORTS: dict[str, str] = {
     "max_distance_m": "planner.accuracy",
     "max_target_distance_m": "planner.targets",
     "min_target_size_mm": "planner.targets",
-    "plan": "planner.pipeline.engine.planning",
+    "plan": "planner.pipeline.district.groups",
     "planimetric_rms": "planner.accuracy",
     "point_spacing_mm": "planner.spacing",
     "polar_to_xyz": "planner.polar",

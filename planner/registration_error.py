@@ -65,7 +65,7 @@ scanner's m_x, m_y, m_z in quadrature.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -352,7 +352,8 @@ def adjust(
     levelled: bool = False,
     tilt_rms_arcsec: float = 0.0,
     planes: tuple[np.ndarray, np.ndarray, dict[tuple[int, int], float]] | None = None,
-    tilt_readings_rms_arcsec: float | None = None,
+    tilt_readings: Mapping[int, float] | None = None,
+    heights_mm: Mapping[int, float] | None = None,
 ) -> np.ndarray:
     """Pose covariance (K, 6, 6) of every station after one simultaneous least-squares
     adjustment of all the target observations: what registration software does with every
@@ -385,16 +386,22 @@ def adjust(
     :func:`propagate` follows do). Checked by a Monte Carlo of rigid registrations in
     ``tests/test_registration_error.py``.
 
-    ``tilt_readings_rms_arcsec`` (6 parameters only): every scan's recorded tilt is an
-    observation of its rotation about x and y, ``ω_j,xy = ζ_j`` with that RMS per axis, the
-    datum's too — whose tilt is then an unknown of the adjustment, not a fixed lean: the
+    ``tilt_readings`` (6 parameters only; station → RMS [″] per axis): those scans' recorded
+    tilts are observations of their rotation about x and y, ``ω_j,xy = ζ_j`` — the datum's
+    among them, whose tilt is then an unknown of the adjustment, not a fixed lean: the
     network's vertical is held by all the readings (their combined error), not by the
-    datum's alone. The readings' noise enters N like any observation's, so the covariance is
-    N⁻¹. Checked by the virtual survey in ``tests/test_tilt_readings.py``.
+    datum's alone. ``heights_mm`` (target → RMS [mm]): targets whose heights a level run
+    measured, each an observation ``z_t + c = h_t`` with the run's unknown height offset c
+    (a level run gives heights in its own datum); two or more hold the network's vertical
+    too, so the datum's tilt is then an unknown with its own reading as prior (give it in
+    ``tilt_readings``). The readings' and the heights' noise enter N like any observation's,
+    so the covariance is N⁻¹. Checked by the virtual surveys in
+    ``tests/test_tilt_readings.py``.
     """
     k = len(station_xyz)
     control_rms_mm = control_rms_mm or {}
-    readings = tilt_readings_rms_arcsec is not None and not levelled
+    readings = bool(tilt_readings) and not levelled
+    heights_mm = heights_mm or {}
     par = [0, 1, 2, 5] if levelled else [0, 1, 2, 3, 4, 5]  # the pose parameters estimated
     # each station's estimated parameters: the datum's tilt alone when the readings hold it
     s_par = {j: par for j in range(k) if tied[j] and j != datum}
@@ -406,7 +413,8 @@ def adjust(
     obs = [(j, t, r) for (j, t), r in target_rms_mm.items() if tied[j]]
     targets = sorted({t for _, t, _ in obs} | set(control_rms_mm))
     t_col = {t: n_pose + 3 * n for n, t in enumerate(targets)}
-    n_unk = n_pose + 3 * len(targets)
+    levelled_seen = [t for t in heights_mm if t in t_col]
+    n_unk = n_pose + 3 * len(targets) + (1 if levelled_seen else 0)  # the level run's offset
     n_mat = np.zeros((n_unk, n_unk))
     tilt_rhs = np.zeros((n_unk, 2 * k))  # GᵀW A_tilt: each station's tilt in the estimate
     for j, t, rms in obs:
@@ -430,12 +438,20 @@ def adjust(
     for t, rms in control_rms_mm.items():
         tc = t_col[t]
         n_mat[tc : tc + 3, tc : tc + 3] += np.eye(3) / rms**2
-    if readings:  # every scan's reading of its own tilt
-        w_tilt = (RHO_ARCSEC / tilt_readings_rms_arcsec) ** 2
+    if readings:  # the scans' readings of their own tilt
         for j, pj in s_par.items():
+            if j not in tilt_readings:
+                continue
+            w_tilt = (RHO_ARCSEC / tilt_readings[j]) ** 2
             for r, p in enumerate(pj):
                 if p in (3, 4):
                     n_mat[s_col[j] + r, s_col[j] + r] += w_tilt
+    for t in levelled_seen:  # z_t + c = h_t: the target's z and the run's offset (last)
+        w_h, z = 1.0 / heights_mm[t] ** 2, t_col[t] + 2
+        n_mat[z, z] += w_h
+        n_mat[z, -1] += w_h
+        n_mat[-1, z] += w_h
+        n_mat[-1, -1] += w_h
     if planes is not None and n_unk:
         _eliminate_planes(n_mat, tilt_rhs, planes, station_xyz, tied, s_col, s_par, levelled)
     pose_cov = np.zeros((k, 6, 6))

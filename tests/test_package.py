@@ -168,7 +168,7 @@ def test_import_planner_is_lazy():
     loaded = _loaded_after("import planner")
     assert "numpy" not in loaded and "planner.pipeline" not in loaded
     # and the names still resolve on use
-    assert planner.plan is importlib.import_module("planner.pipeline.engine.planning").plan
+    assert planner.plan is importlib.import_module("planner.pipeline.district.groups").plan
     assert set(planner.__all__) <= set(dir(planner))
 
 

@@ -49,12 +49,19 @@ def _observations() -> list[tuple[int, int]]:
     ]
 
 
-def _survey(rng: np.random.Generator, readings: str) -> dict[int, np.ndarray]:
+def _survey(
+    rng: np.random.Generator, readings: str, levels: dict[int, float] | None = None
+) -> dict[int, np.ndarray]:
     """Height errors [mm] (trials, points) of every station's facade points after the
     software's adjustment. ``readings``: "every-scan" (every scan's reading observed) or
-    "datum" (the datum's alone). Unknowns: every pose as a rotation vector and a shift (the
-    datum's shift and heading held) and every target; one Gauss–Newton step from the
-    nominal poses, its Jacobian by finite differences of the rigid model."""
+    "datum" (the datum's alone). ``levels``: targets whose heights a level run measured
+    (target → RMS [mm]), in the run's own height datum (an unknown offset). Unknowns: every
+    pose as a rotation vector and a shift (the datum's shift and heading held), every
+    target, the run's offset; one Gauss–Newton step from the nominal poses, its Jacobian by
+    finite differences of the rigid model."""
+    levels = levels or {}
+    lv = np.array(list(levels), dtype=int)
+    lv_rms = np.array(list(levels.values()), dtype=float) / 1000.0  # m
     obs = _observations()
     k, n_t = len(STATIONS), len(TARGETS)
     heading = rng.uniform(0, 2 * np.pi, k)
@@ -67,6 +74,7 @@ def _survey(rng: np.random.Generator, readings: str) -> dict[int, np.ndarray]:
     local += rng.normal(0.0, TARGET_RMS_MM / 1000.0, local.shape)
     read = tau_true + rng.normal(0.0, READING_ARCSEC / RHO_ARCSEC, tau_true.shape)
     observed = range(k) if readings == "every-scan" else [0]
+    run = TARGETS[lv, 2] + rng.normal(0.0, 0.05) + rng.normal(0.0, 1.0, (TRIALS, len(lv))) * lv_rms
 
     # unknowns: datum tilt (2), the other stations' (rotation 3, shift 3), targets (3 each)
     def unpack(u):
@@ -76,26 +84,30 @@ def _survey(rng: np.random.Generator, readings: str) -> dict[int, np.ndarray]:
         rest = u[..., 2 : 2 + 6 * (k - 1)].reshape(*u.shape[:-1], k - 1, 6)
         vec[..., 1:, :] += rest[..., :3]
         shift[..., 1:, :] += rest[..., 3:]
-        xt = TARGETS + u[..., 2 + 6 * (k - 1) :].reshape(*u.shape[:-1], n_t, 3)
+        xt = TARGETS + u[..., 2 + 6 * (k - 1) : -1].reshape(*u.shape[:-1], n_t, 3)
         return vec, shift, xt
 
-    def residual(u, meas, reading):
+    def residual(u, meas, reading, heights):
         vec, shift, xt = unpack(u)
+        r_h = (xt[..., lv, 2] + u[..., -1:] - heights) / lv_rms
         rot = _rot(vec) @ _rz(heading)
         placed = np.einsum("...nij,...nj->...ni", rot[..., jj, :, :], meas) + shift[..., jj, :]
         r_t = (placed - xt[..., tt, :]) * (1000.0 / TARGET_RMS_MM)
         r_r = (vec[..., list(observed), :2] - reading[..., list(observed), :]) * (
             RHO_ARCSEC / READING_ARCSEC
         )
-        return np.concatenate([r_t.reshape(*u.shape[:-1], -1), r_r.reshape(*u.shape[:-1], -1)], -1)
+        parts = [r_t.reshape(*u.shape[:-1], -1), r_r.reshape(*u.shape[:-1], -1), r_h]
+        return np.concatenate(parts, -1)
 
-    n_u = 2 + 6 * (k - 1) + 3 * n_t
+    n_u = 2 + 6 * (k - 1) + 3 * n_t + 1  # the last: the level run's offset
     nominal = np.einsum("kji,nkj->nki", _rz(heading)[jj], (TARGETS[tt] - STATIONS[jj])[None])[0]
     zero = np.zeros((k, 2))
-    r0 = residual(np.zeros(n_u), nominal, zero)
+    flat = TARGETS[lv, 2]
+    r0 = residual(np.zeros(n_u), nominal, zero, flat)
     h = 1e-7
-    jac = ((residual(h * np.eye(n_u), nominal, zero) - r0) / h).T
-    step = -np.linalg.lstsq(jac, residual(np.zeros((TRIALS, n_u)), local, read).T, rcond=None)[0]
+    jac = ((residual(h * np.eye(n_u), nominal, zero, flat) - r0) / h).T
+    res = residual(np.zeros((TRIALS, n_u)), local, read, run)
+    step = -np.linalg.lstsq(jac, res.T, rcond=None)[0]
     vec, shift, _ = unpack(step.T)
     est = _rot(vec) @ _rz(heading)
     out = {}
@@ -130,7 +142,9 @@ def _models() -> dict[str, dict[int, np.ndarray]]:
     rms = dict.fromkeys(_observations(), TARGET_RMS_MM)
     tied = np.ones(len(STATIONS), dtype=bool)
     kw = {"datum": 0, "tilt_rms_arcsec": READING_ARCSEC}
-    every = adjust(STATIONS, TARGETS, rms, tied, tilt_readings_rms_arcsec=READING_ARCSEC, **kw)
+    every = adjust(
+        STATIONS, TARGETS, rms, tied, tilt_readings=dict.fromkeys(range(5), READING_ARCSEC), **kw
+    )
     datum = adjust(STATIONS, TARGETS, rms, tied, **kw)
     return {"every-scan": _predicted_z_mm(every), "datum": _predicted_z_mm(datum)}
 
@@ -173,3 +187,42 @@ def test_the_settings_say_which_model_holds_the_vertical():
     assert PlanSettings(registration_processing="pairwise").tilt_model(imu) == "datum"
     assert imu.datum_tilt_rms_arcsec == 180.0  # the datum's lean is its own reading's
     assert plain.datum_tilt_rms_arcsec == 18.0  # eq. 4's m_ν0 = m_ν
+
+
+#: heights of a target at each end of the street and one in the middle (a total station's
+#: trigonometric heights, 3 mm each: coarse enough that their error shows beside the chain's)
+LEVELS = {0: 3.0, 7: 3.0, 11: 3.0}
+
+
+def test_a_level_run_to_three_targets_holds_the_street_in_height():
+    """The datum's reading alone (60″) and the heights of three targets along the street
+    (3 mm each, in their own datum): heights within the Monte Carlo's tolerance of
+    the model (:func:`adjust` with ``heights_mm``); the level run taken as error-free
+    (negative control) promises less than the survey gives, and the street without the run
+    leans by several times more."""
+    rms = dict.fromkeys(_observations(), TARGET_RMS_MM)
+    tied = np.ones(len(STATIONS), dtype=bool)
+    kw = {"datum": 0, "tilt_rms_arcsec": READING_ARCSEC, "tilt_readings": {0: READING_ARCSEC}}
+    levelled = _predicted_z_mm(adjust(STATIONS, TARGETS, rms, tied, heights_mm=LEVELS, **kw))
+    exact = _predicted_z_mm(
+        adjust(STATIONS, TARGETS, rms, tied, heights_mm=dict.fromkeys(LEVELS, 1e-3), **kw)
+    )
+    sim = _survey(np.random.default_rng(54), "datum", LEVELS)
+    tol = 4.0 / np.sqrt(2 * TRIALS)
+    for j in POINTS:
+        emp = np.sqrt(np.mean(np.square(sim[j]), axis=0))
+        np.testing.assert_allclose(emp, levelled[j], rtol=tol)
+    far = np.sqrt(np.mean(np.square(sim[4]), axis=0))
+    assert (far / exact[4] - 1 > 3 * tol).all()  # error-free control: rejected
+    assert (_models()["datum"][4] > 3 * far).all()  # mm: the run's worth at the far end
+
+
+def test_the_datums_reading_as_a_prior_is_the_datums_lean():
+    """The datum's tilt as an unknown with its reading as prior (no other reading, no
+    level run) is the datum-lean model exactly: one rule, two ways of writing it."""
+    rms = dict.fromkeys(_observations(), TARGET_RMS_MM)
+    tied = np.ones(len(STATIONS), dtype=bool)
+    kw = {"datum": 0, "tilt_rms_arcsec": READING_ARCSEC}
+    prior = adjust(STATIONS, TARGETS, rms, tied, tilt_readings={0: READING_ARCSEC}, **kw)
+    plain = adjust(STATIONS, TARGETS, rms, tied, **kw)
+    np.testing.assert_allclose(prior, plain, rtol=1e-6, atol=1e-9)

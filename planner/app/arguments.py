@@ -294,6 +294,7 @@ def _model_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
     """The optimiser, the accuracy model and the registration."""
     from planner.materials import CONDITIONS
     from planner.pipeline.inputs.requirements import (
+        HEIGHT_CONTROL,
         METHODS,
         MODELS,
         REGISTRATION_MODES,
@@ -348,6 +349,12 @@ def _model_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
         help="what the promised registration error assumes of the registration software: "
         + "; or ".join(f"{k}, {v}" for k, v in REGISTRATION_PROCESSING.items())
         + " (default adjustment)",
+    )
+    group["registration"].add_argument(
+        "--height-control",
+        choices=HEIGHT_CONTROL,
+        default=None,
+        help="; or ".join(f"{k}: {v}" for k, v in HEIGHT_CONTROL.items()) + " (default level)",
     )
     group["registration"].add_argument(
         "--tilt-readings",

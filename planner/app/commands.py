@@ -357,58 +357,41 @@ def command_started() -> float:
     return time.monotonic() - age if 0.0 <= age < 600.0 else time.monotonic()
 
 
-def make_plan(args: argparse.Namespace, progress: Callable[[float, str], None]):
-    """The plan of the options shared by ``plan`` and ``report`` — the one function both
-    use, so that a report shows exactly the plan ``plan`` makes: in district mode where
-    ``plan`` would take it (:func:`_district`), ending with the documents' share of
-    ``--time-limit-s`` left (:data:`DOCUMENT_SHARE`, or the files' estimated time), counted
-    from the command's start. Returns the plan, the command's deadline and the pace it had
-    (:func:`~planner.pipeline.inputs.clock.pace`)."""
+def _jobs(args: argparse.Namespace, site, scanner, req, settings):
+    """The site's jobs (:func:`~planner.pipeline.district.groups.job_groups`), their halo,
+    the settings with the budget grown to the jobs' estimated time unless
+    ``--time-limit-s`` was given, and the words saying so (said now, on stderr, before the
+    plan starts; "" for one job)."""
     from planner.pipeline.district.blocks import block_site
-    from planner.pipeline.district.groups import job_groups, jobs_budget_s, jobs_plan, jobs_words
-    from planner.pipeline.district.schedule import memory_bytes
-    from planner.pipeline.engine.planning import plan
+    from planner.pipeline.district.groups import job_groups, jobs_budget_s, jobs_words
     from planner.pipeline.geometry.facades import estimate_samples
-    from planner.pipeline.inputs.clock import pace
 
-    started = getattr(args, "started", None) or time.monotonic()
-    memory_bytes(args.worker_memory)  # checked even where the plan needs no cluster
-    site, scanner, req, settings = plan_inputs(args)
     groups, halo = job_groups(site, scanner, req, settings)
-    if len(groups) > 1:  # jobs far apart: the budget scales with them unless given
-        given = getattr(args, "time_limit_s", None) is not None
-        need = jobs_budget_s(
-            [
-                estimate_samples(
-                    block_site(site, g, halo),
-                    settings.sample_spacing_m,
-                    settings.sample_height_step_m,
-                )
-                for g in groups
-            ]
+    if len(groups) < 2:
+        return groups, halo, settings, ""
+    given = getattr(args, "time_limit_s", None) is not None
+    step = (settings.sample_spacing_m, settings.sample_height_step_m)
+    need = jobs_budget_s([estimate_samples(block_site(site, g, halo), *step) for g in groups])
+    if not given:
+        settings = replace(
+            settings, time_limit_s=max(settings.time_limit_s, need / (1 - DOCUMENT_SHARE))
         )
-        if not given:
-            settings = replace(
-                settings, time_limit_s=max(settings.time_limit_s, need / (1 - DOCUMENT_SHARE))
-            )
-        words = jobs_words(site, groups, settings.time_limit_s if given else need, given)
-        if not args.quiet:
-            print(words, file=sys.stderr, flush=True)
-    deadline = started + settings.time_limit_s
-    rows = estimate_samples(site, settings.sample_spacing_m, settings.sample_height_step_m)
-    # the files' time as measured on an idle machine, stretched by the pace this command
-    # has had so far (its start, imports and reading: a loaded machine slows all of it)
-    slow = pace(time.monotonic() - started, time.process_time())
-    files_s = SAVE_S_PER_ROW * rows + SAVE_S_PER_ZONE * len(site.zones)
-    reserve = max(DOCUMENT_SHARE * settings.time_limit_s, slow * SAVE_MARGIN * files_s)
-    planned_by = deadline - reserve
+    words = jobs_words(site, groups, settings.time_limit_s if given else need, given)
+    if not args.quiet:
+        print(words, file=sys.stderr, flush=True)
+    return groups, halo, settings, words
 
-    def one_job(s, until: float, say) -> object:  # one group's plan, as one site's would be
-        if _district(args, s, settings):
+
+def _one_job(args: argparse.Namespace, scanner, req, settings):
+    """How one site (or one job of several) is planned: block by block on Dask where
+    :func:`_district` says, else in this process."""
+
+    def one(site, until: float, say):
+        if _district(args, site, settings):
             from planner.pipeline.district.schedule import plan_district
 
             return plan_district(
-                s,
+                site,
                 scanner,
                 req,
                 settings,
@@ -419,38 +402,45 @@ def make_plan(args: argparse.Namespace, progress: Callable[[float, str], None]):
                 progress=say,
                 deadline=until,
             )
-        return plan(s, scanner, req, settings, progress=say, deadline=until)
+        from planner.pipeline.engine.planning import plan
 
-    if len(groups) > 1:
-        result = jobs_plan(
-            site,
-            scanner,
-            req,
-            settings,
-            groups,
-            halo,
-            one_job,
-            deadline=planned_by,
-            progress=progress,
-        )
-        result.messages.insert(1, words + ".")
-    elif _district(args, site, settings):
-        from planner.pipeline.district.schedule import plan_district
+        return plan(site, scanner, req, settings, progress=say, deadline=until)
 
-        result = plan_district(
-            site,
-            scanner,
-            req,
-            settings,
-            block_m=args.block_m,
-            scheduler=args.scheduler,
-            workers=args.workers,
-            memory_limit=args.worker_memory,
-            progress=progress,
-            deadline=planned_by,
-        )
-    else:
-        result = plan(site, scanner, req, settings, progress=progress, deadline=planned_by)
+    return one
+
+
+def make_plan(args: argparse.Namespace, progress: Callable[[float, str], None]):
+    """The plan of the options shared by ``plan`` and ``report`` — the one function both
+    use, so that a report shows exactly the plan ``plan`` makes: jobs of buildings far apart
+    each planned on its own (:func:`_jobs`), a job in district mode where ``plan`` would take
+    it (:func:`_district`), ending with the documents' share of ``--time-limit-s`` left
+    (:data:`DOCUMENT_SHARE`, or the files' estimated time), counted from the command's
+    start. Returns the plan, the command's deadline and the pace it had
+    (:func:`~planner.pipeline.inputs.clock.pace`)."""
+    from planner.pipeline.district.groups import jobs_plan
+    from planner.pipeline.district.schedule import memory_bytes
+    from planner.pipeline.geometry.facades import estimate_samples
+    from planner.pipeline.inputs.clock import pace
+
+    started = getattr(args, "started", None) or time.monotonic()
+    memory_bytes(args.worker_memory)  # checked even where the plan needs no cluster
+    site, scanner, req, settings = plan_inputs(args)
+    groups, halo, settings, words = _jobs(args, site, scanner, req, settings)
+    deadline = started + settings.time_limit_s
+    rows = estimate_samples(site, settings.sample_spacing_m, settings.sample_height_step_m)
+    # the files' time as measured on an idle machine, stretched by the pace this command
+    # has had so far (its start, imports and reading: a loaded machine slows all of it)
+    slow = pace(time.monotonic() - started, time.process_time())
+    files_s = SAVE_S_PER_ROW * rows + SAVE_S_PER_ZONE * len(site.zones)
+    reserve = max(DOCUMENT_SHARE * settings.time_limit_s, slow * SAVE_MARGIN * files_s)
+    planned_by = deadline - reserve
+    one = _one_job(args, scanner, req, settings)
+    if len(groups) < 2:
+        return one(site, planned_by, progress), deadline, slow
+    result = jobs_plan(
+        site, scanner, req, settings, groups, halo, one, deadline=planned_by, progress=progress
+    )
+    result.messages.insert(1, words + ".")
     return result, deadline, slow
 
 

@@ -32,6 +32,7 @@ SITE_LABELS = {
     "--registration": "registration",
     "--registration-processing": "registration processing",
     "--tilt-readings": "tilt readings",
+    "--height-control": "height control",
     "--registration-error": "count the registration error",
     "--no-registration-error": "count the registration error",
     "--inventory": "targets you own (name, type, size mm, count)",

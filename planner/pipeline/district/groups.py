@@ -27,6 +27,7 @@ from scipy.sparse.csgraph import connected_components
 
 from planner.pipeline.district.blocks import Block, block_site
 from planner.pipeline.district.stitch import stitch
+from planner.pipeline.engine import planning
 from planner.pipeline.engine.result import Plan
 from planner.pipeline.evaluation.evaluate import Progress
 from planner.pipeline.geometry.facades import estimate_samples
@@ -35,7 +36,7 @@ from planner.pipeline.inputs.resolved import resolve, zone_requirements
 from planner.scanner import Scanner
 from planner.site import Site
 
-__all__ = ["job_groups", "jobs_budget_s", "jobs_plan", "jobs_words", "site_groups"]
+__all__ = ["job_groups", "jobs_budget_s", "jobs_plan", "jobs_words", "plan", "site_groups"]
 
 #: A job's time on top of its samples' [s] (reading, candidates, network, route) …
 JOB_BASE_S = 3.0
@@ -44,6 +45,44 @@ JOB_BASE_S = 3.0
 #: (11 201 samples, one job) in about 50 s (benchmarks/RESULTS.md), the default site (968)
 #: in 2 s; the estimate leaves room for a slower machine.
 JOB_S_PER_SAMPLE = 4e-3
+
+
+def plan(
+    site: Site | None = None,
+    scanner: Scanner | str | None = None,
+    requirements: Requirements | None = None,
+    settings: PlanSettings | None = None,
+    *,
+    progress: Progress | None = None,
+    locked: np.ndarray | None = None,
+    deadline: float | None = None,
+    given: planning.GivenIds | None = None,
+) -> Plan:
+    """Plan the fewest stations meeting ``requirements`` around the planned buildings — as
+    :func:`planner.pipeline.engine.planning.plan` does (its parameters), but planned
+    buildings in groups far apart (:func:`job_groups`) are planned as separate jobs, each
+    with its own network, datum and route, joined into one plan (:func:`jobs_plan`); with
+    ``locked`` or ``given`` (edits of one plan) the site is planned as one job."""
+    t0 = time.perf_counter()
+    site, sc, req, st = planning.plan_inputs(site, scanner, requirements, settings)
+    end = time.monotonic() + st.time_limit_s - (time.perf_counter() - t0)
+    deadline = end if deadline is None else deadline
+    groups, halo = job_groups(site, sc, req, st) if locked is None and given is None else ([], 0)
+    if len(groups) < 2:
+        return planning.plan(
+            site, sc, req, st, progress=progress, locked=locked, deadline=deadline, given=given
+        )
+    return jobs_plan(
+        site,
+        sc,
+        req,
+        st,
+        groups,
+        halo,
+        lambda s, until, say: planning.plan(s, sc, req, st, progress=say, deadline=until),
+        deadline=deadline,
+        progress=progress,
+    )
 
 
 def site_groups(site: Site, gap_m: float) -> list[Block]:

@@ -120,17 +120,30 @@ def plan(
     (:func:`~planner.pipeline.engine.judge.workbench_of`) for what-if edits
     (:mod:`planner.pipeline.engine.whatif`).
 
-    Planned buildings in groups far apart (:mod:`planner.pipeline.district.groups`) are
-    planned as separate jobs, each with its own network, datum and route, and joined into
-    one plan (not where ``locked`` or ``given`` is passed: those plan one job).
+    This plans one job: :func:`planner.plan` (:func:`planner.pipeline.district.groups.plan`)
+    plans buildings in groups far apart as separate jobs, each by this function.
 
     The plan ends by ``deadline`` (a :func:`time.monotonic` time; default: now plus the
     settings' ``time_limit_s``): when it comes, the best plan so far is made, and its
     messages say what the budget cut short (``solver.cut_short``).
     """
+    t0 = time.perf_counter()
+    site, sc, req, st = plan_inputs(site, scanner, requirements, settings)
+    clock = Clock.budget(st.time_limit_s, deadline=deadline, started=t0)
+    wb = _prepare(site, sc, req, st, progress or (lambda _f, _m: None))
+    return choose_stations(wb, progress, locked=locked, clock=clock, given=given)
+
+
+def plan_inputs(
+    site: Site | None,
+    scanner: Scanner | str | None,
+    requirements: Requirements | None,
+    settings: PlanSettings | None,
+) -> tuple[Site, Scanner, Requirements, PlanSettings]:
+    """A plan's inputs checked (a wrong type refused with what to pass) and defaulted: the
+    built-in default site, the paper's scanner, ``Requirements()``, ``PlanSettings()``."""
     from planner.siteio import default_site
 
-    t0 = time.perf_counter()
     expect(site, Site, "site", "read one with planner.read_site(path) or planner.default_site()")
     expect(requirements, Requirements, "requirements", "e.g. Requirements(max_xy_mm=4)")
     expect(settings, PlanSettings, "settings", "e.g. PlanSettings(grid_m=2)")
@@ -139,31 +152,12 @@ def plan(
             f"scanner must be a Scanner, a catalogue name or a profile file; got "
             f"{type(scanner).__name__}"
         )
-    st = settings or PlanSettings()
-    clock = Clock.budget(st.time_limit_s, deadline=deadline, started=t0)
-    site, sc, req = (
+    return (
         site or default_site(),
         load_scanner(scanner or DEFAULT_SCANNER),
         requirements or Requirements(),
+        settings or PlanSettings(),
     )
-    if locked is None and given is None:  # buildings far apart: one job per group
-        from planner.pipeline.district.groups import job_groups, jobs_plan
-
-        groups, halo = job_groups(site, sc, req, st)
-        if len(groups) > 1:
-            return jobs_plan(
-                site,
-                sc,
-                req,
-                st,
-                groups,
-                halo,
-                lambda s, until, say: plan(s, sc, req, st, progress=say, deadline=until),
-                deadline=clock.deadline,
-                progress=progress,
-            )
-    wb = _prepare(site, sc, req, st, progress or (lambda _f, _m: None))
-    return choose_stations(wb, progress, locked=locked, clock=clock, given=given)
 
 
 def _prepare(

@@ -415,6 +415,12 @@ REGISTRATION_PROCESSING = {
     "pairwise": "each scan registered on its own to the one before it along the plan's links "
     "(pair by pair)",
 }
+#: Height control the plan may add where the network leans with its datum scan, in words.
+HEIGHT_CONTROL = {
+    "level": "a level run to some placed targets where the datum's lean would take samples "
+    "over the height limit",
+    "none": "no height control planned (the plan says what a level run would buy)",
+}
 #: Which scans' recorded tilts hold the network's vertical (a scanner without a compensator
 #: that records its tilt, :attr:`~planner.scanner.Scanner.tilt_sensor_rms_arcsec`), in words.
 TILT_READINGS = {
@@ -469,7 +475,7 @@ def setting_groups() -> dict[str, list[str]]:
     in their order.
 
     >>> setting_groups()["solver"]
-    ['method', 'time_limit_s', 'max_samples', 'max_pairs']
+    ['method', 'time_limit_s', 'max_samples', 'job_gap_m', 'max_pairs']
     """
     out: dict[str, list[str]] = {g: [] for g in SETTING_GROUPS}
     for f in fields(PlanSettings):
@@ -548,6 +554,13 @@ class PlanSettings:
         with every scan and has no compensator (:meth:`tilt_model`): all of them, as
         registration software that uses the inclination does in its adjustment, or the
         datum scan's alone (software that ignores the readings, or pairwise processing).
+    height_control : "level" or "none", default "level"
+        Where the network leans with its datum scan (:meth:`tilt_model` "datum") and the
+        lean would take samples over the height limit, plan a level run to some of the
+        placed targets (:mod:`planner.pipeline.network.height`); "none": plan none (the
+        plan still says what one would buy).
+    level_rms_mm : float, default 1.0
+        RMS of each levelled target's height [mm].
     registration_error : bool, default True
         Judge every sample by the scanner's error plus the registration's, propagated from
         the targets (:mod:`planner.registration_error`). A ``station_rms_mm`` given
@@ -714,6 +727,19 @@ class PlanSettings:
     registration: str = field(default="auto", metadata={"group": "registration"})
     registration_processing: str = field(default="adjustment", metadata={"group": "registration"})
     tilt_readings: str = field(default="every-scan", metadata={"group": "registration"})
+    height_control: str = field(default="level", metadata={"group": "registration"})
+    level_rms_mm: float = _spec(
+        1.0,
+        "mm",
+        "levelled height RMS",
+        open_lo=False,
+        lo=0.01,
+        step=0.1,
+        help="RMS of a target's height by the planned level run (default: a digital level's "
+        "run over the site and reading the target's centre above the staff's mark)",
+        group="registration",
+        hi=1000.0,
+    )
     registration_error: bool = field(default=True, metadata={"group": "registration"})
     station_rms_mm: float | tuple[float, float] = _spec(
         0.0,
@@ -1034,6 +1060,11 @@ class PlanSettings:
             raise InputError(
                 "registration processing must be one of "
                 f"{', '.join(REGISTRATION_PROCESSING)}; got {self.registration_processing!r}"
+            )
+        if self.height_control not in HEIGHT_CONTROL:
+            raise InputError(
+                f"height control must be one of {', '.join(HEIGHT_CONTROL)}; "
+                f"got {self.height_control!r}"
             )
         if self.tilt_readings not in TILT_READINGS:
             raise InputError(

@@ -61,6 +61,8 @@ class Network:
     #: how the network's vertical is held
     #: (:meth:`~planner.pipeline.inputs.requirements.PlanSettings.tilt_model`)
     tilt_model: str = "datum"
+    #: targets whose heights a planned level run measures (index → RMS of the height [mm])
+    levelled: dict = field(default_factory=dict)
 
     @property
     def tied(self) -> np.ndarray:

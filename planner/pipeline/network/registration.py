@@ -26,6 +26,7 @@ from planner.cloud_registration import weakest_direction
 from planner.pipeline.evaluation.evaluate import Context
 from planner.pipeline.network import clouds
 from planner.pipeline.network.bridges import find_bridges, link_groups, linking_hops, shared_targets
+from planner.pipeline.network.height import levelled_targets
 from planner.pipeline.network.layout import HIDDEN_DETOUR, Layout, Stands
 from planner.pipeline.network.network import Network, network_message
 from planner.pipeline.network.targets import (
@@ -82,7 +83,8 @@ def build_network(
     sight = stands.hide(lay.sight, placed)  # the spheres set up hide targets from stations
     users, final_rms, observed = _final_sizes(ctx, tc, sight, links)
     control_rms = {int(t): float(tc.control_rms_mm[t]) for t in np.flatnonzero(tc.is_control)}
-    error = _network_error(ctx, lay, tc, links, final_rms, observed, control_rms, users)
+    levelled = levelled_targets(ctx, lay.station_xyz, lay.datum, tc.xyz, sorted(users))
+    error = _network_error(ctx, lay, tc, links, final_rms, observed, control_rms, users, levelled)
     link_sigma: dict[tuple[int, int], float] = {}
     if error is not None:
         link_sigma = _own_link_errors(lay, links, error, final_rms, control_rms, link_error)
@@ -121,6 +123,7 @@ def build_network(
         },
         overlap=lay.overlap,
         tilt_model=ctx.settings.tilt_model(ctx.scanner),
+        levelled=levelled,
     )
 
 
@@ -244,10 +247,12 @@ def _network_error(
     observed: dict[tuple[int, int], float],
     control_rms: dict[int, float],
     users: dict[int, set[int]],
+    heights: dict[int, float] | None = None,
 ) -> NetworkError | None:
     """The network's error: the chain's (:func:`planner.registration_error.propagate`),
     with the pose covariances of the adjustment of every target each scan sees where the
-    software adjusts them together (:func:`planner.registration_error.adjust`). None: no
+    software adjusts them together (:func:`planner.registration_error.adjust`), with the
+    ``heights`` of the levelled targets (:mod:`planner.pipeline.network.height`). None: no
     link and no datum."""
     if not links and lay.datum is None:
         return None
@@ -276,11 +281,26 @@ def _network_error(
             levelled=levelled,
             tilt_rms_arcsec=ctx.scanner.datum_tilt_rms_arcsec,
             planes=_planes(lay.surf),
-            tilt_readings_rms_arcsec=ctx.scanner.tilt_sensor_rms_arcsec
-            if ctx.settings.tilt_model(ctx.scanner) == "readings"
-            else None,
+            tilt_readings=_tilt_readings(ctx, error.tied, datum, bool(heights)),
+            heights_mm=heights,
         )
     return error
+
+
+def _tilt_readings(
+    ctx: Context, tied: np.ndarray, datum: int | None, levelled: bool
+) -> dict[int, float] | None:
+    """The tilt readings the adjustment takes (station → RMS [″]): every tied scan's where
+    the software uses them; the datum's alone — its own vertical as a prior, which the
+    levelled heights then improve — where a level run holds the vertical; else none (the
+    datum's lean is added as it stands: :func:`planner.registration_error.datum_tilt_cov`)."""
+    sc = ctx.scanner
+    model = ctx.settings.tilt_model(sc)
+    if model == "readings":
+        return dict.fromkeys(np.flatnonzero(tied).tolist(), sc.tilt_sensor_rms_arcsec)
+    if model == "datum" and levelled and datum is not None:
+        return {datum: sc.datum_tilt_rms_arcsec}
+    return None
 
 
 def _own_link_errors(
