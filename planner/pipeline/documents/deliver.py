@@ -399,7 +399,8 @@ def stakeout_csv(p: Plan) -> str:
             "height": r.z,
             "code": {"sphere": "TGT-SPHERE", "flat": "TGT-FLAT", "control": "CTL"}.get(
                 r.type, f"TGT-{str(r.type).upper()}"
-            ),
+            )
+            + ("-LVL" if getattr(r, "height_by", "") else ""),
             "ground_z": g,
             "above_ground_m": r.z - g,
         }

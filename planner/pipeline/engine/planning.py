@@ -37,6 +37,7 @@ from planner.pipeline.engine.judge import (
     stations_for,
     what_blocks,
 )
+from planner.pipeline.engine.levelrun import level_run, say_level_run
 from planner.pipeline.engine.result import Plan, SolverReport
 from planner.pipeline.engine.tables import budget_message
 from planner.pipeline.evaluation.diagnosis import Diagnosis, diagnose
@@ -316,6 +317,7 @@ def choose_stations(
         kept=kept,
         given=given,
     )
+    say_level_run(p, level_run(ctx, cand, r), seen.tc.xyz)
     return _with_the_day(p)
 
 

@@ -583,6 +583,7 @@ def targets_and_links(
                 "centre_rms_mm": max(
                     (net.centre_rms.get((j, t), np.nan) for j in who), default=np.nan
                 ),
+                "height_by": "level run" if t in net.levelled else "",
             }
         )
     targets = pd.DataFrame(rows, columns=TARGET_COLUMNS)

@@ -128,6 +128,7 @@ TARGET_COLUMNS = [
     "facade_id",
     "facing_deg",
     "centre_rms_mm",
+    "height_by",
 ]
 #: The registrations (station_b registered to station_a, or to the control network): common
 #: targets usable by both, targets placed, the link's own predicted error at station_b's

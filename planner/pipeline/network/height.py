@@ -47,12 +47,17 @@ def levelled_targets(
     datum: int | None,
     target_xyz: np.ndarray,
     placed: list[int],
+    *,
+    force: bool = False,
 ) -> dict[int, float]:
     """The placed targets a level run measures (target index → RMS of its height [mm]); none
-    where the settings plan no height control, the network does not lean with its datum, or
-    the lean stays within :data:`LEAN_SHARE` of the height limit."""
+    where the settings plan no height control (``force``: the run they would plan), the
+    network does not lean with its datum, or the lean stays within :data:`LEAN_SHARE` of
+    the height limit."""
     st, sc = ctx.settings, ctx.scanner
-    if st.height_control != "level" or st.tilt_model(sc) != "datum" or datum is None:
+    if not (force or st.height_control == "level"):
+        return {}
+    if st.tilt_model(sc) != "datum" or datum is None:
         return {}
     if st.registration_processing != "adjustment":  # the heights enter the adjustment
         return {}

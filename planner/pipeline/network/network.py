@@ -63,6 +63,9 @@ class Network:
     tilt_model: str = "datum"
     #: targets whose heights a planned level run measures (index → RMS of the height [mm])
     levelled: dict = field(default_factory=dict)
+    #: the adjustment's inputs, the levelled heights left out (for judging the network with
+    #: other height control: :func:`~planner.pipeline.network.registration.readjusted`)
+    adjusted: dict = field(default_factory=dict, repr=False)
 
     @property
     def tied(self) -> np.ndarray:
@@ -85,9 +88,9 @@ class Network:
         """Where the datum whose tilt leans the whole network stands (x, y, z): 6-parameter
         registrations to a station datum whose vertical the network keeps
         (:func:`~planner.registration_error.datum_tilt_cov`); None where a compensator
-        levels every scan, every scan's tilt reading holds the vertical, or control points
-        fix it."""
-        if self.tilt_model != "datum" or self.datum is None or self.error is None:
+        levels every scan, every scan's tilt reading or a level run holds the vertical, or
+        control points fix it."""
+        if self.tilt_model != "datum" or self.levelled or self.datum is None or self.error is None:
             return None
         return self.station_xyz[self.datum]
 

@@ -84,7 +84,9 @@ def build_network(
     users, final_rms, observed = _final_sizes(ctx, tc, sight, links)
     control_rms = {int(t): float(tc.control_rms_mm[t]) for t in np.flatnonzero(tc.is_control)}
     levelled = levelled_targets(ctx, lay.station_xyz, lay.datum, tc.xyz, sorted(users))
-    error = _network_error(ctx, lay, tc, links, final_rms, observed, control_rms, users, levelled)
+    error, adjusted = _network_error(
+        ctx, lay, tc, links, final_rms, observed, control_rms, users, levelled
+    )
     link_sigma: dict[tuple[int, int], float] = {}
     if error is not None:
         link_sigma = _own_link_errors(lay, links, error, final_rms, control_rms, link_error)
@@ -124,6 +126,7 @@ def build_network(
         overlap=lay.overlap,
         tilt_model=ctx.settings.tilt_model(ctx.scanner),
         levelled=levelled,
+        adjusted=adjusted,
     )
 
 
@@ -248,14 +251,15 @@ def _network_error(
     control_rms: dict[int, float],
     users: dict[int, set[int]],
     heights: dict[int, float] | None = None,
-) -> NetworkError | None:
+) -> tuple[NetworkError | None, dict]:
     """The network's error: the chain's (:func:`planner.registration_error.propagate`),
     with the pose covariances of the adjustment of every target each scan sees where the
     software adjusts them together (:func:`planner.registration_error.adjust`), with the
     ``heights`` of the levelled targets (:mod:`planner.pipeline.network.height`). None: no
-    link and no datum."""
+    link and no datum. With it, the adjustment's inputs but the heights (for
+    :func:`readjusted`; empty where the chain's error is the plan's)."""
     if not links and lay.datum is None:
-        return None
+        return None, {}
     levelled = ctx.scanner.is_levelled
     datum = None if lay.datum == CONTROL else lay.datum
     error = propagate(
@@ -268,23 +272,34 @@ def _network_error(
         levelled=levelled,
         tilt_rms_arcsec=ctx.scanner.datum_tilt_rms_arcsec,
     )
-    if error is not None and ctx.settings.registration_processing == "adjustment":
-        # the registration as it is computed: every target each scan sees, adjusted together
-        # (pairwise: each scan registered to its parent on the link's targets, the chain's)
-        error.pose_cov = adjust(
-            lay.station_xyz,
-            tc.xyz,
-            observed,
-            error.tied,
-            datum=datum,
-            control_rms_mm={t: r for t, r in control_rms.items() if t in users},
-            levelled=levelled,
-            tilt_rms_arcsec=ctx.scanner.datum_tilt_rms_arcsec,
-            planes=_planes(lay.surf),
-            tilt_readings=_tilt_readings(ctx, error.tied, datum, bool(heights)),
-            heights_mm=heights,
-        )
-    return error
+    if error is None or ctx.settings.registration_processing != "adjustment":
+        return error, {}
+    # the registration as it is computed: every target each scan sees, adjusted together
+    # (pairwise: each scan registered to its parent on the link's targets, the chain's)
+    inputs = {
+        "station_xyz": lay.station_xyz,
+        "target_xyz": tc.xyz,
+        "target_rms_mm": observed,
+        "tied": error.tied,
+        "datum": datum,
+        "control_rms_mm": {t: r for t, r in control_rms.items() if t in users},
+        "levelled": levelled,
+        "tilt_rms_arcsec": ctx.scanner.datum_tilt_rms_arcsec,
+        "planes": _planes(lay.surf),
+    }
+    error.pose_cov = readjusted(ctx, inputs, heights or {})
+    return error, inputs
+
+
+def readjusted(ctx: Context, inputs: dict, heights: dict[int, float]) -> np.ndarray:
+    """The pose covariances of the adjustment of ``inputs`` (:func:`_network_error`'s) with
+    the ``heights`` of levelled targets (none: the network as it leans without them)."""
+    datum, tied = inputs["datum"], inputs["tied"]
+    return adjust(
+        **inputs,
+        tilt_readings=_tilt_readings(ctx, tied, datum, bool(heights)),
+        heights_mm=heights,
+    )
 
 
 def _tilt_readings(

@@ -1,0 +1,59 @@
+"""Planned height control on a 150 m street (:mod:`planner.pipeline.network.height`,
+:mod:`planner.pipeline.engine.levelrun`): the paper's scanner has no compensator, so the
+network leans with its datum scan; a level run to a few targets holds it. The level run's
+model is checked by a virtual survey in tests/test_tilt_readings.py."""
+
+from __future__ import annotations
+
+import pytest
+from shapely.geometry import box
+
+from planner import plan
+from planner.pipeline.documents.deliver import stakeout_csv
+from planner.pipeline.engine.tables import DATUM_LEVELLING_FIX
+from planner.pipeline.inputs.requirements import PlanSettings
+from planner.site import Building, Site
+from tests.sites import E0, N0
+
+
+def street(length: float = 150.0) -> Site:
+    """Terraces of 15 m buildings, 12 m deep, 12–18 m high, on both sides of a 16 m street."""
+    out = []
+    for side, y0 in ((0, 0.0), (1, 28.0)):
+        for k in range(int(length // 15)):
+            x = 15.0 * k
+            fp = box(E0 + x, N0 + y0, E0 + x + 15.0, N0 + y0 + 12.0)
+            out.append(Building(f"s{side}-{k:02d}", fp, 12.0 + 3.0 * (k % 3)))
+    return Site(out, name="street")
+
+
+@pytest.fixture(scope="module")
+def plans():
+    site = street()
+    return {hc: plan(site, settings=PlanSettings(height_control=hc)) for hc in ("none", "level")}
+
+
+def test_a_level_run_meets_the_street_with_fewer_stations(plans):
+    none, level = plans["none"], plans["level"]
+    met = {k: int(p.scanned["meets"].sum()) for k, p in plans.items()}
+    assert met["level"] > met["none"] + 50  # samples
+    assert len(level.stations) < len(none.stations)  # no stations added against the lean
+    levelled = level.targets[level.targets["height_by"] == "level run"]
+    assert 3 <= len(levelled) <= 12
+    words = [m for m in level.messages if m.startswith("Height control: a level run to")]
+    assert len(words) == 1 and "more sample(s) met than without it" in words[0]
+    codes = stakeout_csv(level)
+    assert sum(line.count("-LVL") for line in codes.splitlines()) == len(levelled)
+    # the lean is held: no unmet reason blames the datum's levelling any more
+    assert not level.unmet["reason"].str.contains(DATUM_LEVELLING_FIX, regex=False).any()
+    assert level.scanned["reg_m_z_mm"].max() < none.scanned["reg_m_z_mm"].max()  # mm
+
+
+def test_without_height_control_the_plan_says_what_a_level_run_would_buy(plans):
+    none = plans["none"]
+    assert (none.targets["height_by"] == "").all()
+    words = [m for m in none.messages if m.startswith("Height control (not planned")]
+    assert len(words) == 1 and "--height-control level plans it" in words[0]
+    named = none.unmet["reason"].str.contains("by a level run:", regex=False)
+    assert named.sum() > 0
+    assert "levelling T" in none.unmet["reason"][named].iloc[0]
