@@ -247,7 +247,7 @@ def test_milp_method_is_strict(monkeypatch):
     with pytest.raises(PlannerError, match="not proven optimal"):
         opt.solve_cover(a, d, 5.0, "milp")
     auto = opt.solve_cover(a, d, 5.0, "auto")
-    assert auto.method == "greedy" and auto.status == "time limit"
+    assert auto.method in ("greedy", "local search") and auto.status == "time limit"
     assert covers(a, d, auto.chosen) and auto.lower_bound == 0
 
 

@@ -529,6 +529,10 @@ def round_network(
     pts = np.column_stack([fac.xy, fac.z])
     probes = {j: pts[scanner_only.station == j] for j in range(len(chosen))}
     tightest = tightest_mm(ctx)
+    # the height error each sample leaves the registration (its limit ⊕ the scanner's part)
+    has = (scanner_only.station >= 0) & ~fac.party_wall
+    m_z = scanner_only.metrics["m_z_mm"][has]
+    room = np.sqrt(np.maximum(np.square(ctx.limits["m_z"][has]) - np.square(m_z), 0.0))
     net = build_network(
         ctx,
         seen.tc,
@@ -540,6 +544,7 @@ def round_network(
         cache=seen,
         datum=datum,
         deadline=clock.deadline,
+        height_room=(fac.xy[has], room),
     )
     if not net.tied.all() and net.tied.any():  # groups no target reaches: planned control
         net = tie_groups(ctx, cand, seen, net, REGISTRATION_GOAL * tightest, clock.deadline)

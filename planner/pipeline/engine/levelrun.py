@@ -47,6 +47,8 @@ def level_run(ctx: Context, cand: np.ndarray, r: Round) -> LevelRun | None:
     net = r.net
     if net is None or not net.adjusted or r.judged is None or r.judged.met is None:
         return None
+    if net.ties:  # planned control (a traverse, GNSS) ties and holds this network
+        return None
     if net.levelled:
         heights, planned = {}, True
     else:

@@ -37,6 +37,9 @@ __all__ = ["LEAN_SHARE", "MIN_LEVELLED", "levelled_targets"]
 #: height limit within the network, and levelled targets are placed so that no station is
 #: farther than that lean's distance from the datum or one of them.
 LEAN_SHARE = 0.5
+#: … and only where the datum's lean alone takes more than this share of the samples over
+#: what their height limit leaves the registration (the plan's own rounds serve a few).
+SHORT_SHARE = 0.02
 #: At least this many targets are levelled (two fix the tilt along their line, three both).
 MIN_LEVELLED = 3
 
@@ -49,11 +52,14 @@ def levelled_targets(
     placed: list[int],
     *,
     force: bool = False,
+    room: tuple[np.ndarray, np.ndarray] | None = None,
 ) -> dict[int, float]:
     """The placed targets a level run measures (target index → RMS of its height [mm]); none
     where the settings plan no height control (``force``: the run they would plan), the
     network does not lean with its datum, or the lean stays within :data:`LEAN_SHARE` of
-    the height limit."""
+    the height limit. ``room``: the samples' plan positions (P, 2) [m] and the height error
+    each leaves the registration [mm]; then a run only where the datum's lean alone takes
+    more than :data:`SHORT_SHARE` of them over it."""
     st, sc = ctx.settings, ctx.scanner
     if not (force or st.height_control == "level"):
         return {}
@@ -70,6 +76,11 @@ def levelled_targets(
         return {}
     radius = LEAN_SHARE * limit / per_m  # [m]: the lean's distance
     xy = station_xyz[:, :2]
+    if room is not None and not force:
+        at_xy, left = room
+        lean = per_m * np.hypot(*(np.asarray(at_xy) - xy[datum]).T)
+        if (lean > left).sum() <= SHORT_SHARE * max(len(left), 1):
+            return {}
     far = np.hypot(*(xy - xy[datum]).T)
     if far.max() <= radius:
         return {}

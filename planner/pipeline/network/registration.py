@@ -62,6 +62,7 @@ def build_network(
     cache: SightCache | None = None,
     datum: int | None = None,
     deadline: float = math.inf,
+    height_room: tuple[np.ndarray, np.ndarray] | None = None,
 ) -> Network:
     """Link the chosen stations into one registration network (module docstring).
 
@@ -72,6 +73,9 @@ def build_network(
     between calls. ``datum`` (a candidate index) keeps the datum of the network this one
     grows from, when it is among the stations. After ``deadline`` (a
     :func:`time.monotonic` time) no linking stations are looked for (``cut_short``).
+    ``height_room``: the samples' plan positions (P, 2) [m] and the height error each leaves
+    the registration [mm], for deciding a level run
+    (:func:`~planner.pipeline.network.height.levelled_targets`).
     """
     seen = cache if cache is not None else SightCache(ctx, tc, cand_xy)
     n_cover = len(chosen)
@@ -83,10 +87,19 @@ def build_network(
     sight = stands.hide(lay.sight, placed)  # the spheres set up hide targets from stations
     users, final_rms, observed = _final_sizes(ctx, tc, sight, links)
     control_rms = {int(t): float(tc.control_rms_mm[t]) for t in np.flatnonzero(tc.is_control)}
-    levelled = levelled_targets(ctx, lay.station_xyz, lay.datum, tc.xyz, sorted(users))
+    levelled = levelled_targets(
+        ctx, lay.station_xyz, lay.datum, tc.xyz, sorted(users), room=height_room
+    )
     error, adjusted = _network_error(
         ctx, lay, tc, links, final_rms, observed, control_rms, users, levelled
     )
+    if levelled and error is not None and not error.tied.all():
+        # groups to be tied by planned control (a traverse, GNSS): that control holds the
+        # vertical of what it ties, not a level run planned before it
+        levelled = {}
+        error, adjusted = _network_error(
+            ctx, lay, tc, links, final_rms, observed, control_rms, users
+        )
     link_sigma: dict[tuple[int, int], float] = {}
     if error is not None:
         link_sigma = _own_link_errors(lay, links, error, final_rms, control_rms, link_error)

@@ -9,10 +9,11 @@ that meet every requirement there — a set multi-cover problem.
    Lagrangian bound (subgradient ascent on the samples' multipliers; any multipliers give a
    valid bound, approaching the LP relaxation's value); when these meet, the greedy cover is
    proven optimal. Otherwise the ascent also yields covers (greedy weighted by its
-   multipliers); the integer program on the union of the smallest of them is solved by HiGHS
-   (``highspy``), started from the best cover, the union doubled while it is solved in time;
-   when every cover's union was solved, the whole integer program gets the time left, its
-   dual bound kept when it is stronger.
+   multipliers), the best of which a row-weighting local search improves
+   (:mod:`planner.pipeline.optimise.localsearch`); the integer program on the union of the
+   smallest of them is solved by HiGHS (``highspy``), started from the best cover, the union
+   doubled while it is solved in time; when every cover's union was solved, the whole
+   integer program gets the time left, its dual bound kept when it is stronger.
 
 The lower bound reported is the sum over parts of the best bound proven for each plus the
 forced stations: a real bound on the fewest stations, whatever stopped the solver.
@@ -32,6 +33,7 @@ import scipy.sparse as sp
 from scipy.sparse.csgraph import connected_components
 
 from planner.errors import PlannerError
+from planner.pipeline.optimise.localsearch import row_weighting_search
 from planner.pipeline.optimise.reduce import reduce_cover
 from planner.polar import separated_directions
 
@@ -63,6 +65,12 @@ ASCENT_SHARE = 0.65
 #: district's cover (14 292 × 59 148) in 20 s: shares 0.35 / 0.5 / 0.65 / 0.75 and first
 #: 3 / 5 / 7 / 10 / 15 covers gave 52–55 stations; these two 52 ≥ 43.
 MERGE_FIRST = 10
+#: The share of a part's time left after the ascent for the row-weighting local search
+#: (:mod:`planner.pipeline.optimise.localsearch`); the integer program on the covers' union
+#: gets the rest. On the 50-building grid's cover (6 678 × 7 994 after the reductions) the
+#: search reaches 43 columns in 5 s and 41 in 10 s from the greedy 51 (benchmarks/RESULTS.md
+#: large-sites).
+LOCAL_SHARE = 0.6
 #: The subgradient ascent: the weight of the previous direction in the next …
 MOMENTUM = 0.9
 #: … and the steps without a better bound after which the step length is halved.
@@ -364,6 +372,14 @@ def _solve_part(a: sp.csr_matrix, demand: np.ndarray, deadline: float, method: s
     if bound >= len(best) or method == "greedy":
         return _Part(best, min(bound, len(best)), len(g), "greedy, Lagrangian bound")
     how = "greedy, Lagrangian bound"
+    searched = row_weighting_search(
+        a, demand, best, time.monotonic() + (deadline - time.monotonic()) * LOCAL_SHARE
+    )
+    if len(searched) < len(best):
+        best, how = searched, "row-weighting local search"
+        covers.append(searched)
+    if bound >= len(best):
+        return _Part(best, bound, len(g), how)
     ranked = sorted(covers, key=len)  # merged from the smallest: a core grown while solved
     k = MERGE_FIRST
     while deadline - time.monotonic() > 0.05 and len(covers) > 1:
@@ -424,6 +440,7 @@ def solve_cover(
     bound = len(red.forced) + sum(p.bound for p in parts)
     proven = all(p.proven for p in parts)
     used_milp = any(p.how.startswith("integer program") for p in parts)
+    searched = any(p.how.startswith("row-weighting") for p in parts)
     details["parts"] = len(parts)
     greedy_total = len(red.forced) + sum(p.greedy for p in parts)
     if method == "milp" and not proven:
@@ -442,7 +459,7 @@ def solve_cover(
         status = "time limit"
     return CoverSolution(
         chosen=chosen_all,
-        method="milp" if used_milp else "greedy",
+        method="milp" if used_milp else "local search" if searched else "greedy",
         status=status,
         objective=n,
         lower_bound=float(min(bound, n)),
