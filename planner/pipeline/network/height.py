@@ -4,7 +4,9 @@ Without a compensator, and where the software holds the network's vertical by th
 scan alone (:meth:`~planner.pipeline.inputs.requirements.PlanSettings.tilt_model` "datum"),
 the whole network leans with the datum's tilt: heights err in proportion to the distance
 from the datum (:func:`planner.registration_error.datum_tilt_cov`), and on a street or a
-district every sample far from the datum fails m_z. The cheapest tie a crew makes is a level
+district every sample far from the datum fails m_z. Every scan's tilt reading ("readings")
+leans it by their combined error instead — smaller, but with an IMU's 180″ still tens of
+millimetres over a site. The cheapest tie a crew makes is a level
 run: a digital level from one of the placed targets to a few others, their heights (in the
 run's own datum) known to ``level_rms_mm`` each. Two or more such heights hold the network's
 vertical; the adjustment takes each as an observation (:func:`planner.registration_error.
@@ -63,14 +65,17 @@ def levelled_targets(
     st, sc = ctx.settings, ctx.scanner
     if not (force or st.height_control == "level"):
         return {}
-    if st.tilt_model(sc) != "datum" or datum is None:
+    model = st.tilt_model(sc)
+    if model not in ("datum", "readings") or datum is None:
         return {}
     if st.registration_processing != "adjustment":  # the heights enter the adjustment
         return {}
     if not st.computes_registration or len(placed) < 2:
         return {}
     limit = float(np.nanmin(ctx.limits["m_z"])) if len(ctx.limits["m_z"]) else np.inf
-    tau = sc.datum_tilt_rms_arcsec
+    # the lean: the datum's tilt, or every scan's reading combined (about σ/√K)
+    k = len(station_xyz)
+    tau = sc.datum_tilt_rms_arcsec if model == "datum" else sc.tilt_sensor_rms_arcsec / np.sqrt(k)
     per_m = float(datum_lean_mm(1.0, tau))
     if not np.isfinite(limit) or per_m <= 0:
         return {}
