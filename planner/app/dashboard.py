@@ -53,6 +53,7 @@ from planner.pipeline.engine.whatif import (
 )
 from planner.pipeline.geometry.facades import build_facades
 from planner.pipeline.inputs.requirements import (
+    HEIGHT_CONTROL,
     REGISTRATION_PROCESSING,
     SETTING_GROUPS,
     FieldSpec,
@@ -351,6 +352,7 @@ class StationPlanner:
             self.model,
             self.registration,
             self.processing,
+            self.height_control,
             self.surface_condition,
             self.default_material,
             self.grid,
@@ -541,6 +543,13 @@ class StationPlanner:
             tooltips=list(REGISTRATION_PROCESSING.values()),
             style=_STYLE,
         )
+        self.height_control = w.ToggleButtons(
+            options=[("level run where needed", "level"), ("none", "none")],
+            value=PlanSettings().height_control,
+            description=SITE_LABELS["--height-control"],
+            tooltips=list(HEIGHT_CONTROL.values()),
+            style=_STYLE,
+        )
         self.accuracy_class.observe(lambda _c: self._show_class(), "value")
 
     def _run_controls(self) -> None:
@@ -647,6 +656,7 @@ class StationPlanner:
                 self.model,
                 self.registration,
                 self.processing,
+                self.height_control,
                 self.grid,
                 more,
                 self.zone_editor.widget,
@@ -999,6 +1009,7 @@ class StationPlanner:
                 "model": self.model.value,
                 "registration": self.registration.value,
                 "registration_processing": self.processing.value,
+                "height_control": self.height_control.value,
                 "preset": self.preset.value or None,
                 "max_gamma_deg": self.max_gamma.value,
                 "max_spacing_mm": _field_value(self._specs["max_spacing_mm"], self.max_spacing),
