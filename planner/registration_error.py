@@ -402,6 +402,11 @@ def adjust(
     control_rms_mm = control_rms_mm or {}
     readings = bool(tilt_readings) and not levelled
     heights_mm = heights_mm or {}
+    if heights_mm and not levelled and datum is not None and datum not in (tilt_readings or {}):
+        raise InputError(
+            "levelled heights hold the network's vertical only with the datum's tilt an "
+            "unknown: give the datum's reading in tilt_readings"
+        )
     par = [0, 1, 2, 5] if levelled else [0, 1, 2, 3, 4, 5]  # the pose parameters estimated
     # each station's estimated parameters: the datum's tilt alone when the readings hold it
     s_par = {j: par for j in range(k) if tied[j] and j != datum}

@@ -65,6 +65,10 @@ def test_each_group_is_a_job_with_its_own_network_and_route(jobs_and_one):
     assert (t.loc[starts, "walk_m"] == 0.0).all()  # m: no walk to a job's first station
     assert (t.loc[starts, "walk_note"].iloc[1:] != "").all()
     assert t["walk_m"].max() < 100.0  # m: every walk within a group
+    # the jobs' routes run on: their sessions and elapsed time, their targets' ids prefixed
+    assert t["session"].is_monotonic_increasing and t["elapsed_min"].is_monotonic_increasing
+    named = " ".join(t["targets_to_set"]).split()
+    assert named and all(i.split("-")[0] in {"G1", "G2", "G3"} for i in named)
     assert one.scanned["meets"].sum() < jobs.scanned["meets"].sum()
     assert one.route.table["walk_m"].max() > 300.0  # m: the one job walks across town
 

@@ -376,7 +376,7 @@ def _jobs(args: argparse.Namespace, site, scanner, req, settings):
         settings = replace(
             settings, time_limit_s=max(settings.time_limit_s, need / (1 - DOCUMENT_SHARE))
         )
-    words = jobs_words(site, groups, settings.time_limit_s if given else need, given)
+    words = jobs_words(site, groups, settings.time_limit_s, given)
     if not args.quiet:
         print(words, file=sys.stderr, flush=True)
     return groups, halo, settings, words

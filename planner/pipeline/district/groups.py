@@ -5,11 +5,11 @@ A site whose planned buildings fall into **groups** farther apart than a station
 are one group) is not one survey: a crew scans each group on its own day or hour, on its own
 datum, and drives between them. Registering them into one network would need a chain of
 stations across the empty town between; the plan would call their samples untied. So each
-group is planned as its own job (:func:`plan_jobs`) — its own stations, targets, registration
-network and datum, its own route — in its share of the time budget, and the jobs are joined
-into one plan (ids prefixed with the group's key, ``G03-S02``): the travel between groups is
-left to the crew, and tying the groups into one frame (GNSS control points, ``--control``) is
-for the user to ask.
+group is planned as its own job — its own stations, targets, registration network and datum,
+its own route — in its share of the time budget, and the jobs are joined into one plan
+(:func:`jobs_plan`; ids prefixed with the group's key, ``G03-S02``): the travel between
+groups is left to the crew, and tying the groups into one frame (GNSS control points,
+``--control``) is for the user to ask.
 
 The default time budget scales with the work (:func:`jobs_budget_s`), said before the plan
 starts; ``--time-limit-s`` given stands.
@@ -88,7 +88,8 @@ def plan(
 def site_groups(site: Site, gap_m: float) -> list[Block]:
     """The planned buildings in groups: two buildings whose footprints come within
     ``gap_m`` [m] of each other are in one group, and so are the groups they join. Keys
-    ``G01``…, in order of the groups' south-west corners (rows from the south).
+    ``G1``… (``G01``… from ten groups), in order of the groups' south-west corners (rows
+    from the south).
 
     >>> from shapely.geometry import box
     >>> from planner.site import Building

@@ -104,11 +104,10 @@ def stitch(
     )
     messages += seam_notes
     if jobs:
-        renamed = {
-            b.key: {s: f"{b.key}-{s}" for s in p.stations["station_id"]}
-            for b, p in zip(blocks, plans, strict=True)
-        }
-        route = _joined_route(blocks, plans, renamed)
+        control = {c.id for c in site.control}
+        route = _joined_route(
+            [_block_ids(b, p, control) for b, p in zip(blocks, plans, strict=True)], plans
+        )
     else:
         route = field_route(site, scanner, st, stations_df, targets_df, coverage_df, links_df)
     messages.insert(0, f"Accuracy model: {st.model_description()}.")
@@ -161,8 +160,7 @@ def _renamed_blocks(
     control = {c.id for c in site.control}
     frames = frames if frames is not None else [None] * len(blocks)
     for b, p, frame in zip(blocks, plans, frames, strict=True):
-        sid = {s: f"{b.key}-{s}" for s in p.stations["station_id"]}
-        tid = {t: f"{b.key}-{t}" for t in p.targets["target_id"] if t not in control}
+        sid, tid = _block_ids(b, p, control)
         st_b, cov_b, tg_b, lk_b = rename_stations(sid, p.stations, p.coverage, p.targets, p.links)
         tg_b, lk_b = rename_targets(tid, tg_b, lk_b)
         stations.append(st_b)
@@ -514,18 +512,29 @@ def _merge_control(t: pd.DataFrame) -> pd.DataFrame:
     return pd.concat([t[t["type"] != "control"], merged], ignore_index=True)
 
 
-def _joined_route(groups: list[Block], plans: list[Plan], stations: dict[str, dict[str, str]]):
-    """One route of the jobs' own routes, one after another (ids renamed by ``stations``,
-    group key → old id → new id): each job's walks its own, the travel between groups the
-    crew's (the first station of a job has no walk)."""
-    routes = [p.route.renamed(stations[g.key]) for g, p in zip(groups, plans, strict=True)]
-    tables = []
-    for n, r in enumerate(routes):
+def _block_ids(b: Block, p: Plan, control: set[str]) -> tuple[dict[str, str], dict[str, str]]:
+    """A block's (or job's) station and target ids in the stitched plan, old → new: prefixed
+    with its key (control points keep theirs)."""
+    sid = {s: f"{b.key}-{s}" for s in p.stations["station_id"]}
+    tid = {t: f"{b.key}-{t}" for t in p.targets["target_id"] if t not in control}
+    return sid, tid
+
+
+def _joined_route(ids: list[tuple[dict, dict]], plans: list[Plan]):
+    """One route of the jobs' own routes, one after another (each job's ids renamed by its
+    ``ids``, :func:`_block_ids`): each job's walks its own, the travel between groups the
+    crew's (the first station of a job has no walk); sessions and the elapsed time run on
+    from the job before."""
+    routes = [p.route.renamed(*names) for names, p in zip(ids, plans, strict=True)]
+    tables: list[pd.DataFrame] = []
+    for r in routes:
         if not len(r.table):
             continue
         t = r.table.copy()
-        if n and tables:  # the travel from the job before is the crew's
+        if tables:  # the travel from the job before is the crew's
             t.loc[t.index[0], "walk_note"] = "each a job's first: the travel to it is the crew's"
+            t["session"] += int(tables[-1]["session"].max())
+            t["elapsed_min"] += float(tables[-1]["elapsed_min"].iloc[-1])
         tables.append(t)
     table = pd.concat(tables, ignore_index=True) if tables else routes[0].table
     if len(table):

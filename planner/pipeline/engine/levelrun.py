@@ -2,9 +2,10 @@
 
 Where the plan levelled targets (:mod:`planner.pipeline.network.height`) the network is
 judged again without their heights, to say how many samples the run meets; where height
-control is off (``--height-control none``) and the datum's lean keeps samples short, the
-network is judged with the run it would take, and the plan says what that would buy, in its
-messages and in the reasons of the samples it would meet.
+control is off (``--height-control none``) and the network leans (with its datum, or with
+its scans' tilt readings combined), it is judged with the run it would take, and the plan
+says what that would buy, in its messages and in the reasons of the samples it would
+meet.
 """
 
 from __future__ import annotations
@@ -51,8 +52,10 @@ def level_run(ctx: Context, cand: np.ndarray, r: Round) -> LevelRun | None:
         return None
     if net.levelled:
         heights, planned = {}, True
+    elif ctx.settings.height_control != "none":  # planned where needed: none was
+        return None
     else:
-        placed = sorted(int(t) for t in net.targets)
+        placed = sorted(int(t) for t in net.targets)  # as the network placed them
         xyz = net.candidates.xyz
         heights = levelled_targets(ctx, net.station_xyz, net.datum, xyz, placed, force=True)
         planned = False
@@ -82,8 +85,8 @@ def say_level_run(p: Plan, run: LevelRun | None, xyz: np.ndarray) -> None:
     )
     if run.planned:
         p.messages.append(
-            f"Height control: {what} holds the network's vertical in place of the datum scan's "
-            f"levelling: {run.gain} more sample(s) met than without it."
+            f"Height control: {what} holds the network's vertical: {run.gain} more sample(s) "
+            "met than without it."
         )
         return
     p.messages.append(

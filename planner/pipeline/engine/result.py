@@ -200,8 +200,15 @@ class Plan:
                 "counted)"
             )
         net = self.network
-        if net is None:  # a district's blocks: each block's own network
-            vertical = "each frame leans with its datum scan's levelling unless control holds it"
+        if net is None:  # a district's blocks or the jobs: each its own network
+            vertical = (
+                "each block's or job's frame holds its own vertical: its datum scan's "
+                "levelling, its scans' tilt readings, a level run or control"
+            )
+        elif net.levelled:
+            vertical = "a level run to some of the targets holds the vertical"
+        elif net.datum is None:
+            vertical = "control points hold the vertical"
         elif net.tilt_model == "readings":
             vertical = "every scan's recorded tilt holds the vertical, adjusted together"
         elif net.leaning_datum() is None:

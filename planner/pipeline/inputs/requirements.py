@@ -555,10 +555,11 @@ class PlanSettings:
         registration software that uses the inclination does in its adjustment, or the
         datum scan's alone (software that ignores the readings, or pairwise processing).
     height_control : "level" or "none", default "level"
-        Where the network leans with its datum scan (:meth:`tilt_model` "datum") and the
-        lean would take samples over the height limit, plan a level run to some of the
-        placed targets (:mod:`planner.pipeline.network.height`); "none": plan none (the
-        plan still says what one would buy).
+        Where the network leans — with its datum scan, or with its scans' tilt readings
+        combined (:meth:`tilt_model` "datum" or "readings") — and the lean would take
+        samples over the height limit, plan a level run to some of the placed targets
+        (:mod:`planner.pipeline.network.height`); "none": plan none (the plan still says
+        what one would buy).
     level_rms_mm : float, default 1.0
         RMS of each levelled target's height [mm].
     registration_error : bool, default True

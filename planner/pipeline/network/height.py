@@ -66,7 +66,7 @@ def levelled_targets(
     if not (force or st.height_control == "level"):
         return {}
     model = st.tilt_model(sc)
-    if model not in ("datum", "readings") or datum is None:
+    if model not in ("datum", "readings") or datum is None or datum < 0:
         return {}
     if st.registration_processing != "adjustment":  # the heights enter the adjustment
         return {}

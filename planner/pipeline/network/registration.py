@@ -87,8 +87,9 @@ def build_network(
     sight = stands.hide(lay.sight, placed)  # the spheres set up hide targets from stations
     users, final_rms, observed = _final_sizes(ctx, tc, sight, links)
     control_rms = {int(t): float(tc.control_rms_mm[t]) for t in np.flatnonzero(tc.is_control)}
+    station_datum = None if lay.datum == CONTROL else lay.datum  # control holds the vertical
     levelled = levelled_targets(
-        ctx, lay.station_xyz, lay.datum, tc.xyz, sorted(users), room=height_room
+        ctx, lay.station_xyz, station_datum, tc.xyz, sorted(users), room=height_room
     )
     error, adjusted = _network_error(
         ctx, lay, tc, links, final_rms, observed, control_rms, users, levelled

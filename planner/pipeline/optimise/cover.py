@@ -372,10 +372,14 @@ def _solve_part(a: sp.csr_matrix, demand: np.ndarray, deadline: float, method: s
     if bound >= len(best) or method == "greedy":
         return _Part(best, min(bound, len(best)), len(g), "greedy, Lagrangian bound")
     how = "greedy, Lagrangian bound"
-    searched = row_weighting_search(
-        a, demand, best, time.monotonic() + (deadline - time.monotonic()) * LOCAL_SHARE
+    searched = (
+        best
+        if method == "milp"
+        else row_weighting_search(
+            a, demand, best, time.monotonic() + (deadline - time.monotonic()) * LOCAL_SHARE
+        )
     )
-    if len(searched) < len(best):
+    if len(searched) < len(best):  # (its steps follow the clock: a busy machine takes fewer)
         best, how = searched, "row-weighting local search"
         covers.append(searched)
     if bound >= len(best):

@@ -510,7 +510,7 @@ def rehearse(
     col, row = np.meshgrid(np.arange(len(az)), np.arange(len(el)))
     col, row = col.ravel(), row.ravel()
     local_dir = _unit(az[col], el[row])
-    tau = sc.initial_tilt_rms_arcsec / _RHO
+    tau = sc.datum_tilt_rms_arcsec / _RHO  # a scan stands tilted by what levels it
     ids, xyz = station_centres(plan)
     scans = []
     for k, (sid, pos) in enumerate(zip(ids, xyz, strict=True)):
