@@ -376,7 +376,11 @@ def _solve_part(a: sp.csr_matrix, demand: np.ndarray, deadline: float, method: s
         best
         if method == "milp"
         else row_weighting_search(
-            a, demand, best, time.monotonic() + (deadline - time.monotonic()) * LOCAL_SHARE
+            a,
+            demand,
+            best,
+            time.monotonic() + (deadline - time.monotonic()) * LOCAL_SHARE,
+            floor=bound,
         )
     )
     if len(searched) < len(best):  # (its steps follow the clock: a busy machine takes fewer)
