@@ -57,3 +57,29 @@ def test_without_height_control_the_plan_says_what_a_level_run_would_buy(plans):
     named = none.unmet["reason"].str.contains("by a level run:", regex=False)
     assert named.sum() > 0
     assert "levelling T" in none.unmet["reason"][named].iloc[0]
+
+
+def test_a_block_holding_its_own_vertical_takes_no_tilt_from_the_seams():
+    """Two blocks tied by one seam, 300 m apart: a seam's tilt error (10″ per axis) carried
+    to the far block leans its heights by about 15 mm there; a block whose vertical a level
+    run holds takes only the seam's shifts and heading (its own tilt is in its own poses)."""
+    import numpy as np
+
+    from planner.pipeline.network.seams import BlockFrame, SeamLink, tie_blocks
+    from planner.units import RHO_ARCSEC
+
+    pose = np.zeros((2, 6, 6))
+    frames = [
+        BlockFrame(["A1", "A2"], np.array([[0.0, 0, 1.5], [20, 0, 1.5]]), pose, np.ones(2, bool)),
+        BlockFrame(["B1"], np.array([[40.0, 0, 1.5]]), pose[:1], np.ones(1, bool)),
+    ]
+    cov = np.diag([0.04, 0.04, 0.04, *([(10.0 / RHO_ARCSEC) ** 2] * 3)])  # mm², rad²
+    seam = [SeamLink(0, 1, 1, 0, ("T1", "T2", "T3"), cov)]
+    far = np.array([300.0, 0.0, 1.5])
+    for held, lo, hi in ((False, 10.0, 20.0), (True, 0.0, 0.5)):
+        extra, used = tie_blocks(frames, seam, [False, held])
+        assert len(used) == 1
+        lever = (far - frames[1].xyz[0]) * 1000.0
+        jac = np.array([0, 0, 1.0, lever[1], -lever[0], 0])  # δz = δs_z + ω_x y − ω_y x
+        z = float(np.sqrt(jac @ extra[1][0] @ jac))
+        assert lo <= z <= hi  # mm at 260 m from the seam

@@ -544,7 +544,7 @@ class StationPlanner:
             style=_STYLE,
         )
         self.height_control = w.ToggleButtons(
-            options=[("level run", "level"), ("none", "none")],
+            options=[("level run", "level"), ("always", "always"), ("none", "none")],
             value=PlanSettings().height_control,
             description=SITE_LABELS["--height-control"],
             tooltips=list(HEIGHT_CONTROL.values()),

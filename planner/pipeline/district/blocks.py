@@ -176,6 +176,8 @@ def plan_block(
 
     now = time.monotonic()
     deadline = min(now + share_s, now + (until_epoch - time.time()))
+    if settings.height_control == "level":  # the district's frame spans all the blocks
+        settings = replace(settings, height_control="always")
     p = plan(site, scanner, req, settings, deadline=deadline)
     table = meeting_table(p, region)
     p.solver.meeting_reach_m = meeting_reach(p)
@@ -202,6 +204,10 @@ class KeptNetwork:
     leans: np.ndarray
     message: str
     limits: np.ndarray
+    #: the block's own vertical is held absolutely (a level run, or every scan's tilt
+    #: reading): the seams carry no tilt into it (:func:`~planner.pipeline.network.seams.
+    #: tie_blocks`)
+    held: bool = False
 
 
 def keep_frame(p: Plan) -> KeptNetwork:
@@ -224,7 +230,8 @@ def keep_frame(p: Plan) -> KeptNetwork:
         pose[leans] -= datum_tilt_cov(xyz[leans], datum, p.scanner.datum_tilt_rms_arcsec)
     limits = workbench_of(p).ctx.limits
     lim = np.column_stack([limits[f"m_{c}"] for c in "xyz"]).astype(float)
-    return KeptNetwork(xyz, pose, tied, datum, leans, net.message if net else "", lim)
+    held = bool(k) and (bool(net.levelled) or net.tilt_model == "readings")
+    return KeptNetwork(xyz, pose, tied, datum, leans, net.message if net else "", lim, held)
 
 
 def for_stitch(planned: tuple[Plan, pd.DataFrame, BlockCover, KeptNetwork]) -> tuple:

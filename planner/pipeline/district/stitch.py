@@ -264,7 +264,7 @@ def _tie_seams(
     frames, targets, datums, leaning = _block_frames(blocks, plans, kept, set(removed))
     ctx_of = seams.context_of(site, scanner, req, st, reach)
     found = seams.seam_links(site, ctx_of, frames, targets)
-    extra, used = seams.tie_blocks(frames, found)
+    extra, used = seams.tie_blocks(frames, found, [k.held for k in kept])
     # one datum's tilt leans the district's frame: the root block's, in place of each
     # block's own (a scanner without a compensator)
     root = seams.root_block(frames)

@@ -419,6 +419,8 @@ REGISTRATION_PROCESSING = {
 HEIGHT_CONTROL = {
     "level": "a level run to some placed targets where the datum's lean would take samples "
     "over the height limit",
+    "always": "a level run wherever the network leans, even where the lean keeps no sample "
+    "short (a district's blocks do, their frames joined over hundreds of metres)",
     "none": "no height control planned (the plan says what a level run would buy)",
 }
 #: Which scans' recorded tilts hold the network's vertical (a scanner without a compensator
@@ -554,12 +556,13 @@ class PlanSettings:
         with every scan and has no compensator (:meth:`tilt_model`): all of them, as
         registration software that uses the inclination does in its adjustment, or the
         datum scan's alone (software that ignores the readings, or pairwise processing).
-    height_control : "level" or "none", default "level"
+    height_control : "level", "always" or "none", default "level"
         Where the network leans — with its datum scan, or with its scans' tilt readings
         combined (:meth:`tilt_model` "datum" or "readings") — and the lean would take
         samples over the height limit, plan a level run to some of the placed targets
-        (:mod:`planner.pipeline.network.height`); "none": plan none (the plan still says
-        what one would buy).
+        (:mod:`planner.pipeline.network.height`); "always": wherever the network leans
+        (a district plans its blocks so); "none": plan none (the plan still says what one
+        would buy).
     level_rms_mm : float, default 1.0
         RMS of each levelled target's height [mm].
     registration_error : bool, default True

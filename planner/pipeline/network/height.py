@@ -63,7 +63,7 @@ def levelled_targets(
     each leaves the registration [mm]; then a run only where the datum's lean alone takes
     more than :data:`SHORT_SHARE` of them over it."""
     st, sc = ctx.settings, ctx.scanner
-    if not (force or st.height_control == "level"):
+    if not (force or st.height_control in ("level", "always")):
         return {}
     model = st.tilt_model(sc)
     if model not in ("datum", "readings") or datum is None or datum < 0:
@@ -81,7 +81,7 @@ def levelled_targets(
         return {}
     radius = LEAN_SHARE * limit / per_m  # [m]: the lean's distance
     xy = station_xyz[:, :2]
-    if room is not None and not force:
+    if room is not None and not force and st.height_control != "always":
         at_xy, left = room
         lean = per_m * np.hypot(*(np.asarray(at_xy) - xy[datum]).T)
         if (lean > left).sum() <= SHORT_SHARE * max(len(left), 1):

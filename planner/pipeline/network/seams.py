@@ -188,11 +188,14 @@ def root_block(frames: list[BlockFrame]) -> int:
 
 
 def tie_blocks(
-    frames: list[BlockFrame], links: list[SeamLink]
+    frames: list[BlockFrame], links: list[SeamLink], held: list[bool] | None = None
 ) -> tuple[list[np.ndarray | None], list[SeamLink]]:
     """The frame error of every block (a pose covariance (K, 6, 6) per station, added to
     its own) along the tree of seams from the block with the most stations (Dijkstra on
-    the seams' variances); None for a block no seam reaches. And the seams used."""
+    the seams' variances); None for a block no seam reaches. And the seams used. A block
+    whose vertical is ``held`` on its own (a level run, every scan's tilt reading) takes
+    no tilt from the seams: its frame error keeps the shifts and the heading only."""
+    held = held or [False] * len(frames)
     n = len(frames)
     if not n:
         return [], []
@@ -230,7 +233,10 @@ def tie_blocks(
         cov_a, at_a = frame[s.block_a]
         xa, xb = fa.xyz[s.a], fb.xyz[s.b]
         at_station_a = transport_pose_cov(cov_a, at_a, xa) + fa.pose_cov[s.a]
-        frame[k] = (transport_pose_cov(at_station_a, xa, xb) + s.cov, xb)
+        cov_b = transport_pose_cov(at_station_a, xa, xb) + s.cov
+        if held[k]:  # its own vertical: the seams' tilts do not reach it
+            cov_b = _without_tilt(cov_b)
+        frame[k] = (cov_b, xb)
         cost[k] = c
         used.append(s)
         push(k)
@@ -242,6 +248,14 @@ def tie_blocks(
         cov, at = frame[k]
         out.append(transport_pose_cov(np.broadcast_to(cov, (len(f.ids), 6, 6)), at, f.xyz))
     return out, used
+
+
+def _without_tilt(cov: np.ndarray) -> np.ndarray:
+    """A pose covariance with the rotations about x and y (the tilt) taken out."""
+    out = cov.copy()
+    out[..., 3:5, :] = 0.0
+    out[..., :, 3:5] = 0.0
+    return out
 
 
 def add_frame_errors(
