@@ -362,16 +362,13 @@ def _jobs(args: argparse.Namespace, site, scanner, req, settings):
     the settings with the budget grown to the jobs' estimated time unless
     ``--time-limit-s`` was given, and the words saying so (said now, on stderr, before the
     plan starts; "" for one job)."""
-    from planner.pipeline.district.blocks import block_site
-    from planner.pipeline.district.groups import job_groups, jobs_budget_s, jobs_words
-    from planner.pipeline.geometry.facades import estimate_samples
+    from planner.pipeline.district.groups import job_groups, job_sites, jobs_words
 
     groups, halo = job_groups(site, scanner, req, settings)
     if len(groups) < 2:
         return groups, halo, settings, ""
     given = getattr(args, "time_limit_s", None) is not None
-    step = (settings.sample_spacing_m, settings.sample_height_step_m)
-    need = jobs_budget_s([estimate_samples(block_site(site, g, halo), *step) for g in groups])
+    need = sum(job_sites(site, groups, halo, settings)[1])
     if not given:
         settings = replace(
             settings, time_limit_s=max(settings.time_limit_s, need / (1 - DOCUMENT_SHARE))

@@ -36,7 +36,15 @@ from planner.pipeline.inputs.resolved import resolve, zone_requirements
 from planner.scanner import Scanner
 from planner.site import Site
 
-__all__ = ["job_groups", "jobs_budget_s", "jobs_plan", "jobs_words", "plan", "site_groups"]
+__all__ = [
+    "job_groups",
+    "job_sites",
+    "jobs_budget_s",
+    "jobs_plan",
+    "jobs_words",
+    "plan",
+    "site_groups",
+]
 
 #: A job's time on top of its samples' [s] (reading, candidates, network, route) …
 JOB_BASE_S = 3.0
@@ -126,6 +134,16 @@ def jobs_budget_s(samples: list[int]) -> float:
     return float(sum(JOB_BASE_S + JOB_S_PER_SAMPLE * n for n in samples))
 
 
+def job_sites(
+    site: Site, groups: list[Block], halo_m: float, st: PlanSettings
+) -> tuple[list[Site], list[float]]:
+    """Each job's site (its group planned, its halo kept) and its estimated time [s]
+    (:func:`jobs_budget_s` of its samples)."""
+    sites = [block_site(site, g, halo_m) for g in groups]
+    step = (st.sample_spacing_m, st.sample_height_step_m)
+    return sites, [jobs_budget_s([estimate_samples(s, *step)]) for s in sites]
+
+
 def jobs_words(site: Site, groups: list[Block], budget_s: float, given: bool) -> str:
     """What is about to happen, said before the plan starts."""
     n = len(site.planned)
@@ -173,11 +191,7 @@ def jobs_plan(
     each job's network and route its own)."""
     say = progress or (lambda _f, _m: None)
     t0 = time.perf_counter()
-    sites = [block_site(site, g, halo_m) for g in groups]
-    work = [
-        jobs_budget_s([estimate_samples(s, st.sample_spacing_m, st.sample_height_step_m)])
-        for s in sites
-    ]
+    sites, work = job_sites(site, groups, halo_m, st)
     plans: list[Plan] = []
     for k, (g, s) in enumerate(zip(groups, sites, strict=True)):
         done, total = sum(work[:k]), sum(work)

@@ -68,7 +68,7 @@ def stitch(
     buildings far apart planned as separate jobs (:mod:`planner.pipeline.district.groups`),
     each with its own route."""
     parts, messages = _renamed_blocks(site, blocks, plans, frames, reach, jobs)
-    stations, targets, coverage, facades, links, zones, cands = parts
+    stations, targets, coverage, facades, links, zones, cands, names = parts
     targets_df = _merge_control(pd.concat(targets, ignore_index=True))
     stations_df = pd.concat(stations, ignore_index=True)
     coverage_df = pd.concat(coverage, ignore_index=True)
@@ -104,10 +104,7 @@ def stitch(
     )
     messages += seam_notes
     if jobs:
-        control = {c.id for c in site.control}
-        route = _joined_route(
-            [_block_ids(b, p, control) for b, p in zip(blocks, plans, strict=True)], plans
-        )
+        route = _joined_route(names, plans)
     else:
         route = field_route(site, scanner, st, stations_df, targets_df, coverage_df, links_df)
     messages.insert(0, f"Accuracy model: {st.model_description()}.")
@@ -143,9 +140,10 @@ def _renamed_blocks(
     jobs: bool = False,
 ) -> tuple[tuple[list, ...], list[str]]:
     """Each block's tables with its ids prefixed with the block's key (control points keep
-    theirs) — stations, targets, coverage, facades, links, zones, candidates — and the
-    messages: the site's, then one per block."""
+    theirs) — stations, targets, coverage, facades, links, zones, candidates, and the id maps
+    themselves (:func:`_block_ids`) — and the messages: the site's, then one per block."""
     stations, targets, coverage, facades, links, zones, cands = [], [], [], [], [], [], []
+    names: list[tuple[dict[str, str], dict[str, str]]] = []
     messages = [
         *site.warnings,
         *notes_summary(site.notes),
@@ -161,6 +159,7 @@ def _renamed_blocks(
     frames = frames if frames is not None else [None] * len(blocks)
     for b, p, frame in zip(blocks, plans, frames, strict=True):
         sid, tid = _block_ids(b, p, control)
+        names.append((sid, tid))
         st_b, cov_b, tg_b, lk_b = rename_stations(sid, p.stations, p.coverage, p.targets, p.links)
         tg_b, lk_b = rename_targets(tid, tg_b, lk_b)
         stations.append(st_b)
@@ -177,7 +176,7 @@ def _renamed_blocks(
             f"{p.solver.status}, bound {p.solver.lower_bound}"
             + (f"; Registration: {net}." if net else "")
         )
-    return (stations, targets, coverage, facades, links, zones, cands), messages
+    return (stations, targets, coverage, facades, links, zones, cands, names), messages
 
 
 def _drop_redundant(

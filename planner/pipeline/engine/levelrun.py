@@ -1,4 +1,4 @@
-"""What a level run buys the plan, in words (:func:`level_run_words`).
+"""What a level run buys the plan (:func:`level_run`), in words (:func:`say_level_run`).
 
 Where the plan levelled targets (:mod:`planner.pipeline.network.height`) the network is
 judged again without their heights, to say how many samples the run meets; where height

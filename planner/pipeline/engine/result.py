@@ -207,9 +207,7 @@ class Plan:
             )
         elif net.levelled:
             vertical = "a level run to some of the targets holds the vertical"
-        elif net.datum is None:
-            vertical = "control points hold the vertical"
-        elif net.tilt_model == "readings":
+        elif net.datum is not None and net.tilt_model == "readings":
             vertical = "every scan's recorded tilt holds the vertical, adjusted together"
         elif net.leaning_datum() is None:
             vertical = "control points hold the vertical"

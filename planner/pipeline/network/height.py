@@ -74,8 +74,11 @@ def levelled_targets(
         return {}
     limit = float(np.nanmin(ctx.limits["m_z"])) if len(ctx.limits["m_z"]) else np.inf
     # the lean: the datum's tilt, or every scan's reading combined (about σ/√K)
-    k = len(station_xyz)
-    tau = sc.datum_tilt_rms_arcsec if model == "datum" else sc.tilt_sensor_rms_arcsec / np.sqrt(k)
+    tau = (
+        sc.datum_tilt_rms_arcsec
+        if model == "datum"
+        else sc.tilt_sensor_rms_arcsec / np.sqrt(len(station_xyz))
+    )
     per_m = float(datum_lean_mm(1.0, tau))
     if not np.isfinite(limit) or per_m <= 0:
         return {}

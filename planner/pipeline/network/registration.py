@@ -89,7 +89,7 @@ def build_network(
     control_rms = {int(t): float(tc.control_rms_mm[t]) for t in np.flatnonzero(tc.is_control)}
     station_datum = None if lay.datum == CONTROL else lay.datum  # control holds the vertical
     levelled = levelled_targets(
-        ctx, lay.station_xyz, station_datum, tc.xyz, sorted(users), room=height_room
+        ctx, lay.station_xyz, station_datum, tc.xyz, sorted(placed), room=height_room
     )
     error, adjusted = _network_error(
         ctx, lay, tc, links, final_rms, observed, control_rms, users, levelled

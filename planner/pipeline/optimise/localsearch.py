@@ -66,7 +66,7 @@ def row_weighting_search(
     x[np.asarray(start, dtype=np.int64)] = True
     best = x.copy()
     rng = np.random.default_rng(seed)
-    state = _State.new(a, at, d, x)
+    state = _start(a, at, d, x)
     steps, size, since = 0, int(best.sum()), 0
     while steps < max_steps and time.monotonic() < deadline and since < STALL_STEPS:
         if size <= floor:
@@ -78,15 +78,7 @@ def row_weighting_search(
             at.indptr,
             at.indices,
             d,
-            state.x,
-            state.cov,
-            state.w,
-            state.score,
-            state.stamp,
-            state.free,
-            state.short,
-            state.where,
-            state.n_short,
+            *state,
             best,
             n,
             steps,
@@ -99,26 +91,23 @@ def row_weighting_search(
     return np.flatnonzero(best)
 
 
-class _State:
-    """The search's arrays (numba works on them in place)."""
-
-    @staticmethod
-    def new(a: sp.csr_matrix, at: sp.csr_matrix, d: np.ndarray, x: np.ndarray) -> _State:
-        s = _State()
-        s.x = x.copy()
-        s.cov = np.asarray(a @ x.astype(np.int64)).ravel().astype(np.int64)
-        s.w = np.ones(a.shape[0], dtype=np.int64)
-        short = s.cov < d
-        s.score = _scores(a, at, d, s.x, s.cov, s.w)
-        s.stamp = np.zeros(a.shape[1], dtype=np.int64)
-        s.free = np.ones(a.shape[1], dtype=np.bool_)  # configuration checking: may be added
-        s.short = np.zeros(a.shape[0], dtype=np.int64)
-        s.where = -np.ones(a.shape[0], dtype=np.int64)
-        rows = np.flatnonzero(short)
-        s.short[: len(rows)] = rows
-        s.where[rows] = np.arange(len(rows))
-        s.n_short = np.array([len(rows)], dtype=np.int64)
-        return s
+def _start(a: sp.csr_matrix, at: sp.csr_matrix, d: np.ndarray, x: np.ndarray) -> tuple:
+    """The search's arrays, which numba works on in place: the columns chosen, every row's
+    cover and weight, every column's score, time stamp and whether it may be added
+    (configuration checking), the rows short of their demand (a list, each row's place in
+    it, and their count)."""
+    cov = np.asarray(a @ x.astype(np.int64)).ravel().astype(np.int64)
+    w = np.ones(a.shape[0], dtype=np.int64)
+    rows = np.flatnonzero(cov < d)
+    short = np.zeros(a.shape[0], dtype=np.int64)
+    where = -np.ones(a.shape[0], dtype=np.int64)
+    short[: len(rows)] = rows
+    where[rows] = np.arange(len(rows))
+    x = x.copy()
+    stamp = np.zeros(a.shape[1], dtype=np.int64)
+    free = np.ones(a.shape[1], dtype=np.bool_)
+    n_short = np.array([len(rows)], dtype=np.int64)
+    return x, cov, w, _scores(a, at, d, x, cov, w), stamp, free, short, where, n_short
 
 
 def _scores(a, at, d, x, cov, w) -> np.ndarray:
@@ -213,7 +202,7 @@ def _run(
                 n_best = n_x
             j = _drop_best(x, score, stamp, -1)
             if j < 0:
-                return (n_best, n_short[0])
+                return
             _flip(j, ap, ai, tp, ti, d, x, cov, w, score, free, short, where, n_short)
             stamp[j] = t
         j = _drop_best(x, score, stamp, added)
@@ -251,4 +240,3 @@ def _run(
                         score[c] -= 1
                 elif cov[r] < d[r]:
                     score[c] += 1
-    return (n_best, n_short[0])
