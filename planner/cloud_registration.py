@@ -8,17 +8,28 @@ Carlo of simulated scans registered by an independent point-to-plane ICP in
 ``tests/test_cloud_registration.py``.
 
 **Patches.** The surfaces two stations both see are cut into small patches (a facade
-sample's cell, a ground cell), each a plane through ``p`` with unit normal ``n``. Station j
-puts ``n_j`` points on it (:func:`patch_points`), each with RMS ``σ_j`` along the normal
-(the accuracy model's error across the surface), so the patch's position along its normal
-in scan j is known to
+sample's cell, a ground cell), each a plane through ``p`` with unit normal ``n``. A
+registration does not use the scans as they are: registration software thins them to an
+even spacing first (:data:`DEFAULT_CLOUD_SPACING_MM`) and fits each point's local plane to
+its nearest neighbours (:data:`LINK_NEIGHBOURS`). So station j's points on a patch are
+those of its scan step at that range, spread along the beam by the incidence and thinned
+to the even spacing (:func:`registration_spacing`, :func:`registration_points`); a patch
+counts only where those neighbourhoods span the surface in two directions — at grazing
+incidence the points lie in lines whose neighbourhoods are lines, not planes — and the
+incidence is at most :data:`MAX_LINK_INCIDENCE_DEG`. Each point has RMS ``σ_j`` along the
+normal (the accuracy model's error across the surface), so the patch's position along its
+normal in scan j is known to
 
 .. math::
 
-    v_j = \sigma_j^2 / n_j + \sigma_\mathrm{floor}^2 ,
+    v_j = \sigma_j^2 / n_j + \sigma_\mathrm{floor}^2 / u ,
 
-the floor being what a plane fit does not see (roughness, edges, the range's calibration
-at that incidence): 1 mm unless given (:func:`patch_variance_mm2`).
+the floor being the surface's own error in one scan that no number of points averages away
+(roughness, edges, ranging biases with incidence and material, the scanner's calibration):
+1 mm unless given, independent from one cell of :data:`FLOOR_CELL_M` to the next, so a
+patch of area A holds ``u = A / FLOOR_CELL_M²`` of them (:func:`patch_variance_mm2`,
+:func:`floor_units`). The prediction so does not depend on how finely the planner cuts the
+walls into samples: halving a patch halves both its points and its floor's cells.
 
 **Point-to-plane normal equations.** Registering scan j to scan i moves j's points by
 ``δs + δω × r`` (r = p − s_j); a patch's point-to-plane residual changes by
@@ -57,21 +68,30 @@ stated **parametric facade** (:func:`relief_areas`): windows of :data:`WINDOW_WI
 15–35 %), set :data:`DEFAULT_REVEAL_DEPTH_M` behind its face. Each facade patch then
 carries three relief patches: the two jambs (normals ±along the wall) and the head
 (normal down). A scan sees a jamb only from the side it faces, to the depth the
-opening's width lets it see (:func:`reveal_visible`), less its edge with the wall, where
-an ICP's local planes straddle two faces (:func:`edge_free_share`); so two scans share a
-jamb only where both stand on the same side of it — a pair in front of one long wall is
-tied along it by the windows beyond both, not by those between them. Sills (normal up)
-are seen only from above and are left out; a plain wall (``window_share=0``, a curtain
-wall, a blank gable) gets no relief. The relief adds no overlap (registration software
-counts overlap on the wall's own surface). A relief patch's plane carries a floor of its
-own (the reveal is only a few point spacings deep; its local planes tilt), measured
-against an independent ICP in ``tests/test_relief.py``.
+opening's width lets it see (:func:`reveal_visible`); it counts only where that depth holds
+:data:`MIN_POINTS_ACROSS` rows of the thinned cloud, less the row along its edge with the
+wall, whose neighbourhoods straddle the two faces. So two scans share a jamb only where
+both stand on the same side of it — a pair in front of one long wall is tied along it by
+the windows beyond both, not by those between them — and a reveal shallower than a few
+registration spacings ties nothing. Sills (normal up) are seen only from above and are left
+out; a plain wall
+(``window_share=0``, a curtain wall, a blank gable) gets no relief. The relief adds no
+overlap (registration software counts overlap on the wall's own surface). A reveal's floor
+is per opening (:data:`planner.pipeline.network.clouds.RELIEF_FLOOR_MM`: a reveal only a
+few point spacings deep tilts its local planes).
 
 **Overlap.** Registration software reports a link's overlap as the share of a scan that
 lies on surfaces the other scan also holds, counted on clouds thinned to an even spacing —
 by surface area, not by raw points (which crowd near the scanner); :func:`overlap_pct`
-takes the smaller of the two shares (on the modelled surfaces: the planned facades and the
-ground near the stations).
+takes the smaller of the two shares, on the patches the registration can use (the
+planned facades, and the ground near the stations seen at no more than
+:data:`MAX_LINK_INCIDENCE_DEG`).
+
+**Where it starts.** An ICP converges from where the scans are pre-aligned (the scanner's
+own tracking, or the operator's picking: :attr:`planner.scanner.Scanner.start_error`) and
+stays there along a direction its surfaces do not fix: the start's error is the link's
+prior (:func:`start_information`). Whether it gets there at all — the basin — is what the
+plan's rehearsal of each link checks (:mod:`planner.pipeline.network.linkcheck`).
 """
 
 from __future__ import annotations
@@ -83,30 +103,56 @@ from planner.units import RHO_ARCSEC
 
 __all__ = [
     "DEFAULT_CLOUD_FLOOR_MM",
+    "DEFAULT_CLOUD_SPACING_MM",
     "DEFAULT_MIN_OVERLAP_PCT",
     "DEFAULT_REVEAL_DEPTH_M",
     "DEFAULT_WINDOW_SHARE",
+    "FLOOR_CELL_M",
+    "LINK_NEIGHBOURS",
+    "MAX_LINK_INCIDENCE_DEG",
+    "MIN_POINTS_ACROSS",
     "SILL_M",
     "STOREY_M",
     "WINDOW_HEIGHT_M",
     "WINDOW_WIDTH_M",
     "bay_width_m",
-    "edge_free_share",
+    "floor_units",
     "link_covariance",
     "link_information",
     "link_strength",
     "overlap_pct",
-    "patch_points",
     "patch_variance_mm2",
     "plane_rows",
+    "registration_points",
+    "registration_spacing",
     "relief_areas",
     "relief_words",
     "reveal_visible",
+    "start_information",
     "weakest_direction",
 ]
 
-#: What a patch's plane fit does not see (roughness, edges, calibration) [mm].
+#: What a patch's plane fit does not see (roughness, edges, calibration) [mm], per cell of
+#: :data:`FLOOR_CELL_M` and scan.
 DEFAULT_CLOUD_FLOOR_MM = 1.0
+#: The floor is independent from one cell of this side to the next [m].
+FLOOR_CELL_M = 2.0
+#: The even spacing registration software thins the clouds to before a cloud-to-cloud
+#: registration [mm]. CloudCompare's ICP samples at most 50 000 points of a cloud by
+#: default (CloudCompare user manual, "Fine registration (ICP)": its random sampling
+#: limit); over the 500–1 000 m² two neighbouring scans of buildings share, that is a
+#: spacing of 10–14 cm. Cyclone REGISTER 360 and SCENE state none; 100 mm is assumed
+#: (``--cloud-spacing-mm``: a finer spacing uses shallower relief, and its check is longer).
+DEFAULT_CLOUD_SPACING_MM = 100.0
+#: A patch seen at a larger incidence gives a registration nothing [°].
+MAX_LINK_INCIDENCE_DEG = 85.0
+#: The neighbours of a point's local plane (small_gicp's default, 10): a patch whose
+#: thinned points lie in lines farther apart than a neighbourhood reaches gives lines, not
+#: planes.
+LINK_NEIGHBOURS = 10
+#: Rows of points across the depth of a reveal it shows it needs to be a plane to a
+#: registration (the row at its edge with the wall is not one).
+MIN_POINTS_ACROSS = 2.0
 #: The overlap registration software asks of a cloud-to-cloud link [%] (Autodesk ReCap's
 #: registration report: balance above 20 %).
 DEFAULT_MIN_OVERLAP_PCT = 20.0
@@ -135,8 +181,6 @@ def bay_width_m(window_share: float) -> float:
     return WINDOW_WIDTH_M * WINDOW_HEIGHT_M / window_share / STOREY_M
 
 
-#: Point spacings from an edge within which an ICP's local plane straddles two faces.
-EDGE_SPACINGS = 2.0
 #: Lever at which a rotation's error is compared with a shift's [m] (weakest direction).
 LEVER_M = 10.0
 
@@ -207,48 +251,89 @@ def reveal_visible(
         return np.minimum(1.0, width_m / (reveal_depth_m * np.abs(tan_side)))
 
 
-def edge_free_share(spacing_mm: np.ndarray, depth_m: float) -> np.ndarray:
-    """The share of a reveal's depth ``depth_m`` whose points an ICP can use: a point's
-    normal comes from its nearest neighbours (about ten, within some
-    :data:`EDGE_SPACINGS` point spacings ``spacing_mm``; Rusinkiewicz & Levoy 2001), so the
-    points that close to the reveal's edge with the wall lie on no one plane.
+def registration_spacing(
+    spacing_mm: ArrayLike, cos_incidence: ArrayLike, even_mm: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """The spacing [mm] of a scan's points on a surface as a registration uses them, along
+    the beam's trace and across it: the scan's spacing square to the beam ``spacing_mm``,
+    stretched along the trace by 1 / cos θ, and never finer than the even spacing the
+    software thins to (``even_mm``).
 
-    >>> edge_free_share(np.array([10.0, 50.0, 80.0]), 0.15).round(3).tolist()
-    [0.867, 0.333, 0.0]
+    >>> [float(v) for v in registration_spacing(20.0, 0.1, 100.0)]
+    [200.0, 100.0]
     """
-    return np.clip(1.0 - EDGE_SPACINGS * np.asarray(spacing_mm) / (depth_m * 1000.0), 0.0, 1.0)
+    d = np.asarray(spacing_mm, dtype=float)
+    cos = np.clip(np.asarray(cos_incidence, dtype=float), 1e-9, 1.0)
+    return np.maximum(d / cos, even_mm), np.maximum(d, even_mm)
 
 
-def patch_points(
-    area_m2: np.ndarray, cos_incidence: np.ndarray, spacing_mm: np.ndarray
+def registration_points(
+    area_m2: ArrayLike, cos_incidence: ArrayLike, spacing_mm: ArrayLike, even_mm: float
 ) -> np.ndarray:
-    """Scan points on a patch of ``area_m2`` seen at incidence θ with point spacing
-    ``spacing_mm`` square to the beam: ``A·cos θ / d²``, at least 1.
+    """The points a registration uses on a patch of ``area_m2`` seen at incidence θ with the
+    scan's spacing ``spacing_mm`` square to the beam, thinned to ``even_mm`` (module
+    docstring): ``A / (along · across)``, at least 1 — and 0 where θ exceeds
+    :data:`MAX_LINK_INCIDENCE_DEG` or the points lie in lines farther apart than their
+    neighbourhoods reach (along > K / π × across, K the neighbours).
 
     Examples
     --------
-    >>> float(patch_points(4.0, 1.0, 10.0))  # 2 m × 2 m at 10 mm spacing
-    40000.0
+    A 2 m × 2 m patch: square to the beam, at 80° with a fine scan, at 80° with a coarse one.
+
+    >>> registration_points(4.0, [1.0, 0.17, 0.17], [10.0, 10.0, 60.0], 100.0).round(1).tolist()
+    [400.0, 400.0, 0.0]
     """
-    a = np.asarray(area_m2, dtype=float) * 1e6
-    cos = np.clip(np.asarray(cos_incidence, dtype=float), 0.0, 1.0)
-    return np.maximum(a * cos / np.square(np.asarray(spacing_mm, dtype=float)), 1.0)
+    cos = np.asarray(cos_incidence, dtype=float)
+    along, across = registration_spacing(spacing_mm, cos, even_mm)
+    pts = np.maximum(np.asarray(area_m2, dtype=float) * 1e6 / (along * across), 1.0)
+    usable = (cos >= np.cos(np.radians(MAX_LINK_INCIDENCE_DEG))) & (
+        along <= LINK_NEIGHBOURS / np.pi * across
+    )
+    return np.where(usable, pts, 0.0)
+
+
+def floor_units(area_m2: ArrayLike) -> np.ndarray:
+    """How many independent cells of the floor (:data:`FLOOR_CELL_M`) a patch of
+    ``area_m2`` holds.
+
+    >>> float(floor_units(1.0))
+    0.25
+    """
+    return np.asarray(area_m2, dtype=float) / FLOOR_CELL_M**2
 
 
 def patch_variance_mm2(
-    normal_rms_mm: np.ndarray,
-    n_points: np.ndarray,
+    normal_rms_mm: ArrayLike,
+    n_points: ArrayLike,
     floor_mm: float | np.ndarray = DEFAULT_CLOUD_FLOOR_MM,
+    units: ArrayLike = 1.0,
 ) -> np.ndarray:
-    """Variance [mm²] of a patch's position along its normal in one scan: ``σ²/n + floor²``.
+    """Variance [mm²] of a patch's position along its normal in one scan: ``σ²/n`` of its
+    points plus its floor's ``floor² / u`` over its ``units`` independent cells.
 
     Examples
     --------
     >>> float(patch_variance_mm2(3.0, 9.0, 1.0))
     2.0
+    >>> float(patch_variance_mm2(3.0, 9.0, 1.0, units=4.0))
+    1.25
     """
     sigma = np.asarray(normal_rms_mm, dtype=float)
-    return np.square(sigma) / np.asarray(n_points, dtype=float) + floor_mm**2
+    floor2 = np.square(floor_mm) / np.asarray(units, dtype=float)
+    return np.square(sigma) / np.asarray(n_points, dtype=float) + floor2
+
+
+def start_information(start_error: tuple[float, float, float]) -> np.ndarray:
+    """The prior (6, 6) a link's start puts on its estimate (mm, rad): the inverse of the
+    pre-alignment's variance per parameter, ``start_error`` = (position per axis [mm],
+    heading [″], tilt per axis [″]) (:attr:`planner.scanner.Scanner.start_error`).
+
+    >>> [f"{v:.3g}" for v in np.diag(start_information((30.0, 360.0, 20.0)))]
+    ['0.00111', '0.00111', '0.00111', '1.06e+08', '1.06e+08', '3.28e+05']
+    """
+    pos, head, tilt = start_error
+    rad = np.array([tilt, tilt, head]) / RHO_ARCSEC
+    return np.diag(np.concatenate([np.full(3, 1.0 / pos**2), 1.0 / rad**2]))
 
 
 def link_information(

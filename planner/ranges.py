@@ -114,6 +114,8 @@ RANGES: dict[str, Range] = {
     "beam_exit_mm": Range(0.01, 1000.0, "mm"),
     "imaging_s": Range(0.0, 86_400.0, "s"),
     "setup_min": Range(0.0, 1440.0, "min", open_lo=True),
+    "start_position_mm": Range(0.0, 10_000.0, "mm", open_lo=True),
+    "start_heading_arcsec": Range(0.0, 648_000.0, "arc-seconds", open_lo=True),
     "scan_s": Range(1.0, 86_400.0, "s"),
     "reflectance": Range(0.0, 1.0, "fraction of 1", open_lo=True),  # a surface's, 0–1
     "ranging_exponent": Range(0.0, 3.0, ""),  # k of m_S ∝ q^(−k); 0: no signal dependence

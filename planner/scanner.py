@@ -52,6 +52,14 @@ __all__ = [
 #: The scanner of Voroshilov & Karachentsev's worked example (m_S = 4 mm, 60 µrad): the
 #: default everywhere a scanner is not given (CLI, dashboard, report, ``plan()``).
 DEFAULT_SCANNER = "leica-4mm-60urad"
+#: Where a cloud-to-cloud registration starts when the scanner gives no pre-alignment: the
+#: operator picks three or more pairs of common points on the two clouds (REGISTER 360's,
+#: SCENE's and CloudCompare's manual alignment), each off by about the clouds' spacing and
+#: the eye's judgement at 10–30 m. Assumed: 30 mm per axis and 0.1° (360″) of heading
+#: (30 mm over a 20 m spread of picks); the basin each link is checked for
+#: (:mod:`planner.pipeline.network.linkcheck`) is 3 × these.
+MANUAL_START_POSITION_MM = 30.0
+MANUAL_START_HEADING_ARCSEC = 360.0
 
 
 @dataclass(frozen=True)
@@ -131,6 +139,15 @@ class Scanner:
         Full-angle beam divergence [mrad] (the beam's growth with distance).
     beam_exit_mm : float or None
         Beam diameter at the exit window [mm].
+    prealign : "vis" or None
+        What the scanner gives between set-ups for the registration to start from: "vis",
+        its own tracking of the walk from one set-up to the next (Leica's visual-inertial
+        system, VIS), which pre-aligns each scan to the one before it; None: nothing — the
+        operator pre-aligns each pair in the software by picking common points (the cloud
+        links start from :data:`MANUAL_START_POSITION_MM`, :data:`MANUAL_START_HEADING_ARCSEC`).
+    prealign_position_mm, prealign_heading_arcsec : float or None
+        The pre-alignment's error, per horizontal axis and of the heading [mm, ″], where the
+        profile states one (:attr:`start_error`).
     registration : "targets", "cloud", "hybrid" or None
         How scans of this scanner are usually registered (e.g. cloud to cloud for a
         scanner whose software registers by its own tracking and the clouds); None:
@@ -183,6 +200,9 @@ class Scanner:
     tilt_sensor_rms_arcsec: float | None = None
     beam_divergence_mrad: float | None = None
     beam_exit_mm: float | None = None
+    prealign: str | None = None
+    prealign_position_mm: float | None = None
+    prealign_heading_arcsec: float | None = None
     registration: str | None = None
     presets: tuple[Preset, ...] = ()
     default_preset: str | None = None
@@ -226,6 +246,8 @@ class Scanner:
             "range_reflectance": "reflectance",
             "dark_range_m": "max_range_m",
             "dark_reflectance": "reflectance",
+            "prealign_position_mm": "start_position_mm",
+            "prealign_heading_arcsec": "start_heading_arcsec",
         }
         for name, rng in [*figures.items(), *optional.items()]:
             if name in figures or getattr(self, name) is not None:
@@ -251,6 +273,11 @@ class Scanner:
         if self.registration not in (None, "targets", "cloud", "hybrid"):
             raise InputError(
                 f"{who}: registration must be targets, cloud or hybrid; got {self.registration!r}"
+            )
+        if self.prealign not in (None, "vis"):
+            raise InputError(
+                f"{who}: prealign must be vis (the scanner tracks its walk between set-ups) "
+                f"or left out (the operator picks common points); got {self.prealign!r}"
             )
         presets = tuple(
             p if isinstance(p, Preset) else Preset(**_preset_table(p, who)) for p in self.presets
@@ -310,6 +337,22 @@ class Scanner:
         (:func:`planner.registration_error.datum_tilt_cov`)."""
         v = self.tilt_sensor_rms_arcsec
         return self.initial_tilt_rms_arcsec if v is None or self.is_levelled else v
+
+    @property
+    def start_error(self) -> tuple[float, float, float]:
+        """Where a cloud-to-cloud registration of two of its scans starts: the RMS of the
+        child's position per axis [mm], of its heading and of its tilt per axis [″] relative
+        to its parent. Position and heading: the pre-alignment's figures where the profile
+        states them, else an operator's picking (:data:`MANUAL_START_POSITION_MM`,
+        :data:`MANUAL_START_HEADING_ARCSEC`); tilt: what levels one scan
+        (:attr:`datum_tilt_rms_arcsec`), for both scans."""
+        pos = self.prealign_position_mm
+        head = self.prealign_heading_arcsec
+        return (
+            MANUAL_START_POSITION_MM if pos is None else pos,
+            MANUAL_START_HEADING_ARCSEC if head is None else head,
+            math.sqrt(2.0) * self.datum_tilt_rms_arcsec,
+        )
 
     @property
     def is_levelled(self) -> bool:

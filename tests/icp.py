@@ -65,10 +65,24 @@ def patches_of(scan, other_position: np.ndarray) -> np.ndarray:
     return wall | (ground & near)
 
 
+def thin(points: np.ndarray, spacing_m: float) -> np.ndarray:
+    """The cloud thinned to an even spacing, as registration software thins it: the mean of
+    the points in each cube of ``spacing_m`` (none: ``spacing_m`` ≤ 1 mm)."""
+    if spacing_m <= 0.001:
+        return points
+    cell = np.floor((points - points.min(axis=0)) / spacing_m).astype(np.int64)
+    _, inverse, counts = np.unique(cell, axis=0, return_inverse=True, return_counts=True)
+    sums = np.zeros((len(counts), 3))
+    np.add.at(sums, inverse.ravel(), points)
+    return sums / counts[:, None]
+
+
 def link_errors(plan, parent: str, child: str, trials: int, *, noise: bool = True) -> np.ndarray:
     """(trials, 6) errors of the child's pose registered to the parent's by :func:`icp`,
-    each trial a new rehearsal of the two scans (seed 100 + trial) at the plan's step."""
+    each trial a new rehearsal of the two scans (seed 100 + trial) at the plan's step, the
+    clouds thinned to the plan's registration spacing (:func:`thin`)."""
     out = np.empty((trials, 6))
+    spacing = plan.settings.cloud_spacing_mm / 1000.0
     for k in range(trials):
         r = rehearse(
             plan, beams_per_station=10**8, seed=100 + k, stations=[parent, child], noise=noise
@@ -76,5 +90,5 @@ def link_errors(plan, parent: str, child: str, trials: int, *, noise: bool = Tru
         by = {s.station_id: s for s in r.scans}
         a, b = by[parent], by[child]
         pa, pb = patches_of(a, b.position), patches_of(b, a.position)
-        out[k] = icp(a.world_xyz[pa], b.world_xyz[pb], b.position)
+        out[k] = icp(thin(a.world_xyz[pa], spacing), thin(b.world_xyz[pb], spacing), b.position)
     return out

@@ -22,9 +22,9 @@ from planner.site import Building, Site
 SCANNER = Scanner.from_name("leica-4mm-60urad")
 
 
-def _surfaces(site: Site, station_xy: np.ndarray, window_share: float = 0.0):
+def _surfaces(site: Site, station_xy: np.ndarray, window_share: float = 0.0, **settings):
     """The patches the stations see (plain walls unless ``window_share`` is given)."""
-    st = PlanSettings(registration="cloud", window_share=window_share)
+    st = PlanSettings(registration="cloud", window_share=window_share, **settings)
     fac = build_facades(site, st.sample_spacing_m, st.sample_height_step_m)
     ctx = Context.build(site, fac, SCANNER, Requirements(), st, 120.0)
     return ctx, clouds.surfaces(ctx, np.asarray(station_xy, dtype=float) + np.array([E0, N0]))
@@ -32,23 +32,46 @@ def _surfaces(site: Site, station_xy: np.ndarray, window_share: float = 0.0):
 
 def test_a_straight_street_leaves_the_shift_along_it_free_and_a_corner_fixes_it():
     """Two stations 20 m apart in front of a 120 m terrace (its south wall and the street):
-    the link overlaps well but is free east-west; two stations at its end that both see the
-    end wall too are fixed — the terrace's far wall, seen from its end at a grazing incidence,
-    is beyond the scanner's reach at that incidence (planner.signal) and adds nothing."""
+    the link overlaps well but is free east-west (its start, the operator's picking, then
+    holds it: 30 mm); two stations at its end that both see the end wall too are fixed — the
+    terrace's far wall, seen from its end at a grazing incidence, is beyond the scanner's
+    reach at that incidence (planner.signal) and adds nothing. The windows' 150 mm reveals
+    tie the pair along the street only where the registration thins the clouds finely
+    enough to see them as planes (20 mm), not at the default 100 mm."""
     site = Site([Building("row", rect(0, 0, 120, 12), 15.0)])
     ctx, surf = _surfaces(site, [[40, -8], [60, -8], [125, -6], [132, -12]])
     along = clouds.cloud_link(ctx, surf, 0, 1)
     assert along.overlap_pct > 40.0  # %
     assert not along.fixed and along.weakest == "free: shift 090°/270° (east-west)"
+    assert np.sqrt(along.cov[0, 0]) == pytest.approx(30.0, abs=0.1)  # mm: where it started
     corner = clouds.cloud_link(ctx, surf, 2, 3)
     assert corner.fixed
     sd = np.sqrt(np.diag(corner.cov))
-    assert sd[:3] == pytest.approx([0.28, 0.34, 0.08], abs=0.02)  # mm
-    # with windows (the parametric facade) the reveals beyond both stations tie the pair
-    # along the street
-    ctx, surf = _surfaces(site, [[40, -8], [60, -8]], window_share=0.25)
+    assert sd[:3] == pytest.approx([0.30, 0.36, 0.14], abs=0.02)  # mm
+    # with windows (the parametric facade): the reveals beyond both stations tie the pair
+    # along the street on clouds thinned to 20 mm, not to 100 mm
+    ctx, surf = _surfaces(site, [[40, -8], [60, -8]], window_share=0.25, cloud_spacing_mm=20.0)
     along = clouds.cloud_link(ctx, surf, 0, 1)
     assert along.fixed and np.sqrt(along.cov[0, 0]) < 1.0  # mm east-west
+    ctx, surf = _surfaces(site, [[40, -8], [60, -8]], window_share=0.25)
+    assert not clouds.cloud_link(ctx, surf, 0, 1).fixed
+
+
+@pytest.mark.parametrize("pair", [[[20, 20], [15, 25]], [[38, -8], [34, -12]]])
+def test_the_prediction_does_not_move_with_the_planners_sampling(pair):
+    """A link between two set-ups at a corner of the L (its inner corner, its outer one)
+    predicts the same error whether the planner cuts the walls into samples of 1, 2 or
+    3 m: the points and the floor's cells of a patch both scale with its area."""
+    from sites import l_site
+
+    sd = []
+    for m in (1.0, 2.0, 3.0):
+        ctx, surf = _surfaces(l_site(), pair, sample_spacing_m=m, sample_height_step_m=m)
+        link = clouds.cloud_link(ctx, surf, 0, 1)
+        assert link.fixed
+        sd.append(np.sqrt(np.diag(link.cov)[:3]))
+    np.testing.assert_allclose(sd[0], sd[2], rtol=0.10)  # mm
+    np.testing.assert_allclose(sd[1], sd[2], rtol=0.10)  # mm
 
 
 def test_the_overlap_counts_surface_not_points():
@@ -80,8 +103,16 @@ def test_the_overlap_counts_surface_not_points():
 
 @pytest.fixture(scope="module")
 def modes():
-    out = {m: plan(settings=PlanSettings(registration=m)) for m in ("targets", "cloud", "hybrid")}
-    out["plain"] = plan(settings=PlanSettings(registration="cloud", window_share=0.0))
+    """The default site in each mode, its cloud links by the model alone (their rehearsal
+    is tested in tests/test_linkcheck.py); "fine": cloud to cloud on clouds thinned to
+    20 mm, "plain": plain walls."""
+    model = {"link_check": "model"}
+    out = {
+        m: plan(settings=PlanSettings(registration=m, **model))
+        for m in ("targets", "cloud", "hybrid")
+    }
+    out["fine"] = plan(settings=PlanSettings(registration="cloud", cloud_spacing_mm=20.0, **model))
+    out["plain"] = plan(settings=PlanSettings(registration="cloud", window_share=0.0, **model))
     return out
 
 
@@ -101,9 +132,10 @@ def test_hybrid_meets_the_default_site_with_fewer_targets(modes):
 def test_cloud_alone_on_plain_walls_says_which_stations_it_cannot_tie_and_why(modes):
     """Planned as plain planes (--window-share 0), the default building's walls are
     straight: most pairs of stations share one wall and the ground, which leave the shift
-    along the wall free; the plan says so and how to fix it (no targets are placed). With
-    the parametric facade's reveals the same site is one network meeting every sample, and
-    the plan says what it assumed of the walls."""
+    along the wall free; the plan says so and how to fix it (no targets are placed). So do
+    the walls with the parametric facade's reveals on clouds thinned to 100 mm (the reveals
+    too shallow to be planes at that spacing); on clouds thinned to 20 mm the same site is
+    one network meeting every sample, and the plan says what it assumed of the walls."""
     c = modes["plain"]
     assert len(c.targets) == 0
     assert (c.links["kind"] == "cloud").all()
@@ -111,7 +143,8 @@ def test_cloud_alone_on_plain_walls_says_which_stations_it_cannot_tie_and_why(mo
     assert "leave a direction free" in msg and "--registration hybrid" in msg
     assert not c.meets_all
     assert any("Cloud links count the walls as plain planes" in m for m in c.messages)
-    r = modes["cloud"]
+    assert not modes["cloud"].meets_all
+    r = modes["fine"]
     assert r.meets_all and len(r.targets) == 0
     assert any("form one registration network" in m for m in r.messages)
     assert any("openings of 1.2 × 1.5 m on 25% of the wall, 150 mm deep" in m for m in r.messages)

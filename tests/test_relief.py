@@ -116,6 +116,7 @@ def _model_link(window_share: float) -> clouds.CloudLink:
     st = PlanSettings(
         registration="cloud", window_share=window_share,
         step_mm_at_10m=10_000 * np.tan(np.radians(STEP_DEG)),
+        cloud_spacing_mm=1.0,  # the ICP here takes the clouds unthinned
     )  # fmt: skip
     fac = build_facades(site, st.sample_spacing_m, st.sample_height_step_m)
     ctx = Context.build(site, fac, SCANNER, Requirements(), st, 60.0)

@@ -293,14 +293,7 @@ def _setting_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
 def _model_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
     """The optimiser, the accuracy model and the registration."""
     from planner.materials import CONDITIONS
-    from planner.pipeline.inputs.requirements import (
-        HEIGHT_CONTROL,
-        METHODS,
-        MODELS,
-        REGISTRATION_MODES,
-        REGISTRATION_PROCESSING,
-        TILT_READINGS,
-    )
+    from planner.pipeline.inputs.requirements import METHODS, MODELS
 
     group["solver"].add_argument(
         "--method", choices=METHODS, default=None, help="station optimiser"
@@ -334,7 +327,20 @@ def _model_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
         help="the material of walls no site, model or zone names (default: the scanner "
         "datasheet's reference surface, the figures as published)",
     )
-    group["registration"].add_argument(
+    _registration_arguments(group["registration"])
+
+
+def _registration_arguments(group: argparse._ArgumentGroup) -> None:
+    """How the scans are registered and what the registration assumes."""
+    from planner.pipeline.inputs.requirements import (
+        HEIGHT_CONTROL,
+        LINK_CHECKS,
+        REGISTRATION_MODES,
+        REGISTRATION_PROCESSING,
+        TILT_READINGS,
+    )
+
+    group.add_argument(
         "--registration",
         choices=REGISTRATION_MODES,
         default=None,
@@ -342,7 +348,7 @@ def _model_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
         "the scans share), hybrid (cloud links, targets where a link is weak), or auto: the "
         "scanner profile's usual workflow, else targets (default)",
     )
-    group["registration"].add_argument(
+    group.add_argument(
         "--registration-processing",
         choices=REGISTRATION_PROCESSING,
         default=None,
@@ -350,13 +356,21 @@ def _model_arguments(group: dict[str, argparse._ArgumentGroup]) -> None:
         + "; or ".join(f"{k}, {v}" for k, v in REGISTRATION_PROCESSING.items())
         + " (default adjustment)",
     )
-    group["registration"].add_argument(
+    group.add_argument(
+        "--link-check",
+        choices=LINK_CHECKS,
+        default=None,
+        help="how the plan checks each cloud-to-cloud link it relies on: "
+        + "; or ".join(f"{k}, {v}" for k, v in LINK_CHECKS.items()).replace("%", "%%")
+        + " (default rehearse)",
+    )
+    group.add_argument(
         "--height-control",
         choices=HEIGHT_CONTROL,
         default=None,
         help="; or ".join(f"{k}: {v}" for k, v in HEIGHT_CONTROL.items()) + " (default level)",
     )
-    group["registration"].add_argument(
+    group.add_argument(
         "--tilt-readings",
         choices=TILT_READINGS,
         default=None,

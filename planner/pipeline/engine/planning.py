@@ -39,7 +39,7 @@ from planner.pipeline.engine.judge import (
 )
 from planner.pipeline.engine.levelrun import level_run, say_level_run
 from planner.pipeline.engine.result import Plan, SolverReport
-from planner.pipeline.engine.tables import budget_message
+from planner.pipeline.engine.tables import budget_message, rehearsal_message
 from planner.pipeline.evaluation.diagnosis import Diagnosis, diagnose
 from planner.pipeline.evaluation.evaluate import (
     CandidateEvaluation,
@@ -292,16 +292,17 @@ def choose_stations(
     r = Round(cover=cover, net=round_network(ctx, cand, seen, cover, clock))
     r.judged = judge(ctx, cand, r)
     r, rounds = _registration_rounds(ctx, cand, seen, r, forced, ev, clock, say, cut)
-    untried = 0
-    if st.computes_registration and r.net is not None:
-        r = prune(ctx, cand, seen, r, clock, keep=forced)
-        r, untried = merge_close_stations(ctx, cand, seen, r, clock, keep=forced)
+    r, rounds, untried, rehearsal = _last_rounds(
+        ctx, cand, seen, r, forced, ev, clock, say, cut, rounds
+    )
     if any(n.cut_short for n in (r.net,) if n is not None):
         cut.append("the search for linking stations")
     n_locked = len(forced) - len(best_effort)
     messages = _choice_messages(wb, r, sol, cut, n_locked, len(best_effort), relaxed_by, rounds)
     if not_kept:
         messages.append(f"Not kept from the plan before: {'; '.join(not_kept)}.")
+    if rehearsal:
+        messages.append(rehearsal)
     solver = _solver_report(sol, rounds, cut, fac.party_wall, ev.evaluated)
     solver.spacing_untried = untried
     hand = np.setdiff1d(forced, best_effort)
@@ -367,7 +368,46 @@ def _still_standing(
     return xy[~bad], [i for i, b in zip(ids, bad, strict=True) if not b], said
 
 
-def _registration_rounds(
+def _last_rounds(
+    ctx: Context,
+    cand: np.ndarray,
+    seen: SightCache,
+    r: Round,
+    forced: np.ndarray,
+    ev: CandidateEvaluation,
+    clock: Clock,
+    say: Progress,
+    cut: list[str],
+    rounds: int,
+) -> tuple[Round, int, int, str]:
+    """After the registration rounds: redundant stations pruned, close ones merged, then the
+    cloud links rehearsed (:func:`_rehearsed`). The round, the rounds in all, the pairs the
+    spacing rule left untried and what the rehearsal found, in words ("" none)."""
+    untried, words = 0, ""
+    if ctx.settings.computes_registration and r.net is not None:
+        r = prune(ctx, cand, seen, r, clock, keep=forced)
+        r, untried = merge_close_stations(ctx, cand, seen, r, clock, keep=forced)
+    if _rehearses(ctx, r):
+        say(0.9, "registration: rehearsing the cloud links")
+        r, more = _rehearsed(ctx, cand, seen, r, forced, ev, clock, say, cut)
+        rounds += more
+        words = rehearsal_message(r.net, seen.clouds.checks, ctx) if r.net is not None else ""
+    return r, rounds, untried, words
+
+
+def _rehearses(ctx: Context, r: Round) -> bool:
+    """Whether the plan rehearses its cloud links (``link_check`` "rehearse", a network
+    with cloud links to check)."""
+    st = ctx.settings
+    return bool(
+        st.computes_registration
+        and st.link_check == "rehearse"
+        and r.net is not None
+        and any(lk.info is not None for lk in r.net.links)
+    )
+
+
+def _rehearsed(
     ctx: Context,
     cand: np.ndarray,
     seen: SightCache,
@@ -378,16 +418,46 @@ def _registration_rounds(
     say: Progress,
     cut: list[str],
 ) -> tuple[Round, int]:
+    """The stations chosen, their network made again with every cloud link rehearsed
+    (:mod:`planner.pipeline.network.linkcheck`: a link that fails is no link, one weaker
+    than the model says is taken at the rehearsal's error) and judged; then, while the
+    rehearsed registration keeps samples short, stations added for them (at most
+    :data:`REHEARSED_ROUNDS` rounds, every new link rehearsed), redundant ones pruned. The
+    round and its number of rounds. The rounds before were judged on the model's links, so
+    none of them is compared with these."""
+    seen.clouds.rehearsing = True
+    again = Round(cover=r.cover, added=r.added)
+    again.net = round_network(ctx, cand, seen, r.net.stations, clock, r.net.datum_station)
+    again.judged = judge(ctx, cand, again)
+    again, rounds = _registration_rounds(
+        ctx, cand, seen, again, forced, ev, clock, say, cut, limit=REHEARSED_ROUNDS
+    )
+    again = prune(ctx, cand, seen, again, clock, keep=forced)
+    return again, rounds + 1
+
+
+def _registration_rounds(
+    ctx: Context,
+    cand: np.ndarray,
+    seen: SightCache,
+    r: Round,
+    forced: np.ndarray,
+    ev: CandidateEvaluation,
+    clock: Clock,
+    say: Progress,
+    cut: list[str],
+    limit: int | None = None,
+) -> tuple[Round, int]:
     """Stations and registration chosen together (docs/science.md): while the registration
     keeps samples short, stations are added that meet them with the registration error they
     would have (estimated from the network) and the network is built and judged again (once,
     first, a datum nearer the middle is tried); once none is short, the fewest stations are
     chosen again with every candidate's estimated registration error, the network's
     backbone kept. The best round and the number of rounds; what the clock cut, into
-    ``cut``."""
+    ``cut``. ``limit``: at most that many rounds, each adding stations (none chosen again)."""
     st, cover = ctx.settings, r.cover
-    best, rounds, adds, resolved, moved = r, 0, 0, False, False
-    while st.computes_registration and rounds < MAX_REGISTRATION_ROUNDS:
+    best, rounds, adds, resolved, moved = r, 0, 0, limit is not None, limit is not None
+    while st.computes_registration and rounds < (limit or MAX_REGISTRATION_ROUNDS):
         if r.net is None:
             break
         if clock.over:
@@ -532,6 +602,8 @@ def _best_effort(
 #: How many times stations are added or chosen again for the registration error (each time
 #: the network is built and judged again) …
 MAX_REGISTRATION_ROUNDS = 4
+#: Rounds of adding stations once the cloud links are rehearsed.
+REHEARSED_ROUNDS = 2
 #: … of which rounds of adding before the fewest are chosen again.
 ADD_ROUNDS = 2
 

@@ -33,6 +33,7 @@ from planner.pipeline.inputs.schema import (
     ZONE_COLUMNS,
     id_key,
 )
+from planner.pipeline.network.linkcheck import MAX_FAILURE, PROBE_SIGMAS
 from planner.pipeline.network.network import Network
 from planner.pipeline.network.targets import TargetCandidates
 from planner.registration_error import CONTROL, Link, datum_lean_mm
@@ -621,13 +622,18 @@ def _link_table(
 
 def _link_kind(net: Network, lk: Link) -> dict:
     """How a link registers (targets or cloud), the overlap of its two scans [%] (where the
-    surfaces were modelled) and the direction its own error is largest in."""
+    surfaces were modelled), the direction its own error is largest in and, for a cloud
+    link the plan rehearsed, the factor on the model's error and its failures [%]."""
     ov = net.overlap
     overlap = float(ov[lk.parent, lk.child]) if ov is not None and lk.parent != CONTROL else np.nan
+    cl = net.clouds.get((lk.parent, lk.child))
+    check = cl.check if cl is not None else None
     return {
         "kind": lk.kind,
         "overlap_pct": overlap,
         "weakest_direction": net.weakest.get((lk.parent, lk.child), ""),
+        "rehearsal_factor": float(np.sqrt(cl.scale)) if check is not None else np.nan,
+        "failure_pct": 100.0 * check.failure if check is not None else np.nan,
     }
 
 
@@ -649,6 +655,37 @@ PROCESSING_WORDS = {
     "the chain; one adjustment of every scan's targets and surfaces together does at least "
     "as well.",
 }
+
+
+def rehearsal_message(net: Network, checks: dict, ctx: Context) -> str:
+    """What the rehearsal of the cloud links found (:mod:`planner.pipeline.network.linkcheck`):
+    the network's links rehearsed, those the model held and those taken at a larger error,
+    and the pairs tried that failed too often to be links (``checks``: every rehearsal made
+    for the plan, by candidate pair)."""
+    used = [cl for cl in net.clouds.values() if cl is not None and cl.check is not None]
+    if not checks:
+        return ""
+    sc, st = ctx.scanner, ctx.settings
+    pos, head, _ = sc.start_error
+    start = "the scanner's own tracking (VIS)" if sc.prealign == "vis" else "the operator's picking"
+    weaker = [np.sqrt(cl.scale) for cl in used if cl.scale > 1.0]
+    failed = sum(not c.holds for c in checks.values())
+    trials = max((len(c.errors) for c in checks.values()), default=0)
+    words = (
+        f"Cloud links rehearsed: {len(checks)} pair(s) of scans simulated in the scene (thinned "
+        f"to {st.cloud_spacing_mm:g} mm as the registration thins them, the surfaces' own "
+        f"{st.cloud_floor_mm:g} mm error per 2 m cell) and registered by a generalized ICP "
+        f"(small_gicp) {trials} time(s) from {start} ({pos:g} mm, {head / 3600:.2f}° of "
+        f"heading) and from {PROBE_SIGMAS:g} σ off; of the network's {len(used)} cloud "
+        f"link(s), {len(used) - len(weaker)} held the model's error"
+    )
+    if weaker:
+        words += f", {len(weaker)} are taken at up to {max(weaker):.1f} × it"
+    if failed:
+        words += (
+            f"; {failed} pair(s) failed more than {MAX_FAILURE:.0%} of the time and are no links"
+        )
+    return words + "."
 
 
 def registration_messages(

@@ -440,7 +440,7 @@ class Floor:
         cell = np.floor(xyz / self.cell_m).astype(np.int64)
         axis = np.argmax(np.abs(normal), axis=1)  # the face: ±x, ±y, ±z
         face = 2 * axis + (normal[np.arange(len(normal)), axis] > 0)
-        key = np.full(len(xyz), np.uint64(self.scan_key) * np.uint64(0x9E3779B97F4A7C15))
+        key = np.full(len(xyz), _mix(np.uint64(self.scan_key)))
         for v in (cell[:, 0], cell[:, 1], cell[:, 2], face):
             key = _mix(key ^ v.astype(np.uint64))
         u1 = (_mix(key) >> np.uint64(11)).astype(float) / 2.0**53

@@ -27,6 +27,7 @@ from planner.accuracy import station_rms_pair
 from planner.classes import class_limits, parse_class
 from planner.cloud_registration import (
     DEFAULT_CLOUD_FLOOR_MM,
+    DEFAULT_CLOUD_SPACING_MM,
     DEFAULT_MIN_OVERLAP_PCT,
     DEFAULT_REVEAL_DEPTH_M,
     DEFAULT_WINDOW_SHARE,
@@ -415,6 +416,13 @@ REGISTRATION_PROCESSING = {
     "pairwise": "each scan registered on its own to the one before it along the plan's links "
     "(pair by pair)",
 }
+#: How the plan checks each cloud-to-cloud link it relies on, in words.
+LINK_CHECKS = {
+    "rehearse": "each link's two scans rehearsed and registered by a generalized ICP "
+    "(small_gicp) from the scanner's pre-alignment: the larger of the model's error and the "
+    "rehearsal's is the link's, and a link that fails more than 1 % of the time is not a link",
+    "model": "the link model alone (quicker; its closed form assumes the registration converges)",
+}
 #: Height control the plan may add where the network leans with its datum scan, in words.
 HEIGHT_CONTROL = {
     "level": "a level run to some placed targets where the datum's lean would take samples "
@@ -588,8 +596,14 @@ class PlanSettings:
         windows and doors and how deep they sit (:mod:`planner.cloud_registration`, the
         parametric facade); ``window_share=0`` plans the walls plain.
     min_overlap_pct, cloud_floor_mm : float, default 20 and 1
-        A cloud link needs this overlap (as registration software counts it); what a patch's
-        plane fit does not see.
+        A cloud link needs this overlap (as registration software counts it); what a
+        surface's plane fit does not see, per 2 m cell and scan.
+    cloud_spacing_mm : float, default 100
+        The even spacing registration software thins the clouds to before a cloud-to-cloud
+        registration [mm] (:data:`planner.cloud_registration.DEFAULT_CLOUD_SPACING_MM`).
+    link_check : "rehearse" or "model", default "rehearse"
+        How the plan checks each cloud link it relies on (:data:`LINK_CHECKS`;
+        :mod:`planner.pipeline.network.linkcheck`).
     traverse_mm, gnss_mm : float, default 2 and 15
         The accuracy of planned control (:mod:`planner.pipeline.network.control`), per coordinate
         [mm]: what one leg of a total-station traverse adds, and a GNSS (network RTK) point.
@@ -886,6 +900,20 @@ class PlanSettings:
         group="registration",
         hi=2.0,
     )
+    cloud_spacing_mm: float = _spec(
+        DEFAULT_CLOUD_SPACING_MM,
+        "mm",
+        "cloud registration spacing",
+        lo=1.0,
+        open_lo=False,
+        step=10.0,
+        help="the even spacing the registration software thins the clouds to before a "
+        "cloud-to-cloud registration (a finer spacing uses shallower relief; the plan's "
+        "check of its links takes longer)",
+        group="registration",
+        hi=1000.0,
+    )
+    link_check: str = field(default="rehearse", metadata={"group": "registration"})
     cloud_floor_mm: float = _spec(
         DEFAULT_CLOUD_FLOOR_MM,
         "mm",
@@ -1064,6 +1092,10 @@ class PlanSettings:
             raise InputError(
                 "registration processing must be one of "
                 f"{', '.join(REGISTRATION_PROCESSING)}; got {self.registration_processing!r}"
+            )
+        if self.link_check not in LINK_CHECKS:
+            raise InputError(
+                f"link check must be one of {', '.join(LINK_CHECKS)}; got {self.link_check!r}"
             )
         if self.height_control not in HEIGHT_CONTROL:
             raise InputError(

@@ -135,7 +135,9 @@ TARGET_COLUMNS = [
 #: facade points [mm], its geometry's strength — ``dilution``, that error over the RMS of
 #: one target's centre difference (like a DOP: how much the targets' layout magnifies their
 #: errors out at the facades; lower is stronger) — and the whole registration error
-#: station_b's points end with [mm].
+#: station_b's points end with [mm]. A cloud link the plan rehearsed
+#: (:mod:`planner.pipeline.network.linkcheck`) gives the factor its error was taken at over the
+#: model's (1: the model's held) and how often it failed [%] (empty: not rehearsed).
 LINK_COLUMNS = [
     "station_a",
     "station_b",
@@ -148,6 +150,8 @@ LINK_COLUMNS = [
     "kind",
     "overlap_pct",
     "weakest_direction",
+    "rehearsal_factor",
+    "failure_pct",
 ]
 
 #: The per-facade summary as a surveyor reads it (dashboard, report).

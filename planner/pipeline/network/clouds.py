@@ -4,11 +4,14 @@ The model is :mod:`planner.cloud_registration`; this module finds its patches on
 
 - **facade patches**: every facade sample is a patch of ``sample_spacing_m`` ×
   ``sample_height_step_m`` on its wall, seen by a station where the evaluation says so, its
-  points from the scan step and the incidence, its noise across the wall the accuracy
-  model's m_y (:func:`planner.pipeline.evaluation.evaluate.evaluate_stations`);
+  points those a registration uses (the scan step and the incidence, thinned to
+  ``cloud_spacing_mm``: :func:`planner.cloud_registration.registration_points`), its
+  noise across the wall the accuracy model's m_y
+  (:func:`planner.pipeline.evaluation.evaluate.evaluate_stations`);
 - **ground patches**: cells of :data:`GROUND_CELL_M` on open ground within
-  :data:`GROUND_REACH_M` of a station that it sees over the buildings, its noise along the
-  vertical from the ranging and the vertical angle at that elevation.
+  :data:`GROUND_REACH_M` of a station that it sees over the buildings and a registration
+  can use (not beyond the incidence a registration takes), its noise along the vertical
+  from the ranging and the vertical angle at that elevation.
 
 Obstacles other than buildings (trees, cars, street furniture) are not modelled: they add
 overlap in practice, and move.
@@ -17,30 +20,36 @@ overlap in practice, and move.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import scipy.sparse as sp
 import shapely
 
 from planner.cloud_registration import (
+    FLOOR_CELL_M,
     MAX_LINK_CONDITION,
+    MIN_POINTS_ACROSS,
     WINDOW_HEIGHT_M,
     WINDOW_WIDTH_M,
-    edge_free_share,
+    floor_units,
     link_covariance,
     link_information,
     link_strength,
     overlap_pct,
-    patch_points,
     patch_variance_mm2,
     plane_rows,
+    registration_points,
+    registration_spacing,
     relief_areas,
     reveal_visible,
+    start_information,
     weakest_direction,
 )
 from planner.materials import roughness_mm
 from planner.pipeline.evaluation.evaluate import Context, evaluate_stations
+from planner.pipeline.geometry.beams import World
+from planner.pipeline.network.linkcheck import LinkCheck, StartError, rehearse_link
 from planner.spacing import point_spacing_mm
 from planner.units import RHO_ARCSEC
 
@@ -50,12 +59,12 @@ __all__ = ["CloudLink", "SurfaceCache", "Surfaces", "cloud_link", "overlap_matri
 OPENINGS = ("window", "door")
 #: A relief patch with fewer points than this is not a plane to a scan.
 MIN_RELIEF_POINTS = 3.0
-#: What a relief patch's plane adds to the cloud floor [mm]: an ICP's local planes on a
+#: What a reveal adds to the cloud floor, per opening [mm]: an ICP's local planes on a
 #: reveal only a few point spacings deep are tilted by the noise across so few points, and
 #: bias the shift along the wall. An independent point-to-plane ICP on simulated scans of a
-#: wall with 150 mm reveals (tests/test_relief.py) found that bias 0.3–1.0 mm per link,
-#: with the sampling and the ICP's neighbourhoods; 3 mm per patch gives the upper part of it.
-RELIEF_FLOOR_MM = 3.0
+#: wall with 150 mm reveals (tests/test_relief.py) found that bias 0.3–1.0 mm per link;
+#: 1 mm per opening (1.4 mm with the cloud floor) predicts its RMS within ±25 %.
+RELIEF_FLOOR_MM = 1.0
 #: Ground cells [m] and how far from a station its ground counts [m].
 GROUND_CELL_M = 2.0
 GROUND_REACH_M = 25.0
@@ -82,7 +91,9 @@ class Surfaces:
 
 @dataclass(frozen=True)
 class CloudLink:
-    """Scan ``child`` registered to scan ``parent`` over their common patches."""
+    """Scan ``child`` registered to scan ``parent`` over their common patches; ``check``
+    the plan's rehearsal of it (:mod:`planner.pipeline.network.linkcheck`) where one was
+    made, ``scale`` what that rehearsal multiplied the model's variance by (≥ 1)."""
 
     parent: int
     child: int
@@ -91,14 +102,71 @@ class CloudLink:
     overlap_pct: float
     condition: float
     patches: int
+    prior: np.ndarray = field(default_factory=lambda: np.zeros((6, 6)))  # the start's
+    levelled: bool = False
+    check: LinkCheck | None = None
+    scale: float = 1.0
 
     @property
     def fixed(self) -> bool:
         return bool(np.isfinite(self.condition) and self.condition <= MAX_LINK_CONDITION)
 
     @property
+    def holds(self) -> bool:
+        """Its surfaces fix it and, where rehearsed, it does not fail too often."""
+        return self.fixed and (self.check is None or self.check.holds)
+
+    @property
+    def information(self) -> np.ndarray:
+        """The information (6, 6) the network takes the link with: its surfaces' and its
+        start's, over the rehearsal's scale."""
+        return (self.info + self.prior) / self.scale
+
+    @property
     def weakest(self) -> str:
+        """Its weakest direction in words: "free: …" where its surfaces leave one free (its
+        start then holds it), else the largest error's."""
+        if not self.fixed:
+            return weakest_direction(link_covariance(self.info, levelled=self.levelled))
         return weakest_direction(self.cov)
+
+    def checked(self, check: LinkCheck, probe_xyz: np.ndarray, centre: np.ndarray) -> CloudLink:
+        """This link with its rehearsal ``check``: its variance scaled so that, along each
+        axis at the child's facade points ``probe_xyz`` (P, 3) [m] about its centre
+        ``centre`` [m], it is no smaller than the rehearsal's mean square over the trials
+        that held (:func:`check_scale`)."""
+        k2 = check_scale(self.cov, check, probe_xyz, centre)
+        return replace(self, check=check, scale=k2, cov=self.cov * k2)
+
+
+def check_scale(
+    cov: np.ndarray, check: LinkCheck, probe_xyz: np.ndarray, centre: np.ndarray
+) -> float:
+    """The factor (≥ 1) on a link's variance that makes it, along x, y and z at the points
+    ``probe_xyz`` (P, 3) [m], no smaller than the rehearsal's mean square there: the
+    largest of the three axes' pooled ratios (rehearsed over predicted, over the trials that
+    held and the points); 1 where every trial failed (the link is not one anyway)."""
+    ok = check.errors[~check.failed]
+    if not len(ok) or not np.isfinite(cov).all():
+        return 1.0
+    g = _at_points(probe_xyz, centre)  # (P, 3, 6)
+    predicted = np.einsum("pij,jk,pik->i", g, cov, g)  # (3,) summed over the points
+    rehearsed = np.einsum("pij,tj->tpi", g, ok)  # (T, P, 3)
+    seen = np.square(rehearsed).sum(axis=(0, 1)) / len(ok)
+    ratio = np.divide(seen, predicted, out=np.zeros(3), where=predicted > 0)
+    return float(max(1.0, ratio.max()))
+
+
+def _at_points(xyz: np.ndarray, centre: np.ndarray) -> np.ndarray:
+    """(P, 3, 6): a pose error's (shift [mm], rotation [rad] about ``centre``) displacement
+    at the points ``xyz`` [m]."""
+    r = (np.atleast_2d(xyz) - centre) * 1000.0
+    g = np.zeros((len(r), 3, 6))
+    g[:, :, :3] = np.eye(3)
+    g[:, 0, 4], g[:, 0, 5] = r[:, 2], -r[:, 1]
+    g[:, 1, 3], g[:, 1, 5] = -r[:, 2], r[:, 0]
+    g[:, 2, 3], g[:, 2, 4] = r[:, 1], -r[:, 0]
+    return g
 
 
 def surfaces(ctx: Context, station_xy: np.ndarray) -> Surfaces:
@@ -124,10 +192,11 @@ class SurfaceCache:
         # the parametric facade's relief (planner.cloud_registration): three patches per
         # facade sample, its two jambs and its head, numbered after the samples
         st = ctx.settings
-        jamb, head = relief_areas(
-            st.sample_spacing_m * st.sample_height_step_m, st.window_share, st.reveal_depth_m
-        )
+        area = st.sample_spacing_m * st.sample_height_step_m
+        jamb, head = relief_areas(area, st.window_share, st.reveal_depth_m)
         self._relief_area = np.array([jamb, jamb, head])
+        # the openings of a sample's patch: each reveal's floor is its own
+        self._openings = area * st.window_share / (WINDOW_WIDTH_M * WINDOW_HEIGHT_M)
         # a city model that draws its openings (LoD3: windows, doors) has its reveals as
         # walls of their own: no parametric relief on its buildings
         drawn = [b.id for b in ctx.site.planned if any(s.kind in OPENINGS for s in b.surfaces)]
@@ -154,6 +223,12 @@ class SurfaceCache:
         self._axis = (np.floor((deg + 22.5) / 45.0) % 4).astype(np.int64)
         self._axes: dict[int, int] = {}
         self.links: dict[tuple[int, int], CloudLink] = {}
+        #: whether the networks made from here on rehearse their cloud links (once the
+        #: plan's stations are chosen), the rehearsals (by candidate indices), and the
+        #: world they are cast in
+        self.rehearsing = False
+        self.checks: dict[tuple[int, int], LinkCheck] = {}
+        self._world: World | None = None
         # the surface every pair of candidates seen by :meth:`overlap` holds in common [m²]
         self._row: dict[int, int] = {}
         self._common = np.zeros((0, 0), dtype=np.float32)
@@ -185,11 +260,43 @@ class SurfaceCache:
         )
 
     def link(self, parent: int, child: int, cand_xy: np.ndarray) -> CloudLink:
-        """The cloud-to-cloud registration of candidate ``child`` to candidate ``parent``."""
+        """The cloud-to-cloud registration of candidate ``child`` to candidate ``parent``
+        (with its rehearsal, once :meth:`check` has made it)."""
         if (parent, child) not in self.links:
             pair = self.take(np.array([parent, child]), cand_xy)
             self.links[(parent, child)] = cloud_link(self.ctx, pair, 0, 1)
         return self.links[(parent, child)]
+
+    def check(
+        self, parent: int, child: int, cand_xy: np.ndarray, probe_xyz: np.ndarray
+    ) -> CloudLink:
+        """Rehearse the link of candidate ``child`` to ``parent`` (once for a plan:
+        :func:`~planner.pipeline.network.linkcheck.rehearse_link`, from the scanner's
+        pre-alignment, over the patches both see) and keep it with the link, its variance
+        scaled at the child's facade points ``probe_xyz``."""
+        key = (parent, child)
+        cl = self.link(parent, child, cand_xy)
+        if key in self.checks or not cl.fixed:
+            return cl
+        ctx = self.ctx
+        st = ctx.settings
+        if self._world is None:
+            self._world = World.of(ctx.site, ctx.scanner, st, ctx.scene)
+        pair = self.take(np.array([parent, child]), cand_xy)
+        both = (pair.points[:, 0] > 0) & (pair.points[:, 1] > 0)
+        self.checks[key] = rehearse_link(
+            self._world,
+            pair.station_xyz[0],
+            pair.station_xyz[1],
+            pair.xyz[both],
+            StartError(*ctx.scanner.start_error),
+            spacing_mm=st.cloud_spacing_mm,
+            floor=(st.cloud_floor_mm, float(np.hypot(st.cloud_floor_mm, RELIEF_FLOOR_MM)),
+                   FLOOR_CELL_M),
+            seed=int(parent) * 100_003 + int(child),
+        )  # fmt: skip
+        self.links[key] = cl.checked(self.checks[key], probe_xyz, pair.station_xyz[1])
+        return self.links[key]
 
     def overlapping(self, idx: np.ndarray, cand_xy: np.ndarray, min_pct: float) -> np.ndarray:
         """(K, K) whether the scans of candidates ``idx`` overlap by ``min_pct`` [%] or more
@@ -286,9 +393,14 @@ class SurfaceCache:
             sigma2 = (m_s * sin_e) ** 2 + (
                 s * 1000.0 * sc.tilt_rms_arcsec / RHO_ARCSEC * np.sqrt(1.0 - sin_e**2)
             ) ** 2
-            g_pts = patch_points(
-                GROUND_CELL_M**2, sin_e, point_spacing_mm(s, step_mm_at_10m=ctx.step_mm_at_10m)
+            g_pts = registration_points(
+                GROUND_CELL_M**2,
+                sin_e,
+                point_spacing_mm(s, step_mm_at_10m=ctx.step_mm_at_10m),
+                st.cloud_spacing_mm,
             )
+            use = g_pts > 0  # grazing ground gives a registration nothing
+            g_xy, g_pts, sigma2 = g_xy[use], g_pts[use], sigma2[use]
             g_ids = self._ground_ids(g_xy)
             r_ids, r_pts, r_var = self._relief(f_ids, np.array([*sxy, station_z[j]]))
             walls = np.unique(self._axis[f_ids])
@@ -303,7 +415,9 @@ class SurfaceCache:
                     [
                         f_var[f_ids, j],
                         r_var,
-                        patch_variance_mm2(np.sqrt(sigma2), g_pts, st.cloud_floor_mm),
+                        patch_variance_mm2(
+                            np.sqrt(sigma2), g_pts, st.cloud_floor_mm, floor_units(GROUND_CELL_M**2)
+                        ),
                     ]
                 ),
             )
@@ -331,10 +445,13 @@ class SurfaceCache:
         seen = reveal_visible(np.abs(cos) * (s / front)[:, None], st.reveal_depth_m, widths)
         spacing = point_spacing_mm(s, step_mm_at_10m=ctx.step_mm_at_10m)
         cos_c = np.clip(cos, 0.0, 1.0)
-        # an ICP's local planes need a neighbourhood on one face: the points within
-        # EDGE_SPACINGS point spacings of the reveal's edge with the wall give none
-        usable = edge_free_share(spacing[:, None], st.reveal_depth_m)
-        pts = self._relief_area * seen * usable * cos_c * 1e6 / np.square(spacing)[:, None]
+        # the thinned cloud on a reveal: its rows across the depth it shows, the row along
+        # its edge with the wall (whose neighbourhoods straddle two faces) giving no plane
+        # (planner.cloud_registration)
+        along, across = registration_spacing(spacing[:, None], cos_c, st.cloud_spacing_mm)
+        rows = seen * st.reveal_depth_m * 1000.0 / along
+        usable = np.clip((rows - 1.0) / np.maximum(rows, 1e-9), 0.0, 1.0)
+        pts = self._relief_area * seen * usable * 1e6 / (along * across)
         rho = ctx.reflectance[f_ids] if len(ctx.reflectance) else np.nan
         signal_cos = np.maximum(cos_c, 1e-3) if st.incidence_ranging else 1.0
         m_s = sc.range_rms_on(s[:, None], np.reshape(rho, (-1, 1)), signal_cos)
@@ -342,10 +459,11 @@ class SurfaceCache:
         angles = np.array([sc.angle_rms_arcsec, sc.angle_rms_arcsec, sc.tilt_rms_arcsec])
         lateral = s[:, None] * 1000.0 * angles / RHO_ARCSEC  # mm
         sigma2 = np.square(m_s * cos_c) + np.square(lateral) * (1.0 - cos_c**2)
-        ok = pts >= MIN_RELIEF_POINTS
+        ok = (rows >= MIN_POINTS_ACROSS) & (pts >= MIN_RELIEF_POINTS)
         ids = len(fac.z) + 3 * f_ids[:, None] + np.arange(3)
         floor = np.hypot(st.cloud_floor_mm, RELIEF_FLOOR_MM)
-        var = patch_variance_mm2(np.sqrt(sigma2[ok]), pts[ok], floor)
+        openings = np.broadcast_to(self._openings, pts.shape)[ok]  # the floor's units
+        var = patch_variance_mm2(np.sqrt(sigma2[ok]), pts[ok], floor, openings)
         return ids[ok], pts[ok], var
 
     def _xyz_of(self, f_ids: np.ndarray) -> np.ndarray:
@@ -420,15 +538,19 @@ def _facade_patches(
     view = dense["view"] & np.isfinite(dense["scanner_m_y_mm"])
     slope = np.where(view, dense["slope_distance_m"], 1.0)
     cos_inc = np.where(view, np.cos(np.radians(np.nan_to_num(dense["incidence_deg"]))), 0.0)
-    area = st.sample_spacing_m * st.sample_height_step_m
-    spacing = point_spacing_mm(slope, step_mm_at_10m=ctx.step_mm_at_10m)
-    points = np.where(view, patch_points(area, cos_inc, spacing), 0.0)
     # the parametric facade's openings return nothing from their glass
-    points *= np.where(parametric, 1.0 - st.window_share, 1.0)[:, None]
+    area = st.sample_spacing_m * st.sample_height_step_m
+    area = area * np.where(parametric, 1.0 - st.window_share, 1.0)[:, None]
+    spacing = point_spacing_mm(slope, step_mm_at_10m=ctx.step_mm_at_10m)
+    points = registration_points(area, cos_inc, spacing, st.cloud_spacing_mm)
+    points = np.where(view, points, 0.0)
     # the floor: what a plane fit does not see, and the wall's own roughness (its material)
     floor = np.hypot(st.cloud_floor_mm, roughness_mm(ctx.material, st.material_table))[:, None]
     var = patch_variance_mm2(
-        np.nan_to_num(dense["scanner_m_y_mm"], nan=1.0), np.maximum(points, 1.0), floor
+        np.nan_to_num(dense["scanner_m_y_mm"], nan=1.0),
+        np.maximum(points, 1.0),
+        floor,
+        floor_units(area),
     )
     return points, np.where(points > 0, var, np.inf)
 
@@ -452,10 +574,13 @@ def cloud_link(ctx: Context, surf: Surfaces, parent: int, child: int) -> CloudLi
     info = link_information(rows, surf.var_mm2[both, parent], surf.var_mm2[both, child])
     sc = ctx.scanner
     levelled = sc.is_levelled
+    prior = start_information(sc.start_error)
     cov = link_covariance(
         # a link relative to its parent: the two stations' tilts levelled, none without a
-        # compensator (6 parameters take them out; the datum's lean is the network's)
-        info,
+        # compensator (6 parameters take them out; the datum's lean is the network's); the
+        # registration starts from the pre-alignment, and stays there where the surfaces
+        # fix nothing (planner.cloud_registration)
+        info + prior,
         levelled=levelled,
         tilt_rms_arcsec=sc.initial_tilt_rms_arcsec if levelled else 0.0,
     )
@@ -470,4 +595,6 @@ def cloud_link(ctx: Context, surf: Surfaces, parent: int, child: int) -> CloudLi
         overlap_pct=float(ov),
         condition=link_strength(info, levelled=levelled)[0],
         patches=len(both),
+        prior=prior,
+        levelled=levelled,
     )

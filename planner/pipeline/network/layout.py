@@ -219,8 +219,25 @@ class Layout:
         if self.surf is None or i == CONTROL:
             return None
         cl = self.seen.clouds.link(self.stations[i], self.stations[j], self.seen.cand_xy)
-        ok = cl.fixed and cl.overlap_pct >= self.ctx.settings.min_overlap_pct
+        ok = cl.holds and cl.overlap_pct >= self.ctx.settings.min_overlap_pct
         return cl if ok else None
+
+    def unchecked(self) -> list[tuple[int, int]]:
+        """The tree's cloud links (positions) not yet rehearsed
+        (:meth:`planner.pipeline.network.clouds.SurfaceCache.check`)."""
+        out = []
+        for i, j in self.tree:
+            cl = self.cloud(i, j)
+            if cl is not None and cl.check is None:
+                out.append((i, j))
+        return out
+
+    def check(self, i: int, j: int) -> None:
+        """Rehearse the cloud link of j to i (kept for the plan)."""
+        self.seen.clouds.check(
+            self.stations[i], self.stations[j], self.seen.cand_xy, self.probes_of(j)
+        )
+        self._cloud_errors.pop((i, j), None)
 
     def link(
         self, i: int, j: int, placed: set[int] | None = None, stands: Stands | None = None

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 import time
+from collections.abc import Callable
 
 import numpy as np
 
@@ -158,14 +159,21 @@ def _layout(
     """The network's layout over ``stations`` and the linking stations they need (and a
     detour where a link is weaker than ``weak_mm``, if it makes the worst station's error
     smaller); and whether the deadline cut the search for linking stations short."""
-    lay = Layout(ctx, seen, cand_xy, stations, probes, goal_mm, datum, deadline)
+    lay = _checked(
+        ctx, lambda: Layout(ctx, seen, cand_xy, stations, probes, goal_mm, datum, deadline)
+    )
     groups = link_groups(lay.k, lay.pairs)
     cut_short = False
     if groups.max() > 0:  # stations neither targets nor clouds tie: linking stations
         hops = linking_hops(ctx, seen, cand_xy, stations, lay.mode, lay.sight, deadline)
         extra, cut_short = find_bridges(hops, groups, deadline) if hops else ([], True)
         if extra:
-            lay = Layout(ctx, seen, cand_xy, stations + extra, probes, goal_mm, datum, deadline)
+            lay = _checked(
+                ctx,
+                lambda: Layout(
+                    ctx, seen, cand_xy, stations + extra, probes, goal_mm, datum, deadline
+                ),
+            )
     weak = np.zeros(1)
     if np.isfinite(weak_mm) and lay.k > 1 and time.monotonic() <= deadline:
         weak = lay.weak_groups(weak_mm)
@@ -173,12 +181,36 @@ def _layout(
         hops = linking_hops(ctx, seen, cand_xy, lay.stations, lay.mode, lay.sight, deadline)
         extra, _ = find_bridges(hops, weak, deadline) if hops else ([], True)
         if extra:
-            trial = Layout(
-                ctx, seen, cand_xy, lay.stations + extra, probes, goal_mm, datum, deadline
+            more = lay.stations + extra
+            trial = _checked(
+                ctx, lambda: Layout(ctx, seen, cand_xy, more, probes, goal_mm, datum, deadline)
             )
             if len(trial.cost) >= len(lay.cost) and trial.worst_var < 0.8 * lay.worst_var:
                 lay = trial
     return lay, cut_short
+
+
+#: Layouts rebuilt at most this often while their new cloud links are rehearsed.
+CHECK_ROUNDS = 6
+
+
+def _checked(ctx: Context, make: Callable[[], Layout]) -> Layout:
+    """The layout ``make`` gives, with every cloud link of its tree rehearsed once the plan
+    rehearses them (:mod:`~planner.pipeline.network.linkcheck`): a link that
+    fails too often is no link, one the rehearsal finds weaker than the model is weakened,
+    and the layout is made again over them until its tree holds only rehearsed links (at
+    most :data:`CHECK_ROUNDS` times)."""
+    lay = make()
+    if lay.mode == "targets" or not lay.seen.clouds.rehearsing:
+        return lay
+    for _ in range(CHECK_ROUNDS):
+        todo = lay.unchecked()
+        if not todo:
+            break
+        for i, j in todo:
+            lay.check(i, j)
+        lay = make()
+    return lay
 
 
 def _tree_links(
@@ -201,7 +233,7 @@ def _tree_links(
         targets, err = lay.link(parent, child, placed, stands)
         cl = lay.cloud(parent, child)
         if not targets and cl is not None:  # cloud to cloud
-            links.append(Link(parent, child, (), cl.info))
+            links.append(Link(parent, child, (), cl.information))
             link_error[(parent, child)] = err
             tied.append(child)
             continue
