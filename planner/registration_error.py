@@ -71,7 +71,6 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike
-from scipy import sparse
 
 from planner.accuracy3d import INCIDENCE_NOISE_EXPONENT, MIN_COS_INCIDENCE
 from planner.errors import InputError
@@ -351,7 +350,7 @@ def adjust(
     control_rms_mm: dict[int, float] | None = None,
     levelled: bool = False,
     tilt_rms_arcsec: float = 0.0,
-    planes: tuple[np.ndarray, np.ndarray, dict[tuple[int, int], float]] | None = None,
+    relative: Sequence[tuple[int, int, np.ndarray]] = (),
     tilt_readings: Mapping[int, float] | None = None,
     heights_mm: Mapping[int, float] | None = None,
 ) -> np.ndarray:
@@ -359,12 +358,14 @@ def adjust(
     adjustment of all the target observations: what registration software does with every
     target each scan sees, rather than registering pair after pair.
 
-    ``planes`` adds the cloud-to-cloud observations: surface patches (centres (P, 3) [m],
-    unit normals (P, 3)) and, per (station, patch), the variance [mm²] of the patch's
-    position along its normal in that scan (:mod:`planner.cloud_registration`). Each patch
-    seen by two or more of the stations is an unknown offset along its normal observed by
-    every scan that sees it — a one-dimensional target — and is eliminated (the Schur
-    complement) before the poses are solved.
+    ``relative`` adds the cloud-to-cloud links: each (parent i, child j, information J)
+    an observation of j's pose relative to i's, ``q_j − T_ij q_i`` (T_ij carries i's pose
+    error to j's centre), with the link's information J (6 × 6 at j's centre, shift in mm,
+    rotation in rad: :attr:`planner.pipeline.network.clouds.CloudLink.information`) — the
+    pose graph registration software adjusts its cloud-to-cloud links in (a bundle of the
+    pairwise registrations). Levelled, the link observes the 4 estimated parameters, and
+    the two stations' unestimated tilts move it as they move the link's estimate
+    (:func:`planner.cloud_registration.link_covariance`).
 
     Unknowns: the pose error q_j of each station in ``tied`` (6 parameters; 4 — shift and the
     rotation about the vertical — for a levelled scanner) and the error x_t of every target
@@ -457,8 +458,8 @@ def adjust(
         n_mat[z, -1] += w_h
         n_mat[-1, z] += w_h
         n_mat[-1, -1] += w_h
-    if planes is not None and n_unk:
-        _eliminate_planes(n_mat, tilt_rhs, planes, station_xyz, tied, s_col, s_par, levelled)
+    for i, j, info in relative:
+        _relative(n_mat, tilt_rhs, station_xyz, (i, j), info, s_col, s_par, levelled)
     pose_cov = np.zeros((k, 6, 6))
     tau2 = (tilt_rms_arcsec / RHO_ARCSEC) ** 2
     if n_unk:
@@ -529,55 +530,28 @@ def datum_tilt_cov(
     return tau2 * jac @ np.swapaxes(jac, 1, 2)
 
 
-def _eliminate_planes(n_mat, tilt_rhs, planes, station_xyz, tied, s_col, s_par, levelled) -> None:
-    """Add the patches' observations to the poses' normal equations (and, levelled, to the
-    tilts' right-hand side), their offsets eliminated: :func:`adjust` (``s_col``, ``s_par``:
+def _relative(n_mat, tilt_rhs, station_xyz, pair, info, s_col, s_par, levelled) -> None:
+    """Add one cloud link's relative-pose observation (:func:`adjust`'s ``relative``) to the
+    normal equations and, levelled, to the tilts' right-hand side (``s_col``, ``s_par``:
     each estimated station's first column and its parameters). In place."""
-    xyz, normal, var = planes
-    obs = [(j, p, v) for (j, p), v in var.items() if tied[j] and np.isfinite(v)]
-    if not obs:
-        return
-    jj, pp, vv = (np.array(c) for c in zip(*obs, strict=True))
-    jj, pp = jj.astype(int), pp.astype(int)
-    keep = np.bincount(pp, minlength=len(xyz))[pp] >= 2  # a patch one scan sees ties nothing
-    jj, pp, w = jj[keep], pp[keep], 1.0 / vv[keep]
-    if not len(jj):
-        return
-    lever = (xyz[pp] - station_xyz[jj]) * 1000.0
-    a = np.concatenate([normal[pp], np.cross(lever, normal[pp])], axis=1)  # (O, 6)
-    npp = np.bincount(pp, weights=w, minlength=len(xyz))
-    d_inv = sparse.diags(np.where(npp > 0, 1.0 / np.where(npp > 0, npp, 1.0), 0.0))
-    rows, cols, vals = [], [], []
-    for j in np.unique(jj[np.isin(jj, list(s_col))]):  # the poses' own terms, and B
-        sel = jj == j
-        a_j = a[sel][:, s_par[int(j)]]
-        sc, n_j = s_col[int(j)], a_j.shape[1]
-        n_mat[sc : sc + n_j, sc : sc + n_j] += (a_j * w[sel, None]).T @ a_j
-        rows.append(np.broadcast_to(sc + np.arange(n_j), a_j.shape).ravel())
-        cols.append(np.repeat(pp[sel], n_j))
-        vals.append((-w[sel, None] * a_j).ravel())
-    if not rows:
-        return
-    b = sparse.csr_matrix(
-        (np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
-        shape=(n_mat.shape[0], len(xyz)),
-    )
-    n_mat -= (b @ d_inv @ b.T).toarray()
-    if levelled:
-        k = tilt_rhs.shape[1] // 2
-        a_tilt = a[:, 3:5]
-        t_p = sparse.csr_matrix(
-            ((w[:, None] * a_tilt).ravel(), (np.repeat(pp, 2), (2 * jj[:, None] + [0, 1]).ravel())),
-            shape=(len(xyz), 2 * k),
-        )
-        tilt_rhs -= np.asarray((b @ d_inv @ t_p).todense())
-        for j in np.unique(jj[np.isin(jj, list(s_col))]):
-            sel = jj == j
-            a_j = a[sel][:, s_par[int(j)]]
-            sc = s_col[int(j)]
-            tilt_rhs[sc : sc + a_j.shape[1], 2 * j : 2 * j + 2] -= (a_j * w[sel, None]).T @ a_tilt[
-                sel
-            ]
+    i, j = pair
+    par = [0, 1, 2, 5] if levelled else list(range(6))
+    pick = np.eye(6)[par]  # the observed parameters
+    t = np.eye(6)
+    t[:3, 3:] = -_skew((station_xyz[j] - station_xyz[i]) * 1000.0)  # i's error at j
+    w = info[np.ix_(par, par)]
+    rows = {j: pick, i: -pick @ t}  # the observation's rows on each station's full pose
+    tilts = {}
+    if levelled:  # the unestimated tilts: the link's response to them, and i's at j
+        m = -np.linalg.solve(w, info[np.ix_(par, [3, 4])])
+        tilts = {j: m, i: pick @ t[:, 3:5] - m}
+    g = {u: r[:, s_par[u]] for u, r in rows.items() if u in s_col}
+    for u, gu in g.items():
+        cu = slice(s_col[u], s_col[u] + gu.shape[1])
+        for v, gv in g.items():
+            n_mat[cu, s_col[v] : s_col[v] + gv.shape[1]] += gu.T @ w @ gv
+        for st, a in tilts.items():
+            tilt_rhs[cu, 2 * st : 2 * st + 2] += gu.T @ w @ a
 
 
 #: A normal matrix this ill-conditioned (its diagonal scaled to one, so that shifts in mm and

@@ -221,9 +221,10 @@ def test_overlap_is_the_smaller_share():
 
 
 @pytest.mark.parametrize("levelled", [False, True])
-def test_one_link_adjusted_with_its_patches_is_the_link(levelled):
-    """The network's simultaneous adjustment of the patches two scans see equals the
-    pairwise link (the child's pose covariance, the datum its parent), levelled or not."""
+def test_one_link_adjusted_as_a_relative_pose_is_the_link(levelled):
+    """The network's simultaneous adjustment of one cloud link's relative pose (the pose
+    graph registration software adjusts) equals the pairwise link (the child's pose
+    covariance, the datum its parent), levelled or not."""
     from planner.registration_error import Link, adjust, propagate
 
     c, n, _, _ = _patches()
@@ -234,8 +235,7 @@ def test_one_link_adjusted_with_its_patches_is_the_link(levelled):
     xyz = np.array([PARENT, CHILD])
     kw = {"levelled": levelled, "tilt_rms_arcsec": tau}
     chain = propagate(xyz, np.empty((0, 3)), {}, [Link(0, 1, (), info)], datum=0, **kw)
-    var = {(0, p): vp[p] for p in range(len(c))} | {(1, p): vc[p] for p in range(len(c))}
-    adjusted = adjust(xyz, np.empty((0, 3)), {}, chain.tied, datum=0, planes=(c, n, var), **kw)
+    adjusted = adjust(xyz, np.empty((0, 3)), {}, chain.tied, datum=0, relative=[(0, 1, info)], **kw)
     sd_adj, sd_chain = np.sqrt(np.diag(adjusted[1])), np.sqrt(np.diag(chain.pose_cov[1]))
     assert sd_adj == pytest.approx(sd_chain, rel=1e-6)
     sd_link = np.sqrt(np.diag(link_covariance(info, levelled=levelled, tilt_rms_arcsec=tau)))

@@ -69,7 +69,7 @@ def test_a_corner_link_holds_and_its_rehearsal_is_near_the_model(corner):
 
 def test_the_rehearsal_is_the_same_every_time(corner):
     """Seeded by the pair: the same link rehearsed twice gives the same errors to the bit."""
-    ctx, cache, cand, _, checked = corner
+    ctx, _, cand, _, checked = corner
     again = clouds.SurfaceCache(ctx).check(0, 1, cand, np.array([[*cand[1], 5.0]]))
     np.testing.assert_array_equal(again.check.errors, checked.check.errors)
 

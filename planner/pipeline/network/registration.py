@@ -25,7 +25,6 @@ import numpy as np
 
 from planner.cloud_registration import weakest_direction
 from planner.pipeline.evaluation.evaluate import Context
-from planner.pipeline.network import clouds
 from planner.pipeline.network.bridges import find_bridges, link_groups, linking_hops, shared_targets
 from planner.pipeline.network.height import levelled_targets
 from planner.pipeline.network.layout import HIDDEN_DETOUR, Layout, Stands
@@ -331,7 +330,7 @@ def _network_error(
         "control_rms_mm": {t: r for t, r in control_rms.items() if t in users},
         "levelled": levelled,
         "tilt_rms_arcsec": ctx.scanner.datum_tilt_rms_arcsec,
-        "planes": _planes(lay.surf),
+        "relative": [(lk.parent, lk.child, lk.info) for lk in links if lk.info is not None],
     }
     error.pose_cov = readjusted(ctx, inputs, heights or {})
     return error, inputs
@@ -405,14 +404,3 @@ def _weakest_directions(
             cov = transport_pose_cov(cov, lay.station_xyz[lk.child], mid)
         weakest[key] = weakest_direction(cov) if cov is not None else ""
     return weakest
-
-
-def _planes(surf: clouds.Surfaces | None) -> tuple | None:
-    """The patches as the adjustment takes them (:func:`planner.registration_error.adjust`)."""
-    if surf is None:
-        return None
-    p, j = np.nonzero(surf.seen)
-    var = dict(
-        zip(zip(j.tolist(), p.tolist(), strict=True), surf.var_mm2[p, j].tolist(), strict=True)
-    )
-    return surf.xyz, surf.normal, var
