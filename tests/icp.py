@@ -4,8 +4,10 @@ It shares no code with the planner's cloud-link model (``planner.cloud_registrat
 the parent's normals and local planes come from its own points (PCA of the 12 nearest;
 neighbourhoods that are not planar are left out), each child point is matched to its
 nearest parent point within a distance, the residual taken to that point's local plane,
-correspondences beyond 4 robust standard deviations (0.1 mm at least) dropped, and the 6
-parameters (shift [mm], rotation [rad] about the child's centre) found by Gauss–Newton.
+correspondences beyond 4 robust standard deviations (0.1 mm at least) dropped (but while it
+matches coarsely: then every match within its distance counts, as Open3D's ICP counts
+them), and the 6 parameters (shift [mm], rotation [rad] about the child's centre) found
+by Gauss–Newton.
 
 :func:`link_errors` registers a rehearsed pair of scans trial after trial (each with its
 own noise) and returns the estimated poses' errors; :func:`patches_of` keeps of each scan
@@ -30,8 +32,16 @@ def _skew(w: np.ndarray) -> np.ndarray:
     return np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
 
 
-def icp(parent: np.ndarray, child: np.ndarray, centre: np.ndarray, iters: int = 8) -> np.ndarray:
-    """The child's pose error (6,): shift [mm], small rotation [rad] about ``centre``."""
+def icp(
+    parent: np.ndarray,
+    child: np.ndarray,
+    centre: np.ndarray,
+    iters: int = 8,
+    coarse_m: float | None = None,
+) -> np.ndarray:
+    """The correction (6,) that registers the child: shift [mm], small rotation [rad]
+    about ``centre``. ``coarse_m``: the first half of the iterations match within that
+    distance [m] (coarse to fine), the rest within :data:`MATCH_M`."""
     tree = cKDTree(parent)
     _, nb = tree.query(parent, NEIGHBOURS)
     local = parent[nb] - parent[nb].mean(axis=1, keepdims=True)
@@ -39,15 +49,19 @@ def icp(parent: np.ndarray, child: np.ndarray, centre: np.ndarray, iters: int = 
     normal, planar = v[:, :, 0], w[:, 0] < PLANAR * w.sum(axis=1)
     plane_at = parent[nb].mean(axis=1)
     pose = np.zeros(6)  # shift [m], rotation [rad]
-    for _ in range(iters):
+    for it in range(iters):
+        match = coarse_m if coarse_m is not None and it < iters // 2 else MATCH_M
         moved = centre + (child - centre) @ (np.eye(3) + _skew(pose[3:])).T + pose[:3]
-        d, j = tree.query(moved, distance_upper_bound=MATCH_M)
+        d, j = tree.query(moved, distance_upper_bound=match)
         ok = np.isfinite(d)
         ok[ok] = planar[j[ok]]
         n, m = normal[j[ok]], moved[ok]
         res = np.einsum("ij,ij->i", m - plane_at[j[ok]], n)
-        # trimmed beyond 4 robust σ, never below TRIM_FLOOR_M (noise-free clouds: rounding)
+        # fine: trimmed beyond 4 robust σ, never below TRIM_FLOOR_M (noise-free clouds:
+        # rounding); coarse: every match within its distance (as Open3D's ICP)
         keep = np.abs(res) <= max(4 * 1.4826 * np.median(np.abs(res)), TRIM_FLOOR_M)
+        if match > MATCH_M:
+            keep[:] = True
         a = np.hstack([n, np.cross(m - centre, n)])[keep]
         pose += np.linalg.lstsq(a, -res[keep], rcond=None)[0]
     return np.concatenate([pose[:3] * 1000.0, pose[3:]])
@@ -71,9 +85,9 @@ def thin(points: np.ndarray, spacing_m: float) -> np.ndarray:
     if spacing_m <= 0.001:
         return points
     cell = np.floor((points - points.min(axis=0)) / spacing_m).astype(np.int64)
-    _, inverse, counts = np.unique(cell, axis=0, return_inverse=True, return_counts=True)
-    sums = np.zeros((len(counts), 3))
-    np.add.at(sums, inverse.ravel(), points)
+    key = (cell[:, 0] << 42) | (cell[:, 1] << 21) | cell[:, 2]  # one integer per cube
+    _, inverse, counts = np.unique(key, return_inverse=True, return_counts=True)
+    sums = np.column_stack([np.bincount(inverse, weights=points[:, k]) for k in range(3)])
     return sums / counts[:, None]
 
 

@@ -26,9 +26,14 @@ planner's error model:
   the plan puts a wall, does not measure it — the sample is *unreached*, a false meet where
   the plan marks it met.
 
+* a cloud-to-cloud link registers its child by an independent ICP on simulated scans
+  (``tests/cloud_survey.py``: samples of the child's pose error, drawn one per trial); in
+  one adjustment its relative pose is an observation weighted by the spread of those
+  samples (the registration's own estimate of the link, not the planner's), pair by pair it
+  carries the parent's registered pose to the child.
+
 The frame error (tilt, targets, registration) is simulated ``trials`` times; the scanner's
 point noise, which is independent of it, ``noise_trials`` times; their mean squares add.
-Only target registrations are simulated (cloud-to-cloud links are not).
 """
 
 from __future__ import annotations
@@ -80,7 +85,7 @@ class World:
     target_size_mm: dict[int, float]  # placed targets
     target_normal: np.ndarray  # (T, 2) a wall's outward normal
     obs: dict[tuple[int, int], float]  # (station, target) → the planner's centre RMS [mm]
-    links: list[tuple[int, int, tuple[int, ...]]]  # (parent or -1, child, targets)
+    links: list[tuple[int, int, tuple[int, ...]]]  # (parent or -1, child, targets), in order
     datum: int | None
     control_rms_mm: dict[int, float]
     levelled: bool
@@ -99,6 +104,13 @@ class World:
     sample_id: np.ndarray = field(default_factory=lambda: np.array([]))
     #: the true world, where it is a 3-D model: its triangles (T, 3, 3) [m]
     triangles: np.ndarray | None = None
+    #: the cloud links (parent, child) and, once surveyed (tests/cloud_survey.py), samples
+    #: (S, 6) of the child's pose error each: shift [mm], rotation [rad] at its centre
+    cloud_errors: dict = field(default_factory=dict)
+
+    @property
+    def clouds(self) -> list[tuple[int, int]]:
+        return [(i, j) for i, j, t in self.links if t is None]
 
 
 def world_of(p, model=None) -> World:
@@ -130,7 +142,9 @@ def world_of(p, model=None) -> World:
     along = np.column_stack([fac["x1"] - fac["x0"], fac["y1"] - fac["y0"]])
     along /= np.linalg.norm(along, axis=1)[:, None]
     normal = np.column_stack([along[:, 1], -along[:, 0]])
-    links = [(lk.parent, lk.child, tuple(lk.targets)) for lk in net.links if lk.info is None]
+    links = [
+        (lk.parent, lk.child, tuple(lk.targets) if lk.info is None else None) for lk in net.links
+    ]
     station_xyz = net.station_xyz.copy()
     target_xyz = tc.xyz.copy()
     xyz = cov[["x", "y", "z"]].to_numpy()
@@ -572,10 +586,11 @@ def survey(
             centre = centre + rng.normal(0.0, w.floor_mm / 1000.0, centre.shape)
         meas[(j, t)] = centre
     control = {t: rng.normal(0.0, r / 1000.0, (trials, 3)) for t, r in w.control_rms_mm.items()}
+    clouds = _cloud_draws(w, rng, trials, tilt_v)
     if processing == "adjustment":
-        rot, pos, tied = _adjust(w, obs, meas, nominal, control, trials)
+        rot, pos, tied = _adjust(w, obs, meas, nominal, control, trials, clouds)
     else:
-        rot, pos, tied = _pairwise(w, obs, meas, nominal, control, trials)
+        rot, pos, tied = _pairwise(w, obs, meas, nominal, control, trials, clouds)
     # the frame error at every sample: the true local point carried by the estimated pose
     j = w.station
     local = np.einsum("tnji,nj->tni", true_rot[:, j], w.xyz - w.station_xyz[j])
@@ -632,7 +647,43 @@ def _point_noise(w: World, rng, trials: int) -> tuple[np.ndarray, np.ndarray]:
     return mean, np.sqrt(np.maximum(out2 / trials - mean * mean, 0.0) / trials)
 
 
-def _adjust(w: World, obs, meas, nominal, control, trials):
+def _cloud_draws(w: World, rng, trials: int, tilt_v: np.ndarray) -> dict:
+    """Per cloud link (i, j): the relative pose each trial's registration measures, as the
+    deviation of j's pose from the nominal carried from i's (T, 6) [m, rad]: the truth
+    (both stations' tilts; the positions are true) plus one of the link's surveyed errors."""
+    out = {}
+    for i, j in w.clouds:
+        e = w.cloud_errors[(i, j)]
+        pick = e[rng.integers(0, len(e), trials)]
+        lever = w.station_xyz[j] - w.station_xyz[i]
+        truth = np.concatenate([-np.cross(tilt_v[:, i], lever), tilt_v[:, j] - tilt_v[:, i]], 1)
+        out[(i, j)] = truth + np.concatenate([pick[:, :3] / 1000.0, pick[:, 3:]], axis=1)
+    return out
+
+
+def _cloud_rows(w: World, clouds: dict, scol: dict, n_unk: int):
+    """The cloud links' relative-pose rows of the adjustment, whitened by each link's own
+    spread (the inverse covariance of its surveyed errors): rows (6·L, n_unk), right-hand
+    sides (T, 6·L)."""
+    rows, rhs = [], []
+    for (i, j), d in clouds.items():
+        e = w.cloud_errors[(i, j)]
+        e = np.concatenate([e[:, :3] / 1000.0, e[:, 3:]], axis=1)
+        cov = e.T @ e / len(e) + np.diag([1e-10] * 3 + [1e-12] * 3)  # m², rad²
+        white = np.linalg.cholesky(np.linalg.inv(cov)).T
+        a = np.zeros((6, n_unk))
+        t = np.eye(6)
+        t[:3, 3:] = -_cross(w.station_xyz[j] - w.station_xyz[i])
+        if j in scol:
+            a[:, scol[j] : scol[j] + 6] += np.eye(6)
+        if i in scol:
+            a[:, scol[i] : scol[i] + 6] -= t
+        rows.append(white @ a)
+        rhs.append(d @ white.T)
+    return rows, rhs
+
+
+def _adjust(w: World, obs, meas, nominal, control, trials, clouds=None):
     """One simultaneous least-squares adjustment of every observation (a Gauss–Newton step
     from the nominal poses and the true target positions, exact to first order): the
     datum's frame held, each other station 6 parameters (4 levelled), every target 3; the
@@ -669,6 +720,12 @@ def _adjust(w: World, obs, meas, nominal, control, trials):
         rows.append(a)
         rhs.append(control[t])
         wts.append(np.full(3, 1.0 / (rms / 1000.0) ** 2))
+    if clouds:
+        assert not w.levelled, "the survey registers cloud links with 6 parameters"
+        c_rows, c_rhs = _cloud_rows(w, clouds, scol, n_unk)
+        rows += c_rows
+        rhs += c_rhs
+        wts += [np.ones(6)] * len(c_rows)
     if not n_unk or not rows:
         return rot, pos, tied
     a = np.concatenate(rows)
@@ -689,7 +746,8 @@ def _adjust(w: World, obs, meas, nominal, control, trials):
 
 
 def _reached(w: World, obs) -> np.ndarray:
-    """Stations the observations tie to the datum (three common targets along a chain)."""
+    """Stations the observations tie to the datum (three common targets along a chain, or
+    a cloud link)."""
     k = len(w.station_xyz)
     seen: dict[int, set[int]] = {}
     for j, t in obs:
@@ -703,17 +761,21 @@ def _reached(w: World, obs) -> np.ndarray:
     while grew:
         grew = False
         for j in range(k):
-            if not tied[j] and len(seen.get(j, set()) & known) >= 3:
+            by_cloud = any(tied[i] for i, c in w.clouds if c == j) or any(
+                tied[c] for c, i in w.clouds if i == j
+            )
+            if not tied[j] and (len(seen.get(j, set()) & known) >= 3 or by_cloud):
                 tied[j] = True
-                known |= seen[j]
+                known |= seen.get(j, set())
                 grew = True
     return tied
 
 
-def _pairwise(w: World, obs, meas, nominal, control, trials):
+def _pairwise(w: World, obs, meas, nominal, control, trials, clouds=None):
     """Each link of the plan registered on its own, child to parent, in tree order:
     weighted Procrustes of the child's measured centres onto the parent's registered ones
-    (6 parameters; levelled: the shift and the rotation about the vertical)."""
+    (6 parameters; levelled: the shift and the rotation about the vertical); a cloud link
+    carries the parent's registered pose to the child with its measured relative pose."""
     k = len(w.station_xyz)
     rot = np.broadcast_to(nominal, (trials, k, 3, 3)).copy()
     pos = np.broadcast_to(w.station_xyz, (trials, k, 3)).copy()
@@ -721,6 +783,22 @@ def _pairwise(w: World, obs, meas, nominal, control, trials):
     if w.datum is not None:
         tied[w.datum] = True
     for parent, child, targets in w.links:
+        if targets is None:  # cloud to cloud
+            if not tied[parent]:
+                continue
+            # the parent's registered pose, as a deviation from its nominal one
+            d = rot[:, parent] @ np.swapaxes(nominal[parent], -1, -2)[None]
+            w_i = 0.5 * np.stack(
+                [d[:, 2, 1] - d[:, 1, 2], d[:, 0, 2] - d[:, 2, 0], d[:, 1, 0] - d[:, 0, 1]], 1
+            )
+            s_i = pos[:, parent] - w.station_xyz[parent]
+            lever = w.station_xyz[child] - w.station_xyz[parent]
+            rel = clouds[(parent, child)]
+            s_j = s_i + np.cross(w_i, lever) + rel[:, :3]
+            rot[:, child] = _rotvec(w_i + rel[:, 3:]) @ nominal[child]
+            pos[:, child] = w.station_xyz[child] + s_j
+            tied[child] = True
+            continue
         use = [t for t in targets if (child, t) in obs and (parent == -1 or (parent, t) in obs)]
         if len(use) < 3 or (parent != -1 and not tied[parent]):
             continue
