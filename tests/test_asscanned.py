@@ -4,6 +4,7 @@ stations as scanned, and the registration report compared with the plan."""
 from __future__ import annotations
 
 import datetime
+import itertools
 
 import numpy as np
 import pandas as pd
@@ -16,7 +17,12 @@ from planner.errors import InputError
 from planner.pipeline.engine.judge import copy_plan, workbench_of
 from planner.pipeline.engine.planning import cover_demand, plan
 from planner.pipeline.inputs.requirements import PlanSettings
-from planner.pipeline.survey.asscanned import compare_links, read_link_report, replan
+from planner.pipeline.survey.asscanned import (
+    compare_links,
+    pair_prediction,
+    read_link_report,
+    replan,
+)
 from planner.pipeline.survey.pointclouds import read_poses
 
 
@@ -83,15 +89,29 @@ def test_nothing_changed_means_nothing_extra(default_plan):
 def test_the_link_report_is_read_under_its_own_names_and_compared(default_plan, tmp_path):
     a, b, pred = default_plan.links.iloc[0][["station_a", "station_b", "link_rms_mm"]]
     path = tmp_path / "report.csv"
-    path.write_text(f"From;To;Error (m);Overlap\n{b};{a};{3 * pred / 1000};40%\nS01;S99;0.001;5\n")
+    # a pair the plan does not link but a registration program's report holds (its scans
+    # made one after the other): the plan's prediction for that pair registered directly
+    links = default_plan.links
+    linked = {frozenset(k) for k in zip(links.station_a, links.station_b, strict=True)}
+    ids = default_plan.stations["station_id"].tolist()
+    other = next(
+        (x, y)
+        for x, y in itertools.pairwise(ids)
+        if frozenset((x, y)) not in linked and np.isfinite(pair_prediction(default_plan, x, y)[0])
+    )
+    path.write_text(
+        f"From;To;Error (m);Overlap\n{b};{a};{3 * pred / 1000};40%\nS01;S99;0.001;5\n"
+        f"{other[0]};{other[1]};0.0005;30\n"
+    )
     rep = read_link_report(path)
     assert rep["error_mm"].iloc[0] == pytest.approx(3 * pred)  # mm
     check = compare_links(default_plan, rep)
     assert check["ratio"].iloc[0] == pytest.approx(3.0)
-    assert check["verdict"].tolist() == [
-        "over twice the prediction: check this link",
-        "not a link of the plan",
-    ]
+    assert check["planned"].tolist() == [True, False, False]
+    assert check["verdict"].iloc[0] == "over twice the prediction: check this link"
+    assert check["verdict"].iloc[1].startswith("no prediction")  # S99: no such scan
+    assert check["predicted_mm"].iloc[2] == pytest.approx(pair_prediction(default_plan, *other)[0])
+    assert check["ratio"].iloc[2] == pytest.approx(0.5 / check["predicted_mm"].iloc[2])
     assert check["reported_overlap_pct"].iloc[0] == 40
 
 

@@ -27,7 +27,7 @@ import shapely
 
 from planner.errors import InputError
 from planner.pipeline.engine.ids import id_number
-from planner.pipeline.engine.judge import copy_plan, free_positions
+from planner.pipeline.engine.judge import copy_plan, free_positions, workbench_of
 from planner.pipeline.engine.planning import choose_stations
 from planner.pipeline.engine.result import Plan
 from planner.pipeline.engine.whatif import (
@@ -38,6 +38,7 @@ from planner.pipeline.engine.whatif import (
     one_setup_twice,
 )
 from planner.pipeline.evaluation.evaluate import Progress
+from planner.pipeline.network.layout import Layout
 from planner.pipeline.survey.pointclouds import find_columns, read_table
 
 __all__ = [
@@ -48,6 +49,7 @@ __all__ = [
     "check_scanned",
     "compare_links",
     "match_ids",
+    "pair_prediction",
     "read_link_report",
     "read_targets_placed",
     "replan",
@@ -482,10 +484,14 @@ def read_link_report(path: str | Path) -> pd.DataFrame:
 
 
 def compare_links(p: Plan, report: pd.DataFrame) -> pd.DataFrame:
-    """Each reported link beside the plan's prediction (either direction of the pair):
-    ``predicted_mm`` (the link's own predicted error), ``ratio`` reported/predicted and a
-    verdict — within the prediction, up to twice it, over twice it, or not a link of the
-    plan."""
+    """Each reported link beside the plan's prediction, matched by its pair of scans (either
+    direction), not by the plan's own list of links — registration software links the scans
+    in the order they were made and adds the overlapping pairs it finds: ``predicted_mm``
+    (the link's own predicted error: the plan's link, else what the plan predicts for that
+    pair registered directly, cloud to cloud or on the targets both see —
+    :func:`pair_prediction`), ``ratio`` reported/predicted, ``planned`` whether the plan
+    has that link, and a verdict — within the prediction, up to twice it, over twice it, or
+    no prediction (the two scans share too little)."""
     links = {frozenset((r.station_a, r.station_b)): r for r in p.links.itertuples(index=False)}
     ids = p.stations["station_id"].tolist()
     report = report.assign(
@@ -493,12 +499,14 @@ def compare_links(p: Plan, report: pd.DataFrame) -> pd.DataFrame:
     )
     rows = []
     for r in report.itertuples():
-        k = frozenset((r.station_a, r.station_b))
-        link = links.get(k)
-        pred = float(link.link_rms_mm) if link is not None else np.nan
+        link = links.get(frozenset((r.station_a, r.station_b)))
+        if link is not None:
+            pred, overlap = float(link.link_rms_mm), float(link.overlap_pct)
+        else:
+            pred, overlap = pair_prediction(p, r.station_a, r.station_b)
         ratio = r.error_mm / pred if pred > 0 else np.nan
-        if np.isnan(pred):
-            verdict = "not a link of the plan"
+        if not np.isfinite(pred):
+            verdict = "no prediction: the plan finds the two scans share too little to link"
         elif np.isnan(r.error_mm):
             verdict = "no error given"
         elif ratio <= 1.0:
@@ -511,12 +519,41 @@ def compare_links(p: Plan, report: pd.DataFrame) -> pd.DataFrame:
             {
                 "station_a": r.station_a,
                 "station_b": r.station_b,
+                "planned": link is not None,
                 "reported_mm": r.error_mm,
                 "predicted_mm": pred,
                 "ratio": ratio,
                 "reported_overlap_pct": getattr(r, "overlap_pct", np.nan),
-                "predicted_overlap_pct": float(link.overlap_pct) if link is not None else np.nan,
+                "predicted_overlap_pct": overlap,
                 "verdict": verdict,
             }
         )
     return pd.DataFrame(rows)
+
+
+def pair_prediction(p: Plan, a: str, b: str) -> tuple[float, float]:
+    """What the plan predicts for scan ``b`` registered directly to scan ``a`` (station
+    ids): the link's own error at ``b``'s facade points [mm] — cloud to cloud where the
+    registration is, else on the targets both see (the plan's layout of its network,
+    :class:`~planner.pipeline.network.layout.Layout`) — and the two scans' overlap [%];
+    inf and NaN where the plan cannot tell (an id it does not have, no network)."""
+    wb, net = workbench_of(p), p.network
+    order = _network_ids(p)
+    if wb is None or net is None or a not in order or b not in order:
+        return np.inf, np.nan
+    stations = [int(s) for s in net.stations]
+    lay = Layout(wb.ctx, wb.seen, wb.pool, stations, {}, goal_mm=np.inf)
+    i, j = order.index(a), order.index(b)
+    _, err = lay.link(i, j)
+    overlap = float(lay.overlap[i, j]) if lay.overlap is not None else np.nan
+    return float(err), overlap
+
+
+def _network_ids(p: Plan) -> list[str]:
+    """The station ids in the order of the plan's network (its stations' positions)."""
+    st = p.stations.set_index("station_id")[["x", "y"]]
+    out = []
+    for x, y in p.network.station_xyz[:, :2] if p.network is not None else []:
+        d = np.hypot(st["x"].to_numpy() - x, st["y"].to_numpy() - y)
+        out.append(str(st.index[int(np.argmin(d))]))
+    return out
