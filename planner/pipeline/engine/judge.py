@@ -516,10 +516,13 @@ def round_network(
     chosen: np.ndarray,
     clock: Clock | None = None,
     datum: int | None = None,
+    kit: tuple = (None, None),
 ) -> Network | None:
     """The registration network of the stations ``chosen`` (candidate indices), each
     probed at the facade points it serves best by the scanner's error; once the ``clock``
-    has run out (default: none), without looking for linking stations."""
+    has run out (default: none), without looking for linking stations. ``kit``: a
+    leap-frogging kit's chain and cap
+    (:func:`~planner.pipeline.network.registration.build_network`)."""
     if not len(chosen):
         return None
     clock = Clock.unbounded() if clock is None else clock
@@ -545,6 +548,8 @@ def round_network(
         datum=datum,
         deadline=clock.deadline,
         height_room=(fac.xy[has], room),
+        chain=kit[0],
+        cap=kit[1],
     )
     if not net.tied.all() and net.tied.any():  # groups no target reaches: planned control
         net = tie_groups(ctx, cand, seen, net, REGISTRATION_GOAL * tightest, clock.deadline)

@@ -37,6 +37,7 @@ from planner.pipeline.engine.judge import (
     stations_for,
     what_blocks,
 )
+from planner.pipeline.engine.kit import within_kit
 from planner.pipeline.engine.levelrun import level_run, say_level_run
 from planner.pipeline.engine.result import Plan, SolverReport
 from planner.pipeline.engine.tables import budget_message, rehearsal_message
@@ -306,18 +307,25 @@ def choose_stations(
     solver = _solver_report(sol, rounds, cut, fac.party_wall, ev.evaluated)
     solver.spacing_untried = untried
     hand = np.setdiff1d(forced, best_effort)
-    p = assemble(
-        wb,
-        r,
-        solver,
-        messages,
-        whole,
-        progress=say,
-        hand=hand,
-        best_effort=best_effort,
-        kept=kept,
-        given=given,
-    )
+
+    def remake(rr: Round) -> Plan:
+        return assemble(
+            wb,
+            rr,
+            solver,
+            messages,
+            whole,
+            progress=say,
+            hand=hand,
+            best_effort=best_effort,
+            kept=kept,
+            given=given,
+        )
+
+    p = remake(r)
+    r, p, kit = within_kit(ctx, cand, seen, r, p, remake)
+    if kit:
+        p.messages.append(kit)
     say_level_run(p, level_run(ctx, cand, r), seen.tc.xyz)
     return _with_the_day(p)
 

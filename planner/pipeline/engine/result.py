@@ -152,6 +152,18 @@ class Plan:
         """The stations that scan (the total station's traverse set-ups left out)."""
         return self.stations[self.stations["purpose"] != "traverse"]
 
+    def network_ids(self) -> list[str]:
+        """The station ids in the order of the registration network's stations (its
+        indices: links, observations), matched by position; none without a network."""
+        if self.network is None:
+            return []
+        st = self.stations.set_index("station_id")[["x", "y"]]
+        x, y = st["x"].to_numpy(dtype=float), st["y"].to_numpy(dtype=float)
+        return [
+            str(st.index[int(np.argmin(np.hypot(x - sx, y - sy)))])
+            for sx, sy in self.network.station_xyz[:, :2]
+        ]
+
     def facade_table(self) -> pd.DataFrame:
         """The per-facade summary as shown to a surveyor (indexed by facade id)."""
         return self.facades.set_index("facade_id")[FACADE_TABLE_COLUMNS].round(2)

@@ -557,6 +557,8 @@ def targets_and_links(
             size = chosen.size_mm if chosen else float("nan")
             item = chosen.name if chosen else ""
             seen_by = np.flatnonzero(sight.usable[t] & (sight.need_mm[t] <= size))
+            # the sightings the registration counts (a target leap-frogged: its window's)
+            seen_by = np.array([j for j in seen_by if (j, t) in net.centre_rms], dtype=int)
         far = who[int(np.argmax(sight.need_mm[t, who]))] if who else 0
         f = int(tc.facade[t])
         nx, ny = tc.normal[t]

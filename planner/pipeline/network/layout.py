@@ -8,6 +8,7 @@ stands set up so far (:class:`Stands`).
 from __future__ import annotations
 
 import heapq
+import itertools
 import math
 import time
 from collections.abc import Sequence
@@ -64,8 +65,14 @@ class Layout:
         goal_mm: float,
         datum: int | None = None,
         deadline: float = math.inf,
+        chain: Sequence[int] | None = None,
+        cap: int | None = None,
     ) -> None:
         tc, st = seen.tc, ctx.settings
+        #: a leap-frogging kit's layout: links only between set-ups next to each other in
+        #: ``chain`` (positions in ``stations``, the visiting order), each of at most ``cap``
+        #: targets (:mod:`planner.pipeline.engine.kit`)
+        self.cap = cap if cap is not None else st.max_targets_per_link
         self.ctx, self.tc, self.goal_mm, self.seen = ctx, tc, goal_mm, seen
         self.by_hand = seen.by_hand if seen.by_hand.any() else None
         self.stations = stations
@@ -94,6 +101,10 @@ class Layout:
                 )
                 if self.cloud(int(a), int(b)) is not None
             }
+        if chain is not None:
+            chain = [int(c) for c in chain]
+            nearby = {frozenset(ab) for ab in itertools.pairwise(chain)}
+            pairs = {(a, b) for a, b in pairs if frozenset((a, b)) in nearby}
         self.pairs = sorted((int(a), int(b)) for a, b in pairs)
         # by candidate index (CONTROL for the control network), shared by the layouts of a
         # plan: a link depends on its two stations and the child's facade points only
@@ -362,6 +373,7 @@ class Layout:
             probe.tobytes(),
             common.tobytes(),
             reused.tobytes(),
+            self.cap,
         )
         if key not in self._memo:
             self._memo[key] = choose_link_targets(
@@ -372,7 +384,7 @@ class Layout:
                 probe,
                 reused,
                 self.ctx.scanner.is_levelled,
-                self.ctx.settings.max_targets_per_link,
+                self.cap,
                 self.goal_mm,
                 self.by_hand,
             )

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
 import numpy as np
 
@@ -63,6 +63,8 @@ def build_network(
     datum: int | None = None,
     deadline: float = math.inf,
     height_room: tuple[np.ndarray, np.ndarray] | None = None,
+    chain: Sequence[int] | None = None,
+    cap: int | None = None,
 ) -> Network:
     """Link the chosen stations into one registration network (module docstring).
 
@@ -75,12 +77,22 @@ def build_network(
     :func:`time.monotonic` time) no linking stations are looked for (``cut_short``).
     ``height_room``: the samples' plan positions (P, 2) [m] and the height error each leaves
     the registration [mm], for deciding a level run
-    (:func:`~planner.pipeline.network.height.levelled_targets`).
+    (:func:`~planner.pipeline.network.height.levelled_targets`). ``chain`` and ``cap``: a
+    leap-frogging kit's layout (:class:`~planner.pipeline.network.layout.Layout`).
     """
     seen = cache if cache is not None else SightCache(ctx, tc, cand_xy)
     n_cover = len(chosen)
     lay, cut_short = _layout(
-        ctx, seen, cand_xy, [int(c) for c in chosen], probes, goal_mm, weak_mm, datum, deadline
+        ctx,
+        seen,
+        cand_xy,
+        [int(c) for c in chosen],
+        probes,
+        goal_mm,
+        weak_mm,
+        datum,
+        deadline,
+        (chain, cap),
     )
     stations, station_xyz, datum, k = lay.stations, lay.station_xyz, lay.datum, lay.k
     links, link_error, placed, stands, behind = _tree_links(ctx, tc, lay)
@@ -154,16 +166,18 @@ def _layout(
     weak_mm: float,
     datum: int | None,
     deadline: float,
+    kit: tuple = (None, None),
 ) -> tuple[Layout, bool]:
     """The network's layout over ``stations`` and the linking stations they need (and a
     detour where a link is weaker than ``weak_mm``, if it makes the worst station's error
     smaller); and whether the deadline cut the search for linking stations short."""
     lay = _checked(
-        ctx, lambda: Layout(ctx, seen, cand_xy, stations, probes, goal_mm, datum, deadline)
+        ctx, lambda: Layout(ctx, seen, cand_xy, stations, probes, goal_mm, datum, deadline, *kit)
     )
     groups = link_groups(lay.k, lay.pairs)
     cut_short = False
-    if groups.max() > 0:  # stations neither targets nor clouds tie: linking stations
+    # stations neither targets nor clouds tie: linking stations (not in a kit's chain)
+    if groups.max() > 0 and kit[0] is None:
         hops = linking_hops(ctx, seen, cand_xy, stations, lay.mode, lay.sight, deadline)
         extra, cut_short = find_bridges(hops, groups, deadline) if hops else ([], True)
         if extra:
@@ -174,7 +188,7 @@ def _layout(
                 ),
             )
     weak = np.zeros(1)
-    if np.isfinite(weak_mm) and lay.k > 1 and time.monotonic() <= deadline:
+    if np.isfinite(weak_mm) and lay.k > 1 and time.monotonic() <= deadline and kit[0] is None:
         weak = lay.weak_groups(weak_mm)
     if weak.max() > 0:  # too weak: a detour, if it helps
         hops = linking_hops(ctx, seen, cand_xy, lay.stations, lay.mode, lay.sight, deadline)

@@ -538,7 +538,7 @@ def pair_prediction(p: Plan, a: str, b: str) -> tuple[float, float]:
     :class:`~planner.pipeline.network.layout.Layout`) — and the two scans' overlap [%];
     inf and NaN where the plan cannot tell (an id it does not have, no network)."""
     wb, net = workbench_of(p), p.network
-    order = _network_ids(p)
+    order = p.network_ids()
     if wb is None or net is None or a not in order or b not in order:
         return np.inf, np.nan
     stations = [int(s) for s in net.stations]
@@ -547,13 +547,3 @@ def pair_prediction(p: Plan, a: str, b: str) -> tuple[float, float]:
     _, err = lay.link(i, j)
     overlap = float(lay.overlap[i, j]) if lay.overlap is not None else np.nan
     return float(err), overlap
-
-
-def _network_ids(p: Plan) -> list[str]:
-    """The station ids in the order of the plan's network (its stations' positions)."""
-    st = p.stations.set_index("station_id")[["x", "y"]]
-    out = []
-    for x, y in p.network.station_xyz[:, :2] if p.network is not None else []:
-        d = np.hypot(st["x"].to_numpy() - x, st["y"].to_numpy() - y)
-        out.append(str(st.index[int(np.argmin(d))]))
-    return out
