@@ -24,6 +24,8 @@ from planner.pipeline.survey.asscanned import (
     replan,
 )
 from planner.pipeline.survey.pointclouds import read_poses
+from planner.scanner import Scanner
+from planner.siteio import default_site
 
 
 def _roles(p) -> tuple[str, str, str]:
@@ -327,3 +329,32 @@ def test_scans_of_another_plan_and_a_target_typed_far_off_are_refused(default_pl
     t.loc[t.index[0], "x"] -= 1000.0  # m: a digit typed wrong
     with pytest.raises(InputError, match="a typing error"):
         replan(default_plan, scanned, targets_placed=t)
+
+
+@pytest.mark.parametrize("missing", [0, 1])
+def test_a_missing_target_keeps_the_targets_that_stood_and_the_scans_made(tmp_path, missing):
+    """The RTC360 on the default site, every scan made as planned but one sphere of a
+    target link never set up (the first link's, or the second's): the re-plan keeps every
+    sphere that stood under its id, ties the scans by what is there (the spheres that stood,
+    the clouds, an extra set-up where nothing else can) with at most two extra set-ups, and
+    meets what the plan met; the command writes the extra stations' booklet."""
+    p = plan(default_site(), Scanner.from_name("leica-rtc360"))
+    by_targets = p.links[p.links["kind"] == "targets"]
+    gone = str(by_targets["target_ids"].iloc[missing].split(";")[0])
+    placed = p.targets[p.targets["target_id"] != gone][["target_id", "x", "y"]]
+    scanned = p.scan_stations[["station_id", "x", "y"]]
+    r = replan(p, scanned, targets_placed=placed)
+    kept = set(r.plan.targets["target_id"].astype(str))
+    assert gone not in kept and kept <= set(placed["target_id"].astype(str))
+    assert len(r.extra) <= 2
+    assert r.plan.scanned["meets"].sum() >= p.scanned["meets"].sum()
+    st, tg = tmp_path / "scanned.csv", tmp_path / "placed.csv"
+    scanned.to_csv(st, index=False)
+    placed.to_csv(tg, index=False)
+    out = tmp_path / "re"
+    code, _, err = run(
+        "replan", "--scanner", "leica-rtc360", "--out", str(out), "--as-scanned", str(st),
+        "--targets-placed", str(tg), "--booklet", "-q",
+    )  # fmt: skip
+    assert code in (0, 1), err
+    assert (out / "booklet.pdf").exists() == bool(len(r.extra))
