@@ -223,9 +223,12 @@ def test_links_csv_and_geojson_carry_the_per_link_report(default_plan, tmp_path)
         "kind",
         "overlap_pct",
         "weakest_direction",
+        "rehearsal_factor",
+        "failure_pct",
     ]
     assert (links["dilution"] > 0.3).all() and (links["targets_placed"] >= 3).all()
     assert (links["kind"] == "targets").all() and links["overlap_pct"].isna().all()
+    assert links["rehearsal_factor"].isna().all()  # no cloud link to rehearse
     assert links["weakest_direction"].str.contains("mm").all()
     import json
 

@@ -70,19 +70,21 @@ def within_kit(
     where that is not enough, the network laid out again as a leap-frogging traverse — links
     only between set-ups next to each other in the visiting order, each of at most half the
     kit's count of targets — and its targets leap-frogged. Each is judged again and the plan
-    made anew by ``remake(round)``; the first within the kit is the plan, its cost in samples
-    met said. Where neither is, the plan is kept as it was and the words say what the
-    traverse would have stood and met (the route's kit line says what to bring)."""
+    made anew by ``remake(round)``; the first within the kit that meets as many samples is
+    the plan. Where none does, the plan keeps its network and the words say what staying
+    within the kit would cost in samples, or stand at once (the route's kit line says what
+    to bring)."""
     limited = over_kit(p)
     if not limited or r.net is None or not len(r.net.links):
         return r, p, ""
     before = int(r.judged.n_met)
+    items = ", ".join(limited)
     how = (
         "each target stands from the first to the last scan of the links that use it, then "
         "moves on, and the registration counts only those sightings"
     )
     again, q = _leapfrog(ctx, cand, r, p, remake, limited)
-    if over_kit(q):  # a traverse along the visiting order, each link's targets within half
+    if over_kit(q) or again.judged.n_met < before:  # a traverse along the visiting order
         owned = p.route.kit.set_index("item")["owned"]
         cap = max(3, int(min(owned[i] for i in limited)) // 2)
         chain = list(np.argsort(_visit_positions(q)))
@@ -98,22 +100,23 @@ def within_kit(
             return r, p, ""
         again.judged = judge(ctx, cand, again)
         again, q = _leapfrog(ctx, cand, again, remake(again), remake, limited)
-        if over_kit(q):
-            return (
-                r,
-                p,
-                (
-                    f"Kit: no layout within the kit was found for the {', '.join(limited)} — "
-                    f"leap-frogged as a traverse along the visiting order, at most {cap} targets "
-                    f"a link, {_peak(q, limited)} would still stand at once and "
-                    f"{int(again.judged.n_met)} samples be met; the plan keeps its network (the "
-                    "field time says what to bring)."
-                ),
+        after = int(again.judged.n_met)
+        if over_kit(q) or after < before:
+            cost = (
+                f"{_peak(q, limited)} would still stand at once"
+                if over_kit(q)
+                else f"{after} samples would be met instead of {before}"
             )
-    after = int(again.judged.n_met)
+            return r, p, (
+                f"Kit: no layout within the kit meeting as many samples was found for the "
+                f"{items} — leap-frogged as a traverse along the visiting order, at most "
+                f"{cap} targets a link, {cost}; the plan keeps its network (the field time "
+                "says what to bring)."
+            )  # fmt: skip
     words = (
-        f"Kit: the {', '.join(limited)} leap-frog to stay within the kit — {how}: {after} "
-        f"samples met ({before} with every target standing from its first sight to its last)."
+        f"Kit: the {items} leap-frog to stay within the kit — {how}: "
+        f"{int(again.judged.n_met)} samples met, as with every target standing from its "
+        "first sight to its last."
     )
     return again, q, words
 

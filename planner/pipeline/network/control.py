@@ -269,7 +269,10 @@ def _group_network(
     fac = ctx.facades
     pts = np.column_stack([fac.xy, fac.z])
     probes = {j: pts[scanner_only.station == j] for j in range(len(chosen))}
-    sub = build_network(ctx, seen.tc, cand, chosen, probes, goal_mm=goal_mm, cache=seen)
+    # the main network's spheres stand while the group is scanned, and hide what is behind
+    sub = build_network(
+        ctx, seen.tc, cand, chosen, probes, goal_mm=goal_mm, cache=seen, standing=net.targets
+    )
     return sub if sub.datum is None and sub.error is not None else None
 
 

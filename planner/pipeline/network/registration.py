@@ -65,6 +65,7 @@ def build_network(
     height_room: tuple[np.ndarray, np.ndarray] | None = None,
     chain: Sequence[int] | None = None,
     cap: int | None = None,
+    standing: Sequence[int] = (),
 ) -> Network:
     """Link the chosen stations into one registration network (module docstring).
 
@@ -79,6 +80,8 @@ def build_network(
     the registration [mm], for deciding a level run
     (:func:`~planner.pipeline.network.height.levelled_targets`). ``chain`` and ``cap``: a
     leap-frogging kit's layout (:class:`~planner.pipeline.network.layout.Layout`).
+    ``standing``: spheres another network has set up (targets), which hide what lies behind
+    them from these stations too.
     """
     seen = cache if cache is not None else SightCache(ctx, tc, cand_xy)
     n_cover = len(chosen)
@@ -95,8 +98,9 @@ def build_network(
         (chain, cap),
     )
     stations, station_xyz, datum, k = lay.stations, lay.station_xyz, lay.datum, lay.k
-    links, link_error, placed, stands, behind = _tree_links(ctx, tc, lay)
-    sight = stands.hide(lay.sight, placed)  # the spheres set up hide targets from stations
+    links, link_error, placed, stands, behind = _tree_links(ctx, tc, lay, standing)
+    # the spheres set up (and another network's) hide targets from stations
+    sight = stands.hide(lay.sight, placed | set(stands.spheres))
     users, final_rms, observed = _final_sizes(ctx, tc, sight, links)
     control_rms = {int(t): float(tc.control_rms_mm[t]) for t in np.flatnonzero(tc.is_control)}
     station_datum = None if lay.datum == CONTROL else lay.datum  # control holds the vertical
@@ -121,8 +125,8 @@ def build_network(
     message = network_message(k, k - n_cover, datum, untied, n_groups, tc, links, lay.mode)
     if behind:
         message += (
-            f"; {behind} link(s) use a target behind another link's sphere (set that sphere "
-            "up only after those scans)"
+            f"; {behind} link(s) could only use targets behind another link's sphere and are "
+            "not made (the spheres stand together as the route sets them up)"
         )
     linkable = [(a, b, len(shared_targets(sight, tc, a, b))) for a, b in lay.pairs]
     return Network(
@@ -227,22 +231,26 @@ def _checked(ctx: Context, make: Callable[[], Layout]) -> Layout:
 
 
 def _tree_links(
-    ctx: Context, tc: TargetCandidates, lay: Layout
+    ctx: Context, tc: TargetCandidates, lay: Layout, standing: Sequence[int] = ()
 ) -> tuple[list[Link], dict[tuple[int, int], float], set[int], Stands, int]:
     """The links in tree order, each preferring the targets already set up (those the
     surveyor placed by hand are taken first by every link that sees them:
     :func:`~planner.pipeline.network.links.choose_link_targets`): the links, each one's own
-    error [mm], the targets placed, the sphere stands set up, and how many links use a
-    target behind another link's sphere."""
+    error [mm], the targets placed, the sphere stands set up, and how many links could only
+    use targets behind another link's sphere (not made: the stations they would tie are tied
+    otherwise, or said untied)."""
     placed: set[int] = set()
     links: list[Link] = []
     link_error: dict[tuple[int, int], float] = {}
     station_xyz, datum = lay.station_xyz, lay.datum
     stands = Stands(ctx, tc, station_xyz)
+    stands.spheres = [int(t) for t in standing if tc.type[t] == "sphere"]
     tied = [] if datum is None or datum == CONTROL else [datum]
     paired = set(lay.pairs)
     behind = 0  # links that can only use a target another link's sphere hides
     for parent, child in lay.tree:
+        if parent != CONTROL and parent not in tied:
+            continue  # its parent could not be tied: nor can it, this way
         targets, err = lay.link(parent, child, placed, stands)
         cl = lay.cloud(parent, child)
         if not targets and cl is not None:  # cloud to cloud
@@ -260,11 +268,10 @@ def _tree_links(
             ]
             if others:
                 err, parent, targets = min(others)
-        if not targets:  # no good other either: targets that do not hide one another
-            targets, err = lay.link(parent, child, placed, Stands(ctx, tc, station_xyz))
-            behind += 1  # behind a sphere of another link: the message says so
-        if not targets:
-            targets, err = lay.link(parent, child)
+        if not targets:  # only targets another link's sphere hides: no link (the spheres
+            # stand together as the route sets them up); the message says so
+            behind += 1
+            continue
         links.append(Link(parent, child, tuple(targets)))
         link_error[(parent, child)] = err
         placed.update(targets)
