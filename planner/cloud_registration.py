@@ -108,6 +108,7 @@ __all__ = [
     "DEFAULT_REVEAL_DEPTH_M",
     "DEFAULT_WINDOW_SHARE",
     "FLOOR_CELL_M",
+    "GROUND_REACH_M",
     "LINK_NEIGHBOURS",
     "MAX_LINK_INCIDENCE_DEG",
     "MIN_POINTS_ACROSS",
@@ -144,6 +145,9 @@ FLOOR_CELL_M = 2.0
 #: spacing of 10–14 cm. Cyclone REGISTER 360 and SCENE state none; 100 mm is assumed
 #: (``--cloud-spacing-mm``: a finer spacing uses shallower relief, and its check is longer).
 DEFAULT_CLOUD_SPACING_MM = 100.0
+#: How far from a station its ground counts for a link [m] (nearer, the ground is seen
+#: steeply enough to be a plane to a registration; farther, a few sparse lines).
+GROUND_REACH_M = 25.0
 #: A patch seen at a larger incidence gives a registration nothing [°].
 MAX_LINK_INCIDENCE_DEG = 85.0
 #: The neighbours of a point's local plane (small_gicp's default, 10): a patch whose

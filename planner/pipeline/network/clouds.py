@@ -28,6 +28,7 @@ import shapely
 
 from planner.cloud_registration import (
     FLOOR_CELL_M,
+    GROUND_REACH_M,
     MAX_LINK_CONDITION,
     MIN_POINTS_ACROSS,
     WINDOW_HEIGHT_M,
@@ -53,7 +54,15 @@ from planner.pipeline.network.linkcheck import LinkCheck, StartError, rehearse_l
 from planner.spacing import point_spacing_mm
 from planner.units import RHO_ARCSEC
 
-__all__ = ["CloudLink", "SurfaceCache", "Surfaces", "cloud_link", "overlap_matrix", "surfaces"]
+__all__ = [
+    "GROUND_REACH_M",
+    "CloudLink",
+    "SurfaceCache",
+    "Surfaces",
+    "cloud_link",
+    "overlap_matrix",
+    "surfaces",
+]
 
 #: The surface kinds of a city model's openings (their reveals are the model's own walls).
 OPENINGS = ("window", "door")
@@ -65,9 +74,8 @@ MIN_RELIEF_POINTS = 3.0
 #: wall with 150 mm reveals (tests/test_relief.py) found that bias 0.3–1.0 mm per link;
 #: 1 mm per opening (1.4 mm with the cloud floor) predicts its RMS within ±25 %.
 RELIEF_FLOOR_MM = 1.0
-#: Ground cells [m] and how far from a station its ground counts [m].
+#: Ground cells [m].
 GROUND_CELL_M = 2.0
-GROUND_REACH_M = 25.0
 #: A ground cell's sight line, cast as a ray, ends this far above the ground [m]: above the
 #: terrain's triangles and the clearance the lines beside it keep.
 GROUND_LIFT_M = 0.05

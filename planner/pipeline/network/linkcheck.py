@@ -38,8 +38,17 @@ from dataclasses import dataclass, fields
 import numpy as np
 from scipy.spatial import cKDTree
 
-from planner.cloud_registration import LEVER_M
-from planner.pipeline.geometry.beams import Floor, Returns, World, cast, grid, measure, unit
+from planner.cloud_registration import GROUND_REACH_M, LEVER_M, MAX_LINK_INCIDENCE_DEG
+from planner.pipeline.geometry.beams import (
+    POINT_KINDS,
+    Floor,
+    Returns,
+    World,
+    cast,
+    grid,
+    measure,
+    unit,
+)
 
 __all__ = [
     "FAIL_MM",
@@ -67,6 +76,10 @@ EPSILON = 1e-5
 #: scanner (nearer ones are thinned to it, farther ones are sampled coarser: a little
 #: pessimistic there, and the check's cost stays that of the surfaces shared).
 FAR_QUANTILE = 0.75
+#: The ground ring cast from a station starts this far out [m] (nearer, the ground is in
+#: the patches) and ends at the link model's ground reach.
+GROUND_NEAR_M = 6.0
+GROUND_KINDS = [POINT_KINDS.index("terrain"), POINT_KINDS.index("ground")]
 #: A beam direction is cast when it falls within this many patch half-widths of a patch
 #: both scans share (the patches are cells of about 2 m).
 PATCH_HALF_M = 1.5
@@ -144,8 +157,8 @@ def rehearse_link(
     v_m = spacing_mm / 1000.0
     origin = np.asarray(parent_xyz, dtype=float)
     centre = np.asarray(child_xyz, dtype=float) - origin  # the child in the check's frame
-    rets = [_cast_towards(world, np.asarray(s, float), common_xyz, v_m)
-            for s in (parent_xyz, child_xyz)]  # fmt: skip
+    ends = (np.asarray(parent_xyz, float), np.asarray(child_xyz, float))
+    rets = [_cast_towards(world, a, b, common_xyz, v_m) for a, b in (ends, ends[::-1])]
     rot = np.eye(3)
     errors, failed, sizes = [], [], (0, 0)
     probes_failed = n_probes = 0
@@ -195,11 +208,17 @@ def _fails(e: np.ndarray) -> bool:
     )
 
 
-def _cast_towards(world: World, pos: np.ndarray, common_xyz: np.ndarray, v_m: float):
-    """The returns of the beams from ``pos`` on the patches ``common_xyz``: a grid at the
-    spacing ``v_m`` at :data:`FAR_QUANTILE` of their distances (never finer than the
-    scanner's own step), only its beams that point within :data:`PATCH_HALF_M` of a patch,
-    and of their returns those that land within it, one per cell of half the spacing."""
+def _cast_towards(
+    world: World, pos: np.ndarray, other: np.ndarray, common_xyz: np.ndarray, v_m: float
+):
+    """The returns of the beams from ``pos`` on the patches ``common_xyz`` and on the ground
+    near both stations (``other`` the other one's centre): a grid at the spacing ``v_m`` at
+    :data:`FAR_QUANTILE` of the patches' distances (never finer than the scanner's own
+    step), only its beams that point within :data:`PATCH_HALF_M` of a patch or down at the
+    ground within :data:`~planner.pipeline.network.clouds.GROUND_REACH_M`, and of their
+    returns those that land within a patch's reach or on that ground — the ground the link
+    model leaves out as too grazing included, as a registration takes it — one per cell of
+    half the spacing."""
     sc, st = world.scanner, world.settings
     rel = np.asarray(common_xyz, dtype=float) - pos
     dist = np.linalg.norm(rel, axis=1)
@@ -219,6 +238,11 @@ def _cast_towards(world: World, pos: np.ndarray, common_xyz: np.ndarray, v_m: fl
         a0, a1 = int((a - w) / cell), int((a + w) / cell) + 1
         cols = np.arange(a0, a1) % n_az
         mark[max(e0, 0) : min(e1, n_el), cols] = True
+    # the ground ring out to the ground's reach (its grazing part is in no patch)
+    height = max(float(pos[2] - world.scene.ground_z(pos[None, :2])[0]), 0.1)
+    lo = -np.arctan2(height, GROUND_REACH_M) + np.pi / 2
+    hi = -np.arctan2(height, GROUND_NEAR_M) + np.pi / 2
+    mark[int(lo / cell) : int(hi / cell) + 1, :] = True
     col, row = np.meshgrid(np.arange(len(az)), np.arange(len(el)))
     col, row = col.ravel(), row.ravel()
     ai = (az[col] / cell).astype(np.int64) % n_az
@@ -228,6 +252,12 @@ def _cast_towards(world: World, pos: np.ndarray, common_xyz: np.ndarray, v_m: fl
     # only what lies on the shared surfaces (the directions also hold what is behind them)
     hit = pos + ret.dist[:, None] * unit(ret.az, ret.el)
     near = cKDTree(common_xyz).query(hit, distance_upper_bound=PATCH_HALF_M)[0] <= PATCH_HALF_M
+    ground = np.isin(ret.kind, GROUND_KINDS)
+    for c in (pos, other):
+        ground &= np.hypot(*(hit[:, :2] - c[:2]).T) <= GROUND_REACH_M
+    # beyond the incidence a registration takes, the check's coarse grid leaves lines of
+    # points where the scanner's own step, thinned, leaves a plane: left out
+    near = (near | ground) & (ret.cos >= np.cos(np.radians(MAX_LINK_INCIDENCE_DEG)))
     # one return per cell of half the even spacing: the thinning keeps no more (and the
     # noise of the returns a registration averages in a cell is below the floor's)
     cell = np.floor((hit[near] - pos) / (v_m / 2.0)).astype(np.int64) + (1 << 20)
