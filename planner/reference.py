@@ -77,6 +77,15 @@ REFERENCES: dict[str, str] = {
         'synthesis", Vision Algorithms: Theory and Practice, LNCS 1883, Springer, 2000, '
         "doi:10.1007/3-540-44480-7_21: targets and poses adjusted together"
     ),
+    "segal2009": (
+        'A. Segal, D. Haehnel, S. Thrun, "Generalized-ICP", Robotics: Science and Systems V, '
+        "2009, doi:10.15607/RSS.2009.V.021: the registration each cloud link is rehearsed with"
+    ),
+    "koide2024": (
+        'K. Koide, "small_gicp: Efficient and parallel algorithms for point cloud '
+        'registration", Journal of Open Source Software 9(100):6948, 2024, '
+        "doi:10.21105/joss.06948: the implementation of it the planner runs"
+    ),
     "deformation-tls": (
         '"Experimental study of the deformation accuracy of terrestrial 3-D laser scanners" '
         "(in Chinese: «地面三维激光扫描仪变形精度试验研究»): Leica ScanStation2 modelled surface "
