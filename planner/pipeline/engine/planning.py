@@ -309,21 +309,10 @@ def choose_stations(
     hand = np.setdiff1d(forced, best_effort)
 
     def remake(rr: Round) -> Plan:
-        return assemble(
-            wb,
-            rr,
-            solver,
-            messages,
-            whole,
-            progress=say,
-            hand=hand,
-            best_effort=best_effort,
-            kept=kept,
-            given=given,
-        )
+        return assemble(wb, rr, solver, messages, whole, progress=say, hand=hand,
+                        best_effort=best_effort, kept=kept, given=given)  # fmt: skip
 
-    p = remake(r)
-    r, p, kit = within_kit(ctx, cand, seen, r, p, remake)
+    r, p, kit = within_kit(ctx, cand, seen, r, remake(r), remake)
     if kit:
         p.messages.append(kit)
     say_level_run(p, level_run(ctx, cand, r), seen.tc.xyz)

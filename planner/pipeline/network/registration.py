@@ -85,38 +85,18 @@ def build_network(
     """
     seen = cache if cache is not None else SightCache(ctx, tc, cand_xy)
     n_cover = len(chosen)
-    lay, cut_short = _layout(
-        ctx,
-        seen,
-        cand_xy,
-        [int(c) for c in chosen],
-        probes,
-        goal_mm,
-        weak_mm,
-        datum,
-        deadline,
-        (chain, cap),
-    )
+    stations = [int(c) for c in chosen]
+    where = (datum, deadline, (chain, cap))
+    lay, cut_short = _layout(ctx, seen, cand_xy, stations, probes, goal_mm, weak_mm, *where)
     stations, station_xyz, datum, k = lay.stations, lay.station_xyz, lay.datum, lay.k
     links, link_error, placed, stands, behind = _tree_links(ctx, tc, lay, standing)
     # the spheres set up (and another network's) hide targets from stations
     sight = stands.hide(lay.sight, placed | set(stands.spheres))
     users, final_rms, observed = _final_sizes(ctx, tc, sight, links)
     control_rms = {int(t): float(tc.control_rms_mm[t]) for t in np.flatnonzero(tc.is_control)}
-    station_datum = None if lay.datum == CONTROL else lay.datum  # control holds the vertical
-    levelled = levelled_targets(
-        ctx, lay.station_xyz, station_datum, tc.xyz, sorted(placed), room=height_room
+    error, adjusted, levelled = _levelled_error(
+        ctx, lay, tc, links, (final_rms, observed, control_rms, users), placed, height_room
     )
-    error, adjusted = _network_error(
-        ctx, lay, tc, links, final_rms, observed, control_rms, users, levelled
-    )
-    if levelled and error is not None and not error.tied.all():
-        # groups to be tied by planned control (a traverse, GNSS): that control holds the
-        # vertical of what it ties, not a level run planned before it
-        levelled = {}
-        error, adjusted = _network_error(
-            ctx, lay, tc, links, final_rms, observed, control_rms, users
-        )
     link_sigma: dict[tuple[int, int], float] = {}
     if error is not None:
         link_sigma = _own_link_errors(lay, links, error, final_rms, control_rms, link_error)
@@ -278,6 +258,31 @@ def _tree_links(
         stands.set_up((parent, child), targets)
         tied.append(child)
     return links, link_error, placed, stands, behind
+
+
+def _levelled_error(
+    ctx: Context,
+    lay: Layout,
+    tc: TargetCandidates,
+    links: list[Link],
+    obs: tuple,
+    placed: set[int],
+    height_room: tuple[np.ndarray, np.ndarray] | None,
+) -> tuple[NetworkError | None, dict, dict[int, float]]:
+    """The network's error (:func:`_network_error` of ``obs``: the links' and every
+    sighting's centre RMS, the control's, each target's users) with the level run it plans
+    (:func:`~planner.pipeline.network.height.levelled_targets`), and that run; none where
+    groups are left to planned control (a traverse, GNSS), which holds the vertical of what
+    it ties, not a level run planned before it."""
+    station_datum = None if lay.datum == CONTROL else lay.datum  # control holds the vertical
+    levelled = levelled_targets(
+        ctx, lay.station_xyz, station_datum, tc.xyz, sorted(placed), room=height_room
+    )
+    error, adjusted = _network_error(ctx, lay, tc, links, *obs, levelled)
+    if levelled and error is not None and not error.tied.all():
+        levelled = {}
+        error, adjusted = _network_error(ctx, lay, tc, links, *obs)
+    return error, adjusted, levelled
 
 
 def _final_sizes(
