@@ -8,12 +8,12 @@ included) and registered by the point-to-plane ICP of ``tests/icp.py`` (its own 
 matching, trimming and Gauss–Newton; coarse to fine: correspondences within 0.5 m, then
 0.15 m), from a start drawn from the scanner's pre-alignment error, on the clouds thinned
 to the plan's registration spacing (``tests/icp.thin``), returns beyond 85° of incidence left
-out (the survey scans at 25 mm at 10 m for its cost: there its points on grazing ground lie
-in lines a metre apart, where the scanner's own step, thinned by the registration, leaves a
-plane). Nothing of the planner's link model,
-its rehearsal (small_gicp) or its network adjustment is used: the errors found (the child's
-pose at its centre, per sample) go to the virtual survey (``tests/virtual_survey.py``),
-which registers the network with them.
+out, and so are returns whose neighbours lie on a line (the survey scans at 25 mm at 10 m
+for its cost: there its points on grazing ground lie in lines a metre apart, where the
+scanner's own step, thinned by the registration, leaves a plane). Nothing of the planner's
+link model, its rehearsal (small_gicp) or its network adjustment is used: the errors found
+(the child's pose at its centre, per sample) go to the virtual survey
+(``tests/virtual_survey.py``), which registers the network with them.
 """
 
 from __future__ import annotations
@@ -30,6 +30,8 @@ from planner.pipeline.network.clouds import GROUND_REACH_M
 STEP_MM_AT_10M = 25.0
 #: The walls a registration of two scans has to go on: within this of both stations [m].
 WALL_REACH_M = 60.0
+#: A return whose neighbours (10, as the ICP's local planes) lie on a line is left out.
+NEIGHBOURS = 10
 #: Returns seen at a larger incidence than 85° are left out (:meth:`Scans.points`).
 COS_GRAZING = float(np.cos(np.radians(85.0)))
 RHO = 180.0 * 3600.0 / np.pi
@@ -77,9 +79,13 @@ class Scans:
         )
         ground = np.isin(ret.kind, [POINT_KINDS.index("ground"), POINT_KINDS.index("terrain")])
         building = np.isin(ret.kind, [POINT_KINDS.index("wall"), POINT_KINDS.index("roof")])
-        # beyond 85° the survey's coarse step leaves lines of points where the scanner's own
-        # step, thinned by the registration, leaves a plane: those returns are left out
-        keep = (ground | building) & (ret.cos >= COS_GRAZING)
+        # where the survey's coarse step leaves lines of points (grazing, or beyond 85°), the
+        # scanner's own step, thinned by the registration, leaves a plane: left out
+        spacing = STEP_MM_AT_10M / 10_000.0 * ret.dist  # m, square to the beam
+        v = st.cloud_spacing_mm / 1000.0
+        along = np.maximum(spacing / np.maximum(ret.cos, 1e-9), v)
+        lines = along > NEIGHBOURS / np.pi * np.maximum(spacing, v)
+        keep = (ground | building) & (ret.cos >= COS_GRAZING) & ~lines
         pts = m.local_xyz + self.xyz[sid]
         return pts[keep], ground[keep]
 

@@ -85,7 +85,7 @@ def test_every_catalogue_scanner_plans_the_default_site(name, switches):
     for c, a, r, t in zip("xyz", got, reg, total, strict=True):
         if st.computes_registration:
             tied = np.isfinite(r)
-            assert tied.mean() > 0.5
+            assert tied.sum() > 100  # samples whose registration is known
             assert t[tied] == pytest.approx(np.hypot(a[tied], r[tied]), abs=1e-6), f"m_{c}"
         else:
             assert t == pytest.approx(a, abs=1e-6), f"m_{c}"  # mm

@@ -19,6 +19,7 @@ from planner.pipeline.network import clouds
 from planner.pipeline.network.linkcheck import FAIL_MM, StartError, rehearse_link
 from planner.scanner import Scanner
 from planner.site import Building, Site
+from planner.siteio import default_site
 
 SCANNER = Scanner.from_name("leica-4mm-60urad")
 #: A 40 × 20 m block: a corner pair both see its south and east walls; a street pair sees
@@ -53,13 +54,22 @@ def corner():
 def test_a_corner_link_holds_and_its_rehearsal_is_near_the_model(corner):
     """Two stations at a corner share two walls and the ground: the link model fixes it,
     the rehearsal's three trials and six basin probes all converge, and the rehearsal's RMS
-    error along each axis is within a factor of 3 of the model's (three trials); the link
-    is taken at the larger of the two."""
-    _, _, _, model, checked = corner
+    error along each axis is within a factor of 3 of the model's; the link is taken at the
+    larger of the two."""
+    ctx, cache, cand, model, checked = corner
     assert model.fixed and checked.check is not None
     assert checked.holds and checked.check.failure == 0.0
     assert checked.check.probes == 6 and checked.check.probes_failed == 0
-    rms = np.sqrt(np.mean(np.square(checked.check.errors[:, :3]), axis=0))  # mm
+    # eight trials: the model within a factor of 3 (it is 1.4–2.2 optimistic here, the
+    # local planes of a GICP at 100 mm bending round the corner's edges)
+    pair = cache.take(np.array([0, 1]), cand)
+    both = (pair.points[:, 0] > 0) & (pair.points[:, 1] > 0)
+    world = World.of(ctx.site, ctx.scanner, ctx.settings, ctx.scene)
+    eight = rehearse_link(
+        world, pair.station_xyz[0], pair.station_xyz[1], pair.xyz[both],
+        StartError(*SCANNER.start_error), spacing_mm=100.0, floor=(1.0, 1.4, 2.0), trials=8,
+    )  # fmt: skip
+    rms = np.sqrt(np.mean(np.square(eight.errors[:, :3]), axis=0))  # mm
     sd = np.sqrt(np.diag(model.cov)[:3])  # mm
     assert np.all(rms < 3.0 * sd) and np.all(rms > sd / 3.0)
     assert checked.scale >= 1.0
@@ -121,17 +131,18 @@ def test_a_start_outside_the_basin_fails(corner):
     assert not far.holds and far.probes_failed >= 4
 
 
-def test_a_cloud_plan_rehearses_every_link_it_keeps():
-    """A cloud-to-cloud plan of the block: every cloud link of its network was rehearsed,
-    none fails more than 1 % of the time, each is taken at least at the model's error, and
-    the plan says what the rehearsal found."""
-    p = plan(SITE, SCANNER, settings=PlanSettings(registration="cloud", grid_m=3.0))
+def test_a_plan_rehearses_every_cloud_link_it_keeps():
+    """A hybrid plan of the default site (cloud links, targets where a link is weak): every cloud
+    link of its network was rehearsed, none fails more than 1 % of the time, each is taken
+    at least at the model's error, and the plan says what the rehearsal found; with
+    ``--link-check model`` nothing is rehearsed."""
+    st = {"registration": "hybrid"}
+    p = plan(default_site(), SCANNER, settings=PlanSettings(**st))
     cloud = p.links[p.links["kind"] == "cloud"]
-    assert len(cloud) >= 2
+    assert len(cloud) >= 1
     assert (cloud["rehearsal_factor"] >= 1.0).all()
     assert (cloud["failure_pct"] <= 1.0).all()  # %
     assert any(m.startswith("Cloud links rehearsed:") for m in p.messages)
-    quick = plan(SITE, SCANNER, settings=PlanSettings(registration="cloud", grid_m=3.0,
-                                                      link_check="model"))  # fmt: skip
+    quick = plan(default_site(), SCANNER, settings=PlanSettings(link_check="model", **st))
     assert quick.links["rehearsal_factor"].isna().all()
     assert not any(m.startswith("Cloud links rehearsed:") for m in quick.messages)

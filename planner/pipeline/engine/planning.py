@@ -11,6 +11,7 @@ summary and unmet samples with the reason. The result type is
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
 
@@ -21,7 +22,7 @@ import shapely
 from planner.citymodel import LEVEL_ROOF_DEG, level_roof
 from planner.errors import InputError
 from planner.pipeline.engine.conditions import condition_words
-from planner.pipeline.engine.ids import GivenIds
+from planner.pipeline.engine.ids import GivenIds, id_number
 from planner.pipeline.engine.judge import (
     Round,
     Workbench,
@@ -308,15 +309,33 @@ def choose_stations(
     solver.spacing_untried = untried
     hand = np.setdiff1d(forced, best_effort)
 
-    def remake(rr: Round) -> Plan:
+    ids_before = (wb.last_station, wb.last_target)
+
+    def remake(rr: Round) -> Plan:  # each try from the ids given before (one id each)
+        wb.last_station, wb.last_target = ids_before
         return assemble(wb, rr, solver, messages, whole, progress=say, hand=hand,
                         best_effort=best_effort, kept=kept, given=given)  # fmt: skip
 
-    r, p, kit = within_kit(ctx, cand, seen, r, remake(r), remake)
-    if kit:
-        p.messages.append(kit)
+    r, p = _within_the_kit(wb, r, remake, ids_before)
     say_level_run(p, level_run(ctx, cand, r), seen.tc.xyz)
     return _with_the_day(p)
+
+
+def _within_the_kit(
+    wb: Workbench, r: Round, remake: Callable[[Round], Plan], ids_before: tuple[int, int]
+) -> tuple[Round, Plan]:
+    """The round and plan within the crew's kit (:func:`~planner.pipeline.engine.kit.within_kit`,
+    ``remake`` the plan's assembly), saying what that took; the ids the workbench has given
+    are the plan's, not those of a layout tried for the kit and left (``ids_before``: the
+    highest given before)."""
+    r, p, kit = within_kit(wb.ctx, wb.pool, wb.seen, r, remake(r), remake)
+    if kit:
+        p.messages.append(kit)
+    stations = (id_number(s, "S") or 0 for s in p.stations["station_id"])
+    targets = (id_number(t, "T") or 0 for t in p.targets["target_id"])
+    wb.last_station = max([ids_before[0], *stations])
+    wb.last_target = max([ids_before[1], *targets])
+    return r, p
 
 
 def _with_the_day(p: Plan) -> Plan:
@@ -600,7 +619,7 @@ def _best_effort(
 #: the network is built and judged again) …
 MAX_REGISTRATION_ROUNDS = 4
 #: Rounds of adding stations once the cloud links are rehearsed.
-REHEARSED_ROUNDS = 2
+REHEARSED_ROUNDS = 1
 #: … of which rounds of adding before the fewest are chosen again.
 ADD_ROUNDS = 2
 

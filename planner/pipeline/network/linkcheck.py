@@ -38,9 +38,13 @@ from dataclasses import dataclass, fields
 import numpy as np
 from scipy.spatial import cKDTree
 
-from planner.cloud_registration import GROUND_REACH_M, LEVER_M, MAX_LINK_INCIDENCE_DEG
+from planner.cloud_registration import (
+    LEVER_M,
+    LINK_NEIGHBOURS,
+    MAX_LINK_INCIDENCE_DEG,
+    registration_spacing,
+)
 from planner.pipeline.geometry.beams import (
-    POINT_KINDS,
     Floor,
     Returns,
     World,
@@ -76,10 +80,9 @@ EPSILON = 1e-5
 #: scanner (nearer ones are thinned to it, farther ones are sampled coarser: a little
 #: pessimistic there, and the check's cost stays that of the surfaces shared).
 FAR_QUANTILE = 0.75
-#: The ground ring cast from a station starts this far out [m] (nearer, the ground is in
-#: the patches) and ends at the link model's ground reach.
-GROUND_NEAR_M = 6.0
-GROUND_KINDS = [POINT_KINDS.index("terrain"), POINT_KINDS.index("ground")]
+#: A thinned cloud is registered on at most this many of its points, drawn at random (as
+#: CloudCompare's ICP samples at most 50 000 points of a cloud by default).
+MAX_POINTS = 50_000
 #: A beam direction is cast when it falls within this many patch half-widths of a patch
 #: both scans share (the patches are cells of about 2 m).
 PATCH_HALF_M = 1.5
@@ -157,8 +160,8 @@ def rehearse_link(
     v_m = spacing_mm / 1000.0
     origin = np.asarray(parent_xyz, dtype=float)
     centre = np.asarray(child_xyz, dtype=float) - origin  # the child in the check's frame
-    ends = (np.asarray(parent_xyz, float), np.asarray(child_xyz, float))
-    rets = [_cast_towards(world, a, b, common_xyz, v_m) for a, b in (ends, ends[::-1])]
+    rets = [_cast_towards(world, np.asarray(s, float), common_xyz, v_m)
+            for s in (parent_xyz, child_xyz)]  # fmt: skip
     rot = np.eye(3)
     errors, failed, sizes = [], [], (0, 0)
     probes_failed = n_probes = 0
@@ -169,7 +172,9 @@ def rehearse_link(
             fl = Floor(floor[0], floor[1], floor[2], scan_key=(seed * 1000 + t) * 2 + k + 1)
             m = measure(world, ret, np.asarray(pos, float), rot, rng, floor=fl)
             clouds.append(m.local_xyz + (np.asarray(pos, float) - origin))
-        parent, child = (_prepared(c, v_m) for c in clouds)
+        parent, child = (
+            _prepared(_sampled(_thinned(c, v_m), (seed, t, k)), v_m) for k, c in enumerate(clouds)
+        )
         sizes = (parent[0].size(), child[0].size())
         rng = np.random.default_rng([seed, t, 2])
         starts = [start.draw(rng)]
@@ -208,17 +213,12 @@ def _fails(e: np.ndarray) -> bool:
     )
 
 
-def _cast_towards(
-    world: World, pos: np.ndarray, other: np.ndarray, common_xyz: np.ndarray, v_m: float
-):
-    """The returns of the beams from ``pos`` on the patches ``common_xyz`` and on the ground
-    near both stations (``other`` the other one's centre): a grid at the spacing ``v_m`` at
-    :data:`FAR_QUANTILE` of the patches' distances (never finer than the scanner's own
-    step), only its beams that point within :data:`PATCH_HALF_M` of a patch or down at the
-    ground within :data:`~planner.pipeline.network.clouds.GROUND_REACH_M`, and of their
-    returns those that land within a patch's reach or on that ground — the ground the link
-    model leaves out as too grazing included, as a registration takes it — one per cell of
-    half the spacing."""
+def _cast_towards(world: World, pos: np.ndarray, common_xyz: np.ndarray, v_m: float):
+    """The returns of the beams from ``pos`` on the patches ``common_xyz``: a grid at the
+    spacing ``v_m`` at :data:`FAR_QUANTILE` of their distances (never finer than the
+    scanner's own step), only its beams that point within :data:`PATCH_HALF_M` of a patch,
+    and of their returns those that land within it where the grid's points form a plane,
+    one per cell of half the spacing."""
     sc, st = world.scanner, world.settings
     rel = np.asarray(common_xyz, dtype=float) - pos
     dist = np.linalg.norm(rel, axis=1)
@@ -238,11 +238,6 @@ def _cast_towards(
         a0, a1 = int((a - w) / cell), int((a + w) / cell) + 1
         cols = np.arange(a0, a1) % n_az
         mark[max(e0, 0) : min(e1, n_el), cols] = True
-    # the ground ring out to the ground's reach (its grazing part is in no patch)
-    height = max(float(pos[2] - world.scene.ground_z(pos[None, :2])[0]), 0.1)
-    lo = -np.arctan2(height, GROUND_REACH_M) + np.pi / 2
-    hi = -np.arctan2(height, GROUND_NEAR_M) + np.pi / 2
-    mark[int(lo / cell) : int(hi / cell) + 1, :] = True
     col, row = np.meshgrid(np.arange(len(az)), np.arange(len(el)))
     col, row = col.ravel(), row.ravel()
     ai = (az[col] / cell).astype(np.int64) % n_az
@@ -252,12 +247,14 @@ def _cast_towards(
     # only what lies on the shared surfaces (the directions also hold what is behind them)
     hit = pos + ret.dist[:, None] * unit(ret.az, ret.el)
     near = cKDTree(common_xyz).query(hit, distance_upper_bound=PATCH_HALF_M)[0] <= PATCH_HALF_M
-    ground = np.isin(ret.kind, GROUND_KINDS)
-    for c in (pos, other):
-        ground &= np.hypot(*(hit[:, :2] - c[:2]).T) <= GROUND_REACH_M
-    # beyond the incidence a registration takes, the check's coarse grid leaves lines of
-    # points where the scanner's own step, thinned, leaves a plane: left out
-    near = (near | ground) & (ret.cos >= np.cos(np.radians(MAX_LINK_INCIDENCE_DEG)))
+    # where the check's grid, coarser than the scanner's own step, leaves lines of points
+    # (grazing, or beyond the incidence a registration takes), the scanner's thinned scan
+    # leaves a plane: left out
+    along, across = registration_spacing(step * 1000.0 * ret.dist, ret.cos, v_m * 1000.0)
+    planar = (along <= LINK_NEIGHBOURS / np.pi * across) & (
+        ret.cos >= np.cos(np.radians(MAX_LINK_INCIDENCE_DEG))
+    )
+    near &= planar
     # one return per cell of half the even spacing: the thinning keeps no more (and the
     # noise of the returns a registration averages in a cell is below the floor's)
     cell = np.floor((hit[near] - pos) / (v_m / 2.0)).astype(np.int64) + (1 << 20)
@@ -266,12 +263,29 @@ def _cast_towards(
     return _take(ret, np.flatnonzero(near)[np.sort(first)])
 
 
+def _sampled(points: np.ndarray, seed: tuple) -> np.ndarray:
+    """At most :data:`MAX_POINTS` of a thinned cloud, drawn at random (seeded)."""
+    if len(points) <= MAX_POINTS:
+        return points
+    pick = np.random.default_rng(seed).choice(len(points), MAX_POINTS, replace=False)
+    return points[np.sort(pick)]
+
+
 def _take(ret: Returns, keep: np.ndarray) -> Returns:
     """The returns ``keep`` selects."""
     return Returns(**{
         f.name: getattr(ret, f.name)[keep] if f.name != "beams" else ret.beams
         for f in fields(Returns)
     })  # fmt: skip
+
+
+def _thinned(points: np.ndarray, v_m: float) -> np.ndarray:
+    """The cloud thinned to the even spacing ``v_m`` (the mean of each cube's points)."""
+    import small_gicp
+
+    return small_gicp.voxelgrid_sampling(
+        small_gicp.PointCloud(np.ascontiguousarray(points, dtype=float)), v_m, num_threads=1
+    ).points()[:, :3]
 
 
 def _prepared(points: np.ndarray, v_m: float):

@@ -188,7 +188,7 @@ def _layout(
 
 
 #: Layouts rebuilt at most this often while their new cloud links are rehearsed.
-CHECK_ROUNDS = 6
+CHECK_ROUNDS = 3
 
 
 def _checked(ctx: Context, make: Callable[[], Layout]) -> Layout:
