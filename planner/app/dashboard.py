@@ -54,6 +54,7 @@ from planner.pipeline.engine.whatif import (
 from planner.pipeline.geometry.facades import build_facades
 from planner.pipeline.inputs.requirements import (
     HEIGHT_CONTROL,
+    LINK_CHECKS,
     REGISTRATION_PROCESSING,
     SETTING_GROUPS,
     FieldSpec,
@@ -353,6 +354,7 @@ class StationPlanner:
             self.registration,
             self.processing,
             self.height_control,
+            self.link_check,
             self.surface_condition,
             self.default_material,
             self.grid,
@@ -550,6 +552,13 @@ class StationPlanner:
             tooltips=list(HEIGHT_CONTROL.values()),
             style=_STYLE,
         )
+        self.link_check = w.ToggleButtons(
+            options=[("rehearsed", "rehearse"), ("model only", "model")],
+            value=PlanSettings().link_check,
+            description=SITE_LABELS["--link-check"],
+            tooltips=list(LINK_CHECKS.values()),
+            style=_STYLE,
+        )
         self.accuracy_class.observe(lambda _c: self._show_class(), "value")
 
     def _run_controls(self) -> None:
@@ -657,6 +666,7 @@ class StationPlanner:
                 self.registration,
                 self.processing,
                 self.height_control,
+                self.link_check,
                 self.grid,
                 more,
                 self.zone_editor.widget,
@@ -1010,6 +1020,7 @@ class StationPlanner:
                 "registration": self.registration.value,
                 "registration_processing": self.processing.value,
                 "height_control": self.height_control.value,
+                "link_check": self.link_check.value,
                 "preset": self.preset.value or None,
                 "max_gamma_deg": self.max_gamma.value,
                 "max_spacing_mm": _field_value(self._specs["max_spacing_mm"], self.max_spacing),

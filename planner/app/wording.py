@@ -33,6 +33,7 @@ SITE_LABELS = {
     "--registration-processing": "registration processing",
     "--tilt-readings": "tilt readings",
     "--height-control": "height control",
+    "--link-check": "cloud links",
     "--registration-error": "count the registration error",
     "--no-registration-error": "count the registration error",
     "--inventory": "targets you own (name, type, size mm, count)",
