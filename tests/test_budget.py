@@ -29,7 +29,7 @@ def _allowed_s(budget_s: float) -> float:
     ("n", "budget_s", "mode"),
     [
         (50, 8.0, ["--district", "off"]),
-        (40, 20.0, ["--district", "on", "--block-m", "80"]),
+        (60, 20.0, ["--district", "on", "--block-m", "80"]),
     ],
     ids=["one process", "district"],
 )

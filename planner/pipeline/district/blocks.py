@@ -300,7 +300,8 @@ def meeting_table(p: Plan, region: shapely.Geometry | None = None) -> pd.DataFra
     from planner.pipeline.geometry.zoning import apply_zones
 
     wb, st = workbench_of(p), p.settings
-    xy = p.stations[["x", "y"]].to_numpy(dtype=float)
+    scans = p.scan_stations  # the network's stations (a traverse's set-ups scan nothing)
+    xy = scans[["x", "y"]].to_numpy(dtype=float)
     reg = p.network.registration() if p.network is not None else None
     columns = MEETING_COLUMNS + list(METRIC_KEYS)
     if not len(xy):
@@ -337,7 +338,7 @@ def meeting_table(p: Plan, region: shapely.Geometry | None = None) -> pd.DataFra
                     "x": f.xy[smp, 0],
                     "y": f.xy[smp, 1],
                     "z": f.z[smp],
-                    "station_id": p.stations["station_id"].to_numpy()[k],
+                    "station_id": scans["station_id"].to_numpy()[k],
                     "own": own,
                     "needed": c.stations_needed[smp] if own else np.nan,
                     **metrics,

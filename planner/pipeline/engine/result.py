@@ -157,7 +157,7 @@ class Plan:
         indices: links, observations), matched by position; none without a network."""
         if self.network is None:
             return []
-        st = self.stations.set_index("station_id")[["x", "y"]]
+        st = self.scan_stations.set_index("station_id")[["x", "y"]]
         x, y = st["x"].to_numpy(dtype=float), st["y"].to_numpy(dtype=float)
         return [
             str(st.index[int(np.argmin(np.hypot(x - sx, y - sy)))])
