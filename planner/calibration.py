@@ -40,6 +40,7 @@ from numpy.typing import ArrayLike
 from planner._array import as_float_array
 from planner.errors import InputError
 from planner.ranges import RANGES
+from planner.reading import user_file
 from planner.scanner import DEFAULT_SCANNER, Scanner, check_profile_name
 from planner.signal import DEFAULT_REFERENCE_REFLECTANCE, MIN_SIGNAL, relative_signal
 from planner.units import RHO_ARCSEC
@@ -105,10 +106,8 @@ def _table(
     if isinstance(data, pd.DataFrame):
         df, origin = data.copy(), origin or "the table"
     else:
-        p = Path(data)
+        p = user_file(data, "calibration table")
         origin = origin or p.name
-        if not p.is_file():
-            raise InputError(f"{str(p)!r} does not exist")
         head = p.read_bytes()[:4096]
         if not head.strip():
             raise InputError(f"{origin} is empty; it needs a header line and one row per value")

@@ -44,6 +44,7 @@ from planner.citymodel import SEMANTIC_KINDS, Surface, kind_by_normal
 from planner.errors import InputError
 from planner.materials import MATERIAL_KEYS, material_named
 from planner.mesh import crown_triangles
+from planner.reading import user_file
 from planner.site import (
     CROWN_BASE_SHARE,
     DEFAULT_CROWN_M,
@@ -624,9 +625,7 @@ def read_city_model(
     terrain : Terrain, optional
         A terrain given by the user (a DTM): it wins over the model's relief.
     """
-    p = Path(path)
-    if not p.is_file():
-        raise InputError(f"city model {str(p)!r} does not exist")
+    p = user_file(path, "city model")
     size = p.stat().st_size
     if size == 0:
         raise InputError(f"{p.name} is empty; export the model again")
@@ -1033,9 +1032,7 @@ def with_mesh(
     ``up`` is its up axis, ``z`` (default) or ``y`` (glTF's, its default). Without a terrain
     the site stands on the ground the mesh's buildings stand on."""
 
-    p = Path(path)
-    if not p.is_file():
-        raise InputError(f"mesh file {str(p)!r} does not exist")
+    p = user_file(path, "mesh file")
     off = np.asarray(offset, dtype=float).ravel()
     if off.shape != (3,) or not np.isfinite(off).all():
         raise InputError(f"the mesh's offset is three numbers E,N,H [m]; got {offset!r}")

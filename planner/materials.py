@@ -32,6 +32,7 @@ import numpy as np
 
 from planner.errors import InputError
 from planner.ranges import RANGES, check_number
+from planner.reading import user_file
 
 if TYPE_CHECKING:
     from planner.site import Building
@@ -108,8 +109,12 @@ class Material:
             )
         if not isinstance(self.returns, bool):
             raise InputError(f"{who}: returns must be true or false")
-        if isinstance(self.aliases, str) or not all(isinstance(a, str) for a in self.aliases):
-            raise InputError(f"{who}: aliases must be a list of names")
+        if not isinstance(self.aliases, list | tuple) or not all(
+            isinstance(a, str) for a in self.aliases
+        ):
+            raise InputError(f'{who}: aliases must be a list of names, e.g. ["stone"]')
+        if not isinstance(self.label, str):
+            raise InputError(f"{who}: label must be a text")
         object.__setattr__(self, "aliases", tuple(self.aliases))
         if not self.label:
             object.__setattr__(self, "label", self.name)
@@ -173,11 +178,17 @@ class MaterialTable(Mapping[str, Material]):
         return MaterialTable([*self._by_name.values(), *rows])
 
 
+#: A user's material table larger than this is refused before it is read [bytes].
+MAX_TABLE_BYTES = 1_000_000
+
+
 def _parse(text: str, origin: str) -> list[Material]:
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise InputError(f"{origin} is not valid TOML: {exc}") from None
+    except RecursionError:
+        raise InputError(f"{origin} is nested too deeply to be a material table") from None
     rows = data.get("material")
     if not isinstance(rows, list) or not rows or not all(isinstance(r, dict) for r in rows):
         raise InputError(
@@ -216,9 +227,12 @@ def _parse(text: str, origin: str) -> list[Material]:
 def read_material_file(path: str | Path) -> list[Material]:
     """A user's material rows from a TOML file of the shipped table's format (a row without
     ``wet_reflectance`` keeps its reflectance wet)."""
-    p = Path(path)
-    if not p.is_file():
-        raise InputError(f"material file {str(p)!r} does not exist")
+    p = user_file(path, "material file")
+    if p.stat().st_size > MAX_TABLE_BYTES:
+        raise InputError(
+            f"material file {p.name} is {p.stat().st_size / 1e6:.1f} MB; a material table is "
+            f"at most {MAX_TABLE_BYTES / 1e6:g} MB"
+        )
     try:
         text = p.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:

@@ -15,13 +15,15 @@ from __future__ import annotations
 
 import contextlib
 import csv
+import stat
 from collections.abc import Iterator
+from pathlib import Path
 
 from shapely.errors import GEOSException, ShapelyError
 
 from planner.errors import InputError
 
-__all__ = ["MAX_FILE_BYTES", "kind_words", "reading"]
+__all__ = ["MAX_FILE_BYTES", "kind_words", "reading", "user_file"]
 
 
 #: A site file larger than this is refused before it is read [bytes].
@@ -69,3 +71,29 @@ def reading(origin: str, kind: str) -> Iterator[None]:
             f"{origin}: cannot read it as {kind_words(kind)} ({what}); check the file "
             "against the formats in the README"
         ) from None
+
+
+def user_file(path: str | Path, what: str) -> Path:
+    """The path of a file the user named (``what``: "site file", "terrain file"…) as a
+    :class:`~pathlib.Path`, where it is a regular file; an InputError saying what it is
+    instead — missing, a folder, a pipe or a device (never opened: a pipe would block).
+
+    >>> try:
+    ...     user_file("/", "site file")
+    ... except InputError as exc:
+    ...     print(exc)
+    site file '/' is a folder, not a file
+    """
+    p = Path(path)
+    try:
+        mode = p.stat().st_mode
+    except FileNotFoundError:
+        raise InputError(f"{what} {str(p)!r} does not exist") from None
+    except OSError as exc:
+        raise InputError(f"{what} {str(p)!r} cannot be read ({exc.strerror})") from None
+    if stat.S_ISDIR(mode):
+        raise InputError(f"{what} {str(p)!r} is a folder, not a file")
+    if not stat.S_ISREG(mode):
+        kind = "a pipe" if stat.S_ISFIFO(mode) else "a device or socket"
+        raise InputError(f"{what} {str(p)!r} is {kind}, not a file; give a file saved on disk")
+    return p

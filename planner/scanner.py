@@ -26,6 +26,7 @@ from planner._array import as_float_array
 from planner.atomic import write_text_atomic
 from planner.errors import InputError
 from planner.ranges import RANGES, check_number
+from planner.reading import user_file
 from planner.signal import (
     DEFAULT_RANGE_EXPONENT,
     DEFAULT_RANGING_EXPONENT,
@@ -664,9 +665,7 @@ def _parse_toml(text: str, origin: str) -> list[Scanner]:
 
 def read_scanner_file(path: str | Path) -> list[Scanner]:
     """Every profile in a scanner TOML file."""
-    p = Path(path)
-    if not p.is_file():
-        raise InputError(f"scanner profile file {str(p)!r} does not exist")
+    p = user_file(path, "scanner profile file")
     try:
         text = p.read_text(encoding="utf-8")
     except UnicodeDecodeError:

@@ -50,7 +50,7 @@ from shapely.geometry.base import BaseGeometry
 from planner.crs import GEOJSON_DEFAULT
 from planner.errors import InputError
 from planner.materials import material_named
-from planner.reading import MAX_FILE_BYTES, reading
+from planner.reading import MAX_FILE_BYTES, reading, user_file
 from planner.site import (
     CROWN_BASE_SHARE,
     DEFAULT_CONTROL_RMS_MM,
@@ -550,9 +550,7 @@ def _control_point(f: Feature) -> ControlPoint:
 
 def read_control(path: str | Path) -> list[ControlPoint]:
     """Control points from a CSV file: ``id, x, y, z`` [m] and optionally ``rms_mm``."""
-    p = Path(path)
-    if not p.is_file():
-        raise InputError(f"control point file {str(p)!r} does not exist")
+    p = user_file(path, "control point file")
     with reading(p.name, "csv"):
         rows = list(csv.DictReader(io.StringIO(p.read_text(encoding="utf-8-sig"))))
         if not rows:
@@ -961,9 +959,7 @@ def _file_features(path: Any, crs: str | None) -> tuple[list[Feature], str | Non
     longitude/latitude, RFC 7946)."""
     if not isinstance(path, str | os.PathLike):
         raise InputError(f"a site file is named by a path; got {type(path).__name__} {path!r}")
-    p = Path(path)
-    if not p.is_file():
-        raise InputError(f"site file {str(p)!r} does not exist")
+    p = user_file(path, "site file")
     if p.stat().st_size == 0:
         raise InputError(f"{p.name} is empty; export the site again")
     kind = SUFFIXES.get(p.suffix.lower())

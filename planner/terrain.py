@@ -21,11 +21,11 @@ from __future__ import annotations
 
 import math
 import os
-from pathlib import Path
 
 import numpy as np
 
 from planner.errors import InputError
+from planner.reading import user_file
 
 __all__ = ["GridTerrain", "Terrain", "TinTerrain", "read_terrain"]
 
@@ -176,9 +176,7 @@ def read_terrain(
     """A DTM GeoTIFF as :class:`GridTerrain` and its CRS (as text, or None), cut to
     ``bounds`` (xmin, ymin, xmax, ymax) [m] where given. Only the GeoTIFF driver opens it
     (a file that is really something else, a virtual raster or a URL, is refused)."""
-    p = Path(path)
-    if not p.is_file():
-        raise InputError(f"terrain file {str(p)!r} does not exist")
+    p = user_file(path, "terrain file")
     if p.suffix.lower() not in (".tif", ".tiff"):
         raise InputError(f"{p.name}: a terrain model is read from a GeoTIFF (.tif, .tiff)")
     import rasterio  # heavy (GDAL): only when a terrain is given

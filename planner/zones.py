@@ -34,6 +34,7 @@ import shapely
 from shapely.geometry import Polygon
 
 from planner.errors import InputError
+from planner.reading import user_file
 
 __all__ = ["ZONE_KEYS", "Zone", "parse_zone", "read_zones", "zone_from_row"]
 
@@ -314,9 +315,7 @@ MAX_TABLE_BYTES = 16 * 1024 * 1024
 def read_zones(path: str | Path) -> list[Zone]:
     """Zones from a CSV table, one per row (columns: :data:`PLACE_KEYS` and
     :data:`ZONE_KEYS`; ``id`` defaults to ``Z<row>``)."""
-    p = Path(path)
-    if not p.is_file():
-        raise InputError(f"zone table {str(p)!r} does not exist")
+    p = user_file(path, "zone table")
     if p.stat().st_size > MAX_TABLE_BYTES:
         raise InputError(f"zone table {p.name} is larger than 16 MB; is it the right file?")
     try:

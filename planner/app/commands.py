@@ -20,6 +20,7 @@ from pathlib import Path
 import pandas as pd
 
 from planner.errors import InputError
+from planner.reading import user_file
 from planner.scanner import DEFAULT_SCANNER, Scanner, catalogue, load_scanner
 from planner.tables import (
     height_table,
@@ -269,9 +270,7 @@ def read_site_args(args: argparse.Namespace, limits, near_m: float):
 
 
 def _read_text(path: str, what: str) -> str:
-    p = Path(path)
-    if not p.is_file():
-        raise InputError(f"{what} {path!r} does not exist")
+    p = user_file(path, what)
     try:
         return p.read_text(encoding="utf-8-sig")
     except UnicodeDecodeError:

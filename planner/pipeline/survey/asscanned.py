@@ -39,7 +39,7 @@ from planner.pipeline.engine.whatif import (
 )
 from planner.pipeline.evaluation.evaluate import Progress
 from planner.pipeline.network.layout import Layout
-from planner.pipeline.survey.pointclouds import find_columns, read_table
+from planner.pipeline.survey.pointclouds import find_columns, read_crew_csv, read_table
 
 __all__ = [
     "AS_SCANNED_COLUMNS",
@@ -442,10 +442,7 @@ def read_link_report(path: str | Path) -> pd.DataFrame:
     """A registration report's links: ``station_a, station_b, error_mm`` and, where
     given, ``overlap_pct`` — from a CSV whose columns bear those names or a registration
     program's (:data:`REPORT_ALIASES`; an error given in metres, ``… (m)``, is converted)."""
-    try:
-        df = pd.read_csv(path, sep=None, engine="python", encoding="utf-8-sig")
-    except (OSError, ValueError, UnicodeDecodeError, pd.errors.ParserError) as exc:
-        raise InputError(f"{path}: not a readable CSV ({exc})") from None
+    df = read_crew_csv(path, "links (a registration report)")
     out = {}
     raw_error = pd.Series(dtype=object)
     units = ("", "m", "cm", "mm", "%")

@@ -18,6 +18,7 @@
 
 from __future__ import annotations
 
+import csv
 import io
 import re
 import tempfile
@@ -217,22 +218,43 @@ def find_columns(
     return found
 
 
+def read_crew_csv(path: str | Path, what: str, **kw) -> pd.DataFrame:
+    """A CSV as a crew gives it (comma- or semicolon-separated, sniffed; UTF-8 with or
+    without a byte-order mark): an :class:`InputError` saying why where it is not one —
+    empty, not text, no delimiter to be found. ``kw`` goes to :func:`pandas.read_csv`."""
+    try:
+        return pd.read_csv(path, sep=None, engine="python", encoding="utf-8-sig", **kw)
+    except UnicodeDecodeError:
+        raise InputError(
+            f"{path}: not UTF-8 text; save it as CSV UTF-8 (Excel: CSV UTF-8, comma delimited)"
+        ) from None
+    except pd.errors.EmptyDataError:
+        raise InputError(f"{path}: empty; a CSV of {what} with a header row is needed") from None
+    except (OSError, ValueError, csv.Error, pd.errors.ParserError) as exc:
+        if _blank(path):
+            raise InputError(
+                f"{path}: empty; a CSV of {what} with a header row is needed"
+            ) from None
+        raise InputError(f"{path}: not a readable CSV of {what} ({exc})") from None
+
+
+def _blank(path: str | Path) -> bool:
+    """Whether a file holds nothing but white space (read no further than its first KB)."""
+    try:
+        with open(path, "rb") as f:
+            head = f.read(1024)
+            return not head.strip() and not f.read(1)
+    except OSError:
+        return False
+
+
 def read_table(path: str | Path, id_column: str, what: str) -> pd.DataFrame:
     """A CSV of points — ``id_column, x, y`` and ``z`` (optional, NaN where not given) —
     under the planner's names or common others (:data:`TABLE_ALIASES`: Name, E, N, H,
     Easting…), comma- or semicolon-separated (a decimal comma with semicolons), ids kept
     as written ("01" stays "01"); an :class:`InputError` saying what is wrong otherwise.
     ``what`` names the table in messages."""
-    try:
-        df = pd.read_csv(
-            path, sep=None, engine="python", dtype=str, skipinitialspace=True, encoding="utf-8-sig"
-        )
-    except UnicodeDecodeError:
-        raise InputError(
-            f"{path}: not UTF-8 text; save it as CSV UTF-8 (Excel: CSV UTF-8, comma delimited)"
-        ) from None
-    except (OSError, ValueError, pd.errors.ParserError) as exc:
-        raise InputError(f"{path}: not a readable CSV of {what} ({exc})") from None
+    df = read_crew_csv(path, what, dtype=str, skipinitialspace=True)
     df = df.dropna(how="all")  # (a spreadsheet's empty rows: ",,")
     keys = (id_column, "x", "y", "z")
     found = {
