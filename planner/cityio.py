@@ -156,6 +156,10 @@ class _Model:
 
 
 # -- LoD ----------------------------------------------------------------------------------------
+#: A level of detail a user may ask for: CityGML's 0–4, CityJSON's refined 0.0–3.3.
+LOD_PATTERN = re.compile(r"[0-4](\.[0-3])?")
+
+
 def _lod_value(lod: str) -> float:
     try:
         return float(lod)
@@ -208,6 +212,11 @@ class _CityJSONReader:
                 ) from None
             if not (np.isfinite(self.scale).all() and np.isfinite(self.translate).all()):
                 raise InputError(f"{origin}: its 'transform' has numbers that are not finite")
+            if (self.scale <= 0).any():
+                raise InputError(
+                    f"{origin}: its 'transform' has the scale {self.scale.tolist()}; each "
+                    "axis's scale must be above 0 (e.g. 0.001: millimetre integers)"
+                )
         templates = header.get("geometry-templates") or {}
         self.templates = templates.get("templates") or []
         try:
@@ -292,11 +301,24 @@ class _CityJSONReader:
             raise InputError(f"{self.origin}: {where} uses template {t}, which does not exist")
         tpl = self.templates[t]
         m = np.asarray(g.get("transformationMatrix", np.eye(4).ravel()), dtype=float).reshape(4, 4)
-        ref = verts[int(g["boundaries"][0])]
-        local = self.template_vertices
-        moved = local @ m[:3, :3].T + m[:3, 3] + ref
         if not np.isfinite(m).all():
             raise InputError(f"{self.origin}: {where} has a transformation matrix of non-numbers")
+        k = g["boundaries"][0]
+        if isinstance(k, bool) or not isinstance(k, int) or not 0 <= k < len(verts):
+            raise InputError(
+                f"{self.origin}: {where}'s reference point is vertex {k!r}, which does not "
+                f"exist (the file has {len(verts)})"
+            )
+        ref = verts[k]
+        local = self.template_vertices
+        with np.errstate(over="ignore", invalid="ignore"):
+            moved = local @ m[:3, :3].T + m[:3, 3] + ref
+        if not np.isfinite(moved).all():
+            raise InputError(
+                f"{self.origin}: {where}'s transformation matrix moves its template beyond any "
+                "number (check the matrix)"
+            )
+        moved = _checked(moved, f"{self.origin}: {where}")
         lod = str(tpl.get("lod", ""))
         surfaces = _surfaces_of(tpl["type"], tpl.get("boundaries"), tpl.get("semantics"), where)
         if surfaces is None and tpl["type"] not in ("MultiPoint", "MultiLineString"):
@@ -461,6 +483,11 @@ def _pos_list(el: ET.Element, dim: int, where: str) -> np.ndarray:
     if d != 3 or vals.size % 3:
         raise InputError(f"{where}: a ring's coordinates are not x y z triples (dimension {d})")
     pts = vals.reshape(-1, 3)
+    if len(pts) < 3:
+        raise InputError(
+            f"{where}: a ring has {len(pts)} point(s); a polygon's ring needs at least three "
+            "(an empty gml:posList?)"
+        )
     if not np.isfinite(pts).all():
         raise InputError(f"{where}: a ring has coordinates that are not finite numbers")
     return _checked(pts, where)
@@ -625,6 +652,13 @@ def read_city_model(
     terrain : Terrain, optional
         A terrain given by the user (a DTM): it wins over the model's relief.
     """
+    if lod is not None:
+        lod = str(lod).strip()
+        if not LOD_PATTERN.fullmatch(lod):
+            raise InputError(
+                f"--lod must be a level of detail 0 to 4, e.g. 2 or 2.2 (CityJSON's refined "
+                f"0.0–3.3); got {lod[:40]!r}"
+            )
     p = user_file(path, "city model")
     size = p.stat().st_size
     if size == 0:
@@ -1033,6 +1067,13 @@ def with_mesh(
     the site stands on the ground the mesh's buildings stand on."""
 
     p = user_file(path, "mesh file")
+    drawn = [b.id for b in site.buildings if b.is_3d]
+    if drawn:
+        raise InputError(
+            f"--mesh gives footprints their 3-D shape; the site's buildings already have theirs "
+            f"(a city model: {', '.join(drawn[:3])}{' …' if len(drawn) > 3 else ''}) — plan the "
+            "model as it is, or give the mesh with the buildings' footprints"
+        )
     off = np.asarray(offset, dtype=float).ravel()
     if off.shape != (3,) or not np.isfinite(off).all():
         raise InputError(f"the mesh's offset is three numbers E,N,H [m]; got {offset!r}")

@@ -216,6 +216,7 @@ def read_terrain(
             z = src.read(1, window=window, masked=True).astype(float).filled(np.nan)
             t = src.window_transform(window) if window is not None else src.transform
             crs = src.crs.to_string() if src.crs else None
+            _heights_in_metres(src.crs.to_wkt() if src.crs else None, p.name)
     except InputError:
         raise
     except (RasterioError, ValueError) as exc:
@@ -228,3 +229,25 @@ def read_terrain(
     z[(z < -1000) | (z > 9000)] = np.nan  # no-data values the file does not declare
     grid = GridTerrain(z, t.c + t.a / 2, t.f + t.e / 2, t.a, t.e, f"terrain model {p.name}")
     return grid, crs
+
+
+def _heights_in_metres(wkt: str | None, name: str) -> None:
+    """An InputError where the raster's CRS gives its heights in another unit than metres
+    (a vertical CRS in feet: heights read as metres would be 3.3 times too large)."""
+    if not wkt:
+        return
+    import pyproj
+
+    try:
+        crs = pyproj.CRS.from_wkt(wkt)
+    except pyproj.exceptions.CRSError:
+        return  # no vertical part known: the heights are taken as metres
+    parts = crs.sub_crs_list if crs.is_compound else [crs]
+    for part in parts:
+        for axis in part.axis_info:
+            if axis.direction == "up" and abs(axis.unit_conversion_factor - 1.0) > 1e-9:
+                raise InputError(
+                    f"{name}: its heights are in {axis.unit_name} ({part.name}); the planner "
+                    "reads heights in metres — convert the raster to a vertical CRS in metres "
+                    "first (e.g. gdal_calc.py, or gdalwarp to a CRS whose heights are metres)"
+                )

@@ -20,6 +20,7 @@ from pathlib import Path
 import pandas as pd
 
 from planner.errors import InputError
+from planner.pipeline.inputs.schema import to_csv
 from planner.reading import user_file
 from planner.scanner import DEFAULT_SCANNER, Scanner, catalogue, load_scanner
 from planner.tables import (
@@ -158,7 +159,7 @@ def cmd_audit(args: argparse.Namespace) -> int:
     if args.terrain:
         model = with_terrain(model, args.terrain)
     table = audit(model, cov, fac, st)
-    write_bytes_atomic(out, table.to_csv(index=False).encode("utf-8"))
+    write_bytes_atomic(out, to_csv(table).encode("utf-8"))
     summary = audit_summary(table)
     print(summary.to_string(index=False))
     print(f"audit of {len(table)} samples marked met: {out}")
@@ -595,10 +596,10 @@ def cmd_replan(args: argparse.Namespace) -> int:
     if args.plan:
         check_same_plan(result, args.plan)
     r = replan(result, scanned, targets_placed=placed, progress=_StderrProgress(args.quiet))
-    files = {"as_scanned.csv": r.stations.to_csv(index=False).encode()}
+    files = {"as_scanned.csv": to_csv(r.stations).encode()}
     if report is not None:
         check = compare_links(r.scanned_plan, report)
-        files["link_check.csv"] = check.to_csv(index=False).encode()
+        files["link_check.csv"] = to_csv(check).encode()
     if args.booklet and len(r.extra):
         from planner.app.booklet import booklet
 

@@ -40,6 +40,7 @@ from planner.pipeline.engine.whatif import (
 from planner.pipeline.evaluation.evaluate import Progress
 from planner.pipeline.network.layout import Layout
 from planner.pipeline.survey.pointclouds import find_columns, read_crew_csv, read_table
+from planner.ranges import RANGES
 
 __all__ = [
     "AS_SCANNED_COLUMNS",
@@ -477,6 +478,14 @@ def read_link_report(path: str | Path) -> pd.DataFrame:
             f"{path}: row {k + 2}'s error {raw_error.iloc[k]!r} is not a number (give it in mm, "
             "or say the unit in the column's name: Error (m), Error (cm))"
         )
+    error_range = RANGES["rms_mm"]
+    for k, v in enumerate(rep["error_mm"]):
+        if not np.isnan(v):
+            error_range.check(float(v), f"{path}: row {k + 2}'s error [mm]")
+    if "overlap_pct" in rep:
+        for k, v in enumerate(rep["overlap_pct"]):
+            if not np.isnan(v) and not 0.0 <= v <= 100.0:
+                raise InputError(f"{path}: row {k + 2}'s overlap {v:g} % is not within 0–100 %")
     return rep
 
 

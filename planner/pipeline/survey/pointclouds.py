@@ -28,6 +28,7 @@ import numpy as np
 import pandas as pd
 
 from planner.errors import InputError
+from planner.pipeline.inputs.schema import to_csv
 from planner.pipeline.survey.rehearsal import POINT_KINDS, Rehearsal
 
 __all__ = [
@@ -167,9 +168,7 @@ def legend_csv(reh: Rehearsal) -> str:
         )
         for c in sorted({*LAS_CLASSES.values(), 1})
     ]
-    return pd.DataFrame(rows, columns=["attribute", "value", "means", "x", "y", "z"]).to_csv(
-        index=False
-    )
+    return to_csv(pd.DataFrame(rows, columns=["attribute", "value", "means", "x", "y", "z"]))
 
 
 #: Column names a station or target table may use for each of the planner's columns.
