@@ -184,8 +184,11 @@ def target_centre_rms_mm(
 class Link:
     """A registration of ``child`` to ``parent`` (a station index, or :data:`CONTROL`) over
     the common targets ``targets`` — or, cloud to cloud, over the surfaces both scans see:
-    ``info`` is then the link's point-to-plane information matrix at the child's centre
-    (6 × 6, :func:`planner.cloud_registration.link_information`)."""
+    ``info`` is then the information (6 × 6, at the child's centre) the adjustment takes
+    the link with: its surfaces' point-to-plane information
+    (:func:`planner.cloud_registration.link_information`) with its start's prior, over the
+    rehearsal's factor where the plan rehearsed it
+    (:attr:`planner.pipeline.network.clouds.CloudLink.information`)."""
 
     parent: int
     child: int

@@ -57,6 +57,7 @@ from planner.pipeline.inputs.clock import Clock
 from planner.pipeline.inputs.requirements import PlanSettings, Requirements
 from planner.pipeline.inputs.schema import STATION_ID
 from planner.pipeline.network.control import tie_groups, tie_messages, traverse_setups
+from planner.pipeline.network.layout import Layout
 from planner.pipeline.network.network import Network
 from planner.pipeline.network.registration import build_network
 from planner.pipeline.network.targets import SightCache, TargetCandidates
@@ -509,6 +510,35 @@ class Round:
     judged: Judged | None = None
 
 
+def serving_probes(ctx: Context, station: np.ndarray, k: int) -> dict[int, np.ndarray]:
+    """Each of ``k`` stations' probe points (P, 3) [m]: the facade samples it serves best by
+    the scanner's error (``station``: each sample's, -1 none), where its links' errors are
+    judged."""
+    fac = ctx.facades
+    pts = np.column_stack([fac.xy, fac.z])
+    return {j: pts[station == j] for j in range(k)}
+
+
+def network_layout(p: Plan) -> Layout | None:
+    """The layout the plan's network was chosen from (its stations, each probed where it
+    serves, the plan's goal for a link), to ask what any pair of its scans would give
+    registered directly; None for a plan without its workbench or network."""
+    wb, net = workbench_of(p), p.network
+    if wb is None or net is None:
+        return None
+    ctx = wb.ctx
+    stations = [int(s) for s in net.stations]
+    served = assign_stations(ctx, wb.pool[stations]).station
+    return Layout(
+        ctx,
+        wb.seen,
+        wb.pool,
+        stations,
+        serving_probes(ctx, served, len(stations)),
+        goal_mm=REGISTRATION_GOAL * tightest_mm(ctx),
+    )
+
+
 def round_network(
     ctx: Context,
     cand: np.ndarray,
@@ -529,8 +559,7 @@ def round_network(
     t = time.perf_counter()
     fac = ctx.facades
     scanner_only = assign_stations(ctx, cand[chosen])
-    pts = np.column_stack([fac.xy, fac.z])
-    probes = {j: pts[scanner_only.station == j] for j in range(len(chosen))}
+    probes = serving_probes(ctx, scanner_only.station, len(chosen))
     tightest = tightest_mm(ctx)
     # the height error each sample leaves the registration (its limit ⊕ the scanner's part)
     has = (scanner_only.station >= 0) & ~fac.party_wall

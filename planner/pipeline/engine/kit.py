@@ -69,7 +69,8 @@ def within_kit(
     first the targets of every item over the kit leap-frogged over their links' windows;
     where that is not enough, the network laid out again as a leap-frogging traverse — links
     only between set-ups next to each other in the visiting order, each of at most half the
-    kit's count of targets — and its targets leap-frogged. Each is judged again and the plan
+    smallest count of an item the plan runs short of, and at least 3 (a link needs three) —
+    and its targets leap-frogged. Each is judged again and the plan
     made anew by ``remake(round)``; the first within the kit that meets as many samples is
     the plan. Where none does, the plan keeps its network and the words say what staying
     within the kit would cost in samples, or stand at once (the route's kit line says what

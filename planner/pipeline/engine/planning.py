@@ -407,7 +407,8 @@ def _last_rounds(
         say(0.9, "registration: rehearsing the cloud links")
         r, more = _rehearsed(ctx, cand, seen, r, forced, ev, clock, say, cut)
         rounds += more
-        words = rehearsal_message(r.net, seen.clouds.checks, ctx) if r.net is not None else ""
+        made = {k: seen.clouds.checks[k] for k in seen.clouds.asked if k in seen.clouds.checks}
+        words = rehearsal_message(r.net, made, ctx) if r.net is not None else ""
     return r, rounds, untried, words
 
 
@@ -440,15 +441,19 @@ def _rehearsed(
     rehearsed registration keeps samples short, stations added for them (at most
     :data:`REHEARSED_ROUNDS` rounds, every new link rehearsed), redundant ones pruned. The
     round and its number of rounds. The rounds before were judged on the model's links, so
-    none of them is compared with these."""
-    seen.clouds.rehearsing = True
-    again = Round(cover=r.cover, added=r.added)
-    again.net = round_network(ctx, cand, seen, r.net.stations, clock, r.net.datum_station)
-    again.judged = judge(ctx, cand, again)
-    again, rounds = _registration_rounds(
-        ctx, cand, seen, again, forced, ev, clock, say, cut, limit=REHEARSED_ROUNDS
-    )
-    again = prune(ctx, cand, seen, again, clock, keep=forced)
+    none of them is compared with these. Every link of the network made is rehearsed
+    whatever the clock says; the clock may only stop the rounds that add stations."""
+    seen.clouds.rehearsing, seen.clouds.asked = True, set()
+    try:
+        again = Round(cover=r.cover, added=r.added)
+        again.net = round_network(ctx, cand, seen, r.net.stations, clock, r.net.datum_station)
+        again.judged = judge(ctx, cand, again)
+        again, rounds = _registration_rounds(
+            ctx, cand, seen, again, forced, ev, clock, say, cut, limit=REHEARSED_ROUNDS
+        )
+        again = prune(ctx, cand, seen, again, clock, keep=forced)
+    finally:
+        seen.clouds.rehearsing = False
     return again, rounds + 1
 
 

@@ -51,6 +51,7 @@ from planner.materials import roughness_mm
 from planner.pipeline.evaluation.evaluate import Context, evaluate_stations
 from planner.pipeline.geometry.beams import World
 from planner.pipeline.network.linkcheck import LinkCheck, StartError, rehearse_link
+from planner.pipeline.network.links import a_matrix
 from planner.spacing import point_spacing_mm
 from planner.units import RHO_ARCSEC
 
@@ -157,24 +158,12 @@ def check_scale(
     ok = check.errors[~check.failed]
     if not len(ok) or not np.isfinite(cov).all():
         return 1.0
-    g = _at_points(probe_xyz, centre)  # (P, 3, 6)
+    g = a_matrix((np.atleast_2d(probe_xyz) - centre) * 1000.0, levelled=False)  # (P, 3, 6)
     predicted = np.einsum("pij,jk,pik->i", g, cov, g)  # (3,) summed over the points
     rehearsed = np.einsum("pij,tj->tpi", g, ok)  # (T, P, 3)
     seen = np.square(rehearsed).sum(axis=(0, 1)) / len(ok)
     ratio = np.divide(seen, predicted, out=np.zeros(3), where=predicted > 0)
     return float(max(1.0, ratio.max()))
-
-
-def _at_points(xyz: np.ndarray, centre: np.ndarray) -> np.ndarray:
-    """(P, 3, 6): a pose error's (shift [mm], rotation [rad] about ``centre``) displacement
-    at the points ``xyz`` [m]."""
-    r = (np.atleast_2d(xyz) - centre) * 1000.0
-    g = np.zeros((len(r), 3, 6))
-    g[:, :, :3] = np.eye(3)
-    g[:, 0, 4], g[:, 0, 5] = r[:, 2], -r[:, 1]
-    g[:, 1, 3], g[:, 1, 5] = -r[:, 2], r[:, 0]
-    g[:, 2, 3], g[:, 2, 4] = r[:, 1], -r[:, 0]
-    return g
 
 
 def surfaces(ctx: Context, station_xy: np.ndarray) -> Surfaces:
@@ -236,6 +225,9 @@ class SurfaceCache:
         #: world they are cast in
         self.rehearsing = False
         self.checks: dict[tuple[int, int], LinkCheck] = {}
+        #: the pairs :meth:`check` was asked for since the plan began rehearsing (a cache
+        #: kept between plans holds other plans' rehearsals too)
+        self.asked: set[tuple[int, int]] = set()
         self._world: World | None = None
         # the surface every pair of candidates seen by :meth:`overlap` holds in common [m²]
         self._row: dict[int, int] = {}
@@ -268,24 +260,23 @@ class SurfaceCache:
         )
 
     def link(self, parent: int, child: int, cand_xy: np.ndarray) -> CloudLink:
-        """The cloud-to-cloud registration of candidate ``child`` to candidate ``parent``
-        (with its rehearsal, once :meth:`check` has made it)."""
+        """The cloud-to-cloud registration of candidate ``child`` to candidate ``parent``, as
+        the link model gives it (its rehearsal, where made, is kept in :attr:`checks`)."""
         if (parent, child) not in self.links:
             pair = self.take(np.array([parent, child]), cand_xy)
             self.links[(parent, child)] = cloud_link(self.ctx, pair, 0, 1)
         return self.links[(parent, child)]
 
-    def check(
-        self, parent: int, child: int, cand_xy: np.ndarray, probe_xyz: np.ndarray
-    ) -> CloudLink:
+    def check(self, parent: int, child: int, cand_xy: np.ndarray) -> LinkCheck | None:
         """Rehearse the link of candidate ``child`` to ``parent`` (once for a plan:
         :func:`~planner.pipeline.network.linkcheck.rehearse_link`, from the scanner's
-        pre-alignment, over the patches both see) and keep it with the link, its variance
-        scaled at the child's facade points ``probe_xyz``."""
+        pre-alignment, over the patches both see); None where the link model already says
+        its surfaces do not fix it."""
         key = (parent, child)
         cl = self.link(parent, child, cand_xy)
+        self.asked.add(key)
         if key in self.checks or not cl.fixed:
-            return cl
+            return self.checks.get(key)
         ctx = self.ctx
         st = ctx.settings
         if self._world is None:
@@ -303,8 +294,7 @@ class SurfaceCache:
                    FLOOR_CELL_M),
             seed=int(parent) * 100_003 + int(child),
         )  # fmt: skip
-        self.links[key] = cl.checked(self.checks[key], probe_xyz, pair.station_xyz[1])
-        return self.links[key]
+        return self.checks[key]
 
     def overlapping(self, idx: np.ndarray, cand_xy: np.ndarray, min_pct: float) -> np.ndarray:
         """(K, K) whether the scans of candidates ``idx`` overlap by ``min_pct`` [%] or more

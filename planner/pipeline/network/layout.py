@@ -82,6 +82,8 @@ class Layout:
         self.station_xyz = np.column_stack([cand_xy[stations], ctx.station_z(cand_xy[stations])])
         self.mode = st.registration_for(ctx.scanner)
         self._cloud_errors: dict[tuple[int, int], float] = {}
+        self._clouds: dict[tuple[int, int], CloudLink | None] = {}
+        self._judged_at: dict[int, np.ndarray] = {}  # of :meth:`probes_of`, as asked
         self.surf = self.overlap = None
         pairs = set()
         if self.mode != "cloud":
@@ -112,7 +114,6 @@ class Layout:
         self._links: dict[tuple[int, int], tuple[list[int], float]] = {}
         self._bounds: dict[tuple[int, int], float] = {}  # of :meth:`bound`
         self._sigma2 = np.full((k, len(tc.xyz)), np.nan)  # σ² of :meth:`sigma`, as asked
-        self._judged_at: dict[int, np.ndarray] = {}  # of :meth:`probes_of`, as asked
         # the datum: the control network if any station sees three control points, else the
         # station from which the tree of registrations accumulates the least error
         # (Dijkstra on the links' variances; with 6 parameters, plus the datum's tilt at
@@ -226,12 +227,20 @@ class Layout:
 
     def cloud(self, i: int, j: int) -> CloudLink | None:
         """The cloud-to-cloud registration of j to i, if their scans overlap enough and their
-        common surfaces fix it (None otherwise)."""
+        common surfaces fix it (None otherwise); where the plan rehearsed it, with the
+        rehearsal, its variance scaled at j's facade points
+        (:meth:`~planner.pipeline.network.clouds.CloudLink.checked`)."""
         if self.surf is None or i == CONTROL:
             return None
-        cl = self.seen.clouds.link(self.stations[i], self.stations[j], self.seen.cand_xy)
-        ok = cl.holds and cl.overlap_pct >= self.ctx.settings.min_overlap_pct
-        return cl if ok else None
+        if (i, j) not in self._clouds:
+            a, b = self.stations[i], self.stations[j]
+            cl = self.seen.clouds.link(a, b, self.seen.cand_xy)
+            check = self.seen.clouds.checks.get((a, b))
+            if check is not None:
+                cl = cl.checked(check, self.probes_of(j), self.station_xyz[j])
+            ok = cl.holds and cl.overlap_pct >= self.ctx.settings.min_overlap_pct
+            self._clouds[(i, j)] = cl if ok else None
+        return self._clouds[(i, j)]
 
     def unchecked(self) -> list[tuple[int, int]]:
         """The tree's cloud links (positions) not yet rehearsed
@@ -245,9 +254,8 @@ class Layout:
 
     def check(self, i: int, j: int) -> None:
         """Rehearse the cloud link of j to i (kept for the plan)."""
-        self.seen.clouds.check(
-            self.stations[i], self.stations[j], self.seen.cand_xy, self.probes_of(j)
-        )
+        self.seen.clouds.check(self.stations[i], self.stations[j], self.seen.cand_xy)
+        self._clouds.pop((i, j), None)
         self._cloud_errors.pop((i, j), None)
 
     def link(
@@ -299,7 +307,7 @@ class Layout:
     def _shared_key(self, i: int, j: int) -> tuple:
         """The key of the link of j to i in the memo the plan's layouts share."""
         st_i = self.stations[i] if i != CONTROL else CONTROL
-        return (st_i, self.stations[j], self.probes_of(j).tobytes())
+        return (st_i, self.stations[j], self.probes_of(j).tobytes(), self.cap)
 
     def _cloud_error(self, cl: CloudLink, i: int, j: int) -> float:
         """The cloud link of j to i: its own error at j's facade points [mm] (kept per

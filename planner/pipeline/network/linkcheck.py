@@ -19,11 +19,12 @@ What the check gives (:class:`LinkCheck`):
 * the error of each trial (its own noise and start) at the child's centre, and the RMS
   over the trials that converged;
 * the **basin**: the child started 3 σ of the start's error away along each horizontal
-  axis and about the vertical (both ways); a start from which the registration does not
-  come back marks the basin's edge, and the chance of a start beyond it (the normal
-  distribution's two tails, summed over the directions) is the link's chance of failing,
-  with the share of random starts that failed if that is larger. A link that fails more
-  than :data:`MAX_FAILURE` of the time is not a link.
+  axis and about the vertical (both ways), and where it does not come back from there, 2 σ
+  and 1 σ (:data:`PROBE_LADDER`): the largest from which it comes back is the basin's edge
+  in that direction, and the chance of a start beyond it (the normal distribution's two
+  tails, summed over the directions) is the link's chance of failing, with the share of
+  random starts that failed if that is larger. A link that fails more than
+  :data:`MAX_FAILURE` of the time is not a link.
 
 A trial *fails* when the registered child is more than :data:`FAIL_MM` off at its centre
 or, by its rotation, at :data:`~planner.cloud_registration.LEVER_M`: a registration caught
@@ -53,6 +54,7 @@ from planner.pipeline.geometry.beams import (
     measure,
     unit,
 )
+from planner.units import RHO_ARCSEC
 
 __all__ = [
     "FAIL_MM",
@@ -66,11 +68,16 @@ __all__ = [
 FAIL_MM = 10.0
 #: A link failing more often than this is not a link (the issue's 1 %).
 MAX_FAILURE = 0.01
-#: The basin is probed this many standard deviations of the start's error away.
+#: The basin is probed this many standard deviations of the start's error away, along x,
+#: along y and about the vertical, both ways; where the registration does not come back
+#: from the first, from the next. A basin reaching 3 σ in all three directions leaves
+#: 3 · P(|z| > 3) = 0.8 % of starts outside; one reaching only 2 σ in one, 4.6 %.
 PROBE_SIGMAS = 3.0
-#: GICP's neighbours for each point's covariance, its largest correspondence distance [m]
-#: and its iterations (the library's defaults but the distance, set for scans that start
-#: within decimetres).
+PROBE_LADDER = (PROBE_SIGMAS, 2.0, 1.0)
+PROBED = (0, 1, 5)
+#: GICP's neighbours for each point's covariance (the library's default), its largest
+#: correspondence distance [m] (for scans that start within decimetres) and its iterations
+#: (half the library's 20: a start that has not come back in 10 has failed).
 NEIGHBOURS = 10
 MAX_CORRESPONDENCE_M = 0.5
 MAX_ITERATIONS = 10
@@ -99,21 +106,16 @@ class StartError:
 
     def draw(self, rng: np.random.Generator) -> np.ndarray:
         """A random start (6,): shift [mm], rotation about x, y, z [rad]."""
-        rad = np.array([self.tilt_arcsec, self.tilt_arcsec, self.heading_arcsec]) / _RHO
+        rad = np.array([self.tilt_arcsec, self.tilt_arcsec, self.heading_arcsec]) / RHO_ARCSEC
         return np.concatenate([rng.normal(0.0, self.position_mm, 3), rng.normal(0.0, rad)])
 
-    def probes(self) -> list[np.ndarray]:
-        """The starts of the basin's probes: ±3 σ along x, along y and about z."""
-        out = []
-        for k, sd in ((0, self.position_mm), (1, self.position_mm), (5, self.heading_arcsec)):
-            for sign in (1.0, -1.0):
-                v = np.zeros(6)
-                v[k] = sign * PROBE_SIGMAS * (sd / _RHO if k >= 3 else sd)
-                out.append(v)
-        return out
-
-
-_RHO = 180.0 * 3600.0 / math.pi
+    def probe(self, direction: int, sign: float, sigmas: float) -> np.ndarray:
+        """A start ``sigmas`` standard deviations off along one of :data:`PROBED` (0: x,
+        1: y, 5: the heading), ``sign`` the side: (6,) shift [mm], rotation [rad]."""
+        v = np.zeros(6)
+        sd = self.heading_arcsec / RHO_ARCSEC if direction >= 3 else self.position_mm
+        v[direction] = sign * sigmas * sd
+        return v
 
 
 @dataclass(frozen=True)
@@ -126,14 +128,6 @@ class LinkCheck:
     probes: int
     failure: float  # the chance the link fails (module text)
     points: tuple[int, int]  # points registered per trial (parent, child), after thinning
-
-    @property
-    def cov(self) -> np.ndarray:
-        """The errors' second moment (6, 6) over the trials that did not fail (mm, rad)."""
-        ok = self.errors[~self.failed]
-        if not len(ok):
-            return np.full((6, 6), np.inf)
-        return ok.T @ ok / len(ok)
 
     @property
     def holds(self) -> bool:
@@ -173,24 +167,23 @@ def rehearse_link(
             m = measure(world, ret, np.asarray(pos, float), rot, rng, floor=fl)
             clouds.append(m.local_xyz + (np.asarray(pos, float) - origin))
         parent, child = (
-            _prepared(_sampled(_thinned(c, v_m), (seed, t, k)), v_m) for k, c in enumerate(clouds)
+            _prepared(_sampled(_thinned(c, v_m), (seed, t, k))) for k, c in enumerate(clouds)
         )
         sizes = (parent[0].size(), child[0].size())
         rng = np.random.default_rng([seed, t, 2])
-        starts = [start.draw(rng)]
-        if t == 0:
-            starts += start.probes()
-        for n, s0 in enumerate(starts):
-            e = _register(parent, child, centre, s0)
-            bad = _fails(e)
-            if n == 0:
-                errors.append(e)
-                failed.append(bad)
-            else:
-                n_probes += 1
+        e = _register(parent, child, centre, start.draw(rng))
+        errors.append(e)
+        failed.append(_fails(e))
+        if t == 0:  # the basin, on the first trial's clouds
+            reach = []
+            for direction in PROBED:
+                r, n, bad = _basin(parent, child, centre, start, direction)
+                reach.append(r)
+                n_probes += n
                 probes_failed += bad
     failed_arr = np.array(failed)
-    basin = _tail(PROBE_SIGMAS) * (probes_failed > 0) * 3  # three directions probed
+    # the chance of a start beyond the basin, summed over the directions probed
+    basin = sum(_tail(r) for r in reach)
     failure = max(basin, float(failed_arr.mean()) if len(failed_arr) else 1.0)
     return LinkCheck(
         errors=np.array(errors).reshape(-1, 6),
@@ -200,6 +193,24 @@ def rehearse_link(
         failure=failure,
         points=sizes,
     )
+
+
+def _basin(parent, child, centre: np.ndarray, start: StartError, direction: int) -> tuple:
+    """How far the basin reaches along ``direction`` (in σ of the start's error): the largest
+    of :data:`PROBE_LADDER` from which the registration comes back on both sides (0: not
+    even from the smallest); and the probes made, and how many failed."""
+    made = bad = 0
+    for sigmas in PROBE_LADDER:
+        ok = True
+        for sign in (1.0, -1.0):
+            made += 1
+            if _fails(_register(parent, child, centre, start.probe(direction, sign, sigmas))):
+                bad += 1
+                ok = False
+                break
+        if ok:
+            return sigmas, made, bad
+    return 0.0, made, bad
 
 
 def _tail(k: float) -> float:
@@ -288,16 +299,14 @@ def _thinned(points: np.ndarray, v_m: float) -> np.ndarray:
     ).points()[:, :3]
 
 
-def _prepared(points: np.ndarray, v_m: float):
-    """A cloud thinned to ``v_m`` with its points' covariances and k-d tree (GICP's)."""
+def _prepared(points: np.ndarray):
+    """A thinned cloud with its points' covariances and its k-d tree (GICP's)."""
     import small_gicp
 
-    return small_gicp.preprocess_points(
-        np.ascontiguousarray(points, dtype=float),
-        downsampling_resolution=v_m,
-        num_neighbors=NEIGHBOURS,
-        num_threads=1,
-    )
+    cloud = small_gicp.PointCloud(np.ascontiguousarray(points, dtype=float))
+    tree = small_gicp.KdTree(cloud, num_threads=1)
+    small_gicp.estimate_covariances(cloud, tree, num_neighbors=NEIGHBOURS, num_threads=1)
+    return cloud, tree
 
 
 def _register(parent, child, centre: np.ndarray, start: np.ndarray) -> np.ndarray:

@@ -196,17 +196,20 @@ def _checked(ctx: Context, make: Callable[[], Layout]) -> Layout:
     rehearses them (:mod:`~planner.pipeline.network.linkcheck`): a link that
     fails too often is no link, one the rehearsal finds weaker than the model is weakened,
     and the layout is made again over them until its tree holds only rehearsed links (at
-    most :data:`CHECK_ROUNDS` times)."""
+    most :data:`CHECK_ROUNDS` times; the last layout's new links are then rehearsed and
+    the tree keeps them only if they hold: a station they alone tied is said untied)."""
     lay = make()
     if lay.mode == "targets" or not lay.seen.clouds.rehearsing:
         return lay
     for _ in range(CHECK_ROUNDS):
         todo = lay.unchecked()
         if not todo:
-            break
+            return lay
         for i, j in todo:
             lay.check(i, j)
         lay = make()
+    for i, j in lay.unchecked():  # the last layout's new links: rehearsed, not remade
+        lay.check(i, j)
     return lay
 
 
@@ -237,6 +240,8 @@ def _tree_links(
             links.append(Link(parent, child, (), cl.information))
             link_error[(parent, child)] = err
             tied.append(child)
+            continue
+        if lay.mode == "cloud":  # its cloud link failed its rehearsal: the child is untied
             continue
         if not targets:  # the targets set up hide this link's: register it to another
             bound = max(lay.goal_mm, HIDDEN_DETOUR * lay.link(parent, child)[1])

@@ -20,6 +20,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
@@ -27,7 +28,7 @@ import shapely
 
 from planner.errors import InputError
 from planner.pipeline.engine.ids import id_number
-from planner.pipeline.engine.judge import copy_plan, free_positions, workbench_of
+from planner.pipeline.engine.judge import copy_plan, free_positions, network_layout
 from planner.pipeline.engine.planning import choose_stations
 from planner.pipeline.engine.result import Plan
 from planner.pipeline.engine.whatif import (
@@ -38,9 +39,11 @@ from planner.pipeline.engine.whatif import (
     one_setup_twice,
 )
 from planner.pipeline.evaluation.evaluate import Progress
-from planner.pipeline.network.layout import Layout
 from planner.pipeline.survey.pointclouds import find_columns, read_crew_csv, read_table
 from planner.ranges import RANGES
+
+if TYPE_CHECKING:
+    from planner.pipeline.network.layout import Layout
 
 __all__ = [
     "AS_SCANNED_COLUMNS",
@@ -504,14 +507,20 @@ def compare_links(p: Plan, report: pd.DataFrame) -> pd.DataFrame:
         station_a=match_ids(report["station_a"], ids), station_b=match_ids(report["station_b"], ids)
     )
     rows = []
+    lay, order = network_layout(p), p.network_ids()
     for r in report.itertuples():
         link = links.get(frozenset((r.station_a, r.station_b)))
         if link is not None:
             pred, overlap = float(link.link_rms_mm), float(link.overlap_pct)
         else:
-            pred, overlap = pair_prediction(p, r.station_a, r.station_b)
-        ratio = r.error_mm / pred if pred > 0 else np.nan
-        if not np.isfinite(pred):
+            pred, overlap = _predicted(lay, order, r.station_a, r.station_b)
+        ratio = r.error_mm / pred if np.isfinite(pred) and pred > 0 else np.nan
+        if np.isnan(pred):
+            verdict = (
+                "no prediction: not a pair of the plan's scanning stations, or the plan was "
+                "read back from files (re-plan from its inputs to compare it)"
+            )
+        elif not np.isfinite(pred):
             verdict = "no prediction: the plan finds the two scans share too little to link"
         elif np.isnan(r.error_mm):
             verdict = "no error given"
@@ -540,15 +549,17 @@ def compare_links(p: Plan, report: pd.DataFrame) -> pd.DataFrame:
 def pair_prediction(p: Plan, a: str, b: str) -> tuple[float, float]:
     """What the plan predicts for scan ``b`` registered directly to scan ``a`` (station
     ids): the link's own error at ``b``'s facade points [mm] — cloud to cloud where the
-    registration is, else on the targets both see (the plan's layout of its network,
-    :class:`~planner.pipeline.network.layout.Layout`) — and the two scans' overlap [%];
-    inf and NaN where the plan cannot tell (an id it does not have, no network)."""
-    wb, net = workbench_of(p), p.network
-    order = p.network_ids()
-    if wb is None or net is None or a not in order or b not in order:
-        return np.inf, np.nan
-    stations = [int(s) for s in net.stations]
-    lay = Layout(wb.ctx, wb.seen, wb.pool, stations, {}, goal_mm=np.inf)
+    registration is, else on the targets both see, as the plan would link them
+    (:func:`~planner.pipeline.engine.judge.network_layout`) — and the two scans' overlap
+    [%]. inf where the two share too little to link; NaN where the plan cannot tell (an id
+    that is not one of its scanning stations, a plan read back from files)."""
+    return _predicted(network_layout(p), p.network_ids(), a, b)
+
+
+def _predicted(lay: Layout | None, order: list[str], a: str, b: str) -> tuple[float, float]:
+    """:func:`pair_prediction` over a layout made once for many pairs."""
+    if lay is None or a not in order or b not in order:
+        return np.nan, np.nan
     i, j = order.index(a), order.index(b)
     _, err = lay.link(i, j)
     overlap = float(lay.overlap[i, j]) if lay.overlap is not None else np.nan
