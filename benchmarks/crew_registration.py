@@ -54,7 +54,9 @@ def rtc360() -> list[str]:
     rows = []
     sc = Scanner.from_name("leica-rtc360")
     for name, (site, extra) in _sites().items():
-        for mode in ("cloud", "hybrid"):
+        # pure cloud on the default site only: on the 10-building block its rehearsal of
+        # every candidate link ran past an hour (2026-11-28), left out of this table
+        for mode in ("cloud", "hybrid") if name == "default site" else ("hybrid",):
             t = time.perf_counter()
             p = plan(site, sc, settings=PlanSettings(registration=mode, time_limit_s=900, **extra))
             s = time.perf_counter() - t

@@ -260,6 +260,7 @@ def test_a_link_report_without_an_error_is_said_so(default_plan, tmp_path):
 
 
 @pytest.mark.booklet
+@pytest.mark.booklet
 def test_the_extra_stations_booklet_has_their_pages(default_plan, monkeypatch):
     import planner.app.booklet as bk
 
@@ -270,7 +271,7 @@ def test_the_extra_stations_booklet_has_their_pages(default_plan, monkeypatch):
         "_station_page",
         lambda p, n, *a: drawn.append(bk._route(p).iloc[n]["station_id"]) or bk.Figure(),
     )
-    bk.booklet(default_plan, only={"S07", "S03"})
+    bk.booklet_pdf(default_plan, only={"S07", "S03"})
     assert sorted(drawn) == ["S03", "S07"]
 
 

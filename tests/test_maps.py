@@ -177,3 +177,34 @@ def test_the_dashboard_map_keeps_one_scale_across_and_up(far_plan):
     assert m.view.bar_label.text[0].endswith(" m") and list(m.view.north_label.text) == ["N"]
     tips = list(m.stations.names)
     assert tips and all("\nE " in t and "\nN " in t and "nearest station" in t for t in tips)
+
+
+@pytest.mark.parametrize(
+    ("ids", "lines"),
+    [(["C1-1", "C1-2"], 1), ([1.0, 2.0], 2), ([], 0)],
+    ids=["text", "numbers", "no traverse"],
+)
+def test_traverses_are_drawn_whatever_type_their_ids_have(default_plan, ids, lines):
+    """The report of a district plan ended in AttributeError (".str accessor") where the
+    traverse ids were not text: they are drawn as text, one line per traverse; none is
+    drawn without them."""
+    import copy
+
+    import pandas as pd
+    from matplotlib.figure import Figure
+
+    from planner.app.maps import _draw_traverses
+
+    p = copy.deepcopy(default_plan)
+    rows = pd.DataFrame(
+        {
+            "station_id": ids,
+            "purpose": ["traverse"] * len(ids),
+            "x": [0.0, 10.0][: len(ids)],
+            "y": [0.0, 5.0][: len(ids)],
+        }
+    )
+    p.stations = rows if ids else rows.astype({"station_id": float})
+    ax = Figure().subplots()
+    _draw_traverses(p, ax)
+    assert len(ax.lines) == lines  # one per traverse (C1-1, C1-2: the traverse C1)

@@ -237,8 +237,34 @@ def test_highs_starts_from_greedy_and_never_returns_worse():
     assert quick.lower_bound <= full.objective <= quick.objective
 
 
+def test_the_same_cover_whatever_the_clock_says(monkeypatch):
+    """The search is bounded by work: a wall clock racing an hour a look gives the same
+    cover as a calm one (the backstop is this process's CPU time, which other work on the
+    machine does not spend). Negative control: a CPU backstop of nothing stops the search
+    at its first cover, and says "time limit"."""
+    import time
+
+    a, d = random_cover(150, 200, 0.03, seed=5)
+    calm = opt.solve_cover(a, d, time_limit_s=60)
+    real, looks = time.monotonic, [0]
+
+    def racing() -> float:
+        looks[0] += 1
+        return real() + 3600.0 * looks[0]
+
+    monkeypatch.setattr(time, "monotonic", racing)
+    hurried = opt.solve_cover(a, d, time_limit_s=60)
+    assert hurried.chosen.tolist() == calm.chosen.tolist()
+    assert hurried.status == calm.status != "time limit"
+    assert calm.status == "optimal" and calm.objective == 29  # (greedy: 35)
+    stopped = opt.solve_cover(a, d, time_limit_s=0.0, method="auto")
+    assert stopped.status == "time limit" and covers(a, d, stopped.chosen)
+    assert stopped.objective == 33  # the Lagrangian heuristic's first cover
+
+
 def test_milp_method_is_strict(monkeypatch):
-    """``method="milp"`` never falls back to greedy silently; ``auto`` does, and says so."""
+    """``method="milp"`` never falls back to greedy silently; ``auto`` does, and says so
+    (its work bounds reached, not the time: "work limit")."""
     a, d = random_cover(60, 80, 0.06, seed=4)
     monkeypatch.setattr(opt, "_highs", lambda *a, **k: (False, None, None))
     monkeypatch.setattr(opt, "packing_lower_bound", lambda a, d: 0)
@@ -247,7 +273,7 @@ def test_milp_method_is_strict(monkeypatch):
     with pytest.raises(PlannerError, match="not proven optimal"):
         opt.solve_cover(a, d, 5.0, "milp")
     auto = opt.solve_cover(a, d, 5.0, "auto")
-    assert auto.method in ("greedy", "local search") and auto.status == "time limit"
+    assert auto.method in ("greedy", "local search") and auto.status == "work limit"
     assert covers(a, d, auto.chosen) and auto.lower_bound == 0
 
 

@@ -629,7 +629,20 @@ def _report_command(sub: argparse._SubParsersAction) -> None:
     _plan_arguments(rp)
     _district_arguments(rp)
     rp.add_argument("--out", required=True, metavar="REPORT.html", help="the HTML file to write")
+    _plan_folder_argument(rp, "to report")
     rp.set_defaults(func=cmd_report)
+
+
+def _plan_folder_argument(parser: argparse.ArgumentParser, which: str) -> None:
+    """``--plan DIR``: the folder of the plan a command works from (``planner plan``'s
+    ``--out``); the plan made again from the options must be that one."""
+    parser.add_argument(
+        "--plan",
+        metavar="DIR",
+        help=f"the folder of the plan {which} (planner plan's --out): the plan made again "
+        "from the options must be that one (its stations.csv), else exit 2 — the same "
+        "options give the same plan on any machine",
+    )
 
 
 def _rehearse_command(sub: argparse._SubParsersAction) -> None:
@@ -680,12 +693,7 @@ def _replan_command(sub: argparse._SubParsersAction) -> None:
         help="the stations as scanned: an .e57 of the registered scans (their poses) or a "
         ".csv with station_id, x, y",
     )
-    rr.add_argument(
-        "--plan",
-        metavar="DIR",
-        help="the folder of the plan the crew followed (planner plan's --out): the plan made "
-        "again from the options must be that one (its stations.csv), else exit 2",
-    )
+    _plan_folder_argument(rr, "the crew followed")
     rr.add_argument(
         "--targets-placed",
         metavar="CSV",

@@ -157,9 +157,9 @@ class AsScannedPanel:
             tables += [w.HTML("<b>Links as registered against the plan</b>"), links.round(2)]
         show(self.out, *tables)
         if len(r.extra):
-            from planner.app.booklet import booklet
+            from planner.app.booklet import booklet_pdf
 
-            data, _ = booklet(r.plan, only=set(r.extra["station_id"]))
+            data = booklet_pdf(r.plan, only=set(r.extra["station_id"]))
             self.booklet.value = download_link(
                 "booklet-extra-stations.pdf", data, "application/pdf"
             )

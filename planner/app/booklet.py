@@ -4,16 +4,14 @@ order. No science here: everything comes from the plan and its route.
 Matplotlib writes the multi-page PDF (``PdfPages``); no other dependency. The same plan gives
 the same bytes (no creation date is written). A station's page has a fixed layout (no
 layout engine) and draws only what its map window shows, so a page costs the same in a
-district of a thousand buildings as around one. Given a deadline, the booklet ends with the
-pages drawn in time and a last page listing the stations left out.
+district of a thousand buildings as around one. It is always whole: the same plan gives
+the same booklet on any machine.
 """
 
 from __future__ import annotations
 
 import io
-import math
 import textwrap
-import time
 from collections.abc import Collection
 
 import matplotlib.pyplot as plt
@@ -69,57 +67,23 @@ def compass(azimuth_deg: float) -> str:
     return f"{compass_word(azimuth_deg, short=True)} ({azimuth_deg:.0f}°)"
 
 
-def booklet_pdf(p: Plan, deadline: float = math.inf) -> bytes:
+def booklet_pdf(p: Plan, only: Collection[str] | None = None) -> bytes:
     """The field booklet of a plan as PDF bytes: the overview map with the plan's summary,
-    then a page per station (coordinates, instrument height, targets to set up before it,
-    scan sector, resolution and time, links). After ``deadline`` (a :func:`time.monotonic`
-    time) no more station pages are drawn: a last page lists the stations left out."""
-    return booklet(p, deadline)[0]
-
-
-def booklet(
-    p: Plan, deadline: float = math.inf, only: Collection[str] | None = None
-) -> tuple[bytes, list[str]]:
-    """:func:`booklet_pdf`, and the stations whose pages the deadline left out; ``only``:
-    pages for these stations alone (the extra stations of a re-plan)."""
+    then a page per station in visiting order (coordinates, instrument height, targets to
+    set up before it, scan sector, resolution and time, links); ``only``: pages for these
+    stations alone (the extra stations of a re-plan). Always whole: a document of the plan
+    does not depend on the machine's speed."""
     buf = io.BytesIO()
     meta = {"Title": f"tls-planner field booklet: {p.site.name}", "CreationDate": None}
     route = list(_route(p)["station_id"]) if len(_route(p)) else []
-    # (route position, id) of the stations with a page, in visiting order
-    pages = [(k, s) for k, s in enumerate(route) if only is None or s in only]
-    order = [s for _, s in pages]
-    left: list[str] = []
     with plt.rc_context({"pdf.fonttype": 42}), PdfPages(buf, metadata=meta) as pdf:
         pdf.savefig(_overview(p))
         sectors = view_sectors(p.stations, p.coverage, p.targets)  # once, not per page
         ties = CornerTies(p.site)  # (the corners too)
-        for n in range(len(order)):  # figures outside pyplot: nothing to close
-            if time.monotonic() > deadline:
-                left = order[n:]
-                pdf.savefig(_left_out_page(left))
-                break
-            pdf.savefig(_station_page(p, pages[n][0], sectors, ties))
-    return buf.getvalue(), left
-
-
-def _left_out_page(left: list[str]) -> Figure:
-    fig = Figure(figsize=A4_PORTRAIT)
-    fig.text(
-        0.06,
-        0.94,
-        f"Pages not drawn: {len(left)} station(s)",
-        fontsize=14,
-        weight="bold",
-        va="top",
-    )
-    text = (
-        "The plan's time budget ran out while the booklet was drawn. These stations have no "
-        "page here (their positions and targets are in stations.csv, targets.csv and "
-        "stakeout.csv): " + ", ".join(left) + ". Plan again with a larger --time-limit-s for "
-        "the whole booklet."
-    )
-    fig.text(0.06, 0.88, _wrap(text, 95), fontsize=9, va="top")
-    return fig
+        for k, s in enumerate(route):  # figures outside pyplot: nothing to close
+            if only is None or s in only:
+                pdf.savefig(_station_page(p, k, sectors, ties))
+    return buf.getvalue()
 
 
 def _route(p: Plan) -> pd.DataFrame:

@@ -309,33 +309,9 @@ def _district(args: argparse.Namespace, site, settings) -> bool:
 
 
 #: The share of ``--time-limit-s`` kept for the plan's documents (its files, the booklet):
-#: planning ends before it — or before the files' estimated time, where that is longer.
+#: the optimiser's search for a smaller cover stops before it. (Only that search reads the
+#: clock: the rest of a plan and its documents are whole whatever the clock says.)
 DOCUMENT_SHARE = 0.15
-
-
-#: Writing a plan's files takes about this long per coverage row and per station or
-#: target on an idle machine [s] (measured on a 50-building town, 11 201 rows, 40
-#: stations, 93 targets: 2.75 s, the coverage CSV 0.4 s and the DXF 1.7 s of it, a first
-#: use); the booklet ends in time for them, and planning ends in time for a fifth as much
-#: again — both stretched by the pace the command gets
-#: (:func:`~planner.pipeline.inputs.clock.pace`).
-SAVE_S_PER_ROW = 2e-4
-
-
-SAVE_S_PER_POINT = 4e-3
-
-
-#: … and per row of the zone table (zones.csv alone: 0.4 s for 60 000 rows) [s].
-SAVE_S_PER_ZONE = 1e-5
-
-
-#: The files' estimated time is reserved this many times over before planning ends.
-SAVE_MARGIN = 1.2
-
-
-#: The booklet is drawn only when this long is left before the files are written: its
-#: overview page takes about that (a station's page about 0.5 s) [s].
-BOOKLET_OVERVIEW_S = 2.0
 
 
 def command_started() -> float:
@@ -379,11 +355,12 @@ def _jobs(args: argparse.Namespace, site, scanner, req, settings):
     return groups, halo, settings, words
 
 
-def _one_job(args: argparse.Namespace, scanner, req, settings):
+def _one_job(args: argparse.Namespace, scanner, req, settings, district_by: float):
     """How one site (or one job of several) is planned: block by block on Dask where
-    :func:`_district` says, else in this process."""
+    :func:`_district` says (its schedule ending by ``until``, or ``district_by``), else in
+    this process (decided by work alone)."""
 
-    def one(site, until: float, say):
+    def one(site, until: float | None, say):
         if _district(args, site, settings):
             from planner.pipeline.district.schedule import plan_district
 
@@ -397,55 +374,42 @@ def _one_job(args: argparse.Namespace, scanner, req, settings):
                 workers=args.workers,
                 memory_limit=args.worker_memory,
                 progress=say,
-                deadline=until,
+                deadline=district_by if until is None else until,
             )
         from planner.pipeline.engine.planning import plan
 
-        return plan(site, scanner, req, settings, progress=say, deadline=until)
+        return plan(site, scanner, req, settings, progress=say)
 
     return one
 
 
 def make_plan(args: argparse.Namespace, progress: Callable[[float, str], None]):
-    """The plan of the options shared by ``plan`` and ``report`` — the one function both
-    use, so that a report shows exactly the plan ``plan`` makes: jobs of buildings far apart
-    each planned on its own (:func:`_jobs`), a job in district mode where ``plan`` would take
-    it (:func:`_district`), ending with the documents' share of ``--time-limit-s`` left
-    (:data:`DOCUMENT_SHARE`, or the files' estimated time), counted from the command's
-    start. Returns the plan, the command's deadline and the pace it had
-    (:func:`~planner.pipeline.inputs.clock.pace`)."""
+    """The plan of the options shared by ``plan``, ``report``, ``rehearse`` and ``replan``
+    — the one function they use, so that a report shows exactly the plan ``plan`` makes:
+    jobs of buildings far apart each planned on its own (:func:`_jobs`), a job in district
+    mode where ``plan`` would take it (:func:`_district`). The plan is decided by work, not
+    by the clock (:func:`planner.pipeline.engine.planning.plan`); only the district mode
+    schedules its blocks on the wall clock, ending with :data:`DOCUMENT_SHARE` of
+    ``--time-limit-s`` left, counted from the command's start."""
     from planner.pipeline.district.groups import jobs_plan
     from planner.pipeline.district.schedule import memory_bytes
-    from planner.pipeline.geometry.facades import estimate_samples
-    from planner.pipeline.inputs.clock import pace
 
     started = getattr(args, "started", None) or time.monotonic()
     memory_bytes(args.worker_memory)  # checked even where the plan needs no cluster
     site, scanner, req, settings = plan_inputs(args)
     groups, halo, settings, words = _jobs(args, site, scanner, req, settings)
-    deadline = started + settings.time_limit_s
-    rows = estimate_samples(site, settings.sample_spacing_m, settings.sample_height_step_m)
-    # the files' time as measured on an idle machine, stretched by the pace this command
-    # has had so far (its start, imports and reading: a loaded machine slows all of it)
-    slow = pace(time.monotonic() - started, time.process_time())
-    files_s = SAVE_S_PER_ROW * rows + SAVE_S_PER_ZONE * len(site.zones)
-    reserve = max(DOCUMENT_SHARE * settings.time_limit_s, slow * SAVE_MARGIN * files_s)
-    planned_by = deadline - reserve
-    one = _one_job(args, scanner, req, settings)
+    planned_by = started + (1 - DOCUMENT_SHARE) * settings.time_limit_s
+    one = _one_job(args, scanner, req, settings, planned_by)
     if len(groups) < 2:
-        return one(site, planned_by, progress), deadline, slow
-    result = jobs_plan(
-        site, scanner, req, settings, groups, halo, one, deadline=planned_by, progress=progress
-    )
+        return one(site, None, progress)
+    result = jobs_plan(site, scanner, req, settings, groups, halo, one, progress=progress)
     result.messages.insert(1, words + ".")
-    return result, deadline, slow
+    return result
 
 
 def run_plan(args: argparse.Namespace) -> int:
-    """Plan, draw the booklet and write the files, all within ``--time-limit-s`` from the
-    command's start (reading the site included): planning ends with
-    :data:`DOCUMENT_SHARE` of the budget left, and the booklet leaves out the pages there is
-    no time for (said in the summary and on its last page)."""
+    """Plan, draw the booklet and write the files (:func:`make_plan`); the booklet is
+    always whole."""
     from planner.atomic import check_inputs_kept, check_output_folder
     from planner.pipeline.documents.export import OWNED_FILES, save
 
@@ -454,31 +418,13 @@ def run_plan(args: argparse.Namespace) -> int:
     check_inputs_kept([Path(args.out) / name for name in OWNED_FILES], _input_paths(args))
     import ezdxf  # noqa: F401  (the DXF writer's import, 0.7 s, made now: not after planning)
 
-    result, deadline, slow = make_plan(args, progress)
-    site = result.site
+    result = make_plan(args, progress)
     extra = {}
-    saving = slow * (
-        SAVE_S_PER_ROW * len(result.coverage)
-        + SAVE_S_PER_POINT * (len(result.stations) + len(result.targets))
-        + SAVE_S_PER_ZONE * len(site.zones)
-    )
-    if args.booklet and time.monotonic() + BOOKLET_OVERVIEW_S > deadline - saving:
-        result.messages.append(
-            "Time budget: no field booklet was drawn (no time was left for it); raise "
-            "--time-limit-s, or make it from the dashboard."
-        )
-    elif args.booklet:
-        from planner.app.booklet import booklet
+    if args.booklet:
+        from planner.app.booklet import booklet_pdf
 
         progress(1.0, "field booklet (booklet.pdf)")
-        extra["booklet.pdf"], left = booklet(result, deadline - saving)
-        if left:
-            result.messages.append(
-                f"Time budget: the booklet has no page for {len(left)} of "
-                f"{len(result.stations)} station(s) ({', '.join(left[:8])}"
-                + (" …" if len(left) > 8 else "")
-                + "): its last page lists them; raise --time-limit-s for the whole booklet."
-            )
+        extra["booklet.pdf"] = booklet_pdf(result)
     written = save(result, args.out, extra)
     print(result.summary())
     unmet = result.unmet
@@ -509,7 +455,11 @@ def cmd_report(args: argparse.Namespace) -> int:
         raise InputError(f"--out must name an .html file; got {args.out!r}")
     check_output_file(out)
     check_inputs_kept([out], _input_paths(args))
-    result, _, _ = make_plan(args, _StderrProgress(args.quiet))
+    result = make_plan(args, _StderrProgress(args.quiet))
+    if args.plan:
+        from planner.pipeline.survey.asscanned import check_same_plan
+
+        check_same_plan(result, args.plan)
     if not args.quiet:
         print("planner: rendering the report …", file=sys.stderr)
     path = make_report(result, out)
@@ -529,7 +479,7 @@ def cmd_rehearse(args: argparse.Namespace) -> int:
     check_output_folder(args.out)
     owned = ("scans.e57", "scans.laz", "scans_legend.csv", *HELIOS_FILES)
     check_inputs_kept([Path(args.out) / n for n in owned], _input_paths(args))
-    result, _, _ = make_plan(args, _StderrProgress(args.quiet))
+    result = make_plan(args, _StderrProgress(args.quiet))
     scene = Scene(result.site, "rays")
     size = estimate(result, args.beams_per_station, scene)
     t0 = time.monotonic()
@@ -592,7 +542,7 @@ def cmd_replan(args: argparse.Namespace) -> int:
     if args.link_report:
         report = read_link_report(args.link_report)
     args.district = "off"  # one network: the re-plan works on its workbench
-    result, _, _ = make_plan(args, _StderrProgress(args.quiet))
+    result = make_plan(args, _StderrProgress(args.quiet))
     if args.plan:
         check_same_plan(result, args.plan)
     r = replan(result, scanned, targets_placed=placed, progress=_StderrProgress(args.quiet))
@@ -601,9 +551,9 @@ def cmd_replan(args: argparse.Namespace) -> int:
         check = compare_links(r.scanned_plan, report)
         files["link_check.csv"] = to_csv(check).encode()
     if args.booklet and len(r.extra):
-        from planner.app.booklet import booklet
+        from planner.app.booklet import booklet_pdf
 
-        files["booklet.pdf"], _ = booklet(r.plan, only=set(r.extra["station_id"]))
+        files["booklet.pdf"] = booklet_pdf(r.plan, only=set(r.extra["station_id"]))
     written = save(r.plan, args.out, files, owned=extra_names)
     print(r.summary())
     if report is not None:

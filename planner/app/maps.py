@@ -672,9 +672,14 @@ def place_labels(ax: Axes, items: list[tuple[float, float, str, dict]]) -> None:
 
 
 def _draw_traverses(p: Plan, ax: Axes) -> None:
-    """The total-station traverses of planned control: their legs, set-up to set-up."""
-    tr = p.stations[p.stations["purpose"] == "traverse"]
-    for n, (_, legs) in enumerate(tr.groupby(tr["station_id"].str.split("-").str[0])):
+    """The total-station traverses of planned control: their legs, set-up to set-up (ids
+    read as text: a district's stitched table, or one without a traverse, may hold them as
+    numbers or nothing — the report of a district plan ended in AttributeError there)."""
+    tr = p.stations[p.stations["purpose"].astype(str) == "traverse"]
+    if tr.empty:
+        return
+    ids = tr["station_id"].astype(str)
+    for n, (_, legs) in enumerate(tr.assign(station_id=ids).groupby(ids.str.split("-").str[0])):
         legs = legs.sort_values("station_id")
         ax.plot(
             legs["x"],

@@ -257,7 +257,7 @@ def _columns(scanned: pd.DataFrame, quantity: str) -> pd.DataFrame:
     """One row per facade column (the samples of one place on the wall, every height): its
     position, the worst value of ``quantity`` there (an unmet sample makes the column
     unmet) and the words of its tooltip."""
-    col = scanned["sample_id"].str.rsplit("-", n=1).str[0]
+    col = scanned["sample_id"].astype(str).str.rsplit("-", n=1).str[0]
     if quantity == "meets":
         g = scanned.assign(column=col, bad=~scanned["meets"]).groupby("column", sort=False)
         out = g.agg(x=("x", "first"), y=("y", "first"), unmet=("bad", "sum"), n=("bad", "size"))

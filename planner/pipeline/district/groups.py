@@ -71,10 +71,7 @@ def plan(
     buildings in groups far apart (:func:`job_groups`) are planned as separate jobs, each
     with its own network, datum and route, joined into one plan (:func:`jobs_plan`); with
     ``locked`` or ``given`` (edits of one plan) the site is planned as one job."""
-    t0 = time.perf_counter()
     site, sc, req, st = planning.plan_inputs(site, scanner, requirements, settings)
-    end = time.monotonic() + st.time_limit_s - (time.perf_counter() - t0)
-    deadline = end if deadline is None else deadline
     groups, halo = job_groups(site, sc, req, st) if locked is None and given is None else ([], 0)
     if len(groups) < 2:
         return planning.plan(
@@ -181,12 +178,13 @@ def jobs_plan(
     halo_m: float,
     plan_one: Callable[[Site, float, Progress], Plan],
     *,
-    deadline: float,
+    deadline: float | None = None,
     progress: Progress | None = None,
 ) -> Plan:
     """Each group planned as its own job by ``plan_one(site, deadline, progress)``, one
-    after another, each by its share of the time left (its share of the estimated work,
-    :func:`jobs_budget_s`), and the jobs joined into one plan
+    after another — where a ``deadline`` is given, each by its share of the time left (its
+    share of the estimated work, :func:`jobs_budget_s`; else none: each job decided by work
+    alone, :func:`planner.pipeline.engine.planning.plan`) — and the jobs joined into one plan
     (:func:`~planner.pipeline.district.stitch.stitch`: ids prefixed with the group's key,
     each job's network and route its own)."""
     say = progress or (lambda _f, _m: None)
@@ -195,8 +193,10 @@ def jobs_plan(
     plans: list[Plan] = []
     for k, (g, s) in enumerate(zip(groups, sites, strict=True)):
         done, total = sum(work[:k]), sum(work)
-        left = max(0.0, deadline - time.monotonic())
-        until = time.monotonic() + left * work[k] / max(total - done, 1e-9)
+        until = None
+        if deadline is not None:
+            left = max(0.0, deadline - time.monotonic())
+            until = time.monotonic() + left * work[k] / max(total - done, 1e-9)
         lo, span = done / total, work[k] / total
 
         def inner(

@@ -549,8 +549,8 @@ def round_network(
     kit: tuple = (None, None),
 ) -> Network | None:
     """The registration network of the stations ``chosen`` (candidate indices), each
-    probed at the facade points it serves best by the scanner's error; once the ``clock``
-    has run out (default: none), without looking for linking stations. ``kit``: a
+    probed at the facade points it serves best by the scanner's error, built whole (the
+    ``clock`` only counts its time). ``kit``: a
     leap-frogging kit's chain and cap
     (:func:`~planner.pipeline.network.registration.build_network`)."""
     if not len(chosen):
@@ -575,13 +575,12 @@ def round_network(
         weak_mm=WEAK_LINK * tightest,
         cache=seen,
         datum=datum,
-        deadline=clock.deadline,
         height_room=(fac.xy[has], room),
         chain=kit[0],
         cap=kit[1],
     )
     if not net.tied.all() and net.tied.any():  # groups no target reaches: planned control
-        net = tie_groups(ctx, cand, seen, net, REGISTRATION_GOAL * tightest, clock.deadline)
+        net = tie_groups(ctx, cand, seen, net, REGISTRATION_GOAL * tightest)
     clock.note("registration", time.perf_counter() - t)
     if net.datum is not None and seen.tc.is_control.any() and not net.ties:
         # control points given but no station sees three of them: a station that does,
@@ -622,7 +621,7 @@ def prune(
     to (chosen for an estimate the exact network did not bear out), one at a time, each kept
     out only if no sample is lost; the ``keep`` candidates (locked by hand) are never dropped."""
     keep = np.empty(0, dtype=np.int64) if keep is None else keep
-    while not clock.over:
+    while True:  # each pass drops one station or ends
         served = np.bincount(
             r.judged.assignment.station[r.judged.assignment.station >= 0],
             minlength=len(r.net.stations),
@@ -645,16 +644,13 @@ def prune(
                 break
         else:
             return r
-    return r
 
 
-#: Merging stations closer than the crew's spacing (each pair tried with its network built
-#: and judged) takes at most this share of the time left, and at most this share of the time
-#: the plan has taken so far (at least :data:`MIN_MERGE_S`): a plan of many close pairs
-#: (best-effort stations for what no position meets) would otherwise spend its budget here.
-MERGE_SHARE = 0.25
-MERGE_OF_ELAPSED = 0.5
-MIN_MERGE_S = 1.0
+#: Merging stations closer than the crew's spacing tries at most this many close pairs
+#: per station of the network (each pair tried with its network built and judged): a plan
+#: of many close pairs (best-effort stations for what no position meets) would otherwise
+#: spend minutes here. A count, not a time: the same pairs are tried on any machine.
+MERGE_PAIRS_PER_STATION = 1.0
 #: A close pair is tried as each of its two stations and the best one candidate between.
 MERGE_TRIALS = 3
 
@@ -673,15 +669,12 @@ def merge_close_stations(
     the spacing away from every other station — with its network built and judged; taken
     where the network has fewer stations, every sample met before is met and no more
     groups need planned control (a traverse, GNSS) to be tied. The ``keep`` candidates
-    (locked by hand) are never moved; a pair no trial merges stays (the plan says why).
-    Within :data:`MERGE_SHARE` of the time left and :data:`MERGE_OF_ELAPSED` of the time
-    taken so far; the round and how many close pairs the time left untried."""
+    (locked by hand) are never moved; a pair no trial merges stays (the plan says why). At
+    most :data:`MERGE_PAIRS_PER_STATION` pairs per station are tried; the round and how many
+    close pairs were left untried."""
     spacing = ctx.settings.station_spacing_m
     fixed = set(np.asarray(keep if keep is not None else [], dtype=np.int64).tolist())
-    elapsed = time.perf_counter() - clock.started
-    stop = min(
-        clock.share(MERGE_SHARE), time.monotonic() + max(MIN_MERGE_S, MERGE_OF_ELAPSED * elapsed)
-    )
+    most = 0 if r.net is None else max(1, int(MERGE_PAIRS_PER_STATION * len(r.net.stations)))
     tried: set[tuple[int, int]] = set()
     while r.net is not None and spacing > 0:
         st = r.net.stations
@@ -690,15 +683,13 @@ def merge_close_stations(
             for i, j in close_pairs(cand[st, :2], spacing)
             if (int(st[i]), int(st[j])) not in tried and not {int(st[i]), int(st[j])} <= fixed
         ]
-        if not pairs or time.monotonic() > stop:
+        if not pairs or len(tried) >= most:
             return r, len(pairs)
         a, b = pairs[0]
         tried.add((a, b))
         rest = st[(st != a) & (st != b)]
         datum = r.net.datum_station if r.net.datum_station not in (a, b) else None
         for one in merge_options(cand[:, :2], rest, a, b, spacing, fixed)[:MERGE_TRIALS]:
-            if time.monotonic() > stop:
-                break
             trial = Round(cover=_swap(r.cover, a, b, one), added=_swap(r.added, a, b, one))
             trial.net = round_network(ctx, cand, seen, np.append(rest, one), clock, datum)
             if trial.net is None:
@@ -736,7 +727,7 @@ def stations_for(
     estimate = estimate_registration(ctx, net, cand)
     if estimate is None:
         return np.empty(0, dtype=np.int64)
-    ev = evaluate_candidates(ctx, cand, deadline=clock.deadline, registration=estimate, only=short)
+    ev = evaluate_candidates(ctx, cand, registration=estimate, only=short)
     keep = np.ones(len(cand))
     keep[net.stations] = 0.0  # the network's own stations do not meet them already
     ok = sp.csr_matrix((ev.ok[np.flatnonzero(short)] @ sp.diags(keep)) > 0)

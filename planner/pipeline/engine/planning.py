@@ -10,6 +10,7 @@ summary and unmet samples with the reason. The result type is
 
 from __future__ import annotations
 
+import math
 import time
 from collections.abc import Callable
 from dataclasses import replace
@@ -77,26 +78,13 @@ __all__ = ["choose_stations", "plan"]
 
 #: Evaluation speed used to put a work estimate in minutes [pairs per second].
 PAIRS_PER_S = 20e6
-#: The optimiser always gets at least this long, even when the evaluation used the budget
-#: (greedy set cover takes well under it) [s].
-MIN_SOLVER_S = 0.5
-#: The first evaluation gets at least this long, or until the plan's end where that comes
-#: sooner, even when the time kept for the plan's last round and tables is already taken (a
-#: loaded machine): a plan has stations for a few facades at least, and says what was left
-#: out [s].
-MIN_EVALUATION_S = 1.0
-#: The share of the time left that the optimiser may take when the registration network is
-#: still to be built and judged after it (its rounds need the rest of the budget).
+#: The optimiser's backstop (:mod:`planner.pipeline.optimise.cover`), in CPU seconds of
+#: this process, is this share of ``time_limit_s`` for each search when the registration
+#: network is still to be built and judged after it (else the whole) …
 SOLVER_SHARE = 0.5
-#: After its rounds a plan judges the last one and makes its tables (coverage, targets,
-#: links, route) whatever the clock says; the rounds end this long per facade sample before
-#: the deadline [s] (measured on a 50-building town, 11 201 samples: 0.53 s; twice that).
-FINISH_S_PER_SAMPLE = 1e-4
-#: The share of the plan's budget the first evaluation of every candidate may take: a site
-#: too large for its budget is evaluated in part, and the optimiser and the registration
-#: still get their time (on a 50-building town given 12 s, the first network of the
-#: stations chosen takes about 3 s).
-EVALUATION_SHARE = 0.45
+#: … and never under this, even where a plan inside a larger one (a district's block, a
+#: job) has spent its part of the wall clock [s].
+MIN_SOLVER_S = 0.5
 
 
 def plan(
@@ -126,13 +114,17 @@ def plan(
     This plans one job: :func:`planner.plan` (:func:`planner.pipeline.district.groups.plan`)
     plans buildings in groups far apart as separate jobs, each by this function.
 
-    The plan ends by ``deadline`` (a :func:`time.monotonic` time; default: now plus the
-    settings' ``time_limit_s``): when it comes, the best plan so far is made, and its
-    messages say what the budget cut short (``solver.cut_short``).
+    The plan is decided by work, not by the clock (:mod:`planner.pipeline.inputs.clock`):
+    the same inputs give the same plan on any machine, however loaded. Only the optimiser's
+    search for a smaller cover has a backstop, in this process's CPU seconds (a share of the
+    settings' ``time_limit_s``), for problems too large for its work bounds; the messages
+    then say so (``solver.cut_short``). ``deadline`` (a :func:`time.monotonic` time) is for
+    a plan inside a larger schedule (a district's block): it caps that backstop too, and so
+    makes the plan depend on the clock.
     """
     t0 = time.perf_counter()
     site, sc, req, st = plan_inputs(site, scanner, requirements, settings)
-    clock = Clock.budget(st.time_limit_s, deadline=deadline, started=t0)
+    clock = Clock(end=math.inf if deadline is None else deadline, started=t0)
     wb = _prepare(site, sc, req, st, progress or (lambda _f, _m: None))
     return choose_stations(wb, progress, locked=locked, clock=clock, given=given)
 
@@ -251,14 +243,11 @@ def choose_stations(
     ``given``: the ids of the plan this one is made from (printed, scanned): stations and
     targets where that plan's stood keep their ids, a new one takes a number never given
     (:mod:`planner.pipeline.engine.ids`)."""
-    ctx, st = wb.ctx, wb.settings
+    ctx = wb.ctx
     fac = wb.facades
     say = progress or (lambda _f, _m: None)
-    clock = Clock.budget(st.time_limit_s) if clock is None else clock
+    clock = Clock() if clock is None else clock
     clock.note("setup", wb.setup_s)
-    # the last round's judgement and the plan's tables come after the rounds whatever the
-    # clock says: the rounds end in time for them
-    whole, clock = clock, clock.sooner(FINISH_S_PER_SAMPLE * len(fac.z))
     forced, kept, not_kept = _locked(wb, locked, locked_ids, given)
     cand, seen = wb.pool, wb.seen
     # stations and registration chosen together (docs/science.md): the fewest stations by
@@ -267,25 +256,11 @@ def choose_stations(
     # registration error they would have (estimated from the network) and the network is
     # built and judged again; once none is short, the fewest stations are chosen again with
     # every candidate's estimated registration error, the network's backbone kept
-    cut: list[str] = []  # what the time budget cut short, in words
-    at_least = min(time.monotonic() + MIN_EVALUATION_S, whole.deadline)
-    by = max(clock.share(EVALUATION_SHARE), at_least)
-    ev = _evaluate(ctx, cand, say, clock, by=by)
-    demanded = ~fac.party_wall
-    if not ev.evaluated[demanded].all():
-        cut.append(
-            f"the evaluation ({int(ev.evaluated[demanded].sum())} of {int(demanded.sum())} "
-            "samples; the plan covers those)"
-        )
+    cut: list[str] = []  # what the clock stopped, in words (the optimiser's search only)
+    ev = _evaluate(ctx, cand, say, clock)
     wb.evaluation = ev
-    # the diagnosis before the optimiser: the optimiser takes a share of the time left, and
-    # what it leaves must not decide what the plan says of the samples no position meets
     wb.diagnosis = diagnose(ctx, cand, ev, clock)
-    if len(wb.diagnosis.samples) and not np.all(wb.diagnosis.best["done"]):
-        cut.append("the diagnosis of the samples no position meets")
-    sol = _optimise(ctx, cand, ev, say, clock, forced=forced)
-    if len(wb.diagnosis.samples) and clock.over:
-        cut.append("the best-effort stations for the samples no position meets")
+    sol = _optimise(ctx, cand, ev, say, clock, forced=forced, cut=cut)
     best_effort, relaxed_by = _best_effort(ctx, cand, sol.chosen, wb.diagnosis, clock)
     cover = np.union1d(sol.chosen, best_effort) if len(best_effort) else sol.chosen
     if len(best_effort):
@@ -297,8 +272,6 @@ def choose_stations(
     r, rounds, untried, rehearsal = _last_rounds(
         ctx, cand, seen, r, forced, ev, clock, say, cut, rounds
     )
-    if any(n.cut_short for n in (r.net,) if n is not None):
-        cut.append("the search for linking stations")
     n_locked = len(forced) - len(best_effort)
     messages = _choice_messages(wb, r, sol, cut, n_locked, len(best_effort), relaxed_by, rounds)
     if not_kept:
@@ -313,7 +286,7 @@ def choose_stations(
 
     def remake(rr: Round) -> Plan:  # each try from the ids given before (one id each)
         wb.last_station, wb.last_target = ids_before
-        return assemble(wb, rr, solver, messages, whole, progress=say, hand=hand,
+        return assemble(wb, rr, solver, messages, clock, progress=say, hand=hand,
                         best_effort=best_effort, kept=kept, given=given)  # fmt: skip
 
     r, p = _within_the_kit(wb, r, remake, ids_before)
@@ -441,8 +414,8 @@ def _rehearsed(
     rehearsed registration keeps samples short, stations added for them (at most
     :data:`REHEARSED_ROUNDS` rounds, every new link rehearsed), redundant ones pruned. The
     round and its number of rounds. The rounds before were judged on the model's links, so
-    none of them is compared with these. Every link of the network made is rehearsed
-    whatever the clock says; the clock may only stop the rounds that add stations."""
+    none of them is compared with these. Every link of the network made is rehearsed,
+    whatever the clock says."""
     seen.clouds.rehearsing, seen.clouds.asked = True, set()
     try:
         again = Round(cover=r.cover, added=r.added)
@@ -474,16 +447,13 @@ def _registration_rounds(
     would have (estimated from the network) and the network is built and judged again (once,
     first, a datum nearer the middle is tried); once none is short, the fewest stations are
     chosen again with every candidate's estimated registration error, the network's
-    backbone kept. The best round and the number of rounds; what the clock cut, into
-    ``cut``. ``limit``: at most that many rounds, each adding stations (none chosen again)."""
+    backbone kept. The best round and the number of rounds; what the clock stopped of the
+    optimiser's search, into ``cut``. ``limit``: at most that many rounds, each adding
+    stations (none chosen again)."""
     st, cover = ctx.settings, r.cover
     best, rounds, adds, resolved, moved = r, 0, 0, limit is not None, limit is not None
     while st.computes_registration and rounds < (limit or MAX_REGISTRATION_ROUNDS):
         if r.net is None:
-            break
-        if clock.over:
-            if r.judged.short_by_registration.any() or not resolved:
-                cut.append(f"the registration rounds (after {rounds})")
             break
         short = r.judged.short_by_registration
         if short.any() and not moved:  # once: a datum nearer the middle, kept if better
@@ -509,7 +479,9 @@ def _registration_rounds(
             backbone = np.union1d(r.net.backbone, forced)
             estimate = estimate_registration(ctx, r.net, cand)
             again = _evaluate(ctx, cand, say, clock, estimate=estimate)
-            chosen = _optimise(ctx, cand, again, say, clock, backbone, scanner_ok=ev.ok).chosen
+            chosen = _optimise(
+                ctx, cand, again, say, clock, backbone, scanner_ok=ev.ok, cut=cut
+            ).chosen
             r = Round(cover=chosen)
         else:
             break
@@ -596,7 +568,7 @@ def _best_effort(
     not zero stations. The samples stay unmet. None is spent on the samples beyond the
     ground's reach (:attr:`Diagnosis.elevated`): they need an elevated station."""
     none = np.empty(0, dtype=np.int64), 1.0
-    if not len(diagnosis.samples) or clock.over:
+    if not len(diagnosis.samples):
         return none
     best = diagnosis.best
     good = best["done"] & np.isfinite(best["score"]) & ~diagnosis.elevated
@@ -610,7 +582,7 @@ def _best_effort(
     relaxed = replace(ctx, limits=limits, stations_needed=np.ones_like(ctx.stations_needed))
     only = np.zeros(len(ctx.facades.z), dtype=bool)
     only[diagnosis.samples[good]] = True
-    ok = evaluate_candidates(relaxed, cand, deadline=clock.deadline, only=only).ok
+    ok = evaluate_candidates(relaxed, cand, only=only).ok
     ok = sp.csr_matrix(ok[np.flatnonzero(only)])
     served = np.asarray(ok[:, chosen].sum(axis=1)).ravel() > 0 if len(chosen) else False
     demand = ((np.asarray(ok.sum(axis=1)).ravel() > 0) & ~served).astype(np.int64)
@@ -635,17 +607,12 @@ def _evaluate(
     say: Progress,
     clock: Clock,
     estimate: Registration | None = None,
-    by: float | None = None,
 ) -> CandidateEvaluation:
     """Every candidate against every sample on the scanner's error (plus the ``estimate`` of
-    its registration error), until the clock's deadline, or until ``by`` where given."""
+    its registration error), whole."""
     with clock.timed("evaluate"):
         return evaluate_candidates(
-            ctx,
-            cand,
-            progress=lambda f, m: say(0.05 + 0.6 * f, m),
-            deadline=clock.deadline if by is None else by,
-            registration=estimate,
+            ctx, cand, progress=lambda f, m: say(0.05 + 0.6 * f, m), registration=estimate
         )
 
 
@@ -657,9 +624,11 @@ def _optimise(
     clock: Clock,
     forced: np.ndarray | None = None,
     scanner_ok: sp.csr_matrix | None = None,
+    cut: list[str] | None = None,
 ) -> CoverSolution:
     """The fewest stations meeting the evaluation ``ev`` (with the redundant views spread);
-    the ``forced`` candidates are taken and the fewest others added to them. A sample the
+    the ``forced`` candidates are taken and the fewest others added to them. Where the
+    clock stopped the search before its work bounds, that is said into ``cut``. A sample the
     evaluation leaves fewer candidates than the ``scanner_ok`` (the evaluation on the
     scanner's error alone) would give it is covered on ``scanner_ok``: by stations it is
     met from by the scanner's error, where the exact network may still meet it — not by
@@ -690,6 +659,11 @@ def _optimise(
         if sol.lower_bound is not None:  # the bound of the others plus the forced ones
             sol.lower_bound = float(sol.lower_bound) + len(np.unique(forced))
             sol.gap = max(0.0, (sol.objective - sol.lower_bound) / max(sol.objective, 1))
+    if sol.status == "time limit" and cut is not None:
+        cut.append(
+            f"the optimiser's search for fewer stations ({sol.objective}, at least "
+            f"{sol.lower_bound:.0f}): a faster machine or a longer run may give fewer"
+        )
     # one set-up per spot, before the views are spread (merging counts the stations that
     # meet a sample, not the directions they see it from)
     merged = merge_close(ok, demand, sol.chosen, cand[:, :2], st.station_spacing_m, forced)
@@ -711,11 +685,13 @@ def _optimise(
 
 
 def _solver_time(ctx: Context, clock: Clock) -> float:
-    """The optimiser's time limit [s]: what is left of the plan's budget, or its
-    :data:`SOLVER_SHARE` when the registration network is still to be built and judged;
-    never under :data:`MIN_SOLVER_S`."""
+    """The optimiser's backstop [CPU s]: :data:`SOLVER_SHARE` of ``time_limit_s`` when the
+    registration network is still to be built and judged (else all of it) — the same on
+    any machine; where the plan has a wall-clock end (a district's block), that share of
+    what is left of it, if less, and never under :data:`MIN_SOLVER_S`."""
     share = SOLVER_SHARE if ctx.settings.computes_registration else 1.0
-    return max(MIN_SOLVER_S, share * clock.left_s())
+    cpu = share * ctx.settings.time_limit_s
+    return cpu if math.isinf(clock.end) else max(MIN_SOLVER_S, min(cpu, share * clock.left_s()))
 
 
 def cover_demand(ctx: Context, n_ok: np.ndarray) -> np.ndarray:

@@ -252,7 +252,11 @@ class Plan:
             "a district's blocks are merged each on its own, not across their seams"
             if self.solver.blocks
             else "one set-up in their place meets fewer samples or breaks the network"
-            + (f", or ({untried} pair(s)) the time for merging ran out" if untried else "")
+            + (
+                f", or ({untried} pair(s)) untried: the merging's limit was reached"
+                if untried
+                else ""
+            )
         )
         why: dict[str, list[str]] = {}
         for i, j in close:

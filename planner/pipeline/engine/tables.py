@@ -60,10 +60,12 @@ __all__ = [
 
 
 def budget_message(time_limit_s: float, cut: list[str]) -> str:
-    """What the time budget cut short, as the plan says it."""
+    """What the clock stopped, as the plan says it (only the optimiser's search reads it:
+    the rest of the plan is decided by work)."""
     return (
-        f"Time budget: the {time_limit_s:g} s ran out; cut short: {'; '.join(cut)}. The plan "
-        "is the best found in the time; raise --time-limit-s for the whole of it."
+        f"Time budget: the {time_limit_s:g} s ran out on this machine; it stopped "
+        f"{'; '.join(dict.fromkeys(cut))}. Every sample was evaluated and the network built "
+        "whole; the plan may differ from one made with more time (raise --time-limit-s)."
     )
 
 

@@ -49,9 +49,7 @@ def diagnose(ctx: Context, cand: np.ndarray, ev: CandidateEvaluation, clock: Clo
         n_ok = np.asarray(ev.ok.sum(axis=1)).ravel()
         demanded = ~ctx.facades.party_wall & ev.evaluated
         hopeless = np.flatnonzero(demanded & (n_ok < ctx.stations_needed))
-        best = (
-            best_achievable(ctx, cand, hopeless, clock.deadline) if len(hopeless) else {"done": []}
-        )
+        best = best_achievable(ctx, cand, hopeless) if len(hopeless) else {"done": []}
         roof = lower_roof_in_front(ctx.site, ctx.facades, hopeless)
     n_view = ev.n_view[hopeless]
     if len(hopeless) and not ctx.scene.prisms:  # the evaluation did not count them by rays

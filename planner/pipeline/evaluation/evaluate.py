@@ -13,8 +13,6 @@ on the geometry (cos γ and sin ν come from dot products).
 
 from __future__ import annotations
 
-import math
-import time
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -627,14 +625,15 @@ class CandidateEvaluation:
 
     ok: sp.csr_matrix  # (N samples, C candidates) bool
     n_view: np.ndarray  # (N,) candidates that see the sample (prisms; by rays: not counted)
-    evaluated: np.ndarray  # (N,) bool: False where the time ran out before the sample's facade
+    #: (N,) bool, every sample: an evaluation is never cut short (a plan is decided by work,
+    #: not by the clock); the tables and the district's stitch still read it
+    evaluated: np.ndarray
 
 
 def evaluate_candidates(
     ctx: Context,
     cand_xy: np.ndarray,
     progress: Progress | None = None,
-    deadline: float = math.inf,
     registration: Registration | None = None,
     only: np.ndarray | None = None,
 ) -> CandidateEvaluation:
@@ -642,18 +641,16 @@ def evaluate_candidates(
     error plus, when given, the registration's (one entry per candidate) — without it, each
     candidate with its own levelling (:func:`facade_pairs`' ``own_level``: the choice's
     stand-in for the frame's error until the network exists); ``only`` (N,) bool restricts
-    it to some samples. Party-wall samples (never scanned) are not evaluated. Facades not
-    reached by ``deadline`` (a :func:`time.monotonic` time) are left unevaluated."""
+    it to some samples. Party-wall samples (never scanned) are not evaluated (none is met).
+    Always whole: its size (samples × candidates) is refused before it starts where beyond
+    the settings' ``max_pairs``."""
     fac = ctx.facades
     n_samples = len(fac.z)
     rows, cols = [], []
     n_view = np.zeros(n_samples, dtype=np.int64)
-    evaluated = fac.party_wall.copy()
     wanted = ~fac.party_wall if only is None else only & ~fac.party_wall
     cand_z = ctx.station_z(cand_xy)  # every candidate's scanner, once
     for f in range(fac.n_facades):
-        if time.monotonic() > deadline:
-            break
         if progress:
             progress(f / fac.n_facades, f"evaluating facade {fac.facade_id[f]}")
         smp = ctx.samples_of[f][wanted[ctx.samples_of[f]]]
@@ -661,12 +658,9 @@ def evaluate_candidates(
             continue
         cand = ctx.front_candidates(f, cand_xy)
         if not len(cand):
-            evaluated[smp] = True
             continue
         step = max(1, PAIR_CHUNK // len(smp))
         for lo in range(0, len(cand), step):
-            if time.monotonic() > deadline:
-                break  # the facade's samples stay "not evaluated"; the pairs found count
             ci = cand[lo : lo + step]
             m = facade_pairs(
                 ctx, f, cand_xy[ci], smp, only is None, registration is None, cand_z[ci]
@@ -678,34 +672,30 @@ def evaluate_candidates(
             cols.append(ci[r])
             if ctx.scene.prisms:  # (by rays, the diagnosis counts them where it matters)
                 n_view[smp] += m.view.sum(axis=0)
-        else:
-            evaluated[smp] = True
     if progress:
         progress(1.0, "evaluation done")
     r = np.concatenate(rows) if rows else np.empty(0, dtype=np.int64)
     c = np.concatenate(cols) if cols else np.empty(0, dtype=np.int64)
     ok = sp.csr_matrix((np.ones(len(r), dtype=bool), (r, c)), shape=(n_samples, len(cand_xy)))
     ok.sum_duplicates()
-    return CandidateEvaluation(ok, n_view, evaluated)
+    return CandidateEvaluation(ok, n_view, np.ones(n_samples, dtype=bool))
 
 
 def best_achievable(
-    ctx: Context, cand_xy: np.ndarray, samples: np.ndarray, deadline: float = math.inf
+    ctx: Context, cand_xy: np.ndarray, samples: np.ndarray
 ) -> dict[str, np.ndarray]:
     """For the given samples, the best value of each checked quantity over every candidate
     that sees them (each on its own, keyed by the check's key), and the best ``score``
     (largest value / limit, <= 1 meets). Arrays aligned with ``samples``; the worst value
     (±inf) where no candidate sees the sample. ``done`` says which samples were diagnosed
-    before ``deadline``, ``n_view`` how many candidates see each."""
+    (every one), ``n_view`` how many candidates see each."""
     fac = ctx.facades
     samples = np.asarray(samples)
     out = {c.key: np.full(len(samples), c.worst_value()) for c in CHECKS}
     out["score"] = np.full(len(samples), np.inf)
-    out["done"] = np.zeros(len(samples), dtype=bool)
+    out["done"] = np.ones(len(samples), dtype=bool)
     out["n_view"] = np.zeros(len(samples), dtype=np.int64)
     for f in np.unique(fac.facade[samples]):
-        if time.monotonic() > deadline:
-            break
         idx = np.flatnonzero(fac.facade[samples] == f)
         smp = samples[idx]
         cand = ctx.front_candidates(f, cand_xy)
@@ -722,7 +712,6 @@ def best_achievable(
                 )
             out["score"][idx] = np.minimum(out["score"][idx], score(ctx, m, smp).min(axis=0))
             out["n_view"][idx] += m.view.sum(axis=0)
-        out["done"][idx] = True
     return out
 
 

@@ -1,16 +1,15 @@
 """A plan's time budget and where its time went, as one object.
 
-Every stage of a plan (evaluation, diagnosis, optimiser, registration rounds, documents)
-shares the settings' ``time_limit_s``. A :class:`Clock` holds the deadline and the seconds
-each stage took; the stages are handed the clock instead of a deadline and a dictionary of
-timings each. A clock without a deadline (:meth:`Clock.unbounded`) serves the edits by
-hand, which are never cut short.
+A plan is decided by work, not by the clock: the evaluation, the diagnosis, the
+registration network and its rounds run whole, each bounded by counts (samples ×
+candidates, rounds, pairs tried), so the same inputs give the same plan on an idle desktop
+and on a loaded laptop. The settings' ``time_limit_s`` only stops the optimiser's search
+for a smaller cover (itself bounded by iterations and nodes, :mod:`planner.pipeline.optimise.cover`)
+on a machine too slow for those bounds; the plan then says it may differ from a longer run.
 
-Work that must run after a stage whatever the clock says (the last judgement, the tables,
-the files) is reserved at its measured cost on an idle machine, stretched by the *pace*
-this process gets: wall seconds per second of its CPU time. On a machine whose cores are
-shared with other work everything takes that much longer, and a fixed reserve would let the
-plan overrun its budget by as much.
+A :class:`Clock` holds that end (read by the optimiser alone, :meth:`Clock.left_s`) and
+the seconds each stage took; the stages are handed the clock instead of a dictionary of
+timings each. A clock without an end (:meth:`Clock.unbounded`) serves the edits by hand.
 """
 
 from __future__ import annotations
@@ -21,63 +20,17 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 
-__all__ = ["Clock", "pace"]
-
-#: The pace (wall seconds per CPU second) a reserve is stretched by at most.
-MAX_PACE = 3.0
-#: A pace is measured over at least this long [s]; over less it is taken as 1.
-MIN_PACE_WINDOW_S = 0.3
-
-
-def pace(wall_s: float, cpu_s: float) -> float:
-    """How many times longer work takes now than with a core to itself: ``wall_s`` over the
-    ``cpu_s`` this process had in that time, within 1 … :data:`MAX_PACE` (1 for a window
-    shorter than :data:`MIN_PACE_WINDOW_S`, or where threads gave it more CPU than wall).
-
-    >>> pace(3.0, 2.0), pace(3.0, 4.0), pace(0.1, 0.01), pace(10.0, 0.0)
-    (1.5, 1.0, 1.0, 3.0)
-    """
-    if wall_s < MIN_PACE_WINDOW_S:
-        return 1.0
-    return min(MAX_PACE, max(1.0, wall_s / cpu_s)) if cpu_s > 0 else MAX_PACE
+__all__ = ["Clock"]
 
 
 @dataclass
 class Clock:
     """The end of a piece of work's time (a :func:`time.monotonic` time; ``math.inf``:
-    none), when it started (:func:`time.perf_counter`, and :func:`time.process_time`), the
-    seconds it keeps at the end for what must follow it (:meth:`sooner`), and the seconds
-    spent per stage."""
+    none), when it started (:func:`time.perf_counter`) and the seconds spent per stage."""
 
     end: float = math.inf
     started: float = field(default_factory=time.perf_counter)
     spent_s: dict[str, float] = field(default_factory=dict)
-    reserve_s: float = 0.0
-    cpu_started: float = field(default_factory=time.process_time)
-
-    @property
-    def deadline(self) -> float:
-        """When this clock's work must stop (a :func:`time.monotonic` time): the end, less
-        the reserve stretched by the pace so far (:meth:`pace`)."""
-        return self.end - self.reserve_s * self.pace() if self.reserve_s else self.end
-
-    def pace(self) -> float:
-        """This process's pace since the clock started (:func:`pace`)."""
-        wall = time.perf_counter() - self.started
-        return pace(wall, time.process_time() - self.cpu_started)
-
-    @classmethod
-    def budget(
-        cls, limit_s: float, *, deadline: float | None = None, started: float | None = None
-    ) -> Clock:
-        """A clock running out ``limit_s`` from now, or at ``deadline`` where one is given
-        (a plan inside a larger one: a district block, the command's own budget).
-
-        >>> Clock.budget(60.0).left_s() > 59.0
-        True
-        """
-        end = time.monotonic() + limit_s if deadline is None else deadline
-        return cls(end=end, started=time.perf_counter() if started is None else started)
 
     @classmethod
     def unbounded(cls) -> Clock:
@@ -85,40 +38,14 @@ class Clock:
         return cls()
 
     def left_s(self) -> float:
-        """Seconds left before the deadline (never negative)."""
-        return max(0.0, self.deadline - time.monotonic())
+        """Seconds left before the end (never negative; infinite without one): a plan
+        inside a larger schedule caps its optimiser's backstop by it — nothing else of a plan
+        reads it.
 
-    @property
-    def over(self) -> bool:
-        """Whether the deadline has passed."""
-        return time.monotonic() > self.deadline
-
-    def share(self, fraction: float) -> float:
-        """The deadline of a stage that may take ``fraction`` of the time left.
-
-        >>> c = Clock.budget(100.0)
-        >>> 49.0 < c.share(0.5) - time.monotonic() <= 50.0
+        >>> Clock(end=time.monotonic() + 60.0).left_s() > 59.0
         True
         """
-        now, deadline = time.monotonic(), self.deadline  # (the pace read once)
-        return min(deadline, now + fraction * max(0.0, deadline - now))
-
-    def sooner(self, seconds: float) -> Clock:
-        """This clock running out ``seconds`` earlier — on an idle machine; as many times
-        more as the pace is slower (:meth:`pace`) — its timings shared: for work that must
-        leave time for what follows it whatever the clock says.
-
-        >>> c = Clock.budget(10.0)
-        >>> round(c.deadline - c.sooner(2.0).deadline, 6), c.sooner(2.0).spent_s is c.spent_s
-        (2.0, True)
-        """
-        return Clock(
-            end=self.end,
-            started=self.started,
-            spent_s=self.spent_s,
-            reserve_s=self.reserve_s + seconds,
-            cpu_started=self.cpu_started,
-        )
+        return max(0.0, self.end - time.monotonic())
 
     def note(self, stage: str, seconds: float) -> None:
         """Count ``seconds`` to ``stage`` (a stage may run several times)."""

@@ -634,15 +634,18 @@ class PlanSettings:
     Optimiser, time budget and work limits
     --------------------------------------
     method : "auto", "milp" or "greedy"
-        ``auto``: the integer program, greedy set cover when it finds nothing in time;
-        ``milp``: the integer program only (an error if it finds no plan in time);
+        ``auto``: the integer program where the bounds do not prove a cover optimal, its
+        best cover within the work bounds; ``milp``: an error unless proven optimal;
         ``greedy``: greedy set cover only.
     time_limit_s : float, default 60
-        Time budget of the whole plan: reading, evaluation (at most 60 %), optimiser (at
-        most half of what is left when it starts), registration rounds and documents share
-        it; when it runs out, the best plan found so far is kept and says what was cut.
-        A site of several jobs (``job_gap_m``) planned from the command line without one
-        takes the jobs' estimated time (:func:`planner.pipeline.district.groups.jobs_budget_s`).
+        The optimiser's backstop: each search for a smaller cover stops after half of it
+        (all of it without registration) in this process's CPU seconds, where its work
+        bounds (iterations, nodes) have not ended it first — the plan then says so. The
+        rest of a plan (evaluation, diagnosis, network, registration rounds, documents) is
+        decided by work and never cut: the same inputs give the same plan on any machine.
+        The district mode schedules its blocks within it on the wall clock. A site of
+        several jobs (``job_gap_m``) planned from the command line without one takes the
+        jobs' estimated time (:func:`planner.pipeline.district.groups.jobs_budget_s`).
     job_gap_m : float or None, default None
         Planned buildings farther apart than this [m] (not joined through others) are
         separate jobs (:mod:`planner.pipeline.district.groups`): each its own network,
@@ -1034,8 +1037,9 @@ class PlanSettings:
         "s",
         "time limit",
         step=5.0,
-        help="time budget of the whole plan (reading, evaluation, optimiser, registration, "
-        "documents); when it runs out the best plan so far is kept, and says so",
+        help="the optimiser's backstop: each search for fewer stations stops after half of "
+        "it in CPU seconds, where its work bounds have not ended it first (said in the "
+        "plan); the rest of the plan is decided by work, the same on any machine",
         group="solver",
         hi=604800.0,
     )

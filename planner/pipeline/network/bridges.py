@@ -112,25 +112,26 @@ class _PoolHops:
 class _Hops:
     """Which pool candidates could register to which (``adj``, P × P, made as asked) and to
     which stations (``to_st``, P × K) — a necessary condition, cheap for every pair — and
-    ``ok(i, j, to_station)``, the full check of one hop. ``cut``: the deadline left pool
-    out."""
+    ``ok(i, j, to_station)``, the full check of one hop."""
 
     pool: np.ndarray
     adj: Callable[[np.ndarray], np.ndarray]  # pool positions (F,) → their rows (F, P)
     to_st: np.ndarray
     ok: Callable[[int, int, bool], bool]
-    cut: bool = False
 
 
-def _target_hops(seen: SightCache, pool: np.ndarray, sight: Sight, deadline: float) -> _Hops | None:
-    """Hops by targets: three common targets, checked not to lie on one line."""
+def _target_hops(
+    seen: SightCache, pool: np.ndarray, sight: Sight, deadline: float = math.inf
+) -> _Hops | None:
+    """Hops by targets: three common targets, checked not to lie on one line. Candidates of
+    the pool not reached by ``deadline`` (a :func:`time.monotonic` time; none is passed in
+    planning) are left out; None if none is reached."""
     tc = seen.tc
     parts = []  # the pool's sights, a chunk at a time while the time lasts
     for k in range(0, len(pool), BRIDGE_CHUNK):
         if time.monotonic() > deadline:
             break
         parts.append(seen.usable(pool[k : k + BRIDGE_CHUNK]))
-    cut = sum(p.shape[1] for p in parts) < len(pool)
     if not parts:
         return None
     pool = pool[: sum(p.shape[1] for p in parts)]
@@ -149,7 +150,7 @@ def _target_hops(seen: SightCache, pool: np.ndarray, sight: Sight, deadline: flo
         other = u_st[:, j] if to_station else u_pool[:, j]
         return _spread(tc.xyz[u_pool[:, i] & other])
 
-    return _Hops(pool, adj, to_st, ok, cut)
+    return _Hops(pool, adj, to_st, ok)
 
 
 #: The number of bits set in each 4-bit number.
@@ -183,15 +184,13 @@ def linking_hops(
     stations: list[int],
     mode: str,
     sight: Sight,
-    deadline: float,
 ) -> _Hops | None:
     """The hops a linking station can make in the registration ``mode``: by targets (seen
-    as ``sight`` says), cloud to cloud, or (hybrid) either. None: no pool, or the deadline left none
-    of it."""
+    as ``sight`` says), cloud to cloud, or (hybrid) either. None: no pool."""
     pool = _bridge_pool(ctx, cand_xy, stations)
     if not len(pool):
         return None
-    by_targets = None if mode == "cloud" else _target_hops(seen, pool, sight, deadline)
+    by_targets = None if mode == "cloud" else _target_hops(seen, pool, sight)
     if mode == "targets" or (by_targets is None and mode == "hybrid"):
         return by_targets
     pool = pool if by_targets is None else by_targets.pool
@@ -205,26 +204,19 @@ def linking_hops(
         lambda at: t_adj(at) | c_adj(at),
         by_targets.to_st | by_clouds.to_st,
         lambda i, j, to_station: t_ok(i, j, to_station) or c_ok(i, j, to_station),
-        by_targets.cut,
     )
 
 
-def find_bridges(
-    hops: _Hops, groups: np.ndarray, deadline: float = math.inf
-) -> tuple[list[int], bool]:
+def find_bridges(hops: _Hops, groups: np.ndarray) -> list[int]:
     """The fewest linking candidates that chain every group of stations into one: a
     breadth-first search over the pool's hops, from one group to the nearest other,
-    repeated until one group is left, none can be reached or ``deadline`` passes. A chain
-    found is checked hop by hop (:attr:`_Hops.ok`) and a hop that fails is struck off
-    before searching again. Also whether the deadline cut the search short."""
-    adj, to_st, cut = _PoolHops(len(hops.pool), hops.adj), hops.to_st.copy(), hops.cut
+    repeated until one group is left or none can be reached. A chain found is checked hop
+    by hop (:attr:`_Hops.ok`) and a hop that fails is struck off before searching again."""
+    adj, to_st = _PoolHops(len(hops.pool), hops.adj), hops.to_st.copy()
     added: list[int] = []
     groups = groups.copy()
     for _ in range(MAX_BRIDGE_SEARCHES):
         if groups.max() == 0:
-            break
-        if time.monotonic() > deadline:
-            cut = True
             break
         chain = _bfs_chain(adj, to_st, groups)
         if chain is None:
@@ -247,15 +239,15 @@ def find_bridges(
         hit = {int(g) for i in chain for g in groups[to_st[i] & (groups > 0)]}
         groups = np.where(np.isin(groups, list(hit)), 0, groups)
         groups = np.unique(groups, return_inverse=True)[1]
-    return added, cut
+    return added
 
 
 #: Linking stations are searched this close to the stations they link [m].
 BRIDGE_RADIUS_M = 60.0
 
 
-#: The bridge search computes its candidates' sights this many at a time (the time budget
-#: is checked between chunks).
+#: The bridge search computes its candidates' sights this many at a time (a deadline given
+#: to :func:`_target_hops` is checked between chunks).
 BRIDGE_CHUNK = 512
 
 

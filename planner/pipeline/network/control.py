@@ -29,7 +29,6 @@ judged on. A group neither reaches stays untied and its place is named.
 from __future__ import annotations
 
 import math
-import time
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -105,19 +104,17 @@ def traverse_path(
     nodes: np.ndarray,
     starts: np.ndarray,
     ends: np.ndarray,
-    deadline: float = math.inf,
 ) -> list[int] | None:
     """The fewest legs from any of ``starts`` to any of ``ends`` (indices into ``nodes``,
     (N, 2) [m]) over legs of at most :data:`TRAVERSE_LEG_MAX_M` whose ends see each other:
-    a breadth-first search, the line of sight tested as it goes. None if none reaches (or
-    ``deadline`` passes)."""
+    a breadth-first search, the line of sight tested as it goes. None if none reaches."""
     hi = ctx.settings.instrument_height_m
     prev = np.full(len(nodes), -2, dtype=np.int64)
     prev[starts] = -1
     is_end = np.zeros(len(nodes), dtype=bool)
     is_end[ends] = True
     frontier = list(map(int, starts))
-    while frontier and time.monotonic() <= deadline:
+    while frontier:
         nxt = []
         for a in frontier:
             if is_end[a]:
@@ -206,7 +203,6 @@ def tie_groups(
     seen: SightCache,
     net: Network,
     goal_mm: float,
-    deadline: float = math.inf,
 ) -> Network:
     """``net`` with each group of untied stations tied by planned control where a traverse
     or GNSS can (the module's text); the planned points become control targets of the
@@ -218,13 +214,11 @@ def tie_groups(
     local = seen.fork(net.stations)  # the planned points stay out of the plan's cache
     n_group = 0
     for group in _groups(ctx, net):
-        if time.monotonic() > deadline:
-            break
         tied = np.flatnonzero(net.tied)
         nodes = np.vstack([cand[net.stations[tied]], cand[net.stations[group]], cand[coarse]])
         starts = np.arange(len(tied))
         ends = len(tied) + np.arange(len(group))
-        path = traverse_path(ctx, nodes, starts, ends, deadline)
+        path = traverse_path(ctx, nodes, starts, ends)
         if path is not None:
             kind, legs = "traverse", len(path) - 1
             anchor = group[int(path[-1] - len(tied))]

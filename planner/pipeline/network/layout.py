@@ -9,8 +9,6 @@ from __future__ import annotations
 
 import heapq
 import itertools
-import math
-import time
 from collections.abc import Sequence
 from dataclasses import replace
 from functools import cached_property
@@ -45,7 +43,6 @@ from planner.registration_error import (
 
 __all__ = [
     "HIDDEN_DETOUR",
-    "ROOT_SEARCH_SHARE",
     "Layout",
     "Stands",
 ]
@@ -64,7 +61,6 @@ class Layout:
         probes: dict[int, np.ndarray],
         goal_mm: float,
         datum: int | None = None,
-        deadline: float = math.inf,
         chain: Sequence[int] | None = None,
         cap: int | None = None,
     ) -> None:
@@ -125,31 +121,26 @@ class Layout:
         kept = not roots and datum in stations  # kept from the network this one grows from
         if kept:
             roots = [stations.index(datum)]
-        best = self._best_tree(roots or range(k), deadline)
+        best = self._best_tree(roots or range(k))
         if kept and best is not None and len(best[3]) < k:  # it does not reach them all
-            free = self._best_tree(range(k), deadline)
+            free = self._best_tree(range(k))
             best = free if len(free[3]) > len(best[3]) else best
         self.datum, self.tree, self.cost = best[1:] if best else (None, [], {})
         self.worst_var = max(self.cost.values()) if self.cost else np.inf
 
-    def _best_tree(self, roots: Sequence[int], deadline: float = math.inf) -> tuple | None:
+    def _best_tree(self, roots: Sequence[int]) -> tuple | None:
         """(key, root, tree, cost) of the root whose tree reaches the most stations, then
         keeps the worst station's error smallest — with 6 parameters, its variance plus the
         datum's lean at its facade points (:meth:`datum_tilt_var`); ties go to the lowest
-        root. The most central root is tried first, and others only while half of the time
-        left before ``deadline`` remains (the links and the layout after it need the rest). Once a
-        root's tree reaches every station, another root's search stops at the first station
-        worse than that tree's worst: it cannot win (and none of its links is made)."""
+        root. The most central root is tried first, then the others. Once a root's tree
+        reaches every station, another root's search stops at the first station worse than
+        that tree's worst: it cannot win (and none of its links is made)."""
         roots = list(roots)
         if len(roots) > 1:
             first = _central(self.station_xyz[roots])  # a position in roots
             roots = [roots[first], *roots[:first], *roots[first + 1 :]]
         best = None
-        now = time.monotonic()
-        stop = now + ROOT_SEARCH_SHARE * (deadline - now) if math.isfinite(deadline) else deadline
-        for n, root in enumerate(roots):
-            if n and time.monotonic() > stop:
-                break
+        for root in roots:
             tilt = self.datum_tilt_var(root)
             beaten = best[0][1] if best is not None and best[0][0] == -self.k else np.inf
             grown = _tree(root, self.k, self.pairs, self.link, self.bound, (tilt, beaten))
@@ -503,14 +494,9 @@ class Stands:
             self.lines |= {(int(j), int(t)) for j in stations if j != CONTROL}
 
 
-#: The share of the time left that the search for the network's datum (its best root) may
-#: take; the rest is for the links and the layout after it.
-ROOT_SEARCH_SHARE = 0.5
-
-
 def _central(xyz: np.ndarray) -> int:
-    """The station nearest all others (the smallest farthest distance): the datum a
-    network grows from when there is no time to grow one from every station."""
+    """The station nearest all others (the smallest farthest distance): the root the
+    search for the datum tries first (:meth:`Layout._best_tree`)."""
     return int(np.argmin(cdist(xyz[:, :2], xyz[:, :2]).max(axis=1)))
 
 

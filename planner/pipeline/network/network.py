@@ -46,8 +46,6 @@ class Network:
     station_xyz: np.ndarray  # (K, 3) scanner centres [m]
     #: every observation adjusted: (station, target) → centre RMS [mm] per axis
     centre_rms: dict[tuple[int, int], float] = field(default_factory=dict)
-    #: the time budget ran out before linking stations were looked for
-    cut_short: bool = False
     #: groups tied by planned control (:mod:`planner.pipeline.network.control`)
     ties: list = field(default_factory=list)
     #: how the scans are registered: targets, cloud or hybrid

@@ -17,8 +17,6 @@ the room's pieces together).
 
 from __future__ import annotations
 
-import math
-import time
 from collections.abc import Callable, Sequence
 
 import numpy as np
@@ -61,7 +59,6 @@ def build_network(
     weak_mm: float = np.inf,
     cache: SightCache | None = None,
     datum: int | None = None,
-    deadline: float = math.inf,
     height_room: tuple[np.ndarray, np.ndarray] | None = None,
     chain: Sequence[int] | None = None,
     cap: int | None = None,
@@ -74,8 +71,7 @@ def build_network(
     error exceeds ``weak_mm`` is strengthened, where linking stations can, by a detour
     that makes the worst station's error smaller. ``cache`` keeps the candidates' sights
     between calls. ``datum`` (a candidate index) keeps the datum of the network this one
-    grows from, when it is among the stations. After ``deadline`` (a
-    :func:`time.monotonic` time) no linking stations are looked for (``cut_short``).
+    grows from, when it is among the stations.
     ``height_room``: the samples' plan positions (P, 2) [m] and the height error each leaves
     the registration [mm], for deciding a level run
     (:func:`~planner.pipeline.network.height.levelled_targets`). ``chain`` and ``cap``: a
@@ -86,8 +82,8 @@ def build_network(
     seen = cache if cache is not None else SightCache(ctx, tc, cand_xy)
     n_cover = len(chosen)
     stations = [int(c) for c in chosen]
-    where = (datum, deadline, (chain, cap))
-    lay, cut_short = _layout(ctx, seen, cand_xy, stations, probes, goal_mm, weak_mm, *where)
+    where = (datum, (chain, cap))
+    lay = _layout(ctx, seen, cand_xy, stations, probes, goal_mm, weak_mm, *where)
     stations, station_xyz, datum, k = lay.stations, lay.station_xyz, lay.datum, lay.k
     links, link_error, placed, stands, behind = _tree_links(ctx, tc, lay, standing)
     # the spheres set up (and another network's) hide targets from stations
@@ -125,7 +121,6 @@ def build_network(
         candidates=tc,
         station_xyz=station_xyz,
         centre_rms=observed,
-        cut_short=cut_short,
         mode=lay.mode,
         weakest=_weakest_directions(lay, links, error),
         clouds={
@@ -149,42 +144,33 @@ def _layout(
     goal_mm: float,
     weak_mm: float,
     datum: int | None,
-    deadline: float,
     kit: tuple = (None, None),
-) -> tuple[Layout, bool]:
+) -> Layout:
     """The network's layout over ``stations`` and the linking stations they need (and a
     detour where a link is weaker than ``weak_mm``, if it makes the worst station's error
-    smaller); and whether the deadline cut the search for linking stations short."""
-    lay = _checked(
-        ctx, lambda: Layout(ctx, seen, cand_xy, stations, probes, goal_mm, datum, deadline, *kit)
-    )
+    smaller)."""
+    lay = _checked(ctx, lambda: Layout(ctx, seen, cand_xy, stations, probes, goal_mm, datum, *kit))
     groups = link_groups(lay.k, lay.pairs)
-    cut_short = False
     # stations neither targets nor clouds tie: linking stations (not in a kit's chain)
     if groups.max() > 0 and kit[0] is None:
-        hops = linking_hops(ctx, seen, cand_xy, stations, lay.mode, lay.sight, deadline)
-        extra, cut_short = find_bridges(hops, groups, deadline) if hops else ([], True)
+        hops = linking_hops(ctx, seen, cand_xy, stations, lay.mode, lay.sight)
+        extra = find_bridges(hops, groups) if hops else []
         if extra:
             lay = _checked(
-                ctx,
-                lambda: Layout(
-                    ctx, seen, cand_xy, stations + extra, probes, goal_mm, datum, deadline
-                ),
+                ctx, lambda: Layout(ctx, seen, cand_xy, stations + extra, probes, goal_mm, datum)
             )
     weak = np.zeros(1)
-    if np.isfinite(weak_mm) and lay.k > 1 and time.monotonic() <= deadline and kit[0] is None:
+    if np.isfinite(weak_mm) and lay.k > 1 and kit[0] is None:
         weak = lay.weak_groups(weak_mm)
     if weak.max() > 0:  # too weak: a detour, if it helps
-        hops = linking_hops(ctx, seen, cand_xy, lay.stations, lay.mode, lay.sight, deadline)
-        extra, _ = find_bridges(hops, weak, deadline) if hops else ([], True)
+        hops = linking_hops(ctx, seen, cand_xy, lay.stations, lay.mode, lay.sight)
+        extra = find_bridges(hops, weak) if hops else []
         if extra:
             more = lay.stations + extra
-            trial = _checked(
-                ctx, lambda: Layout(ctx, seen, cand_xy, more, probes, goal_mm, datum, deadline)
-            )
+            trial = _checked(ctx, lambda: Layout(ctx, seen, cand_xy, more, probes, goal_mm, datum))
             if len(trial.cost) >= len(lay.cost) and trial.worst_var < 0.8 * lay.worst_var:
                 lay = trial
-    return lay, cut_short
+    return lay
 
 
 #: Layouts rebuilt at most this often while their new cloud links are rehearsed.

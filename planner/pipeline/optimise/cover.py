@@ -12,8 +12,16 @@ that meet every requirement there — a set multi-cover problem.
    multipliers), the best of which a row-weighting local search improves
    (:mod:`planner.pipeline.optimise.localsearch`); the integer program on the union of the
    smallest of them is solved by HiGHS (``highspy``), started from the best cover, the union
-   doubled while it is solved in time; when every cover's union was solved, the whole
-   integer program gets the time left, its dual bound kept when it is stronger.
+   doubled while it is solved within its node limit; when every cover's union was solved,
+   the whole integer program is searched to its node limit, its dual bound kept when it is
+   stronger.
+
+Every step is bounded by work — ascent steps, local-search steps, branch-and-bound nodes
+(:data:`ASCENT_STEPS`, :data:`LOCAL_STEPS`, :data:`MIP_NODES`), HiGHS on one thread — so
+the same problem gives the same stations on any machine, however loaded. The time limit is
+a backstop in this process's CPU seconds (:func:`time.process_time`: other work on the
+machine does not spend it) for a problem too large for those bounds: it stops the search
+early (status "time limit"), never the first cover.
 
 The lower bound reported is the sum over parts of the best bound proven for each plus the
 forced stations: a real bound on the fewest stations, whatever stopped the solver.
@@ -58,19 +66,24 @@ class CoverSolution:
 
 #: Steps of the subgradient ascent between two covers of the Lagrangian heuristic.
 HEURISTIC_EVERY = 25
-#: The share of a part's time for the subgradient ascent (the rest for merging its covers) …
-ASCENT_SHARE = 0.65
-#: … and the smallest covers of the Lagrangian heuristic merged first (then twice as many,
-#: while the integer program on their union is solved in time). Chosen on the 50-building
-#: district's cover (14 292 × 59 148) in 20 s: shares 0.35 / 0.5 / 0.65 / 0.75 and first
-#: 3 / 5 / 7 / 10 / 15 covers gave 52–55 stations; these two 52 ≥ 43.
+#: Steps of the subgradient ascent at most (it stops sooner once its bound proves a cover
+#: optimal or its step has shrunk to nothing).
+ASCENT_STEPS = 1500
+#: The smallest covers of the Lagrangian heuristic merged first (then twice as many, while
+#: the integer program on their union is solved within :data:`MIP_NODES`). Chosen on the
+#: 50-building district's cover (14 292 × 59 148): first 3 / 5 / 7 / 10 / 15 covers gave
+#: 52–55 stations.
 MERGE_FIRST = 10
-#: The share of a part's time left after the ascent for the row-weighting local search
-#: (:mod:`planner.pipeline.optimise.localsearch`); the integer program on the covers' union
-#: gets the rest. On the 50-building grid's cover (6 678 × 7 994 after the reductions) the
-#: search reaches 43 columns in 5 s and 41 in 10 s from the greedy 51 (benchmarks/RESULTS.md
-#: large-sites).
-LOCAL_SHARE = 0.6
+#: Steps of the row-weighting local search at most
+#: (:mod:`planner.pipeline.optimise.localsearch`; it stops sooner after
+#: :data:`~planner.pipeline.optimise.localsearch.STALL_STEPS` without a smaller cover).
+LOCAL_STEPS = 400_000
+#: Branch-and-bound nodes of each HiGHS integer program at most (one thread: the same
+#: nodes, the same answer, on any machine).
+MIP_NODES = 2000
+#: HiGHS keeps time on the wall clock: it is given this many wall seconds per CPU second of
+#: the backstop left (a machine this loaded still reaches the node limit first).
+HIGHS_WALL_PER_CPU_S = 4.0
 #: The subgradient ascent: the weight of the previous direction in the next …
 MOMENTUM = 0.9
 #: … and the steps without a better bound after which the step length is halved.
@@ -141,7 +154,7 @@ def lagrangian_bound(
     demand: np.ndarray,
     upper: float,
     deadline: float,
-    iterations: int = 1500,
+    iterations: int = ASCENT_STEPS,
     covers: list[np.ndarray] | None = None,
 ) -> float:
     """A lower bound on the fewest columns by Lagrangian relaxation of the cover rows.
@@ -188,7 +201,7 @@ def lagrangian_bound(
             break
         g = d - a @ x.astype(np.float64)
         g[(u <= 0) & (g < 0)] = 0.0  # no move out of u ≥ 0
-        if not g.any() or step < 1e-5 or time.monotonic() > deadline:
+        if not g.any() or step < 1e-5 or time.process_time() > deadline:
             break  # (a zero projected subgradient: u is optimal)
         direction = g + MOMENTUM * direction
         direction[(u <= 0) & (direction < 0)] = 0.0
@@ -209,6 +222,7 @@ def _highs(a: sp.csr_matrix, demand: np.ndarray, start: np.ndarray, time_limit_s
 
     h = _cover_model(a, demand, np.ones(a.shape[1]), time_limit_s, integer=True)
     h.setOptionValue("mip_rel_gap", 0.0)
+    h.setOptionValue("mip_max_nodes", MIP_NODES)
     x0 = np.zeros(a.shape[1])
     x0[start] = 1.0
     _set_start(h, highspy, x0)
@@ -349,25 +363,31 @@ def _merge(
     if not red.a.shape[0]:
         return core[red.forced], True
     start = np.flatnonzero(np.isin(core[red.columns], best))  # HiGHS repairs it if need be
-    optimal, x, _ = _highs(red.a, red.demand, start, deadline - time.monotonic())
+    optimal, x, _ = _highs(red.a, red.demand, start, _wall_s(deadline))
     if x is None or len(x) + len(red.forced) >= len(best):
         return best, optimal
     return np.union1d(core[red.forced], core[red.columns[x]]), optimal
 
 
-def _solve_part(a: sp.csr_matrix, demand: np.ndarray, deadline: float, method: str) -> _Part:
+def _wall_s(deadline: float) -> float:
+    """HiGHS's wall-clock limit for the CPU backstop ``deadline`` (a
+    :func:`time.process_time` time): :data:`HIGHS_WALL_PER_CPU_S` per CPU second left."""
+    return HIGHS_WALL_PER_CPU_S * max(0.0, deadline - time.process_time())
+
+
+def _solve_part(
+    a: sp.csr_matrix, demand: np.ndarray, deadline: float, method: str, steps: int
+) -> _Part:
     """Greedy cover and its bounds; then, where they differ, the Lagrangian heuristic's best
-    cover, solution merging, and the whole integer program while time is left."""
+    cover (``steps`` of ascent), the local search, solution merging and the whole integer
+    program — each to its work bound, or to the backstop ``deadline``."""
     g = greedy_cover(a, demand)
     bound = packing_lower_bound(a, demand)
     if bound >= len(g):
         return _Part(g, len(g), len(g), "greedy = packing bound")
-    covers = [g]  # the ascent gets a share of the time left: the covers it finds are merged after
-    share = 1.0 if method == "greedy" else ASCENT_SHARE
-    ascent_end = time.monotonic() + (deadline - time.monotonic()) * share
-    bound = max(
-        bound, int(np.ceil(lagrangian_bound(a, demand, len(g), ascent_end, covers=covers) - 1e-6))
-    )
+    covers = [g]
+    ascent = lagrangian_bound(a, demand, len(g), deadline, iterations=steps, covers=covers)
+    bound = max(bound, int(np.ceil(ascent - 1e-6)))
     best = min(covers, key=len)
     if bound >= len(best) or method == "greedy":
         return _Part(best, min(bound, len(best)), len(g), "greedy, Lagrangian bound")
@@ -375,22 +395,16 @@ def _solve_part(a: sp.csr_matrix, demand: np.ndarray, deadline: float, method: s
     searched = (
         best
         if method == "milp"
-        else row_weighting_search(
-            a,
-            demand,
-            best,
-            time.monotonic() + (deadline - time.monotonic()) * LOCAL_SHARE,
-            floor=bound,
-        )
+        else row_weighting_search(a, demand, best, deadline, max_steps=LOCAL_STEPS, floor=bound)
     )
-    if len(searched) < len(best):  # (its steps follow the clock: a busy machine takes fewer)
+    if len(searched) < len(best):
         best, how = searched, "row-weighting local search"
         covers.append(searched)
     if bound >= len(best):
         return _Part(best, bound, len(g), how)
     ranked = sorted(covers, key=len)  # merged from the smallest: a core grown while solved
     k = MERGE_FIRST
-    while deadline - time.monotonic() > 0.05 and len(covers) > 1:
+    while time.process_time() < deadline and len(covers) > 1:
         merged, core_solved = _merge(a, demand, [best, *ranked[:k]], deadline)
         if len(merged) < len(best):
             best, how = merged, "integer program on the Lagrangian heuristic's covers"
@@ -399,10 +413,10 @@ def _solve_part(a: sp.csr_matrix, demand: np.ndarray, deadline: float, method: s
         if k >= len(ranked):
             break
         k *= 2
-    if deadline - time.monotonic() <= 0.05:
-        how += " (no time left for the integer program)"
+    if time.process_time() >= deadline:
+        how += " (the time limit stopped it before the integer program)"
         return _Part(best, min(bound, len(best)), len(g), how)
-    optimal, x, dual = _highs(a, demand, best, deadline - time.monotonic())
+    optimal, x, dual = _highs(a, demand, best, _wall_s(deadline))
     if dual is not None:
         bound = max(bound, int(np.ceil(dual - 1e-6)))
     if x is not None and len(x) <= len(best):
@@ -417,12 +431,13 @@ def solve_cover(
 
     ``demand`` must already be capped at what each row can get (its number of candidates).
     ``method``: "auto" (the integer program where the bounds do not already prove the greedy
-    cover optimal; greedy where time runs out), "milp" (an error unless every part is proven
-    optimal) or "greedy" (greedy cover with its bounds). The bound reported is always a
-    proven lower bound on the fewest stations.
+    cover optimal), "milp" (an error unless every part is proven optimal) or "greedy"
+    (greedy cover with its bounds; with ``time_limit_s`` 0, the greedy covers alone). The
+    search is bounded by work (module docstring); ``time_limit_s`` is its backstop. The
+    bound reported is always a proven lower bound on the fewest stations.
     """
     t0 = time.perf_counter()
-    deadline = time.monotonic() + max(0.0, time_limit_s)
+    deadline = time.process_time() + max(0.0, time_limit_s)  # CPU seconds: see the module
     ok = sp.csr_matrix(ok)
     demand = np.asarray(demand, dtype=np.int64)
     red = reduce_cover(ok, demand, deadline)
@@ -430,17 +445,14 @@ def solve_cover(
     chosen, parts = [red.forced], []
     if red.a.shape[0]:
         label = _components(red.a)
-        order = np.argsort(np.bincount(label))  # small parts first: each proven quickly
-        left_nnz = red.a.nnz
+        order = np.argsort(np.bincount(label), kind="stable")  # small parts first
+        steps = ASCENT_STEPS if time_limit_s > 0 else 1
         for p in order:
             rows = np.flatnonzero(label == p)
             sub = red.a[rows]
             cols = np.flatnonzero(np.diff(sub.tocsc().indptr) > 0)
             sub = sub[:, cols].tocsr()
-            now = time.monotonic()  # this part's share of the time left, by its size
-            share = (deadline - now) * sub.nnz / max(1, left_nnz)
-            left_nnz -= sub.nnz
-            part = _solve_part(sub, red.demand[rows], now + share, method)
+            part = _solve_part(sub, red.demand[rows], deadline, method, steps)
             chosen.append(red.columns[cols[part.chosen]])
             parts.append(part)
     chosen_all = np.unique(np.concatenate(chosen)).astype(np.int64)
@@ -453,9 +465,9 @@ def solve_cover(
     greedy_total = len(red.forced) + sum(p.greedy for p in parts)
     if method == "milp" and not proven:
         raise PlannerError(
-            f"the integer program was not proven optimal within the time limit of "
-            f"{time_limit_s:g} s ({n} stations, lower bound {bound}); raise the time limit "
-            "(--time-limit-s) or accept the best plan found (--method auto)"
+            f"the integer program was not proven optimal within {MIP_NODES} nodes or the "
+            f"time limit of {time_limit_s:g} s ({n} stations, lower bound {bound}); accept "
+            "the best plan found (--method auto)"
         )
     if not red.a.shape[0] and not len(red.forced):
         status = "nothing to cover"
@@ -463,8 +475,10 @@ def solve_cover(
         status = "optimal"
     elif method == "greedy":
         status = "as requested"
-    else:
+    elif time.process_time() >= deadline:
         status = "time limit"
+    else:
+        status = "work limit"
     return CoverSolution(
         chosen=chosen_all,
         method="milp" if used_milp else "local search" if searched else "greedy",

@@ -48,7 +48,7 @@ def row_weighting_search(
     floor: int = 0,
 ) -> np.ndarray:
     """The smallest cover found from the cover ``start`` (column indices of ``a``, rows ×
-    columns, each row served ``demand`` times) by ``deadline`` (a :func:`time.monotonic`
+    columns, each row served ``demand`` times) by ``deadline`` (a :func:`time.process_time`
     time), ``max_steps``, :data:`STALL_STEPS` without a smaller one, or one of ``floor``
     columns (a proven bound: none is smaller). Deterministic for a ``seed`` and a step
     count.
@@ -68,7 +68,7 @@ def row_weighting_search(
     rng = np.random.default_rng(seed)
     state = _start(a, at, d, x)
     steps, size, since = 0, int(best.sum()), 0
-    while steps < max_steps and time.monotonic() < deadline and since < STALL_STEPS:
+    while steps < max_steps and time.process_time() < deadline and since < STALL_STEPS:
         if size <= floor:
             break
         n = min(STEPS_PER_CHECK, max_steps - steps)

@@ -70,7 +70,7 @@ def subset_pairs(
 ) -> tuple[np.ndarray, np.ndarray] | None:
     """Pairs ``(x, y)``, ``x != y``, with items(x) ⊆ items(y), for the rows of ``sets`` (a
     sparse 0/1 matrix, one row per set); ``None`` when the bit sets would be too large, or
-    ``deadline`` (a :func:`time.monotonic` time) passes before every pair is checked.
+    ``deadline`` (a :func:`time.process_time` time) passes before every pair is checked.
 
     ``allowed(x, y)``: a mask of the pairs wanted, applied before any set is compared.
     ``witness``: ``None`` for every pair; ``"x"`` (``"y"``) for one pair per subset
@@ -101,12 +101,12 @@ def subset_pairs(
     if allowed is not None:
         keep &= allowed(x, y)
     x, y, rank = x[keep], y[keep], rank[keep]
-    if time.monotonic() > deadline:
+    if time.process_time() > deadline:
         return None
     bits = _bitsets(sets)
     rng = np.random.default_rng(seed)
     for _ in range(_PROBES):  # a true superset holds every member: only non-pairs drop out
-        if time.monotonic() > deadline:
+        if time.process_time() > deadline:
             return None
         item = sets.indices[sets.indptr[x] + (rng.random(len(x)) * size[x]).astype(np.int64)]
         word = bits[y, item >> 6] >> (item & 63).astype(np.uint64)
@@ -119,7 +119,7 @@ def subset_pairs(
     found = np.zeros(n, dtype=bool)
     exact = np.zeros(len(x), dtype=bool)
     for lo in range(0, len(x), chunk):
-        if time.monotonic() > deadline:
+        if time.process_time() > deadline:
             return None
         at = np.arange(lo, min(lo + chunk, len(x)))
         if side is not None:
@@ -204,7 +204,7 @@ def _dominated_columns(
 
 def reduce_cover(a: sp.csr_matrix, demand: np.ndarray, deadline: float = math.inf) -> Reduced:
     """Apply the reductions (module docstring) to a fixed point, or until ``deadline`` (a
-    :func:`time.monotonic` time; every pass leaves an exact reduction of the problem).
+    :func:`time.process_time` time; every pass leaves an exact reduction of the problem).
 
     ``a``: samples × candidates, nonzero where the candidate meets the sample; ``demand``:
     stations each sample needs, already capped at its number of candidates.
@@ -230,7 +230,7 @@ def reduce_cover(a: sp.csr_matrix, demand: np.ndarray, deadline: float = math.in
             rows_new, cols_new = rows_new[live], cols_new[used]
         if a.shape[0] == 0:
             break
-        if time.monotonic() > deadline:
+        if time.process_time() > deadline:
             counts["stopped"] = 1
             break
         # forced: every column of a row that needs all of them
@@ -247,7 +247,7 @@ def reduce_cover(a: sp.csr_matrix, demand: np.ndarray, deadline: float = math.in
         # implied rows: cols(x) ⊆ cols(y) and demand(x) ≥ demand(y) → y goes
         drop = _implied_rows(a, demand, rows_new, deadline)
         if drop is None:
-            counts["stopped" if time.monotonic() > deadline else "skipped"] = 1
+            counts["stopped" if time.process_time() > deadline else "skipped"] = 1
             break
         if cols_new is not None:
             cols_new[a[drop].indices] = True
@@ -260,7 +260,7 @@ def reduce_cover(a: sp.csr_matrix, demand: np.ndarray, deadline: float = math.in
         cols = a.T.tocsr()
         drop = _dominated_columns(cols, demand, cols_new, deadline)
         if drop is None:
-            counts["stopped" if time.monotonic() > deadline else "skipped"] = 1
+            counts["stopped" if time.process_time() > deadline else "skipped"] = 1
             break
         rows_new[cols[drop].indices] = True
         cols_new = np.zeros(a.shape[1] - len(drop), dtype=bool)

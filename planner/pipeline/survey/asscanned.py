@@ -384,8 +384,9 @@ def read_targets_placed(path: str | Path) -> pd.DataFrame:
 def check_same_plan(p: Plan, folder: str | Path) -> None:
     """An :class:`InputError` unless ``p``'s stations are those of the plan written in
     ``folder`` (its ``stations.csv``: the same ids, each within a millimetre): the re-plan
-    must start from the plan the crew followed, and a plan made again from its options can
-    differ (another time budget, another version)."""
+    must start from the plan the crew followed, and a report must show the plan written; a
+    plan made again from its options is the same on any machine, but can differ with
+    other options or another version of the planner."""
     path = Path(folder) / "stations.csv"
     if not path.is_file():
         raise InputError(f"{folder}: no stations.csv (give the folder planner plan wrote)")
@@ -402,7 +403,7 @@ def check_same_plan(p: Plan, folder: str | Path) -> None:
         raise InputError(
             f"the plan made again from these options is not the plan in {folder} (stations "
             f"{', '.join(differ[:5])}{' …' if len(differ) > 5 else ''} differ): give the options "
-            "that plan was made with, and a --time-limit-s long enough for it to finish"
+            "that plan was made with (and the same version of the planner)"
         )
 
 
