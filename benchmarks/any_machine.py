@@ -75,9 +75,7 @@ def main() -> None:
             finally:
                 for b in busy:
                     b.kill()
-            same = all(
-                _digest(folder / "idle", n) == _digest(folder / "loaded", n) for n in FILES
-            )
+            same = all(_digest(folder / "idle", n) == _digest(folder / "loaded", n) for n in FILES)
             stations = sum(1 for _ in (folder / "idle" / "stations.csv").open()) - 1
             rows.append(
                 f"| {name} | {stations} | {'identical' if same else 'DIFFER'} ({idle[2]}) | "
