@@ -22,7 +22,7 @@ from functools import cached_property
 
 import numpy as np
 
-from planner.mesh import newell_normal, triangle_areas, triangulate
+from planner.mesh import newell_normal, thin_rings, triangle_areas, triangulate
 
 __all__ = [
     "KINDS",
@@ -126,6 +126,11 @@ class Surface:
     part: str = ""
     id: str = ""
     lod: str = field(default="", compare=False)
+
+    def __post_init__(self) -> None:
+        # a ring of very many vertices in line (a hostile or over-densified model) is kept
+        # by its vertices that matter, within a millimetre (planner.mesh.thin_rings)
+        object.__setattr__(self, "rings", thin_rings(self.rings))
 
     @cached_property
     def normal(self) -> np.ndarray:

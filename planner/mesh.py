@@ -94,22 +94,77 @@ def plane_axes(normal: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return e1 + 0.0, e2 / np.linalg.norm(e2) + 0.0  # (+ 0.0: no negative zeros)
 
 
-def triangulate(rings: Sequence[np.ndarray]) -> np.ndarray:
-    """Triangles (T, 3, 3) of a planar polygon given as rings (exterior first, then holes;
-    each (n, 3), closed or not), projected onto its plane and ear-clipped; empty for a
+#: A ring of more vertices than this is thinned before it is ear-clipped (ear clipping takes
+#: time growing with the square of a ring's vertices where many lie in line: a wall drawn
+#: with 500 000 vertices took minutes) …
+THIN_ABOVE = 200
+#: … dropping the vertices within this of the line through the ones kept (Douglas–Peucker
+#: in the polygon's plane; every vertex kept is one of the ring's) [m].
+THIN_TOLERANCE_M = 0.001
+
+
+def thinned(uv: np.ndarray) -> np.ndarray:
+    """The indices of the vertices of a ring ``uv`` (n, 2) kept by Douglas–Peucker within
+    :data:`THIN_TOLERANCE_M` (all of them for a ring of :data:`THIN_ABOVE` or fewer), in
+    order; at least three.
+
+    >>> t = np.linspace(0.0, 1.0, 300, endpoint=False)
+    >>> square = np.vstack([np.column_stack([t, 0 * t]), np.column_stack([1 + 0 * t, t]),
+    ...                     np.column_stack([1 - t, 1 + 0 * t]), np.column_stack([0 * t, 1 - t])])
+    >>> thinned(square).tolist()
+    [0, 300, 600, 900]
+    """
+    if len(uv) <= THIN_ABOVE:
+        return np.arange(len(uv))
+    kept = shapely.get_coordinates(
+        shapely.simplify(shapely.linearrings(uv), THIN_TOLERANCE_M, preserve_topology=False)
+    )
+    where = {tuple(p): k for k, p in enumerate(uv.tolist())}
+    idx = sorted({where[tuple(p)] for p in kept.tolist() if tuple(p) in where})
+    return np.asarray(idx) if len(idx) >= 3 else np.arange(len(uv))
+
+
+def _in_plane(rings: Sequence[np.ndarray]) -> tuple[list[np.ndarray], list[np.ndarray]]:
+    """A planar polygon's rings cleaned (:func:`clean_ring`; holes of fewer than three
+    vertices dropped) and each projected onto the polygon's plane (n, 2); both empty for a
     degenerate polygon."""
     clean = [clean_ring(r) for r in rings]
     if not clean or len(clean[0]) < 3:
-        return np.empty((0, 3, 3))
+        return [], []
     normal = newell_normal(clean[0])
     if not normal.any():
-        return np.empty((0, 3, 3))
+        return [], []
     clean = [clean[0], *(r for r in clean[1:] if len(r) >= 3)]
-    pts = np.vstack(clean)
     e1, e2 = plane_axes(normal)
-    c = pts - pts[0]
-    uv = np.column_stack([c @ e1, c @ e2])
-    ends = np.cumsum([len(r) for r in clean]).astype(np.uint32)
+    origin = clean[0][0]
+    return clean, [np.column_stack([(r - origin) @ e1, (r - origin) @ e2]) for r in clean]
+
+
+def thin_rings(rings: Sequence[np.ndarray]) -> tuple[np.ndarray, ...]:
+    """A planar polygon's rings, each of more than :data:`THIN_ABOVE` vertices thinned in
+    the polygon's plane (:func:`thinned`: the vertices within a millimetre of the line
+    through those kept dropped); the rings as they are where none is that long, or the
+    polygon is degenerate. A wall drawn with 500 000 vertices in line keeps its four
+    corners: every use of it (triangles, outlines, drawings) is as quick as for four."""
+    if all(len(r) <= THIN_ABOVE for r in rings):
+        return tuple(rings)
+    clean, flat = _in_plane(rings)
+    if not clean:
+        return tuple(rings)
+    return tuple(r[thinned(f)] for r, f in zip(clean, flat, strict=True))
+
+
+def triangulate(rings: Sequence[np.ndarray]) -> np.ndarray:
+    """Triangles (T, 3, 3) of a planar polygon given as rings (exterior first, then holes;
+    each (n, 3), closed or not), projected onto its plane and ear-clipped; empty for a
+    degenerate polygon. A ring of many vertices is thinned first (:func:`thinned`)."""
+    clean, flat = _in_plane(rings)
+    if not clean:
+        return np.empty((0, 3, 3))
+    keep = [thinned(f) for f in flat]
+    pts = np.vstack([r[k] for r, k in zip(clean, keep, strict=True)])
+    uv = np.vstack([f[k] for f, k in zip(flat, keep, strict=True)])
+    ends = np.cumsum([len(k) for k in keep]).astype(np.uint32)
     idx = mapbox_earcut.triangulate_float64(uv, ends)
     return pts[idx.reshape(-1, 3)]
 

@@ -167,26 +167,51 @@ def cmd_audit(args: argparse.Namespace) -> int:
 
 
 class _StderrProgress:
-    """Progress on stderr: a bar on a terminal, a line per stage otherwise."""
+    """Progress on stderr: a bar on a terminal (the step, the seconds so far and, once a
+    tenth is done, about how many are left at the pace so far), a line per stage otherwise
+    (with the seconds so far)."""
 
     def __init__(self, quiet: bool) -> None:
         self.quiet = quiet
         self.tty = sys.stderr.isatty()
         self.last = ""
+        self.t0 = time.monotonic()
 
     def __call__(self, fraction: float, message: str) -> None:
         if self.quiet:
             return
         stage = message.split(" ")[0]
+        took = time.monotonic() - self.t0
         if self.tty:
             bar = "#" * int(30 * fraction)
-            sys.stderr.write(f"\r[{bar:<30}] {100 * fraction:3.0f}% {message[:50]:<50}")
+            left = (
+                f", about {took * (1 - fraction) / fraction:.0f} s left"
+                if 0.1 <= fraction < 1.0
+                else ""
+            )
+            clock = f"{took:.0f} s{left}"
+            sys.stderr.write(f"\r[{bar:<30}] {100 * fraction:3.0f}% {message[:44]:<44} {clock:<22}")
             if fraction >= 1.0:
                 sys.stderr.write("\n")
             sys.stderr.flush()
         elif stage != self.last:
-            print(f"planner: {message}", file=sys.stderr)
+            print(f"planner: [{took:4.0f} s] {message}", file=sys.stderr)
         self.last = stage
+
+
+def _where_the_time_went(p, quiet: bool) -> None:
+    """The plan's seconds per stage, on stderr (not in the files: they hold what the plan
+    is, the same on any machine)."""
+    spent = {k: v for k, v in getattr(p, "timings_s", {}).items() if not k.endswith("_mb")}
+    if quiet or not spent:
+        return
+    total = spent.pop("total", None)
+    words = ", ".join(f"{k} {v:.1f} s" for k, v in spent.items() if v >= 0.05)
+    print(
+        f"planner: where the time went: {words}"
+        + (f"; {total:.1f} s in all" if total is not None else ""),
+        file=sys.stderr,
+    )
 
 
 def plan_inputs(args: argparse.Namespace):
@@ -419,6 +444,7 @@ def run_plan(args: argparse.Namespace) -> int:
     import ezdxf  # noqa: F401  (the DXF writer's import, 0.7 s, made now: not after planning)
 
     result = make_plan(args, progress)
+    _where_the_time_went(result, args.quiet)
     extra = {}
     if args.booklet:
         from planner.app.booklet import booklet_pdf

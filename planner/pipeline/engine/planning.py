@@ -200,6 +200,11 @@ def _prepare(
             "grid (--grid-m) or coarser samples, plan fewer buildings, or raise the limit "
             "(--max-pairs)"
         )
+    say(
+        0.02,
+        f"work: {len(fac.z):,} samples × {len(cand):,} candidate stations "
+        f"({pairs:.3g} pairs to evaluate)",
+    )
     if len(cand) == 0:
         messages.append(
             "no free ground for a station within reach of the facades "
