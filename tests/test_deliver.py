@@ -196,6 +196,29 @@ def test_dxf_speaks_the_maps_symbols_at_the_drawing_scale(tmp_path, scale, defau
     assert not doc.layers.get("STATIONS").is_off()
 
 
+def test_the_dxf_opens_on_the_planned_area_not_the_whole_model(default_plan):
+    """A city model's tile holds buildings kilometres from those planned (a 9 × 10 km
+    sample opened on dots): they are drawn, but the drawing's extents are the plan's —
+    its stations, targets, planned buildings — within a few symbols' margin."""
+    import copy
+
+    from planner.site import Building, Site
+
+    p = copy.deepcopy(default_plan)
+    far = Building("far-away", shapely.box(0, 0, 10, 10), 9.0, planned=False)
+    x0, y0 = p.stations["x"].min() + 5000.0, p.stations["y"].min() + 7000.0  # m
+    far = Building(
+        "far-away", shapely.affinity.translate(far.footprint, x0, y0), 9.0, planned=False
+    )
+    p.site = Site([*p.site.buildings, far], crs=p.site.crs, name=p.site.name)
+    doc = ezdxf.read(io.StringIO(render(p)["plan.dxf"]))
+    assert any("far-away" in e.dxf.text for e in doc.modelspace().query("TEXT"))  # drawn
+    lo, hi = doc.header["$EXTMIN"], doc.header["$EXTMAX"]
+    xy = p.stations[["x", "y"]].to_numpy()
+    assert hi[0] - lo[0] < (np.ptp(xy[:, 0]) + 300.0)  # m: not the 5 km to the far building
+    assert hi[1] - lo[1] < (np.ptp(xy[:, 1]) + 300.0)  # m
+
+
 def test_stakeout_file_lists_stations_and_targets(lonlat_plan):
     out, _ = lonlat_plan
     so = pd.read_csv(out / "stakeout.csv")

@@ -118,7 +118,11 @@ def dxf_text(p: Plan) -> str:
 
     doc, paper = _dxf_document(ezdxf, p.settings.drawing_scale)
     msp = doc.modelspace()
-    drawn = [_draw_feature(msp, f, paper) for f in _features(p)]  # every point placed
+    drawn = [  # the points placed of what the plan is about (the extents: see _framed)
+        placed
+        for f in _features(p)
+        if len(placed := _draw_feature(msp, f, paper)) and _framed(f["properties"])
+    ]
     drawn += _draw_site_and_sectors(msp, p, paper)
     _frame(msp, p, drawn, paper)
     stream = io.StringIO()
@@ -209,7 +213,8 @@ def _draw_feature(msp: Any, f: dict, paper: float) -> np.ndarray:
 
 def _draw_site_and_sectors(msp: Any, p: Plan, paper: float) -> list[np.ndarray]:
     """The buildings' labels (id and height), the site's boundary and the stations' view
-    sectors; the points they placed."""
+    sectors; the points they placed that frame the drawing (the planned buildings' labels,
+    the sectors: see :data:`FRAMED_LAYERS`)."""
     from ezdxf.enums import TextEntityAlignment
 
     drawn: list[np.ndarray] = []
@@ -225,17 +230,30 @@ def _draw_site_and_sectors(msp: Any, p: Plan, paper: float) -> list[np.ndarray]:
             height=TEXT_MM * paper,
             dxfattribs={"layer": "BUILDING-LABELS"},
         ).set_placement((at.x, at.y), align=TextEntityAlignment.MIDDLE_CENTER)
-        drawn.append(np.array([[at.x, at.y]]))
+        if b.planned:
+            drawn.append(np.array([[at.x, at.y]]))
     if p.site.boundary is not None:
         for ring in _rings(geometry_json(p.site.boundary)):
             msp.add_lwpolyline([tuple(c[:2]) for c in ring], dxfattribs={"layer": "BOUNDARY"})
-            drawn.append(np.asarray(ring, dtype=float)[:, :2])
     st = p.stations.set_index("station_id")
     for sid, (start, end, radius) in view_sectors(p.stations, p.coverage, p.targets).items():
         pts = _sector_points(st.at[sid, "x"], st.at[sid, "y"], start, end, radius)
         msp.add_lwpolyline(pts, close=True, dxfattribs={"layer": "VIEW-SECTORS"})
         drawn.append(np.asarray(pts, dtype=float)[:, :2])
     return drawn
+
+
+#: Layers the drawing opens on (its extents): what the plan is about. The site's context —
+#: buildings not planned, obstacles, no-go areas, passages, the boundary — is drawn but
+#: does not widen the view (a city model's tile of 9 × 10 km opened on dots).
+FRAMED_LAYERS = ("facade", "wall", "station", "target", "link", "unmet", "route")
+
+
+def _framed(props: dict) -> bool:
+    """Whether a feature sets the drawing's extents: a planned building, or a layer of
+    :data:`FRAMED_LAYERS`."""
+    layer = props.get("layer")
+    return layer in FRAMED_LAYERS or (layer == "building" and bool(props.get("planned")))
 
 
 def _frame(msp: Any, p: Plan, drawn: list[np.ndarray], paper: float) -> None:
