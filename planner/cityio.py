@@ -1019,7 +1019,9 @@ def _model_terrain(model: _Model, blds: list[Building], project) -> Terrain | No
     allp = np.vstack(pts)
     if np.ptp(allp[:, 2]) < 0.05 and math.isclose(float(allp[0, 2]), 0.0, abs_tol=0.05):
         return None
-    return TinTerrain(allp, "ground of the model's buildings (no relief in the model)")
+    return TinTerrain(
+        allp, "ground of the model's buildings (no relief in the model)", measured=False
+    )
 
 
 def footprints_of(site: Site) -> dict:

@@ -38,9 +38,12 @@ MAX_TERRAIN_PIXELS = 50_000_000
 
 
 class Terrain:
-    """Ground heights of a site [m]; subclasses say how (``source``, in words)."""
+    """Ground heights of a site [m]; subclasses say how (``source``, in words) and whether
+    the heights were measured (a DTM, a model's relief) or assumed from something else
+    (``measured`` False: the ground under a model's buildings, joined across the streets)."""
 
     source: str = ""
+    measured: bool = True
 
     def ground_z(self, xy: np.ndarray) -> np.ndarray:
         """Height of the ground [m] under each of the points ``xy`` (P, 2)."""
@@ -124,7 +127,14 @@ class TinTerrain(Terrain):
     triangulation, the nearest point's outside it; ``triangles`` (T, 3, 3) the relief's own
     faces where it has them (else the Delaunay triangles)."""
 
-    def __init__(self, points: np.ndarray, source: str, faces: np.ndarray | None = None) -> None:
+    def __init__(
+        self,
+        points: np.ndarray,
+        source: str,
+        faces: np.ndarray | None = None,
+        *,
+        measured: bool = True,
+    ) -> None:
         from scipy.interpolate import LinearNDInterpolator, NearestNDInterpolator
 
         pts = np.asarray(points, dtype=float).reshape(-1, 3)
@@ -133,7 +143,7 @@ class TinTerrain(Terrain):
         xy, inverse = np.unique(np.round(pts[:, :2], 3), axis=0, return_inverse=True)
         z = np.bincount(inverse.ravel(), pts[:, 2]) / np.bincount(inverse.ravel())
         self.points = np.column_stack([xy, z])
-        self.source = source
+        self.source, self.measured = source, measured
         from scipy.spatial import QhullError
 
         self._nearest = NearestNDInterpolator(xy, z)

@@ -230,6 +230,7 @@ def test_stakeout_file_lists_stations_and_targets(lonlat_plan):
         "code",
         "ground_z",
         "above_ground_m",
+        "height_from",
     ]
     stations = pd.read_csv(out / "stations.csv")
     targets = pd.read_csv(out / "targets.csv")

@@ -163,3 +163,25 @@ def test_the_stakeout_file_of_a_sloped_site_has_real_heights(sloped_plan):
     places = target_places(p, list(tg.index[spheres]))
     highs = [float(re.search(r"stand, (\d+\.\d) m high", w).group(1)) for w in places]
     assert highs == pytest.approx([p.settings.target_height_m] * len(highs), abs=0.051)
+
+
+def test_heights_from_an_assumed_ground_are_given_to_the_decimetre_and_said():
+    """A city model with no relief: the ground is assumed from under its buildings (joined
+    across the streets), so the stake-out's heights are given to 0.1 m and say so — not to
+    the millimetre from an assumption (two stations 70 m apart both "at 462.874 m")."""
+    from planner.cityio import site_from_cityjson
+    from planner.pipeline.engine.planning import plan
+    from planner.pipeline.inputs.requirements import PlanSettings
+    from planner.synthetic3d import lod2_town
+
+    model = lod2_town(2, seed=0)
+    model["CityObjects"] = {
+        k: o for k, o in model["CityObjects"].items() if o["type"] != "TINRelief"
+    }
+    site = site_from_cityjson(model)
+    assert site.terrain is not None and not site.terrain.measured
+    quick = PlanSettings(grid_m=3.0, sample_spacing_m=3.0, sample_height_step_m=3.0)
+    so = pd.read_csv(io.StringIO(stakeout_csv(plan(site, settings=quick))))
+    assert so["height_from"].str.startswith("assumed: ground of the model's buildings").all()
+    assert np.allclose(so["height"], so["height"].round(1), atol=1e-9)  # m: to 0.1 m
+    assert np.allclose(so["ground_z"], so["ground_z"].round(1), atol=1e-9)

@@ -393,10 +393,13 @@ def stakeout_csv(p: Plan) -> str:
     """Stations and targets to set out (:data:`STAKEOUT_COLUMNS`), in the site's CRS and
     height system: a station at its ground mark (the terrain's height there, 0 on flat
     ground) with its instrument height above it, a target at its centre with the ground
-    under it (:meth:`~planner.site.Site.ground_z`) and its height above that."""
+    under it (:meth:`~planner.site.Site.ground_z`) and its height above that. Positions to
+    the millimetre; heights too where the ground was measured (a DTM, the model's relief),
+    to the decimetre where it is assumed (:func:`height_from`, said in ``height_from``)."""
     st = in_id_order(p.stations, "station_id")
     tg = in_id_order(p.targets, "target_id")
     ground = p.site.ground_z(tg[["x", "y"]].to_numpy(float))
+    source, decimals = height_from(p.site)
     rows: list[dict[str, Any]] = [
         {
             "point_id": r.station_id,
@@ -406,6 +409,7 @@ def stakeout_csv(p: Plan) -> str:
             "code": "TRV" if r.purpose == "traverse" else "STN",
             "ground_z": r.ground_z,
             "above_ground_m": r.instrument_height_m,
+            "height_from": source,
         }
         for r in st.itertuples()
     ]
@@ -421,9 +425,29 @@ def stakeout_csv(p: Plan) -> str:
             + ("-LVL" if getattr(r, "height_by", "") else ""),
             "ground_z": g,
             "above_ground_m": r.z - g,
+            "height_from": source,
         }
         for r, g in zip(tg.itertuples(), ground, strict=True)
     ]
     if any(list(row) != STAKEOUT_COLUMNS for row in rows):  # a field left out is a bug
         raise ValueError(f"a stake-out row's fields differ from {STAKEOUT_COLUMNS}")
-    return to_csv(pd.DataFrame(rows, columns=STAKEOUT_COLUMNS).round(3))  # to the millimetre
+    table = pd.DataFrame(rows, columns=STAKEOUT_COLUMNS).round(3)  # to the millimetre
+    return to_csv(table.round({"height": decimals, "ground_z": decimals}))
+
+
+def height_from(site) -> tuple[str, int]:
+    """Where a plan's heights come from, in words, and the decimals they are given to: the
+    terrain model or relief (3: to the millimetre), the ground under a model's buildings
+    joined across the streets (1: an assumption, to the decimetre), or none (3: heights above
+    flat ground, 0 at every mark).
+
+    >>> from planner.siteio import default_site
+    >>> height_from(default_site())
+    ('no terrain: heights above flat ground', 3)
+    """
+    t = site.terrain
+    if t is None:
+        return "no terrain: heights above flat ground", 3
+    if not t.measured:
+        return f"assumed: {t.source}; to 0.1 m", 1
+    return t.source, 3

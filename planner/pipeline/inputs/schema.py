@@ -229,6 +229,7 @@ STAKEOUT_COLUMNS = [
     "code",
     "ground_z",
     "above_ground_m",
+    "height_from",
 ]
 
 
