@@ -69,7 +69,7 @@ __all__ = [
 ]
 
 #: File name endings read as a city model (a ``.json`` is one when its type says so).
-MODEL_SUFFIXES = (".gml", ".xml", ".jsonl", ".citygml")
+MODEL_SUFFIXES = (".gml", ".xml", ".jsonl", ".citygml", ".ifc")
 #: A city model larger than this is refused [bytes]: cut the tile to the job first.
 MAX_MODEL_BYTES = 512_000_000
 
@@ -639,7 +639,8 @@ def read_city_model(
     terrain: Terrain | None = None,
 ) -> Site:
     """A :class:`Site` from a city model file (CityJSON ``.json``/``.city.json``, CityJSON
-    Sequence ``.jsonl``, CityGML ``.gml``/``.xml``).
+    Sequence ``.jsonl``, CityGML ``.gml``/``.xml``) or a BIM model (IFC ``.ifc``:
+    :mod:`planner.ifcio`).
 
     Parameters
     ----------
@@ -671,11 +672,18 @@ def read_city_model(
     kw = dict(lod=lod, buildings=buildings, crs=crs, limits=limits, near_m=near_m, terrain=terrain)
     from planner.reading import reading
 
-    with reading(p.name, "CityJSON or CityGML"):
+    with reading(p.name, "IFC" if p.suffix.lower() == ".ifc" else "CityJSON or CityGML"):
         return _read_model(p, kw)
 
 
 def _read_model(p: Path, kw: dict) -> Site:
+    if p.suffix.lower() == ".ifc":  # a BIM model: its buildings' shells (planner.ifcio)
+        from planner.ifcio import read_ifc_model
+
+        objects, crs, notes = read_ifc_model(p, kw.get("crs"))
+        site = _assemble(_Model(objects, [], [], crs, p.name), **{**kw, "crs": crs})
+        site.warnings[:0] = notes
+        return site
     raw = p.read_bytes()
     head = raw.lstrip(b"\xef\xbb\xbf \t\r\n")[:1]
     if head in (b"{", b"["):
@@ -793,6 +801,19 @@ def _assemble(
         warnings.append(
             f"{windows} window surface(s) (glass) are not demanded: glass returns no point or "
             "a mirrored one"
+        )
+    doors = sum(s.kind == "door" for b in blds for s in b.surfaces)
+    if doors:
+        warnings.append(
+            f"{doors} door surface(s) are demanded as wall is: a glazed door, an open one or a "
+            "shop's roller shutter returns no point or another — mark such doors as windows "
+            "in the model, or leave those samples out by a zone"
+        )
+    fittings = sum(s.kind == "installation" for b in blds for s in b.surfaces)
+    if fittings:
+        warnings.append(
+            f"{fittings} installation surface(s) (balconies, stairs, dormers, chimneys) are not "
+            "demanded; they stand in the beams' way, shadowing the walls behind them"
         )
     try:
         planned = with_planned(blds, buildings)

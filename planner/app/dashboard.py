@@ -375,7 +375,7 @@ class StationPlanner:
             options=["Default site", "Upload a file"], value="Default site"
         )
         self.upload = w.FileUpload(
-            accept=".geojson,.json,.jsonl,.gml,.xml,.wkt,.txt,.csv,.gpkg,.kml,.kmz",
+            accept=".geojson,.json,.jsonl,.gml,.xml,.ifc,.wkt,.txt,.csv,.gpkg,.kml,.kmz",
             multiple=False,
             description="Site file",
         )
