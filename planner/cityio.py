@@ -802,6 +802,12 @@ def _assemble(
             f"{windows} window surface(s) (glass) are not demanded: glass returns no point or "
             "a mirrored one"
         )
+    if not obstacles:
+        warnings.append(
+            f"{origin} holds buildings only — no trees, street furniture or other structures: "
+            "sight lines are cast against its buildings alone; add what stands around them "
+            "(an OpenStreetMap export, a survey of the street) with --surroundings FILE"
+        )
     doors = sum(s.kind == "door" for b in blds for s in b.surfaces)
     if doors:
         warnings.append(

@@ -1112,3 +1112,83 @@ def default_site(buildings: Sequence[str] | None = None, limits: SiteLimits | No
         name="default site",
         limits=limits,
     )
+
+
+#: A building of the surroundings that covers this share of a site's building (or is
+#: covered by it) is that building from another source: left out, and said.
+SAME_BUILDING_SHARE = 0.5
+
+
+def with_surroundings(
+    site: Site,
+    path: str | Path,
+    *,
+    crs: str | None = None,
+    default_height_m: float | None = None,
+) -> Site:
+    """``site`` with what stands around it from a second file in the same CRS (a site file:
+    footprints with heights, trees, obstacles, no-go areas — e.g. an OpenStreetMap export
+    beside a city model that holds only its buildings): its buildings block the beam but
+    are not planned, its trees and obstacles block it, its no-go areas keep stations out.
+    A building of the file that is one of the site's (covering half of it or more) is left
+    out, and said; everything else is checked as a site file is
+    (:func:`site_from_features`, with the site's buildings beside it)."""
+    from planner import crs as crs_
+
+    p = user_file(path, "surroundings file")
+    with reading(p.name, "surroundings"):
+        features, file_crs = _file_features(p, crs)
+    if site.crs and file_crs:
+        if crs_.split_model_crs(site.crs)[0] != crs_.split_model_crs(file_crs)[0]:
+            raise InputError(
+                f"{p.name} is in {crs_.name_of(file_crs)}, the site in "
+                f"{crs_.name_of(site.crs)}; give the surroundings in the site's CRS"
+            )
+    ours = [b.footprint for b in site.buildings]
+    tree = shapely.STRtree(ours)
+    kept, same = [], []
+    for f in features:
+        role = _role_of(f.props)
+        g = f.geometry
+        if role == "building" and g is not None and _polygonal(g):
+            hits = tree.query(g, predicate="intersects")
+            cover = [
+                shapely.area(shapely.intersection(g, ours[j]))
+                / max(min(g.area, ours[j].area), 1e-9)
+                for j in hits
+            ]
+            if cover and max(cover) >= SAME_BUILDING_SHARE:
+                same.append(f.ident)
+                continue
+        f.props = {**f.props, "plan": False}
+        kept.append(f)
+    taken = {b.id for b in site.buildings}
+    for f in kept:  # an id the site already gives is the surroundings' own
+        if f.ident in taken:
+            f.props = {**f.props, "id": f"surroundings:{f.ident}"}
+    mine = [
+        Feature(-1 - k, b.footprint, {"id": b.id, "height": b.height_m, "role": "building"})
+        for k, b in enumerate(site.buildings)
+    ]
+    around = site_from_features(
+        [*mine, *kept],
+        default_height_m=default_height_m,
+        crs=file_crs or site.crs,
+        name=site.name,
+        limits=site.limits,
+        near_m=site.near_m,
+        origin=p.name,
+    )
+    new = [b for b in around.buildings if b.id not in taken]
+    words = (
+        f"Surroundings from {p.name}: {len(new)} building(s) (not planned), "
+        f"{len(around.obstacles)} tree(s) or obstacle(s), {len(around.no_go)} no-go area(s)"
+        + (f"; {len(same)} of its buildings are the site's own, left out" if same else "")
+    )
+    return replace(
+        site,
+        buildings=[*site.buildings, *new],
+        obstacles=[*site.obstacles, *around.obstacles],
+        no_go=[*site.no_go, *around.no_go],
+        warnings=[*site.warnings, words],
+    )

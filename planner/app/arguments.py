@@ -188,6 +188,15 @@ def _site_arguments(pl: argparse.ArgumentParser) -> None:
         "lies on (the site file gives the buildings and their ids)",
     )
     pl.add_argument(
+        "--surroundings",
+        default=None,
+        metavar="FILE",
+        help="what stands around the site, from a second site file in its CRS (footprints "
+        "with heights, trees, obstacles, no-go areas; e.g. an OpenStreetMap export beside a "
+        "city model that holds only its buildings): blocks the beam and keeps stations out, "
+        "never planned; a building that is one of the site's is left out, and said",
+    )
+    pl.add_argument(
         "--mesh-offset",
         type=_floats_in("offset_m"),
         default=None,

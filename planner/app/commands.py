@@ -249,6 +249,7 @@ def plan_inputs(args: argparse.Namespace):
                 "--terrain, --lod and --mesh need a site file (the default site is footprints "
                 "on flat ground)"
             )
+        site = with_surroundings_args(args, site)
     if args.control:
         from dataclasses import replace
 
@@ -292,7 +293,17 @@ def read_site_args(args: argparse.Namespace, limits, near_m: float):
         site = with_mesh(site, args.mesh, offset=args.mesh_offset or (0.0, 0.0, 0.0))
     if args.terrain:
         site = with_terrain(site, args.terrain)
-    return site
+    return with_surroundings_args(args, site)
+
+
+def with_surroundings_args(args: argparse.Namespace, site):
+    """``site`` with the surroundings file of ``--surroundings``, where one is given
+    (:func:`planner.siteio.with_surroundings`)."""
+    if not getattr(args, "surroundings", None):
+        return site
+    from planner.siteio import with_surroundings
+
+    return with_surroundings(site, args.surroundings, crs=args.crs, default_height_m=args.height)
 
 
 def _read_text(path: str, what: str) -> str:
@@ -306,7 +317,7 @@ def _read_text(path: str, what: str) -> str:
 #: The options that name a file the command reads.
 INPUT_OPTIONS = (
     "site", "zones", "control", "inventory", "materials", "scanner", "terrain", "mesh", "model",
-    "reference", "scan", "file",
+    "surroundings", "reference", "scan", "file",
 )  # fmt: skip
 
 
