@@ -459,16 +459,38 @@ def _gml_id(el: ET.Element) -> str:
     return ""
 
 
+def _numbers(text: str | None, where: str) -> np.ndarray:
+    """The numbers of a coordinate list's text; an InputError naming the first word that is
+    not one."""
+    words = (text or "").replace(",", " ").split()
+    try:
+        return np.array(words, dtype=float)
+    except ValueError:
+        bad = next(w for w in words if not _is_number(w))
+        raise InputError(f"{where}: a ring's coordinates hold {bad[:20]!r}, not a number") from None
+
+
+def _is_number(word: str) -> bool:
+    try:
+        float(word)
+    except ValueError:
+        return False
+    return True
+
+
 def _pos_list(el: ET.Element, dim: int, where: str) -> np.ndarray:
     """The points of a ring (posList, pos elements or GML 2 coordinates), (n, 3)."""
     pl = next((c for c in el if _local(c.tag) == "posList"), None)
     if pl is not None:
-        d = int(pl.attrib.get("srsDimension", dim))
-        vals = np.array(pl.text.split(), dtype=float) if pl.text else np.empty(0)
+        try:
+            d = int(pl.attrib.get("srsDimension", dim))
+        except ValueError:
+            raise InputError(f"{where}: a posList's srsDimension is not a whole number") from None
+        vals = _numbers(pl.text, where)
     else:
         pos = [c for c in el if _local(c.tag) == "pos"]
         if pos:
-            rows = [np.array((p.text or "").split(), dtype=float) for p in pos]
+            rows = [_numbers(p.text, where) for p in pos]
             d = len(rows[0])
             if any(len(r) != d for r in rows):
                 raise InputError(f"{where}: a ring's points have different dimensions")
@@ -479,7 +501,7 @@ def _pos_list(el: ET.Element, dim: int, where: str) -> np.ndarray:
                 raise InputError(f"{where}: a ring has no coordinates")
             tuples = [t.split(",") for t in co.text.split()]
             d = len(tuples[0])
-            vals = np.array([v for t in tuples for v in t], dtype=float)
+            vals = _numbers(" ".join(v for t in tuples for v in t), where)
     if d != 3 or vals.size % 3:
         raise InputError(f"{where}: a ring's coordinates are not x y z triples (dimension {d})")
     pts = vals.reshape(-1, 3)
