@@ -21,7 +21,6 @@ stations: :mod:`~planner.pipeline.district.bounds`; the stitch:
 from __future__ import annotations
 
 import math
-import time
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -161,24 +160,20 @@ def plan_block(
     req: Requirements,
     settings: PlanSettings,
     region: shapely.Geometry | None = None,
-    share_s: float = math.inf,
-    until_epoch: float = math.inf,
 ) -> tuple[Plan, pd.DataFrame, BlockCover, KeptNetwork]:
     """One block's plan (a Dask task), its :func:`meeting_table` (within ``region``, the
     block's box grown by its halo), its :func:`block_cover` and its network's frame
     (:func:`keep_frame`); its network and workbench stay on the worker. Its timings say the worker
-    process's peak memory so far [MB] (``worker_peak_mb``). The plan takes at most ``share_s``
-    seconds and ends by ``until_epoch`` (a :func:`time.time` time: the worker may be another
-    machine)."""
+    process's peak memory so far [MB] (``worker_peak_mb``). The block is planned by work,
+    not by the clock (:func:`planner.pipeline.engine.planning.plan`): the same on any worker,
+    however loaded."""
     import resource
 
     from planner.pipeline.engine.planning import plan
 
-    now = time.monotonic()
-    deadline = min(now + share_s, now + (until_epoch - time.time()))
     if settings.height_control == "level":  # the district's frame spans all the blocks
         settings = replace(settings, height_control="always")
-    p = plan(site, scanner, req, settings, deadline=deadline)
+    p = plan(site, scanner, req, settings)
     table = meeting_table(p, region)
     p.solver.meeting_reach_m = meeting_reach(p)
     cover = block_cover(p)

@@ -49,11 +49,8 @@ from planner.scanner import Scanner
 from planner.site import Site
 
 __all__ = [
-    "CLOSE_CLUSTER_S",
     "SCHEDULER_SCHEMES",
     "SCHEDULER_TIMEOUT_S",
-    "STITCH_SHARE",
-    "STITCH_S_PER_SAMPLE",
     "WORKER_CONFIG",
     "connect",
     "local_cluster",
@@ -75,20 +72,6 @@ WORKER_CONFIG = {
     "distributed.nanny.pre-spawn-environ.MALLOC_MMAP_THRESHOLD_": 64 * 2**20,
     "distributed.worker.profile.enabled": False,
 }
-
-
-#: The share of a district's time budget kept for stitching the blocks, the bound and the
-#: route after the blocks are planned — or, where longer, the stitch's estimated time: about
-#: this long per facade sample of the site [s] (measured on a 40-building town of 10 526
-#: samples by the estimate, blocks of 80 m: 0.4–2.9 s, by how much the blocks planned), and
-#: closing a local cluster (about 1 s).
-STITCH_SHARE = 0.15
-
-
-STITCH_S_PER_SAMPLE = 2e-4
-
-
-CLOSE_CLUSTER_S = 1.0
 
 
 #: How long a scheduler named by --scheduler is waited for before the plan says it cannot
@@ -200,11 +183,10 @@ def plan_district(
         Address of an existing Dask scheduler (``tcp://host:8786``); default: a
         ``LocalCluster`` of ``workers`` processes with ``memory_limit`` each, closed after.
     deadline : float, optional
-        When the whole plan must be done (a :func:`time.monotonic` time; default: now plus
-        the settings' ``time_limit_s``). The blocks share the time before
-        :data:`STITCH_SHARE` of it is left, each by its size; a block whose share runs out
-        is planned in part (its plan says what was cut), the bound is given up when the
-        time is out, and the plan says what the budget cut short.
+        When the bound on shared stations is given up (a :func:`time.monotonic` time;
+        default: now plus the settings' ``time_limit_s``; said in the plan). The blocks
+        themselves are planned by work, not by the clock: the same district plan on any
+        machine, however loaded — only its bound may be given up on a slow one.
     """
     req = requirements or Requirements()
     st = settings or PlanSettings()
@@ -228,8 +210,7 @@ def plan_district(
         # the workers import the planner now, before the blocks' shares of the time are
         # counted: a share is for planning, not for a worker's start (about 3 s loaded)
         client.run(_import_planner)
-        until = _blocks_until(site, st, deadline, closing=cluster is not None)
-        job = _BlockJobs(client, blocks, sites, work, scanner, req, st, halo, until)
+        job = _BlockJobs(client, blocks, sites, work, scanner, req, st, halo)
         plans, tables, xys, frames = job.run(
             say, lambda k: _worker_died(blocks[k], scheduler, memory_limit, block_m)
         )
@@ -283,17 +264,6 @@ def _blocks(
     return blocks, sites, work, halo, st
 
 
-def _blocks_until(site: Site, st: PlanSettings, deadline: float, closing: bool) -> float:
-    """When the blocks must be planned by (a :func:`time.monotonic` time): the time left
-    before the stitch's share (:data:`STITCH_SHARE`, or the stitch's estimate where larger,
-    with the local cluster's closing)."""
-    left = max(0.0, deadline - time.monotonic())
-    stitching = STITCH_S_PER_SAMPLE * estimate_samples(
-        site, st.sample_spacing_m, st.sample_height_step_m
-    ) + (CLOSE_CLUSTER_S if closing else 0.0)
-    return time.monotonic() + left - min(left, max(STITCH_SHARE * left, stitching))
-
-
 def _worker_died(block: Block, scheduler: str | None, memory_limit: str, block_m: float) -> str:
     """What to say when the worker planning ``block`` died."""
     limit = "the cluster's limit" if scheduler else memory_limit
@@ -322,10 +292,9 @@ class _BlockJobs:
     req: Requirements
     st: PlanSettings
     halo: float
-    until: float  # when the blocks must be planned by (a time.monotonic time)
     covers: list = field(default_factory=list)  # each block's cover, kept on the workers
     queue: list[int] = field(default_factory=list)  # the blocks not yet handed out
-    in_flight: dict[int, float] = field(default_factory=dict)  # block → when its share ends
+    in_flight: dict[int, float] = field(default_factory=dict)  # block → when it was handed out
     futures: dict = field(default_factory=dict)  # each block's result → the block
     pending: Any = None  # the results in the order they come (dask's as_completed)
 
@@ -361,13 +330,8 @@ class _BlockJobs:
 
     def _submit_next(self, slots: int) -> None:
         k = self.queue.pop(0)
-        now = time.monotonic()
-        busy = sum(max(0.0, end - now) for end in self.in_flight.values())  # the others'
-        pool = slots * max(0.0, self.until - now) - busy
         work = self.work
-        share = max(0.0, pool) * work[k] / max(1, sum(work[j] for j in [k, *self.queue]))
-        share = min(share, max(0.0, self.until - now))
-        self.in_flight[k] = now + share
+        self.in_flight[k] = time.monotonic()
         f = self.client.submit(
             plan_block,
             self.sites[k],
@@ -375,8 +339,6 @@ class _BlockJobs:
             self.req,
             self.st,
             block_region(self.blocks[k], self.halo),
-            share,
-            time.time() + (self.until - now),
             priority=work[k],
             pure=False,
         )
