@@ -183,13 +183,10 @@ class _StderrProgress:
         stage = message.split(" ")[0]
         took = time.monotonic() - self.t0
         if self.tty:
+            from planner.app.wording import time_words
+
             bar = "#" * int(30 * fraction)
-            left = (
-                f", about {took * (1 - fraction) / fraction:.0f} s left"
-                if 0.1 <= fraction < 1.0
-                else ""
-            )
-            clock = f"{took:.0f} s{left}"
+            clock = time_words(took, fraction)
             sys.stderr.write(f"\r[{bar:<30}] {100 * fraction:3.0f}% {message[:44]:<44} {clock:<22}")
             if fraction >= 1.0:
                 sys.stderr.write("\n")

@@ -38,7 +38,7 @@ from planner.app.widgets import (
     show,
     upload_folder,
 )
-from planner.app.wording import SITE_LABELS, for_dashboard
+from planner.app.wording import SITE_LABELS, for_dashboard, time_words
 from planner.classes import class_limits, parse_class
 from planner.errors import PlannerError
 from planner.materials import material_table
@@ -1088,16 +1088,17 @@ class StationPlanner:
         self._step = message
 
     def _tick(self, label: str, t0: float, ended: threading.Event) -> None:
-        """Elapsed time and the current step, twice a second until the run ``ended``
-        (after Cancel: that it is being cancelled, until the step it is in ends)."""
+        """Elapsed time, about how long is left (:func:`~planner.app.wording.time_words`)
+        and the current step, twice a second until the run ``ended`` (after Cancel: that it
+        is being cancelled, until the step it is in ends)."""
         while True:
             with self._status_lock:
                 if ended.is_set():
                     return
                 doing = "cancelling" if self._cancel.is_set() else label
+                took = time_words(time.perf_counter() - t0, float(self.progress.value))
                 self.status.value = (
-                    f"<i>{html.escape(doing)}… {time.perf_counter() - t0:.0f} s — "
-                    f"{html.escape(self._step)}</i>"
+                    f"<i>{html.escape(doing)}… {took} — {html.escape(self._step)}</i>"
                 )
             if ended.wait(0.5):
                 return

@@ -16,7 +16,13 @@ from functools import cache
 
 from planner.pipeline.inputs.requirements import PlanSettings, Requirements, field_specs
 
-__all__ = ["SITE_LABELS", "dashboard_labels", "for_dashboard", "for_dashboard_html"]
+__all__ = [
+    "SITE_LABELS",
+    "dashboard_labels",
+    "for_dashboard",
+    "for_dashboard_html",
+    "time_words",
+]
 
 #: The dashboard's labels of the command line's options that are not requirement or setting
 #: fields (those carry their own label).
@@ -85,3 +91,16 @@ def for_dashboard(text: str) -> str:
 def for_dashboard_html(text: str) -> str:
     """:func:`for_dashboard`, escaped for HTML, its line breaks kept."""
     return html.escape(for_dashboard(text)).replace("\n", "<br>")
+
+
+def time_words(took_s: float, fraction: float) -> str:
+    """The seconds a piece of work has taken and, once a tenth is done, about how many are
+    left at its pace so far — the one wording of the command line's progress bar and the
+    dashboard's status line.
+
+    >>> time_words(12.0, 0.05), time_words(12.0, 0.4), time_words(30.0, 1.0)
+    ('12 s', '12 s, about 18 s left', '30 s')
+    """
+    if 0.1 <= fraction < 1.0:
+        return f"{took_s:.0f} s, about {took_s * (1 - fraction) / fraction:.0f} s left"
+    return f"{took_s:.0f} s"
