@@ -422,13 +422,16 @@ def make_plan(args: argparse.Namespace, progress: Callable[[float, str], None]):
     jobs of buildings far apart each planned on its own (:func:`_jobs`), a job in district
     mode where ``plan`` would take it (:func:`_district`). The plan is decided by work, not
     by the clock (:func:`planner.pipeline.engine.planning.plan`); only the district mode
-    schedules its blocks on the wall clock, ending with :data:`DOCUMENT_SHARE` of
-    ``--time-limit-s`` left, counted from the command's start."""
+    schedules its blocks on the wall clock (its bound given up by :data:`DOCUMENT_SHARE` of
+    ``--time-limit-s`` before the end, counted from the command's start)."""
     from planner.pipeline.district.groups import jobs_plan
-    from planner.pipeline.district.schedule import memory_bytes
+    from planner.pipeline.inputs.requirements import WORKER_MEMORY
 
     started = getattr(args, "started", None) or time.monotonic()
-    memory_bytes(args.worker_memory)  # checked even where the plan needs no cluster
+    if args.worker_memory != WORKER_MEMORY:  # checked even where the plan needs no cluster
+        from planner.pipeline.district.schedule import memory_bytes  # (Dask: 0.2 s to import)
+
+        memory_bytes(args.worker_memory)
     site, scanner, req, settings = plan_inputs(args)
     groups, halo, settings, words = _jobs(args, site, scanner, req, settings)
     planned_by = started + (1 - DOCUMENT_SHARE) * settings.time_limit_s
