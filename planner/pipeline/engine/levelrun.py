@@ -24,7 +24,7 @@ from planner.pipeline.inputs.schema import id_key
 from planner.pipeline.network.height import levelled_targets
 from planner.pipeline.network.registration import readjusted
 
-__all__ = ["LevelRun", "level_run", "say_level_run"]
+__all__ = ["LevelRun", "level_run", "say_level_run", "with_level_run"]
 
 
 @dataclass
@@ -51,23 +51,40 @@ def level_run(ctx: Context, cand: np.ndarray, r: Round) -> LevelRun | None:
     if net.ties:  # planned control (a traverse, GNSS) ties and holds this network
         return None
     if net.levelled:
-        heights, planned = {}, True
-    elif ctx.settings.height_control != "none":  # planned where needed: none was
+        without = _with_heights(ctx, cand, r, {})
+        return LevelRun(net.levelled, True, r.judged.met, without.judged.met)
+    if ctx.settings.height_control != "none":  # planned where needed: none was
         return None
-    else:
-        placed = sorted(int(t) for t in net.targets)  # as the network placed them
-        xyz = net.candidates.xyz
-        heights = levelled_targets(ctx, net.station_xyz, net.datum, xyz, placed, force=True)
-        planned = False
-        if not heights:
-            return None
-    other = copy.copy(net)
-    other.error = replace(net.error, pose_cov=readjusted(ctx, net.adjusted, heights))
+    run = with_level_run(ctx, cand, r)
+    return None if run is None else LevelRun(run.net.levelled, False, run.judged.met, r.judged.met)
+
+
+def with_level_run(ctx: Context, cand: np.ndarray, r: Round) -> Round | None:
+    """The round ``r`` with the level run its network would take (the targets it placed,
+    :func:`~planner.pipeline.network.height.levelled_targets` forced), judged; None where
+    the network takes none (it does not lean, it is tied by control, it has too few
+    targets). The lean counted with the chain: the run the datum's lean alone did not call
+    for may still meet what the two together keep short (a 10-building block: 6.7 of a
+    12.5 mm registration error was the datum's lean, 394 samples short in m_z)."""
+    net = r.net
+    if net is None or not net.adjusted or net.ties or net.levelled or r.judged is None:
+        return None
+    placed = sorted(int(t) for t in net.targets)  # as the network placed them
+    heights = levelled_targets(
+        ctx, net.station_xyz, net.datum, net.candidates.xyz, placed, force=True
+    )
+    return _with_heights(ctx, cand, r, heights) if heights else None
+
+
+def _with_heights(ctx: Context, cand: np.ndarray, r: Round, heights: dict) -> Round:
+    """The round with its network readjusted with the levelled ``heights`` (none: without
+    the run it has), judged."""
+    other = copy.copy(r.net)
+    other.error = replace(r.net.error, pose_cov=readjusted(ctx, r.net.adjusted, heights))
     other.levelled = heights
-    judged = judge(ctx, cand, Round(cover=r.cover, added=r.added, net=other))
-    if planned:
-        return LevelRun(net.levelled, True, r.judged.met, judged.met)
-    return LevelRun(heights, False, judged.met, r.judged.met)
+    out = Round(cover=r.cover, added=r.added, net=other)
+    out.judged = judge(ctx, cand, out)
+    return out
 
 
 def say_level_run(p: Plan, run: LevelRun | None, xyz: np.ndarray) -> None:

@@ -40,7 +40,7 @@ from planner.pipeline.engine.judge import (
     what_blocks,
 )
 from planner.pipeline.engine.kit import within_kit
-from planner.pipeline.engine.levelrun import level_run, say_level_run
+from planner.pipeline.engine.levelrun import level_run, say_level_run, with_level_run
 from planner.pipeline.engine.result import Plan, SolverReport
 from planner.pipeline.engine.tables import budget_message, rehearsal_message
 from planner.pipeline.evaluation.diagnosis import Diagnosis, diagnose
@@ -294,6 +294,10 @@ def choose_stations(
         return assemble(wb, rr, solver, messages, clock, progress=say, hand=hand,
                         best_effort=best_effort, kept=kept, given=given)  # fmt: skip
 
+    if ctx.settings.height_control == "level":  # the datum's lean with the chain's error
+        run = with_level_run(ctx, cand, r)
+        if run is not None and run.judged.n_met > r.judged.n_met:
+            r = run
     r, p = _within_the_kit(wb, r, remake, ids_before)
     say_level_run(p, level_run(ctx, cand, r), seen.tc.xyz)
     return _with_the_day(p)
