@@ -619,8 +619,11 @@ def prune(
 ) -> Round:
     """Drop stations the final judgement gives no sample and no other station is registered
     to (chosen for an estimate the exact network did not bear out), one at a time, each kept
-    out only if no sample is lost; the ``keep`` candidates (locked by hand) are never dropped."""
+    out only if no sample is lost; the ``keep`` candidates (locked by hand) are never dropped.
+    Each station is tried once (a network built and judged per try: in cloud mode each try
+    may rehearse new links, and retrying every idle station after each drop took minutes)."""
     keep = np.empty(0, dtype=np.int64) if keep is None else keep
+    tried: set[int] = set()  # candidates whose dropping lost samples
     while True:  # each pass drops one station or ends
         served = np.bincount(
             r.judged.assignment.station[r.judged.assignment.station >= 0],
@@ -630,9 +633,12 @@ def prune(
         idle = [
             k
             for k in np.flatnonzero(served == 0)
-            if k not in parents and r.net.stations[k] not in keep
+            if k not in parents
+            and r.net.stations[k] not in keep
+            and int(r.net.stations[k]) not in tried
         ]
         for k in idle:
+            tried.add(int(r.net.stations[k]))
             chosen = np.delete(r.net.stations, k)
             trial = Round(cover=np.setdiff1d(r.cover, r.net.stations[k]), added=r.added)
             trial.net = round_network(ctx, cand, seen, chosen, clock, r.net.datum_station)

@@ -28,6 +28,7 @@ judged on. A group neither reaches stays untied and its place is named.
 
 from __future__ import annotations
 
+import heapq
 import math
 from dataclasses import dataclass, field
 
@@ -57,10 +58,11 @@ TRAVERSE_LEG_MAX_M = 80.0
 #: Traverse set-ups are searched on a grid this coarse (a subset of the candidates) [m] …
 TRAVERSE_GRID_M = 6.0
 #: … at most this many of them looked out from (each tests its sight lines to every set-up
-#: within a leg): a count, not a time, so the same traverse is found on any machine; where
-#: the search ends without one the group is tied otherwise (GNSS) or said untied. (A
-#: gated 10-building block's courtyards took over ten minutes unbounded.)
-TRAVERSE_MAX_SETUPS = 300
+#: within a leg), nearest the group first (A*): a count, not a time, so the same traverse is
+#: found on any machine; where the search ends without one the group is tied otherwise
+#: (GNSS) or said untied. (A gated 10-building block's courtyards, searched breadth first
+#: and unbounded, took over ten minutes.)
+TRAVERSE_MAX_SETUPS = 400
 #: RMS per coordinate of a control point shot from a total-station set-up at up to 30 m
 #: (1″ and 1 mm + 1.5 ppm: about 0.2 mm across and 1 mm along) [mm].
 CONTROL_SHOT_MM = 1.0
@@ -112,35 +114,41 @@ def traverse_path(
 ) -> list[int] | None:
     """The fewest legs from any of ``starts`` to any of ``ends`` (indices into ``nodes``,
     (N, 2) [m]) over legs of at most :data:`TRAVERSE_LEG_MAX_M` whose ends see each other:
-    a breadth-first search, the line of sight tested as it goes, each level's set-ups
-    nearest the ends first, looking out from at most :data:`TRAVERSE_MAX_SETUPS`. None if
-    none reaches within it."""
+    an A* search (the legs so far plus the legs the straight line to the nearest end needs
+    at least), the line of sight tested as it goes, looking out from at most
+    :data:`TRAVERSE_MAX_SETUPS` set-ups. None if none reaches within it."""
     hi = ctx.settings.instrument_height_m
     prev = np.full(len(nodes), -2, dtype=np.int64)
     prev[starts] = -1
     is_end = np.zeros(len(nodes), dtype=bool)
     is_end[ends] = True
     goal = nodes[np.asarray(ends, dtype=np.int64)]
-    frontier = list(map(int, starts))
+
+    def to_goal(i: int) -> float:
+        return float(np.min(np.hypot(*(goal - nodes[i]).T)))
+
+    legs = np.zeros(len(nodes), dtype=np.int64)
+    heap = [
+        (math.ceil(to_goal(int(s)) / TRAVERSE_LEG_MAX_M), to_goal(int(s)), int(s)) for s in starts
+    ]
+    heapq.heapify(heap)
     looked = 0
-    while frontier:
-        nxt = []
-        to_goal = [float(np.min(np.hypot(*(goal - nodes[a]).T))) for a in frontier]
-        for _, a in sorted(zip(to_goal, frontier, strict=True)):
-            if is_end[a]:
-                path = [a]
-                while prev[path[-1]] >= 0:
-                    path.append(int(prev[path[-1]]))
-                return path[::-1]
-            looked += 1
-            if looked > TRAVERSE_MAX_SETUPS:
-                return None
-            free = np.flatnonzero(prev == -2)
-            close = free[np.hypot(*(nodes[free] - nodes[a]).T) <= TRAVERSE_LEG_MAX_M]
-            seen = close[_sees(ctx, nodes[a], nodes[close], hi)]
-            prev[seen] = a
-            nxt += list(map(int, seen))
-        frontier = nxt
+    while heap:
+        _, _, a = heapq.heappop(heap)
+        if is_end[a]:
+            path = [a]
+            while prev[path[-1]] >= 0:
+                path.append(int(prev[path[-1]]))
+            return path[::-1]
+        looked += 1
+        if looked > TRAVERSE_MAX_SETUPS:
+            return None
+        free = np.flatnonzero(prev == -2)
+        close = free[np.hypot(*(nodes[free] - nodes[a]).T) <= TRAVERSE_LEG_MAX_M]
+        for b in close[_sees(ctx, nodes[a], nodes[close], hi)].tolist():
+            prev[b], legs[b] = a, legs[a] + 1
+            d = to_goal(b)
+            heapq.heappush(heap, (int(legs[b]) + math.ceil(d / TRAVERSE_LEG_MAX_M), d, b))
     return None
 
 
