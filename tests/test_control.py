@@ -174,3 +174,17 @@ def test_gnss_ties_a_closed_courtyard_open_to_the_sky():
         p.scanned["facade_id"].isin(p.facades.loc[p.facades["courtyard"], "facade_id"])
     ]
     assert (inside["reg_m_x_mm"] > tie.datum_rms_mm * 0.99).all()  # the datum is in it
+
+
+def test_a_groups_linking_stations_carry_their_overlaps():
+    """A group tied by planned control whose own network adds a linking station: the
+    network's overlap matrix grows with it (a hybrid plan of this eight-building town ended
+    in IndexError writing its links table)."""
+    from planner.pipeline.engine.planning import plan as plan_one
+    from planner.synthetic import town
+
+    p = plan_one(town(8, seed=2), settings=PlanSettings(registration="hybrid", grid_m=3.0))
+    net = p.network  # (the kit's trial network was the one tied by control)
+    assert net.overlap.shape == (len(net.stations), len(net.stations))
+    assert len(p.links) == len(net.links)
+    assert int(p.scanned["meets"].sum()) > 0.95 * len(p.scanned)

@@ -304,6 +304,13 @@ def _merge(net: Network, sub: Network, tie: ControlTie, seen: SightCache) -> Non
         net.station_xyz = np.vstack([net.station_xyz, sub.station_xyz[len(pos) :]])
         err.pose_cov = np.concatenate([err.pose_cov, np.zeros((len(extra), 6, 6))])
         err.tied = np.concatenate([err.tied, np.zeros(len(extra), dtype=bool)])
+        if net.overlap is not None:  # the linking stations' overlaps: the group's own
+            grown = np.full((len(net.stations),) * 2, np.nan)
+            grown[:base, :base] = net.overlap
+            if sub.overlap is not None:
+                at = np.asarray(pos + list(range(base, base + len(extra))))
+                grown[np.ix_(at, at)] = sub.overlap[: len(at), : len(at)]
+            net.overlap = grown
         net.n_link_stations += len(extra)
         pos += list(range(base, base + len(extra)))
         tie.stations = pos
