@@ -75,17 +75,17 @@ MAX_FAILURE = 0.01
 PROBE_SIGMAS = 3.0
 PROBE_LADDER = (PROBE_SIGMAS, 2.0, 1.0)
 PROBED = (0, 1, 5)
-#: GICP's neighbours for each point's covariance (the library's default); its largest
-#: correspondence distance, coarse to fine [m]: 0.5 m for scans that start decimetres
-#: apart, then 0.25 and 0.15 m, as registration software refines (CloudCompare's ICP
-#: by its final overlap, REGISTER 360 by its optimisation) — in one stage at 0.5 m, the
-#: points near the edges of what the scans share find wrong partners within reach, and
-#: the registration settled 10–200 mm off even when started at the truth (the RTC360's
-#: links on the default site, 2026-11-28), where the 0.15 m stage leaves 1–7 mm but on
-#: the pairs that truly leave a direction free; and the iterations per stage (half the
-#: library's 20: a start that has not come back in 10 has failed).
+#: GICP's neighbours for each point's covariance (the library's default), its largest
+#: correspondence distance [m] (for scans that start within decimetres) and its iterations
+#: (half the library's 20: a start that has not come back in 10 has failed). One stage, on
+#: purpose: refined coarse to fine (0.5, 0.25, 0.15 m) the rehearsal passed links that the
+#: independent survey registered up to 6 × worse than the plan's error, and 28 samples of
+#: the default site's cloud plan were marked met over their limits (benchmarks/RESULTS.md,
+#: "cloud-survey", 2026-11-28); in one stage, none. (In one stage, points at the edges of
+#: what two scans share find wrong partners within 0.5 m: such a link fails its rehearsal,
+#: and the plan ties the station otherwise.)
 NEIGHBOURS = 10
-CORRESPONDENCE_M = (0.5, 0.25, 0.15)
+MAX_CORRESPONDENCE_M = 0.5
 MAX_ITERATIONS = 10
 #: GICP stops when an iteration moves the pose less than this [rad; m]: 2″ and 0.01 mm.
 EPSILON = 1e-5
@@ -320,20 +320,18 @@ def _register(parent, child, centre: np.ndarray, start: np.ndarray) -> np.ndarra
     the child's centre): the registered pose's error (6,) at the child's centre."""
     import small_gicp
 
-    t = _pose(start, centre)
-    for reach in CORRESPONDENCE_M:  # coarse to fine
-        t = small_gicp.align(
-            parent[0],
-            child[0],
-            parent[1],
-            init_T_target_source=t,
-            registration_type="GICP",
-            max_correspondence_distance=reach,
-            num_threads=1,
-            max_iterations=MAX_ITERATIONS,
-            rotation_epsilon=EPSILON,
-            translation_epsilon=EPSILON,
-        ).T_target_source
+    t = small_gicp.align(
+        parent[0],
+        child[0],
+        parent[1],
+        init_T_target_source=_pose(start, centre),
+        registration_type="GICP",
+        max_correspondence_distance=MAX_CORRESPONDENCE_M,
+        num_threads=1,
+        max_iterations=MAX_ITERATIONS,
+        rotation_epsilon=EPSILON,
+        translation_epsilon=EPSILON,
+    ).T_target_source
     shift = (t[:3, :3] @ centre + t[:3, 3] - centre) * 1000.0
     w = t[:3, :3] - t[:3, :3].T
     return np.concatenate([shift, [w[2, 1] / 2.0, w[0, 2] / 2.0, w[1, 0] / 2.0]])
