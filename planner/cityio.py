@@ -31,6 +31,7 @@ import json
 import math
 import re
 import xml.etree.ElementTree as ET
+from collections import Counter
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -108,6 +109,16 @@ SKIPPED_TYPES = (
     "TunnelFurniture",
     "CityObjectGroup",
 )
+#: What a model's surfaces of a kind mean for the plan, said with their count.
+KIND_WORDS = {
+    "window": "window surface(s) (glass) are not demanded: glass returns no point or a "
+    "mirrored one",
+    "door": "door surface(s) are demanded as wall is: a glazed door, an open one or a shop's "
+    "roller shutter returns no point or another — mark such doors as windows in the model, "
+    "or leave those samples out by a zone",
+    "installation": "installation surface(s) (balconies, stairs, dormers, chimneys) are not "
+    "demanded; they stand in the beams' way, shadowing the walls behind them",
+}
 #: Height below which a model's building is not one to scan: it only blocks the beam [m].
 MIN_PLANNED_HEIGHT_M = 2.0
 
@@ -818,30 +829,13 @@ def _assemble(
         )
     if terrain is None:
         terrain = _model_terrain(model, blds, project)
-    windows = sum(s.kind == "window" for b in blds for s in b.surfaces)
-    if windows:
-        warnings.append(
-            f"{windows} window surface(s) (glass) are not demanded: glass returns no point or "
-            "a mirrored one"
-        )
+    kinds = Counter(s.kind for b in blds for s in b.surfaces)
+    warnings += [f"{kinds[k]} {words}" for k, words in KIND_WORDS.items() if kinds[k]]
     if not obstacles:
         warnings.append(
             f"{origin} holds buildings only — no trees, street furniture or other structures: "
             "sight lines are cast against its buildings alone; add what stands around them "
             "(an OpenStreetMap export, a survey of the street) with --surroundings FILE"
-        )
-    doors = sum(s.kind == "door" for b in blds for s in b.surfaces)
-    if doors:
-        warnings.append(
-            f"{doors} door surface(s) are demanded as wall is: a glazed door, an open one or a "
-            "shop's roller shutter returns no point or another — mark such doors as windows "
-            "in the model, or leave those samples out by a zone"
-        )
-    fittings = sum(s.kind == "installation" for b in blds for s in b.surfaces)
-    if fittings:
-        warnings.append(
-            f"{fittings} installation surface(s) (balconies, stairs, dormers, chimneys) are not "
-            "demanded; they stand in the beams' way, shadowing the walls behind them"
         )
     try:
         planned = with_planned(blds, buildings)

@@ -199,7 +199,7 @@ class _StderrProgress:
 def _where_the_time_went(p, quiet: bool) -> None:
     """The plan's seconds per stage, on stderr (not in the files: they hold what the plan
     is, the same on any machine)."""
-    spent = {k: v for k, v in getattr(p, "timings_s", {}).items() if not k.endswith("_mb")}
+    spent = {k: v for k, v in p.timings_s.items() if not k.endswith("_mb")}
     if quiet or not spent:
         return
     total = spent.pop("total", None)
@@ -246,7 +246,12 @@ def plan_inputs(args: argparse.Namespace):
                 "--terrain, --lod and --mesh need a site file (the default site is footprints "
                 "on flat ground)"
             )
-        site = with_surroundings_args(args, site)
+    if args.surroundings:
+        from planner.siteio import with_surroundings
+
+        site = with_surroundings(
+            site, args.surroundings, crs=args.crs, default_height_m=args.height
+        )
     if args.control:
         from dataclasses import replace
 
@@ -290,17 +295,7 @@ def read_site_args(args: argparse.Namespace, limits, near_m: float):
         site = with_mesh(site, args.mesh, offset=args.mesh_offset or (0.0, 0.0, 0.0))
     if args.terrain:
         site = with_terrain(site, args.terrain)
-    return with_surroundings_args(args, site)
-
-
-def with_surroundings_args(args: argparse.Namespace, site):
-    """``site`` with the surroundings file of ``--surroundings``, where one is given
-    (:func:`planner.siteio.with_surroundings`)."""
-    if not getattr(args, "surroundings", None):
-        return site
-    from planner.siteio import with_surroundings
-
-    return with_surroundings(site, args.surroundings, crs=args.crs, default_height_m=args.height)
+    return site
 
 
 def _read_text(path: str, what: str) -> str:
@@ -341,9 +336,9 @@ def _district(args: argparse.Namespace, site, settings) -> bool:
     return args.district == "on" or bool(args.scheduler) or needs_district(site, settings)
 
 
-#: The share of ``--time-limit-s`` kept for the plan's documents (its files, the booklet):
-#: the optimiser's search for a smaller cover stops before it. (Only that search reads the
-#: clock: the rest of a plan and its documents are whole whatever the clock says.)
+#: The share of ``--time-limit-s`` kept for the plan's documents in district mode: the
+#: district's bound on shared stations is given up before it. (A plan itself is decided by
+#: work; its documents are whole whatever the clock says.)
 DOCUMENT_SHARE = 0.15
 
 
